@@ -1,0 +1,71 @@
+// motiongp: the editor and its command-line verbs (see README.md).
+#include <unistd.h>
+
+#include <climits>
+#include <iostream>
+#include <map>
+
+#include "cli_common.h"
+#include "command_registry.h"
+#include "io/parse_error.h"
+
+namespace mgp::app {
+
+std::vector<CommandInfo>& commandTable() {
+    static std::vector<CommandInfo> table;
+    return table;
+}
+
+GlobalOptions& globalOptions() {
+    static GlobalOptions options;
+    return options;
+}
+
+// Runs when no verb is given (README's run command). Registered as the "" command.
+int runDefault();
+
+}  // namespace mgp::app
+
+namespace {
+std::string executableDir(const char* argv0) {
+    char buf[PATH_MAX];
+    const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+    std::string path = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string(argv0);
+    const std::size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace mgp::app;
+    CLI::App app{"MotionGP — a motion editor with learned inverse kinematics (FASGPLVM)"};
+    app.set_help_all_flag("--help-all", "Show the help of every verb");
+    globalOptions().exeDir = executableDir(argv[0]);
+    app.add_option("--data", globalOptions().dataDir,
+                   "Folder with the CMU mocap clips (default: $MOTIONGP_DATA, then ../shared/mocap)");
+    std::map<CLI::App*, CommandRunner> runners;
+    for (CommandInfo& info : commandTable()) {
+        CLI::App* sub = app.add_subcommand(info.name, info.description);
+        runners[sub] = info.setup(*sub);
+    }
+    app.require_subcommand(0, 1);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    try {
+        for (auto& [sub, run] : runners)
+            if (sub->parsed()) return run();
+        return runDefault();
+    } catch (const mgp::ParseError& e) {
+        std::cerr << "motiongp: error: " << e.what() << std::endl;
+        return 2;
+    } catch (const UsageError& e) {
+        std::cerr << "motiongp: error: " << e.what() << std::endl;
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "motiongp: error: " << e.what() << std::endl;
+        return 1;
+    }
+}

@@ -1,0 +1,306 @@
+#include "io/asf_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "io/parse_error.h"
+#include "io/text_reader.h"
+
+namespace mgp {
+
+namespace {
+
+struct AsfBone {
+    std::string name;
+    int line = 0;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    double length = 0.0;
+    Eigen::Vector3d axisAngles = Eigen::Vector3d::Zero();
+    RotationOrder axisOrder = kOrderZYX;
+    std::vector<Channel> channels;
+    bool hasDirection = false, hasLength = false;
+};
+
+// "XYZ" (x applied first) → outermost-first order {Z, Y, X}.
+bool parseAxisOrder(std::string_view s, RotationOrder& out) {
+    const std::string u = toLower(s);
+    if (u.size() != 3) return false;
+    RotationOrder order{};
+    bool seen[3] = {false, false, false};
+    for (int i = 0; i < 3; ++i) {
+        const int a = u[i] - 'x';
+        if (a < 0 || a > 2 || seen[a]) return false;
+        seen[a] = true;
+        order[2 - i] = a;
+    }
+    out = order;
+    return true;
+}
+
+// Rotation order from the rotational channels in file order (first listed = applied first).
+RotationOrder orderFromChannels(const std::vector<Channel>& channels) {
+    std::vector<int> applied;
+    for (const Channel& c : channels)
+        if (!c.translation) applied.push_back(c.axis);
+    for (int a = 0; a < 3; ++a)
+        if (std::find(applied.begin(), applied.end(), a) == applied.end()) applied.push_back(a);
+    return {applied[2], applied[1], applied[0]};
+}
+
+bool parseChannel(std::string_view token, bool allowTranslation, Channel& out) {
+    const std::string t = toLower(token);
+    if (t.size() != 2 || (t[0] != 'r' && t[0] != 't') || t[1] < 'x' || t[1] > 'z') return false;
+    if (t[0] == 't' && !allowTranslation) return false;
+    out.translation = t[0] == 't';
+    out.axis = t[1] - 'x';
+    return true;
+}
+
+double needNumber(const TextReader& r, int line, std::string_view token, const char* what) {
+    double v = 0.0;
+    if (!parseDouble(token, v)) r.failAt(line, what, quoteToken(token));
+    return v;
+}
+
+Eigen::Vector3d needVector(const TextReader& r, int line, const std::vector<std::string_view>& tok,
+                           std::size_t first, const char* what) {
+    if (tok.size() < first + 3)
+        r.failAt(line, std::string("3 numbers for ") + what,
+                 std::to_string(tok.size() - first) + " values");
+    return {needNumber(r, line, tok[first], "a number"),
+            needNumber(r, line, tok[first + 1], "a number"),
+            needNumber(r, line, tok[first + 2], "a number")};
+}
+
+}  // namespace
+
+int AsfSkeleton::channelCount() const {
+    int n = 0;
+    for (const auto& c : channels) n += static_cast<int>(c.size());
+    return n;
+}
+
+namespace {
+
+AsfSkeleton parse(TextReader& r) {
+    AsfSkeleton out;
+    out.path = r.fileName();
+    double lengthUnit = 1.0;  // ASF default: inches
+    std::vector<Channel> rootChannels;
+    RotationOrder rootAxisOrder = kOrderZYX;
+    Eigen::Vector3d rootOrientation = Eigen::Vector3d::Zero();
+    bool sawRoot = false, sawBones = false, sawHierarchy = false;
+    std::vector<AsfBone> bones;
+    std::map<std::string, int> boneIndex;
+    std::vector<int> parentOf;  // per bone: -1 = root, -2 = not yet placed
+    std::vector<std::vector<int>> childrenOf(1);  // index 0 = root, bone i → i + 1
+
+    std::string section;
+    while (!r.atEnd()) {
+        const int line = r.lineNumber();
+        const std::string_view raw = trim(r.nextLine());
+        if (raw.empty() || raw.front() == '#') continue;
+        const auto tok = splitTokens(raw);
+        if (raw.front() == ':') {
+            section = toLower(tok[0]);
+            if (section == ":units" || section == ":root" || section == ":documentation" ||
+                section == ":bonedata" || section == ":hierarchy" || section == ":skin")
+                ;
+            else if (section == ":version" || section == ":name")
+                continue;
+            else
+                r.failAt(line, "an ASF section (:units, :root, :bonedata, :hierarchy)",
+                         quoteToken(tok[0]));
+            if (section == ":root") sawRoot = true;
+            if (section == ":bonedata") sawBones = true;
+            if (section == ":hierarchy") sawHierarchy = true;
+            // Some writers put a value after the keyword on the same line; nothing we need.
+            continue;
+        }
+        const std::string key = toLower(tok[0]);
+        if (section == ":units") {
+            if (tok.size() < 2) r.failAt(line, "a unit value after " + key, "nothing");
+            if (key == "length") {
+                lengthUnit = needNumber(r, line, tok[1], "a positive length unit");
+                if (!(lengthUnit > 0.0)) r.failAt(line, "a positive length unit", quoteToken(tok[1]));
+            } else if (key == "angle") {
+                const std::string u = toLower(tok[1]);
+                if (u != "deg" && u != "rad")
+                    r.failAt(line, "angle unit 'deg' or 'rad'", quoteToken(tok[1]));
+                out.anglesInRadians = u == "rad";
+            }
+        } else if (section == ":root") {
+            if (key == "order") {
+                for (std::size_t i = 1; i < tok.size(); ++i) {
+                    Channel c;
+                    if (!parseChannel(tok[i], true, c))
+                        r.failAt(line, "a root channel (TX TY TZ RX RY RZ)", quoteToken(tok[i]));
+                    rootChannels.push_back(c);
+                }
+            } else if (key == "axis") {
+                if (tok.size() < 2 || !parseAxisOrder(tok[1], rootAxisOrder))
+                    r.failAt(line, "a root axis order such as XYZ",
+                             tok.size() < 2 ? "nothing" : quoteToken(tok[1]));
+            } else if (key == "orientation") {
+                rootOrientation = needVector(r, line, tok, 1, "the root orientation");
+            } else if (key == "position") {
+                needVector(r, line, tok, 1, "the root position");
+            } else {
+                r.failAt(line, "order, axis, position or orientation in :root", quoteToken(tok[0]));
+            }
+        } else if (section == ":bonedata") {
+            if (key != "begin") r.failAt(line, "'begin' of a bone", quoteToken(tok[0]));
+            AsfBone bone;
+            bone.line = line;
+            bool ended = false;
+            bool inLimits = false;
+            while (!r.atEnd()) {
+                const int bl = r.lineNumber();
+                const std::string_view braw = trim(r.nextLine());
+                if (braw.empty() || braw.front() == '#') continue;
+                const auto bt = splitTokens(braw);
+                const std::string bk = toLower(bt[0]);
+                if (braw.front() == '(' && inLimits) continue;
+                inLimits = false;
+                if (bk == "end") {
+                    ended = true;
+                    break;
+                } else if (bk == "id") {
+                } else if (bk == "name") {
+                    if (bt.size() < 2) r.failAt(bl, "a bone name", "nothing");
+                    bone.name = std::string(bt[1]);
+                } else if (bk == "direction") {
+                    bone.direction = needVector(r, bl, bt, 1, "the bone direction");
+                    bone.hasDirection = true;
+                } else if (bk == "length") {
+                    if (bt.size() < 2) r.failAt(bl, "a bone length", "nothing");
+                    bone.length = needNumber(r, bl, bt[1], "a bone length");
+                    if (bone.length < 0.0 || bone.length > 1e6)
+                        r.failAt(bl, "a bone length in [0, 1e6]", quoteToken(bt[1]));
+                    bone.hasLength = true;
+                } else if (bk == "axis") {
+                    bone.axisAngles = needVector(r, bl, bt, 1, "the bone axis");
+                    if (bt.size() < 5 || !parseAxisOrder(bt[4], bone.axisOrder))
+                        r.failAt(bl, "an axis order such as XYZ after the 3 axis angles",
+                                 bt.size() < 5 ? "nothing" : quoteToken(bt[4]));
+                } else if (bk == "dof") {
+                    for (std::size_t i = 1; i < bt.size(); ++i) {
+                        Channel c;
+                        if (!parseChannel(bt[i], false, c))
+                            r.failAt(bl, "a bone dof among rx ry rz", quoteToken(bt[i]));
+                        for (const Channel& prev : bone.channels)
+                            if (prev.axis == c.axis)
+                                r.failAt(bl, "each dof once", "a repeated " + std::string(bt[i]));
+                        bone.channels.push_back(c);
+                    }
+                } else if (bk == "limits") {
+                    inLimits = true;
+                } else if (bk == "bodymass" || bk == "cofmass") {
+                } else if (bk == "begin" || bk.front() == ':') {
+                    r.failAt(bl, "'end' of bone '" + bone.name + "'", quoteToken(bt[0]));
+                } else {
+                    r.failAt(bl, "a bone field (id, name, direction, length, axis, dof, limits)",
+                             quoteToken(bt[0]));
+                }
+            }
+            if (!ended) r.failAt(r.lastLineNumber(), "'end' of the bone begun at line " +
+                                 std::to_string(bone.line), "the end of the file");
+            if (bone.name.empty()) r.failAt(bone.line, "a 'name' in this bone", "none");
+            if (!bone.hasDirection || !bone.hasLength)
+                r.failAt(bone.line, "'direction' and 'length' for bone '" + bone.name + "'",
+                         "a bone without them");
+            if (bone.name == "root" || boneIndex.count(bone.name))
+                r.failAt(bone.line, "a unique bone name", "a second '" + bone.name + "'");
+            boneIndex[bone.name] = static_cast<int>(bones.size());
+            bones.push_back(std::move(bone));
+            parentOf.push_back(-2);
+            childrenOf.emplace_back();
+        } else if (section == ":hierarchy") {
+            if (key == "begin" || key == "end") continue;
+            auto lookup = [&](std::string_view name) -> int {
+                if (name == "root") return 0;
+                const auto it = boneIndex.find(std::string(name));
+                if (it == boneIndex.end())
+                    r.failAt(line, "a bone declared in :bonedata", quoteToken(name));
+                return it->second + 1;
+            };
+            const int parent = lookup(tok[0]);
+            for (std::size_t i = 1; i < tok.size(); ++i) {
+                const int child = lookup(tok[i]);
+                if (child == 0 || parentOf[child - 1] != -2)
+                    r.failAt(line, "each bone to have one parent",
+                             "a second parent for '" + std::string(tok[i]) + "'");
+                parentOf[child - 1] = parent - 1;
+                childrenOf[parent].push_back(child);
+            }
+        } else if (section == ":documentation" || section == ":skin") {
+            continue;
+        } else {
+            r.failAt(line, "a section header such as :units", quoteToken(tok[0]));
+        }
+    }
+    if (!sawRoot) r.failAt(r.lastLineNumber(), "a :root section", "none");
+    if (!sawBones || bones.empty()) r.failAt(r.lastLineNumber(), "a :bonedata section with bones", "none");
+    if (!sawHierarchy) r.failAt(r.lastLineNumber(), "a :hierarchy section", "none");
+    if (rootChannels.empty()) r.failAt(r.lastLineNumber(), "an 'order' line in :root", "none");
+
+    out.cmPerUnit = 2.54 / lengthUnit;
+    const double angleScale = out.anglesInRadians ? kRadToDeg : 1.0;
+    Skeleton& sk = out.skeleton;
+    Joint root;
+    root.name = root.bone = "root";
+    root.axis = eulerMatrix(rootOrientation * angleScale, rootAxisOrder);
+    root.order = orderFromChannels(rootChannels);
+    for (const Channel& c : rootChannels)
+        if (!c.translation) root.dof[c.axis] = true;
+    sk.joints.push_back(root);
+    out.channels.push_back(rootChannels);
+
+    // Depth-first from the root so parents precede children; a bone the hierarchy never
+    // reaches is an error (it could not be placed).
+    std::vector<int> jointOfNode(bones.size() + 1, -1);
+    jointOfNode[0] = 0;
+    std::vector<int> stack(childrenOf[0].rbegin(), childrenOf[0].rend());
+    while (!stack.empty()) {
+        const int node = stack.back();
+        stack.pop_back();
+        const AsfBone& b = bones[node - 1];
+        const int parentNode = parentOf[node - 1] + 1;
+        Joint j;
+        j.name = j.bone = b.name;
+        j.parent = jointOfNode[parentNode];
+        const double norm = b.direction.norm();
+        const Eigen::Vector3d dir = norm > 0.0 ? Eigen::Vector3d(b.direction / norm) : Eigen::Vector3d::Zero();
+        j.tailCm = dir * b.length * out.cmPerUnit;
+        j.offsetCm = parentNode == 0 ? Eigen::Vector3d::Zero() : sk.joints[j.parent].tailCm;
+        j.axis = eulerMatrix(b.axisAngles * angleScale, b.axisOrder);
+        j.order = orderFromChannels(b.channels);
+        for (const Channel& c : b.channels) j.dof[c.axis] = true;
+        jointOfNode[node] = sk.jointCount();
+        sk.joints.push_back(j);
+        out.channels.push_back(b.channels);
+        for (auto it = childrenOf[node].rbegin(); it != childrenOf[node].rend(); ++it)
+            stack.push_back(*it);
+    }
+    for (std::size_t i = 0; i < bones.size(); ++i)
+        if (jointOfNode[i + 1] < 0)
+            r.failAt(bones[i].line, "bone '" + bones[i].name + "' to appear in :hierarchy",
+                     "a bone with no parent");
+    sk.resolveEffectors();
+    return out;
+}
+
+}  // namespace
+
+AsfSkeleton readAsf(const std::string& path) {
+    TextReader r = TextReader::fromFile(path, 16u << 20);
+    return parse(r);
+}
+
+AsfSkeleton parseAsf(const std::string& name, std::string text) {
+    TextReader r = TextReader::fromString(name, std::move(text));
+    return parse(r);
+}
+
+}  // namespace mgp

@@ -1,0 +1,44 @@
+#include "io/clip_loader.h"
+
+#include "io/amc_reader.h"
+#include "io/asf_reader.h"
+#include "io/bvh_reader.h"
+#include "io/parse_error.h"
+#include "io/text_reader.h"
+
+namespace mgp {
+
+namespace {
+std::string extensionOf(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    return toLower(path.substr(dot + 1));
+}
+}  // namespace
+
+std::string defaultAsfFor(const std::string& amcPath) {
+    const std::size_t slash = amcPath.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : amcPath.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? amcPath : amcPath.substr(slash + 1);
+    const std::size_t cut = base.find('_');
+    const std::size_t dot = base.find_last_of('.');
+    const std::string subject = base.substr(0, cut != std::string::npos ? cut : dot);
+    return dir + subject + ".asf";
+}
+
+Clip loadClip(const std::string& path, const std::string& skeletonPath) {
+    const std::string ext = extensionOf(path);
+    if (ext == "bvh") return readBvh(path);
+    if (ext == "amc") {
+        const std::string asfPath = skeletonPath.empty() ? defaultAsfFor(path) : skeletonPath;
+        const AsfSkeleton asf = readAsf(asfPath);
+        return readAmc(path, asf);
+    }
+    if (ext == "asf")
+        throwParseError(path, 0, "a motion clip (.amc or .bvh; pass the .asf with --skel)",
+                        "a skeleton file");
+    throwParseError(path, 0, "a clip ending in .amc or .bvh", "'." + ext + "'");
+}
+
+}  // namespace mgp

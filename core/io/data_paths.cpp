@@ -1,0 +1,46 @@
+#include "io/data_paths.h"
+
+#include <sys/stat.h>
+
+#include <cstdlib>
+
+namespace mgp {
+
+namespace {
+bool isDir(const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+bool isFile(const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+}  // namespace
+
+bool isMocapFolder(const std::string& dir) {
+    return !dir.empty() && (isDir(dir + "/asf_amc") || isDir(dir + "/bvh"));
+}
+
+std::optional<std::string> findMocapFolder(const std::string& cliDir, const std::string& exeDir) {
+    if (!cliDir.empty()) {
+        if (isMocapFolder(cliDir)) return cliDir;
+        return std::nullopt;  // an explicit choice that does not exist is not silently replaced
+    }
+    if (const char* env = std::getenv("MOTIONGP_DATA"); env && isMocapFolder(env))
+        return std::string(env);
+#ifdef MOTIONGP_SHARED_MOCAP
+    if (isMocapFolder(MOTIONGP_SHARED_MOCAP)) return std::string(MOTIONGP_SHARED_MOCAP);
+#endif
+    if (!exeDir.empty())
+        for (const char* rel : {"/../shared/mocap", "/../../shared/mocap", "/shared/mocap"})
+            if (isMocapFolder(exeDir + rel)) return exeDir + rel;
+    return std::nullopt;
+}
+
+std::optional<std::string> defaultClipIn(const std::string& mocapDir) {
+    const std::string amc = mocapDir + "/asf_amc/10_02.amc";
+    if (isFile(amc) && isFile(mocapDir + "/asf_amc/10.asf")) return amc;
+    return std::nullopt;
+}
+
+}  // namespace mgp

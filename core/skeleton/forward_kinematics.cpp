@@ -1,0 +1,68 @@
+#include "skeleton/forward_kinematics.h"
+
+#include <Eigen/Geometry>
+#include <limits>
+
+namespace mgp {
+
+void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk) {
+    const int n = skeleton.jointCount();
+    if (static_cast<int>(fk.jointCm.size()) != n) {
+        fk.jointCm.resize(n);
+        fk.global.resize(n);
+        fk.parentFrame.resize(n);
+    }
+    for (int j = 0; j < n; ++j) {
+        const Joint& joint = skeleton.joints[j];
+        const Eigen::Matrix3d local = eulerMatrix(pose.anglesDeg[j], joint.order);
+        if (joint.parent < 0) {
+            fk.jointCm[j] = pose.rootCm + joint.offsetCm;
+            fk.parentFrame[j] = joint.axis;
+        } else {
+            const int p = joint.parent;
+            fk.jointCm[j] = fk.jointCm[p] + fk.global[p] * joint.offsetCm;
+            fk.parentFrame[j] = fk.global[p] * joint.axis;
+        }
+        fk.global[j] = fk.parentFrame[j] * local * joint.axis.transpose();
+    }
+}
+
+Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint) {
+    return fk.jointCm[joint] + fk.global[joint] * skeleton.joints[joint].tailCm;
+}
+
+Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector e) {
+    const EffectorSite& site = skeleton.effectorSite(e);
+    if (site.joint < 0) return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    return fk.jointCm[site.joint] + fk.global[site.joint] * site.localCm;
+}
+
+Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
+                             int joint, int axis) {
+    // With R = R_o0 · R_o1 · R_o2, the DOF o_k rotates about (base · R_o0 ⋯ R_o(k-1)) e_{o_k}.
+    const RotationOrder& order = skeleton.joints[joint].order;
+    Eigen::Matrix3d frame = fk.parentFrame[joint];
+    for (int a : order) {
+        if (a == axis) return frame.col(a);
+        const double angle = pose.anglesDeg[joint][a];
+        if (angle != 0.0) frame = frame * axisRotation(a, angle * kDegToRad);
+    }
+    return frame.col(axis);  // unreachable for a valid order
+}
+
+void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                      const Pose& pose, Effector e,
+                      Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
+    jac.setZero();
+    const EffectorSite& site = skeleton.effectorSite(e);
+    if (site.joint < 0) return;
+    const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
+    for (int i = 0; i < kPoseDofs; ++i) {
+        const int j = layout.joint(i);
+        if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
+        const Eigen::Vector3d w = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
+        jac.col(i) = kDegToRad * w.cross(pe - fk.jointCm[j]);
+    }
+}
+
+}  // namespace mgp

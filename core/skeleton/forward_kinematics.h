@@ -1,0 +1,35 @@
+#pragma once
+// Forward kinematics and the analytic effector Jacobian (ALGORITHM.md §2.2).
+// Units: positions in cm, world Y up; Jacobian columns in cm per DEGREE.
+#include <Eigen/Core>
+#include <vector>
+
+#include "skeleton/pose_layout.h"
+#include "skeleton/skeleton.h"
+
+namespace mgp {
+
+// Per-joint results of one FK pass. Reuse one instance across calls: forwardKinematics only
+// resizes it when the joint count changes, so a solver loop allocates nothing.
+struct FkState {
+    std::vector<Eigen::Vector3d> jointCm;       // joint (bone start) positions
+    std::vector<Eigen::Matrix3d> global;        // G_j
+    std::vector<Eigen::Matrix3d> parentFrame;   // G_parent · C_j (the DOF axes' base frame)
+};
+
+void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk);
+
+// End point of joint j's bone (p_j + G_j · tail_j).
+Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint);
+Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector e);
+
+// World axis of joint j's rotation DOF `axis` (unit vector), given its current angles.
+Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
+                             int joint, int axis);
+
+// d(effector position)/d(y) for the 47 pose DOFs, 3×47, cm/deg. Columns of DOFs that are not
+// ancestors of the effector (or absent from the skeleton) are exactly 0.
+void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                      const Pose& pose, Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
+
+}  // namespace mgp

@@ -1,0 +1,74 @@
+#include "skeleton/pose_layout.h"
+
+#include <algorithm>
+
+namespace mgp {
+
+const std::array<PoseDof, kPoseDofs>& poseDofTable() {
+    static const std::array<PoseDof, kPoseDofs> table = {{
+        {"root", kAxisX},      {"root", kAxisY},      {"root", kAxisZ},
+        {"lfemur", kAxisX},    {"lfemur", kAxisY},    {"lfemur", kAxisZ},
+        {"ltibia", kAxisX},    {"lfoot", kAxisX},     {"lfoot", kAxisZ},
+        {"rfemur", kAxisX},    {"rfemur", kAxisY},    {"rfemur", kAxisZ},
+        {"rtibia", kAxisX},    {"rfoot", kAxisX},     {"rfoot", kAxisZ},
+        {"lowerback", kAxisX}, {"lowerback", kAxisY}, {"lowerback", kAxisZ},
+        {"upperback", kAxisX}, {"upperback", kAxisY}, {"upperback", kAxisZ},
+        {"thorax", kAxisX},    {"thorax", kAxisY},    {"thorax", kAxisZ},
+        {"lowerneck", kAxisX}, {"lowerneck", kAxisY}, {"lowerneck", kAxisZ},
+        {"upperneck", kAxisX}, {"upperneck", kAxisY}, {"upperneck", kAxisZ},
+        {"head", kAxisX},      {"head", kAxisY},      {"head", kAxisZ},
+        {"lclavicle", kAxisY}, {"lclavicle", kAxisZ},
+        {"lhumerus", kAxisX},  {"lhumerus", kAxisY},  {"lhumerus", kAxisZ},
+        {"lradius", kAxisX},   {"lwrist", kAxisY},
+        {"rclavicle", kAxisY}, {"rclavicle", kAxisZ},
+        {"rhumerus", kAxisX},  {"rhumerus", kAxisY},  {"rhumerus", kAxisZ},
+        {"rradius", kAxisX},   {"rwrist", kAxisY},
+    }};
+    return table;
+}
+
+const std::array<const char*, kModelBones>& modelBoneNames() {
+    static const std::array<const char*, kModelBones> names = {
+        "lhipjoint", "lfemur",    "ltibia",    "lfoot",    "rhipjoint", "rfemur",
+        "rtibia",    "rfoot",     "lowerback", "upperback", "thorax",   "lowerneck",
+        "upperneck", "head",      "lclavicle", "lhumerus", "lradius",   "lwrist",
+        "rclavicle", "rhumerus",  "rradius",   "rwrist"};
+    return names;
+}
+
+bool isDroppedAsfBone(const std::string& bone) {
+    static const char* dropped[] = {"lhand", "rhand", "lfingers", "rfingers", "lthumb",
+                                    "rthumb", "ltoes", "rtoes"};
+    return std::any_of(std::begin(dropped), std::end(dropped),
+                       [&](const char* d) { return bone == d; });
+}
+
+std::vector<std::string> missingModelBones(const Skeleton& skeleton) {
+    std::vector<std::string> out;
+    for (const char* bone : modelBoneNames())
+        if (skeleton.findBone(bone) < 0) out.push_back(bone);
+    return out;
+}
+
+PoseLayout::PoseLayout(const Skeleton& skeleton) {
+    const auto& table = poseDofTable();
+    for (int i = 0; i < kPoseDofs; ++i) joint_[i] = skeleton.findBone(table[i].bone);
+}
+
+void PoseLayout::extract(const Pose& pose, double* y) const {
+    for (int i = 0; i < kPoseDofs; ++i)
+        y[i] = joint_[i] >= 0 ? pose.anglesDeg[joint_[i]][axis(i)] : 0.0;
+}
+
+Eigen::VectorXd PoseLayout::extract(const Pose& pose) const {
+    Eigen::VectorXd y(kPoseDofs);
+    extract(pose, y.data());
+    return y;
+}
+
+void PoseLayout::apply(const double* y, Pose& pose) const {
+    for (int i = 0; i < kPoseDofs; ++i)
+        if (joint_[i] >= 0) pose.anglesDeg[joint_[i]][axis(i)] = y[i];
+}
+
+}  // namespace mgp

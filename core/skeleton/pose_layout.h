@@ -1,0 +1,61 @@
+#pragma once
+// The paper's pose vector y (ALGORITHM.md §2.3): 47 rotational DOFs in DEGREES, in this exact
+// order everywhere (files, W, limits). Root translation (cm) is kept separately.
+//
+//   0-2 root rx ry rz     15-17 lowerback     33-34 lclavicle ry rz   40-41 rclavicle ry rz
+//   3-5 lfemur rx ry rz   18-20 upperback     35-37 lhumerus          42-44 rhumerus
+//   6 ltibia rx           21-23 thorax        38 lradius rx           45 rradius rx
+//   7-8 lfoot rx rz       24-26 lowerneck     39 lwrist ry            46 rwrist ry
+//   9-11 rfemur           27-29 upperneck
+//   12 rtibia rx          30-32 head
+//   13-14 rfoot rx rz
+//
+// The 22 bones are the 20 DOF-bearing non-root bones above plus lhipjoint and rhipjoint.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "skeleton/skeleton.h"
+
+namespace mgp {
+
+constexpr int kPoseDofs = 47;       // rotational DOFs in y
+constexpr int kModelBones = 22;     // bones of the simplified skeleton (root not counted)
+constexpr int kModelDofs = 50;      // 47 + root translation
+
+struct PoseDof {
+    const char* bone;
+    int axis;
+};
+const std::array<PoseDof, kPoseDofs>& poseDofTable();
+// The 22 bone names of the simplified skeleton (§2.3), root excluded.
+const std::array<const char*, kModelBones>& modelBoneNames();
+// Bones of the full ASF skeleton that the model drops (held rigid): hands, fingers, thumbs, toes.
+bool isDroppedAsfBone(const std::string& bone);
+// The 22 model bones a skeleton lacks (e.g. upperback for a Daz-friendly BVH), in table order.
+std::vector<std::string> missingModelBones(const Skeleton& skeleton);
+
+// A joint-angle pose of one skeleton: root translation in cm plus (x, y, z) Euler angles in
+// degrees per joint (angles[0] is the root rotation). Axes a joint does not animate stay 0.
+struct Pose {
+    Eigen::Vector3d rootCm = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> anglesDeg;
+};
+
+// Binds the 47-entry layout to one skeleton's joints.
+class PoseLayout {
+public:
+    explicit PoseLayout(const Skeleton& skeleton);
+    int joint(int dof) const { return joint_[dof]; }  // -1 if the skeleton lacks that bone
+    int axis(int dof) const { return poseDofTable()[dof].axis; }
+
+    void extract(const Pose& pose, double* y) const;    // writes 47 values
+    Eigen::VectorXd extract(const Pose& pose) const;
+    void apply(const double* y, Pose& pose) const;      // overwrites the 47 mapped angles
+
+private:
+    std::array<int, kPoseDofs> joint_{};
+};
+
+}  // namespace mgp

@@ -1,0 +1,40 @@
+#include "skeleton/rotation.h"
+
+#include <cmath>
+
+namespace mgp {
+
+Eigen::Matrix3d axisRotation(int axis, double radians) {
+    const double c = std::cos(radians), s = std::sin(radians);
+    Eigen::Matrix3d r;
+    switch (axis) {
+        case kAxisX: r << 1, 0, 0, 0, c, -s, 0, s, c; break;
+        case kAxisY: r << c, 0, s, 0, 1, 0, -s, 0, c; break;
+        default: r << c, -s, 0, s, c, 0, 0, 0, 1; break;
+    }
+    return r;
+}
+
+Eigen::Matrix3d eulerMatrix(const Eigen::Vector3d& anglesDeg, const RotationOrder& order) {
+    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+    for (int a : order)
+        if (anglesDeg[a] != 0.0) r = r * axisRotation(a, anglesDeg[a] * kDegToRad);
+    return r;
+}
+
+Eigen::Vector3d eulerZYXFromMatrix(const Eigen::Matrix3d& r) {
+    // r = Rz(z) Ry(y) Rx(x): r(2,0) = -sin y.
+    const double sy = std::max(-1.0, std::min(1.0, -r(2, 0)));
+    const double y = std::asin(sy);
+    double x, z;
+    if (std::abs(sy) < 1.0 - 1e-12) {
+        x = std::atan2(r(2, 1), r(2, 2));
+        z = std::atan2(r(1, 0), r(0, 0));
+    } else {  // gimbal lock: put everything into z
+        x = 0.0;
+        z = std::atan2(-r(0, 1), r(1, 1));
+    }
+    return Eigen::Vector3d(x, y, z) * kRadToDeg;
+}
+
+}  // namespace mgp
