@@ -1,0 +1,25 @@
+// Search order for the mocap folder (DESIGN.md §1) and the synthetic fallback.
+#include <cstdlib>
+
+#include "io/data_paths.h"
+#include "test_support.h"
+
+using namespace mgp;
+
+TEST_CASE("mocap folder search order: --data, then $MOTIONGP_DATA, then the compiled-in path") {
+    const std::string shared = MOTIONGP_TEST_MOCAP;
+    const std::string other = test::scratchDir("fake_mocap");
+    REQUIRE(std::system(("mkdir -p '" + other + "/bvh'").c_str()) == 0);
+    CHECK(isMocapFolder(other));
+    CHECK_FALSE(isMocapFolder(test::scratchDir("empty_folder")));
+
+    ::unsetenv("MOTIONGP_DATA");
+    CHECK(findMocapFolder(other, "").value() == other);
+    CHECK_FALSE(findMocapFolder("/does/not/exist", "").has_value());  // an explicit choice is kept
+    ::setenv("MOTIONGP_DATA", other.c_str(), 1);
+    CHECK(findMocapFolder("", "").value() == other);
+    ::unsetenv("MOTIONGP_DATA");
+    if (test::haveMocap()) CHECK(findMocapFolder("", "").value() == shared);
+    CHECK(defaultClipIn(test::mocap("")).value().find("10_02.amc") != std::string::npos);
+    CHECK_FALSE(defaultClipIn(other).has_value());
+}
