@@ -1,0 +1,19 @@
+#include "ik/ik_types.h"
+
+namespace mgp {
+
+std::string validateConstraints(const Skeleton& skeleton, const std::vector<IkConstraint>& constraints) {
+    bool seen[kEffectorCount] = {};
+    for (const IkConstraint& c : constraints) {
+        const int e = static_cast<int>(c.effector);
+        if (e < 0 || e >= kEffectorCount) return "expected an effector, found index " + std::to_string(e);
+        const std::string name = effectorName(c.effector);
+        if (!skeleton.hasEffector(c.effector)) return "expected an effector this skeleton has, found " + name;
+        if (!c.targetCm.allFinite()) return "expected a finite target for " + name + ", found NaN or Inf";
+        if (seen[e]) return "expected each effector once, found " + name + " twice";
+        seen[e] = true;
+    }
+    return "";
+}
+
+}  // namespace mgp

@@ -1,0 +1,102 @@
+#include "ik/plain_ik.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+
+namespace mgp {
+
+std::string PlainIkJob::validate() const {
+    if (!skeleton) return "expected a skeleton, found none";
+    if (static_cast<int>(start.anglesDeg.size()) != skeleton->jointCount())
+        return "expected a start pose for this skeleton, found one with " + std::to_string(start.anglesDeg.size()) + " joints";
+    if (!frozenDofs.empty() && frozenDofs.size() != kPoseDofs)
+        return "expected 47 frozen-DOF flags, found " + std::to_string(frozenDofs.size());
+    return validateConstraints(*skeleton, constraints);
+}
+
+void PlainIkJob::solve() {
+    pose = start;
+    results.clear();
+    iterations = 0;
+    reached = false;
+    if (const std::string problem = validate(); !problem.empty()) {
+        diagnostic = problem;
+        return;
+    }
+    const Skeleton& sk = *skeleton;
+    const PoseLayout layout(sk);
+    std::vector<int> active;
+    for (int i = 0; i < kPoseDofs; ++i)
+        if (layout.joint(i) >= 0 && (frozenDofs.empty() || !frozenDofs[i])) active.push_back(i);
+    const int m = static_cast<int>(constraints.size());
+    const int n = static_cast<int>(active.size());
+    FkState fk;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, kPoseDofs);
+    Eigen::MatrixXd J(3 * m, n);
+    Eigen::VectorXd err(3 * m), y(kPoseDofs), trial(kPoseDofs);
+
+    auto evaluate = [&](const Pose& p, Eigen::VectorXd& e) {
+        forwardKinematics(sk, p, fk);
+        for (int c = 0; c < m; ++c) e.segment<3>(3 * c) = constraints[c].targetCm - effectorCm(sk, fk, constraints[c].effector);
+        return e.squaredNorm();
+    };
+    double cost = evaluate(pose, err);
+    double lambda = initialDamping;
+    int stalls = 0;
+    diagnostic = "iteration limit";
+    for (iterations = 0; iterations < maxIterations; ++iterations) {
+        bool done = true;
+        for (int c = 0; c < m; ++c) done = done && err.segment<3>(3 * c).norm() < toleranceCm;
+        if (done) {
+            diagnostic = "converged";
+            break;
+        }
+        forwardKinematics(sk, pose, fk);
+        for (int c = 0; c < m; ++c) {
+            effectorJacobian(sk, layout, fk, pose, constraints[c].effector, jac);
+            for (int k = 0; k < n; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
+        }
+        layout.extract(pose, y.data());
+        // Adaptive damping: shrink λ after a step that lowers the error, grow it after one that
+        // does not; stop when even heavy damping no longer helps (the residual stopped falling).
+        bool improved = false;
+        for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
+            const Eigen::MatrixXd A = J * J.transpose() + lambda * lambda * Eigen::MatrixXd::Identity(3 * m, 3 * m);
+            const Eigen::VectorXd step = J.transpose() * A.ldlt().solve(err);
+            trial = y;
+            for (int k = 0; k < n; ++k) trial[active[k]] += step[k];
+            Pose candidate = pose;
+            layout.apply(trial.data(), candidate);
+            Eigen::VectorXd e2(3 * m);
+            const double c2 = evaluate(candidate, e2);
+            if (std::isfinite(c2) && c2 < cost) {
+                pose = std::move(candidate);
+                err = e2;
+                improved = cost - c2 > 1e-12 * std::max(1.0, cost);
+                cost = c2;
+                lambda = std::max(lambda * 0.5, 1e-6);
+                if (!improved) break;
+            } else {
+                lambda *= 4.0;
+            }
+        }
+        if (!improved && ++stalls >= 3) {
+            diagnostic = "residual stopped falling";
+            break;
+        }
+        if (improved) stalls = 0;
+    }
+    evaluate(pose, err);
+    reached = true;
+    for (int c = 0; c < m; ++c) {
+        IkConstraintResult r;
+        r.effector = constraints[c].effector;
+        r.pin = constraints[c].pin;
+        r.residualCm = err.segment<3>(3 * c).norm();
+        r.reached = r.residualCm <= kReachedToleranceCm;
+        reached = reached && r.reached;
+        results.push_back(r);
+    }
+}
+
+}  // namespace mgp

@@ -1,0 +1,35 @@
+#pragma once
+// Baseline IK without the learned prior: damped least squares on the 47 joint angles (the pose
+// DOFs of §2.3 that the skeleton has), adaptive damping, iterated from the start pose until the
+// residual stops falling. Users and tests compare it with the learned IK to see what the prior
+// buys. Root translation is fixed; the root rotation is free, as in the learned IK.
+#include <vector>
+
+#include "ik/ik_types.h"
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_layout.h"
+
+namespace mgp {
+
+struct PlainIkJob {
+    // Inputs.
+    const Skeleton* skeleton = nullptr;
+    Pose start;
+    std::vector<IkConstraint> constraints;
+    std::vector<bool> frozenDofs;      // optional, size 47: true = keep this DOF at its start value
+    int maxIterations = 500;
+    double toleranceCm = 1e-3;          // stop once every residual is below this
+    double initialDamping = 1.0;        // λ of (JJᵀ + λ² I), in cm
+
+    // Outputs.
+    Pose pose;
+    std::vector<IkConstraintResult> results;
+    bool reached = false;
+    int iterations = 0;
+    std::string diagnostic;  // why it stopped
+
+    std::string validate() const;
+    void solve();
+};
+
+}  // namespace mgp
