@@ -12,7 +12,7 @@ IvmResult selectActiveSet(const Kernel& kernel, const Eigen::MatrixXd& X, int m)
         for (int i = 0; i < n; ++i) out.active[i] = i;
         return out;
     }
-    Eigen::VectorXd diag = kernel.diagF(X);
+    Eigen::VectorXd diag = kernel.diagFRows(X);
     const double noise = 1.0 / kernel.beta();
     Eigen::MatrixXd V(m, n);  // row r = v of the r-th selected point
     std::vector<char> taken(n, 0);

@@ -152,7 +152,7 @@ double Kernel::diagF(const Eigen::VectorXd& x) const {
     return v;
 }
 
-Eigen::VectorXd Kernel::diagF(const Eigen::MatrixXd& X) const {
+Eigen::VectorXd Kernel::diagFRows(const Eigen::MatrixXd& X) const {
     Eigen::VectorXd d(X.rows());
     for (Eigen::Index i = 0; i < X.rows(); ++i) d[i] = diagF(Eigen::VectorXd(X.row(i).transpose()));
     return d;

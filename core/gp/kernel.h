@@ -51,7 +51,7 @@ public:
     Eigen::VectorXd cross(const Eigen::MatrixXd& X, const Eigen::VectorXd& x) const;
     // k_f(x, x) = α + η·exp(‖φ(x)‖²) (no noise).
     double diagF(const Eigen::VectorXd& x) const;
-    Eigen::VectorXd diagF(const Eigen::MatrixXd& X) const;
+    Eigen::VectorXd diagFRows(const Eigen::MatrixXd& X) const;
 
     GramParts parts(const Eigen::MatrixXd& X) const;
     Eigen::MatrixXd gram(const GramParts& p) const;
