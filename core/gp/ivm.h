@@ -1,0 +1,20 @@
+#pragma once
+// Active-set selection by the IVM criterion for Gaussian noise (ALGORITHM.md §5): greedily pick
+// the point of largest noise-free posterior variance — a pivoted partial Cholesky. It depends on
+// X and θ only, never on Y or W. Ties go to the smallest index; no swap refinement.
+#include <Eigen/Core>
+#include <vector>
+
+#include "gp/kernel.h"
+
+namespace mgp::gp {
+
+struct IvmResult {
+    std::vector<int> active;    // in selection order (all 0..N−1 in order when M ≥ N)
+    Eigen::VectorXd variances;  // noise-free posterior variance of every point after selection
+                                // (clamped at ≥ 0); empty when M ≥ N
+};
+
+IvmResult selectActiveSet(const Kernel& kernel, const Eigen::MatrixXd& X, int m);
+
+}  // namespace mgp::gp

@@ -1,0 +1,219 @@
+#include "gp/model_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/clip_json.h"
+#include "io/parse_error.h"
+#include "skeleton/pose_layout.h"
+
+namespace mgp::gp {
+
+namespace {
+
+using nlohmann::json;
+
+json vecJson(const Eigen::VectorXd& v) {
+    json a = json::array();
+    for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
+    return a;
+}
+
+json rowsJson(const Eigen::MatrixXd& m) {
+    json a = json::array();
+    for (Eigen::Index r = 0; r < m.rows(); ++r) a.push_back(vecJson(m.row(r).transpose()));
+    return a;
+}
+
+const json& need(const json& j, const char* key, const std::string& file) {
+    if (!j.is_object() || !j.contains(key)) throwParseError(file, 0, "field '" + std::string(key) + "'", "none");
+    return j.at(key);
+}
+
+Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
+    if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
+        throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) : "") + " numbers",
+                        j.is_array() ? std::to_string(j.size()) + " entries" : j.type_name());
+    Eigen::VectorXd v(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        if (!j[i].is_number()) throwParseError(file, 0, std::string("numbers in ") + what, j[i].dump());
+        v[i] = j[i].get<double>();
+        if (!std::isfinite(v[i])) throwParseError(file, 0, std::string("finite numbers in ") + what, j[i].dump());
+    }
+    return v;
+}
+
+std::vector<int> readInts(const json& j, const std::string& file, const char* what) {
+    if (!j.is_array()) throwParseError(file, 0, std::string(what) + " as an array of integers", j.type_name());
+    std::vector<int> out;
+    for (const auto& e : j) {
+        if (!e.is_number_integer()) throwParseError(file, 0, std::string("integers in ") + what, e.dump());
+        out.push_back(e.get<int>());
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string modelToJsonText(const GpModel& m) {
+    json j;
+    j["format"] = kModelFileFormat;
+    j["version"] = kModelFileVersion;
+    j["kernel"] = kernelKindName(m.kind);
+    j["log_params"] = vecJson(m.logParams);
+    const Kernel k = m.kernel();
+    j["params"] = {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
+                   {"eta", k.hasEta() ? json(k.eta()) : json(nullptr)}};
+    j["N"] = m.N();
+    j["D"] = m.D();
+    j["latent_dim"] = m.latentDim();
+    j["w"] = vecJson(m.w);
+    j["mu"] = vecJson(m.mu);
+    j["X"] = rowsJson(m.X);
+    j["active"] = m.active;
+    j["kept_columns"] = m.keptColumns;
+    j["constant_columns"] = m.constantColumns;
+    j["constant_values"] = vecJson(m.constantValues);
+    j["training_frames"] = m.trainingFrames;
+    const TrainingSettings& s = m.settings;
+    j["training"] = {{"active_size", s.activeSize}, {"outer_iterations", s.outerIterations},
+                     {"scg_iterations", s.scgIterations}, {"point_iterations", s.pointIterations},
+                     {"tolerance", s.tolerance}, {"frame_first", s.frameFirst}, {"frame_last", s.frameLast},
+                     {"frame_step", s.frameStep}, {"iterations", m.iterations}, {"converged", m.converged}};
+    j["source"] = {{"file", m.sourceFile}, {"sha256", m.sourceSha256}};
+    j["clip"] = clipToJson(m.clip);
+    return j.dump(1) + "\n";
+}
+
+GpModel modelFromJsonText(const std::string& text, const std::string& file) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::exception& e) {
+        throwParseError(file, 0, "a JSON model file (format motiongp-model)",
+                        text.empty() ? "an empty file" : std::string("damaged JSON (") + e.what() + ")");
+    }
+    if (!j.is_object() || !j.contains("format") || !j["format"].is_string() || j["format"] != kModelFileFormat)
+        throwParseError(file, 0, std::string("\"format\": \"") + kModelFileFormat + "\"",
+                        j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
+    const json& ver = need(j, "version", file);
+    if (!ver.is_number_integer() || ver.get<int>() < 1 || ver.get<int>() > kModelFileVersion)
+        throwParseError(file, 0, "model file version ≤ " + std::to_string(kModelFileVersion) +
+                                     " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
+                        "version " + ver.dump());
+    GpModel m;
+    try {
+        const std::string kind = need(j, "kernel", file).get<std::string>();
+        if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
+        m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
+        const int n = need(j, "N", file).get<int>(), D = need(j, "D", file).get<int>();
+        const int d = need(j, "latent_dim", file).get<int>();
+        if (n < 1 || D < 1 || D > kPoseDofs || d < 1) throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim", "N=" + std::to_string(n) + " D=" + std::to_string(D));
+        m.w = readVec(need(j, "w", file), file, "w", D);
+        m.mu = readVec(need(j, "mu", file), file, "mu", D);
+        const json& xj = need(j, "X", file);
+        if (!xj.is_array() || static_cast<int>(xj.size()) != n)
+            throwParseError(file, 0, std::to_string(n) + " rows of X", xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
+        m.X.resize(n, d);
+        for (int r = 0; r < n; ++r) m.X.row(r) = readVec(xj[r], file, "X", d).transpose();
+        m.active = readInts(need(j, "active", file), file, "active");
+        for (int i : m.active)
+            if (i < 0 || i >= n) throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
+        if (m.active.empty()) throwParseError(file, 0, "a non-empty active set", "[]");
+        m.keptColumns = readInts(need(j, "kept_columns", file), file, "kept_columns");
+        m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
+        m.constantValues = readVec(need(j, "constant_values", file), file, "constant_values",
+                                   static_cast<Eigen::Index>(m.constantColumns.size()));
+        if (static_cast<int>(m.keptColumns.size()) != D ||
+            m.keptColumns.size() + m.constantColumns.size() != static_cast<std::size_t>(kPoseDofs))
+            throwParseError(file, 0, "kept and constant columns that partition the 47 DOFs",
+                            std::to_string(m.keptColumns.size()) + " + " + std::to_string(m.constantColumns.size()));
+        std::vector<char> seen(kPoseDofs, 0);
+        for (int c : m.keptColumns) {
+            if (c < 0 || c >= kPoseDofs || seen[c]) throwParseError(file, 0, "distinct columns 0..46", std::to_string(c));
+            seen[c] = 1;
+        }
+        for (int c : m.constantColumns) {
+            if (c < 0 || c >= kPoseDofs || seen[c]) throwParseError(file, 0, "distinct columns 0..46", std::to_string(c));
+            seen[c] = 1;
+        }
+        m.trainingFrames = readInts(need(j, "training_frames", file), file, "training_frames");
+        if (static_cast<int>(m.trainingFrames.size()) != n)
+            throwParseError(file, 0, std::to_string(n) + " training frames", std::to_string(m.trainingFrames.size()));
+        const json& t = need(j, "training", file);
+        m.settings.activeSize = need(t, "active_size", file).get<int>();
+        m.settings.outerIterations = need(t, "outer_iterations", file).get<int>();
+        m.settings.scgIterations = need(t, "scg_iterations", file).get<int>();
+        m.settings.pointIterations = need(t, "point_iterations", file).get<int>();
+        m.settings.tolerance = need(t, "tolerance", file).get<double>();
+        m.settings.frameFirst = need(t, "frame_first", file).get<int>();
+        m.settings.frameLast = need(t, "frame_last", file).get<int>();
+        m.settings.frameStep = need(t, "frame_step", file).get<int>();
+        m.iterations = need(t, "iterations", file).get<int>();
+        m.converged = need(t, "converged", file).get<bool>();
+        const json& src = need(j, "source", file);
+        m.sourceFile = need(src, "file", file).get<std::string>();
+        m.sourceSha256 = need(src, "sha256", file).get<std::string>();
+        m.clip = clipFromJson(need(j, "clip", file), file);
+        // Training rows: the clip's poses at the training frames, kept columns.
+        const Eigen::MatrixXd poses = poseMatrix(m.clip);
+        m.Y.resize(n, D);
+        for (int r = 0; r < n; ++r) {
+            const int f = m.trainingFrames[r];
+            if (f < 0 || f >= m.clip.frameCount())
+                throwParseError(file, 0, "training frames in 0.." + std::to_string(m.clip.frameCount() - 1), std::to_string(f));
+            for (int k = 0; k < D; ++k) m.Y(r, k) = poses(f, m.keptColumns[k]);
+        }
+    } catch (const json::exception& e) {
+        throwParseError(file, 0, "a valid motiongp-model document", e.what());
+    }
+    return m;
+}
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) throwParseError(path, 0, "a writable location", std::strerror(errno));
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+        if (w < 0) {
+            if (errno == EINTR) continue;
+            const std::string why = std::strerror(errno);
+            ::close(fd);
+            std::remove(tmp.c_str());
+            throwParseError(path, 0, "a complete write", why);
+        }
+        done += static_cast<std::size_t>(w);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        const std::string why = std::strerror(errno);
+        std::remove(tmp.c_str());
+        throwParseError(path, 0, "a file synced to disk", why);
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        std::remove(tmp.c_str());
+        throwParseError(path, 0, "a file that can be renamed into place", why);
+    }
+}
+
+void saveModel(const std::string& path, const GpModel& model) { writeFileAtomically(path, modelToJsonText(model)); }
+
+GpModel loadModel(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throwParseError(path, 0, "a readable model file", "a file that cannot be opened");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return modelFromJsonText(ss.str(), path);
+}
+
+}  // namespace mgp::gp

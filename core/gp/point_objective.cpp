@@ -1,0 +1,78 @@
+#include "gp/point_objective.h"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include "gp/gp_objective.h"
+
+namespace mgp::gp {
+
+PointModel::PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+                       const Eigen::VectorXd& mu, const Eigen::VectorXd& w)
+    : kernel_(kernel), XI_(XI), mu_(mu), w_(w) {
+    if (Yhat.rows() != XI.rows() || Yhat.cols() != mu.size() || w.size() != mu.size())
+        throw std::invalid_argument("PointModel: inconsistent sizes");
+    if (!jitterCholesky(kernel_.gram(XI_), llt_, jitter_))
+        throw std::runtime_error("PointModel: the kernel matrix could not be factored");
+    Kinv_ = llt_.solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
+    B_ = llt_.solve(Yhat);
+}
+
+void PointModel::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {
+    const Eigen::VectorXd k = kernel_.cross(XI_, x);
+    mean = mu_ + B_.transpose() * k;
+    variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - k.dot(Kinv_ * k));
+}
+
+double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
+                            Eigen::VectorXd* gradY) const {
+    const double D = static_cast<double>(mu_.size());
+    const Eigen::VectorXd k = kernel_.cross(XI_, x);
+    const Eigen::VectorXd a = Kinv_ * k;
+    const Eigen::VectorXd f = mu_ + B_.transpose() * k;
+    const double noiseFree = kernel_.diagF(x) - k.dot(a);
+    const bool clamped = !(noiseFree > 0.0);
+    const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
+    const Eigen::VectorXd r = w_.cwiseProduct(y - f);
+    const double E = r.squaredNorm();
+    const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
+    if (gradX) {
+        const Eigen::MatrixXd J = kernel_.crossGradX(XI_, x);
+        Eigen::VectorXd dS2 = Eigen::VectorXd::Zero(x.size());
+        if (!clamped) dS2 = kernel_.diagGradX(x) - 2.0 * J.transpose() * a;
+        *gradX = -(1.0 / s2) * (J.transpose() * (B_ * w_.cwiseProduct(r))) +
+                 (D / (2.0 * s2) - E / (2.0 * s2 * s2)) * dS2 + x;
+    }
+    if (gradY) *gradY = w_.cwiseProduct(r) / s2;
+    return value;
+}
+
+void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads) {
+    if (points.empty()) return;
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::min<int>(threads, static_cast<int>(points.size()));
+    std::vector<Eigen::VectorXd> results(points.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&]() {
+        for (std::size_t t = next++; t < points.size(); t = next++) {
+            const int i = points[t];
+            const Eigen::VectorXd y = Y.row(i).transpose();
+            const ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+                return model.evaluate(x, y, &g, nullptr);
+            };
+            const ScgResult r = scgMinimize(fg, X.row(i).transpose(), options);
+            results[t] = r.x.allFinite() ? r.x : Eigen::VectorXd(X.row(i).transpose());
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& th : pool) th.join();
+    for (std::size_t t = 0; t < points.size(); ++t) X.row(points[t]) = results[t].transpose();
+}
+
+}  // namespace mgp::gp

@@ -1,0 +1,54 @@
+#pragma once
+// The per-point objective L_IK (ALGORITHM.md §6), corrected form:
+//
+//   L_IK(x, y) = ‖W (y − f(x))‖² / (2σ²(x)) + (D/2) ln σ²(x) + ½‖x‖²
+//   f(x)  = μ + Ŷᵀ K⁻¹ k(x)                (unscaled pose space, degrees, kept columns)
+//   σ²(x) = 1/β + max(0, k_f(x,x) − k(x)ᵀ K⁻¹ k(x))   (so σ² ≥ 1/β exactly)
+//
+// PointModel is the immutable precomputation of §6.2 (chol K, K⁻¹, B = K⁻¹Ŷ) for one model
+// state; evaluate() is thread-safe (const, no shared scratch). optimizeInactivePoints() runs
+// Step 8: an independent SCG per inactive point, in parallel, each result written to its own
+// preallocated slot, so the output is bit-identical for any thread count.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <vector>
+
+#include "gp/kernel.h"
+#include "gp/scg.h"
+
+namespace mgp::gp {
+
+class PointModel {
+public:
+    // XI: active latent points (M×d); Yhat: centred active rows (M×D); mu: training mean (D);
+    // w: scale weights (D). Throws std::runtime_error if K cannot be factored.
+    PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+               const Eigen::VectorXd& mu, const Eigen::VectorXd& w);
+
+    int latentDim() const { return static_cast<int>(XI_.cols()); }
+    int poseDim() const { return static_cast<int>(mu_.size()); }
+    const Kernel& kernel() const { return kernel_; }
+    double jitter() const { return jitter_; }
+
+    // Mean pose f(x) and variance σ²(x).
+    void predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const;
+
+    // L_IK(x, y); gradients are written when the pointers are non-null (sized by the callee).
+    double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
+                    Eigen::VectorXd* gradY) const;
+
+private:
+    Kernel kernel_;
+    Eigen::MatrixXd XI_;
+    Eigen::VectorXd mu_, w_;
+    Eigen::LLT<Eigen::MatrixXd> llt_;
+    Eigen::MatrixXd Kinv_, B_;
+    double jitter_ = 0.0;
+};
+
+// Step 8: for every row index in `points`, minimise L_IK(x, Y.row(i)) over x from X.row(i) with
+// SCG, writing the result back into X. threads ≤ 0 means std::thread::hardware_concurrency().
+void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads = 0);
+
+}  // namespace mgp::gp

@@ -1,0 +1,238 @@
+#include "gp/trainer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "gp/gp_objective.h"
+#include "gp/ivm.h"
+#include "gp/pca_init.h"
+#include "gp/point_objective.h"
+#include "gp/scg.h"
+#include "skeleton/clip.h"
+#include "skeleton/pose_layout.h"
+
+namespace mgp::gp {
+
+TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames) {
+    if (poses47.cols() != kPoseDofs) throw std::invalid_argument("prepareTrainingData: expected 47 columns");
+    if (static_cast<Eigen::Index>(frames.size()) != poses47.rows())
+        throw std::invalid_argument("prepareTrainingData: one frame number per row");
+    if (poses47.rows() < 3) throw std::invalid_argument("prepareTrainingData: need at least 3 frames");
+    TrainingData out;
+    out.frames = frames;
+    out.constantColumns = constantColumns(poses47, 1e-6);
+    for (int k = 0; k < kPoseDofs; ++k)
+        if (!std::binary_search(out.constantColumns.begin(), out.constantColumns.end(), k))
+            out.keptColumns.push_back(k);
+    out.constantValues.resize(out.constantColumns.size());
+    for (std::size_t k = 0; k < out.constantColumns.size(); ++k)
+        out.constantValues[k] = poses47.col(out.constantColumns[k]).mean();
+    out.Y.resize(poses47.rows(), out.keptColumns.size());
+    for (std::size_t k = 0; k < out.keptColumns.size(); ++k) out.Y.col(k) = poses47.col(out.keptColumns[k]);
+    out.mu = out.Y.colwise().mean().transpose();
+    return out;
+}
+
+double overlapFraction(const std::vector<int>& a, const std::vector<int>& b) {
+    if (a.empty()) return 1.0;
+    std::vector<int> sa = a, sb = b;
+    std::sort(sa.begin(), sa.end());
+    std::sort(sb.begin(), sb.end());
+    std::vector<int> both;
+    std::set_intersection(sa.begin(), sa.end(), sb.begin(), sb.end(), std::back_inserter(both));
+    return static_cast<double>(both.size()) / static_cast<double>(a.size());
+}
+
+namespace {
+
+Eigen::MatrixXd rowsOf(const Eigen::MatrixXd& A, const std::vector<int>& idx) {
+    Eigen::MatrixXd out(idx.size(), A.cols());
+    for (std::size_t r = 0; r < idx.size(); ++r) out.row(r) = A.row(idx[r]);
+    return out;
+}
+
+Eigen::MatrixXd centredRows(const TrainingData& data, const std::vector<int>& idx) {
+    Eigen::MatrixXd out = rowsOf(data.Y, idx);
+    out.rowwise() -= data.mu.transpose();
+    return out;
+}
+
+std::vector<int> complementOf(const std::vector<int>& active, int n) {
+    std::vector<char> in(n, 0);
+    for (int i : active) in[i] = 1;
+    std::vector<int> out;
+    for (int i = 0; i < n; ++i)
+        if (!in[i]) out.push_back(i);
+    return out;
+}
+
+// Raw parameter values in the paper's order: α, β, γ, (η).
+Eigen::VectorXd rawParams(const Eigen::VectorXd& psi) {
+    Kernel k(psi.size() == 4 ? KernelKind::kFas : KernelKind::kSgplvm, psi);
+    Eigen::VectorXd out(psi.size());
+    out[0] = k.alpha();
+    out[1] = k.beta();
+    out[2] = k.gamma();
+    if (psi.size() == 4) out[3] = k.eta();
+    return out;
+}
+
+}  // namespace
+
+Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::move(data)), opt_(options) {
+    if (opt_.activeSize < 1) throw std::invalid_argument("Trainer: M must be ≥ 1");
+    const Eigen::MatrixXd Ybar = data_.Y.rowwise() - data_.mu.transpose();
+    const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
+    X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
+    psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
+    active_ = selectActive();
+    const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
+                                       {}, false);
+    lInit_ = ev.value;
+    prevW_ = ev.ok ? ev.w : Eigen::VectorXd::Ones(data_.Y.cols());
+    // The paper's Step 3 initialises w = 1; the Step-9 Δ of the first iteration is measured
+    // against that.
+    prevW_.setOnes();
+}
+
+std::vector<int> Trainer::selectActive() const {
+    return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize).active;
+}
+
+double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry) {
+    const int m = static_cast<int>(active.size()), d = static_cast<int>(X_.cols());
+    const int p = paramCount(opt_.kind);
+    const Eigen::MatrixXd Yhat = centredRows(data_, active);
+    double maxJitter = 0.0;
+    const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
+        Eigen::VectorXd psi;
+        Eigen::MatrixXd XI;
+        unpackParams(z, p, m, d, psi, XI);
+        const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi), XI, Yhat);
+        maxJitter = std::max(maxJitter, ev.jitter);
+        g = packParams(ev.gradPsi, ev.gradX);
+        return ev.value;
+    };
+    const Eigen::VectorXd z0 = packParams(psi_, rowsOf(X_, active));
+    Eigen::VectorXd g0(z0.size());
+    const double before = fg(z0, g0);
+    ScgOptions so;
+    so.maxIterations = opt_.scgIterations;
+    so.tolX = opt_.scgTolX;
+    so.tolF = opt_.scgTolF;
+    const ScgResult r = scgMinimize(fg, z0, so);
+    Eigen::VectorXd psi;
+    Eigen::MatrixXd XI;
+    unpackParams(r.x, p, m, d, psi, XI);
+    // Keep ψ inside the box the kernel uses, so the stored value is the one that was evaluated.
+    psi = psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
+    psi_ = psi;
+    for (int i = 0; i < m; ++i) X_.row(active[i]) = XI.row(i);
+    const GpEvaluation fin = evaluateGp(Kernel(opt_.kind, psi_), XI, Yhat);
+    if (entry) {
+        entry->L_before = before;
+        entry->L = fin.value;
+        entry->gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
+        entry->scgIterations = r.iterations;
+        entry->jitter = std::max(maxJitter, fin.jitter);
+        entry->psi = psi_;
+        entry->w = fin.ok ? fin.w : prevW_;
+    }
+    return fin.value;
+}
+
+void Trainer::optimizeInactive(const std::vector<int>& active) {
+    const std::vector<int> inactive = complementOf(active, static_cast<int>(X_.rows()));
+    if (inactive.empty()) return;
+    const Eigen::MatrixXd Yhat = centredRows(data_, active);
+    const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, {}, false);
+    if (!ev.ok) return;  // cannot factor K: leave the inactive points where they are
+    const PointModel pm(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, data_.mu, ev.w);
+    ScgOptions so;
+    so.maxIterations = opt_.pointIterations;
+    so.tolX = opt_.scgTolX;
+    so.tolF = opt_.scgTolF;
+    optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads);
+}
+
+Eigen::VectorXd Trainer::currentWeights() const {
+    const GpEvaluation ev =
+        evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_), {}, false);
+    return ev.ok ? ev.w : prevW_;
+}
+
+bool Trainer::step(const std::atomic<bool>* cancel) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto isCancelled = [&] { return cancel && cancel->load(); };
+    if (isCancelled()) {
+        cancelled_ = true;
+        return false;
+    }
+    IterationLog e;
+    e.iter = static_cast<int>(log_.size()) + 1;
+    const std::vector<int> previous = active_;
+    const std::vector<int> i5 = frozen_ ? active_ : selectActive();          // Step 5
+    optimizeActive(i5, &e);                                                    // Step 6
+    if (isCancelled()) {
+        cancelled_ = true;
+        return false;
+    }
+    active_ = frozen_ ? i5 : selectActive();                                   // Step 7
+    optimizeInactive(active_);                                                 // Step 8
+    // Step 9.
+    const Eigen::VectorXd rawNow = rawParams(e.psi), rawPrev = rawParams(log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi);
+    const Eigen::VectorXd logNow = e.psi, logPrev = log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi;
+    e.maxDeltaRaw = std::max((rawNow - rawPrev).cwiseAbs().maxCoeff(), (e.w - prevW_).cwiseAbs().maxCoeff());
+    e.maxDeltaLog = std::max((logNow - logPrev).cwiseAbs().maxCoeff(),
+                             (e.w.array().log() - prevW_.array().log()).abs().maxCoeff());
+    e.activeOverlap = overlapFraction(active_, previous);
+    prevW_ = e.w;
+    e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    log_.push_back(e);
+    const double metric = opt_.test == ConvergenceTest::kRaw ? e.maxDeltaRaw : e.maxDeltaLog;
+    return std::isfinite(metric) && metric < opt_.tolerance;
+}
+
+TrainResult train(const TrainingData& data, const TrainOptions& options,
+                  const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
+    Trainer trainer(data, options);
+    TrainResult res;
+    res.lInit = trainer.initialObjective();
+    for (int t = 0; t < options.outerIterations; ++t) {
+        const bool conv = trainer.step(cancel);
+        if (trainer.cancelled()) {
+            res.cancelled = true;
+            break;
+        }
+        if (progress) progress(trainer.log().back());
+        if (conv) {
+            res.converged = true;
+            if (options.stopOnConvergence) break;
+        }
+    }
+    res.log = trainer.log();
+    GpModel& m = res.model;
+    m.kind = options.kind;
+    m.logParams = trainer.logParams();
+    m.X = trainer.latent();
+    m.Y = trainer.data().Y;
+    m.mu = trainer.data().mu;
+    m.active = trainer.activeSet();
+    m.w = trainer.currentWeights();
+    m.keptColumns = trainer.data().keptColumns;
+    m.constantColumns = trainer.data().constantColumns;
+    m.constantValues = trainer.data().constantValues;
+    m.trainingFrames = trainer.data().frames;
+    m.settings.activeSize = options.activeSize;
+    m.settings.outerIterations = options.outerIterations;
+    m.settings.scgIterations = options.scgIterations;
+    m.settings.pointIterations = options.pointIterations;
+    m.settings.tolerance = options.tolerance;
+    m.iterations = static_cast<int>(res.log.size());
+    m.converged = res.converged;
+    return res;
+}
+
+}  // namespace mgp::gp

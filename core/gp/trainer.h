@@ -1,0 +1,125 @@
+#pragma once
+// The outer training loop, Steps 1–10 (ALGORITHM.md §7), shared by FASGPLVM and SGPLVM:
+//
+//   preprocess (§2.6): constant columns out, μ, whitened PCA X, θ = 1, w = 1
+//   for t = 1..T:
+//     Step 5  I := IVM(X, θ, M)
+//     Step 6  SCG over (ψ = ln θ, X_I) on L_GP (W profiled under the gauge), S iterations
+//     Step 7  I := IVM(X, θ, M)
+//     Step 8  for j ∉ I: SCG on L_IK(x_j, y_j) (parallel, deterministic)
+//     Step 9  Δ_raw = max{|Δα|, |Δβ|, |Δγ|, (|Δη|), |Δw_k|}; stop if Δ_raw < C
+//   Step 10: stop at T.
+//
+// With M ≥ N every point is active and Steps 7–8 do nothing. Everything is deterministic (PCA
+// sign rule, IVM tie rule, per-point slots in Step 8): identical inputs give identical bits for
+// any thread count. The Trainer can be stepped one outer iteration at a time, cancelled from
+// another thread (checked between steps), and copied (to branch a run, e.g. Table 1's control
+// with the active set frozen).
+#include <Eigen/Core>
+#include <atomic>
+#include <functional>
+#include <vector>
+
+#include "gp/kernel.h"
+#include "gp/model.h"
+
+namespace mgp::gp {
+
+enum class ConvergenceTest { kRaw, kLog };
+
+struct TrainOptions {
+    KernelKind kind = KernelKind::kFas;
+    int activeSize = 200;       // M
+    int outerIterations = 100;  // T
+    int scgIterations = 100;    // per Step 6
+    int pointIterations = 100;  // per point in Step 8
+    double tolerance = 0.01;    // C
+    double scgTolX = 1e-4, scgTolF = 1e-4;
+    ConvergenceTest test = ConvergenceTest::kRaw;
+    bool stopOnConvergence = true;
+    int threads = 0;            // Step 8 threads, ≤ 0: hardware concurrency
+};
+
+// The training matrix after §2.6 steps 1–3.
+struct TrainingData {
+    Eigen::MatrixXd Y;                 // N×D kept columns (degrees)
+    Eigen::VectorXd mu;                // D
+    std::vector<int> keptColumns, constantColumns;
+    Eigen::VectorXd constantValues;
+    std::vector<int> frames;           // clip frame index of each row
+};
+// poses47: N×47 (unwrapped); frames: clip frame index of each row (size N).
+TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames);
+
+struct IterationLog {
+    int iter = 0;
+    double L = 0.0;               // L_GP after Step 6 (on Step 5's active set)
+    double L_before = 0.0;        // L_GP before Step 6 on the same active set
+    double maxDeltaRaw = 0.0;     // the paper's Step-9 metric
+    double maxDeltaLog = 0.0;     // max |Δ ln(·)| over the same parameters
+    double activeOverlap = 1.0;   // |I_t ∩ I_{t−1}| / M (Step-7 sets)
+    double gradInf = 0.0;         // ‖∇L_GP‖∞ at the end of Step 6
+    int scgIterations = 0;
+    double jitter = 0.0;          // largest Cholesky jitter seen in Step 6 (0 normally)
+    double seconds = 0.0;         // wall time of this iteration (never written to a model file)
+    Eigen::VectorXd psi, w;       // θ (log) and W after Step 6
+};
+
+class Trainer {
+public:
+    Trainer(TrainingData data, const TrainOptions& options);
+
+    // L_GP at the initial parameters on the first active set.
+    double initialObjective() const { return lInit_; }
+    // Runs one outer iteration (Steps 5–9). Returns true if the Step-9 test is met. Stops early
+    // (returns false, cancelled() true) if `cancel` is set between steps.
+    bool step(const std::atomic<bool>* cancel = nullptr);
+    bool cancelled() const { return cancelled_; }
+    // Holds the active set fixed from now on (Steps 5 and 7 reuse the last one).
+    void freezeActiveSet(bool freeze) { frozen_ = freeze; }
+
+    const std::vector<IterationLog>& log() const { return log_; }
+    const Eigen::VectorXd& logParams() const { return psi_; }
+    const Eigen::MatrixXd& latent() const { return X_; }
+    const std::vector<int>& activeSet() const { return active_; }
+    const TrainingData& data() const { return data_; }
+    const TrainOptions& options() const { return opt_; }
+    // Profiled W on the current active set.
+    Eigen::VectorXd currentWeights() const;
+
+    // Individual steps (public for the benchmark and tests).
+    std::vector<int> selectActive() const;                       // Step 5/7
+    double optimizeActive(const std::vector<int>& active, IterationLog* entry);  // Step 6
+    void optimizeInactive(const std::vector<int>& active);      // Step 8
+
+private:
+    TrainingData data_;
+    TrainOptions opt_;
+    Eigen::VectorXd psi_;
+    Eigen::MatrixXd X_;
+    std::vector<int> active_;
+    Eigen::VectorXd prevW_;
+    double lInit_ = 0.0;
+    bool frozen_ = false;
+    bool cancelled_ = false;
+    std::vector<IterationLog> log_;
+};
+
+struct TrainResult {
+    GpModel model;
+    double lInit = 0.0;
+    std::vector<IterationLog> log;
+    bool converged = false;
+    bool cancelled = false;
+};
+
+// Runs the whole loop and packs the model (clip and provenance fields are left to the caller).
+// progress (optional) is called after every outer iteration.
+TrainResult train(const TrainingData& data, const TrainOptions& options,
+                  const std::function<void(const IterationLog&)>& progress = nullptr,
+                  const std::atomic<bool>* cancel = nullptr);
+
+// Fraction of `a` also in `b` (|a ∩ b| / |a|).
+double overlapFraction(const std::vector<int>& a, const std::vector<int>& b);
+
+}  // namespace mgp::gp
