@@ -1,0 +1,14 @@
+#include "gp/model_version.h"
+
+namespace mgp::gp {
+
+std::shared_ptr<const ModelVersion> ModelVersion::make(GpModel model, int number) {
+    auto v = std::make_shared<ModelVersion>();
+    v->number = number;
+    auto m = std::make_shared<const GpModel>(std::move(model));
+    v->point = std::make_shared<const PointModel>(m->pointModel());
+    v->model = std::move(m);
+    return v;
+}
+
+}  // namespace mgp::gp

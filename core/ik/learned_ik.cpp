@@ -1,0 +1,175 @@
+#include "ik/learned_ik.h"
+
+#include <LBFGS.h>
+
+#include <cmath>
+#include <limits>
+
+#include "gp/scg.h"
+
+namespace mgp {
+
+LearnedIkSolver::LearnedIkSolver(gp::ModelVersionPtr version)
+    : version_(std::move(version)), layout_(version_->model->clip.skeleton) {
+    const gp::GpModel& m = *version_->model;
+    d_ = m.latentDim();
+    D_ = m.D();
+    full_.resize(kPoseDofs);
+    gradFull_.resize(kPoseDofs);
+    x_.resize(d_);
+    y_.resize(D_);
+    gx_.resize(d_);
+    gy_.resize(D_);
+    jac_.resize(3, kPoseDofs);
+    bestZ_.resize(d_ + D_);
+}
+
+std::string LearnedIkSolver::validate(const LearnedIkRequest& r) const {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    if (static_cast<int>(r.start.anglesDeg.size()) != sk.jointCount())
+        return "expected a start pose of the model's skeleton, found one with " + std::to_string(r.start.anglesDeg.size()) + " joints";
+    if (r.startX.size() != d_) return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
+    if (!r.startX.allFinite()) return "expected a finite latent start, found NaN or Inf";
+    if (!r.start.rootCm.allFinite()) return "expected a finite root translation, found NaN or Inf";
+    for (const auto& a : r.start.anglesDeg)
+        if (!a.allFinite()) return "expected a finite start pose, found NaN or Inf";
+    if (!(r.lambda > 0.0 && r.lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(r.lambda);
+    if (r.maxIterations < 1) return "expected at least 1 iteration, found " + std::to_string(r.maxIterations);
+    return validateConstraints(sk, r.constraints);
+}
+
+void LearnedIkSolver::bind(const LearnedIkRequest& request) {
+    request_ = &request;
+    pose_ = request.start;
+    layout_.extract(request.start, full_.data());
+    const gp::GpModel& m = *version_->model;
+    for (std::size_t k = 0; k < m.constantColumns.size(); ++k) full_[m.constantColumns[k]] = m.constantValues[k];
+    bestF_ = std::numeric_limits<double>::infinity();
+    evaluations_ = 0;
+}
+
+double LearnedIkSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
+    const gp::GpModel& m = *version_->model;
+    const LearnedIkRequest& r = *request_;
+    ++evaluations_;
+    x_ = z.head(d_);
+    y_ = z.tail(D_);
+    const double lik = version_->point->evaluate(x_, y_, &gx_, &gy_);
+    for (int k = 0; k < D_; ++k) full_[m.keptColumns[k]] = y_[k];
+    layout_.apply(full_.data(), pose_);
+    forwardKinematics(m.clip.skeleton, pose_, fk_);
+    double constraintCost = 0.0;
+    gradFull_.setZero();
+    for (const IkConstraint& c : r.constraints) {
+        const Eigen::Vector3d res = effectorCm(m.clip.skeleton, fk_, c.effector) - c.targetCm;
+        constraintCost += res.squaredNorm();
+        effectorJacobian(m.clip.skeleton, layout_, fk_, pose_, c.effector, jac_);
+        gradFull_.noalias() += 2.0 * jac_.transpose() * res;
+    }
+    const double F = (1.0 - r.lambda) * lik + r.lambda * constraintCost;
+    grad.resize(d_ + D_);
+    grad.head(d_) = (1.0 - r.lambda) * gx_;
+    for (int k = 0; k < D_; ++k) grad[d_ + k] = (1.0 - r.lambda) * gy_[k] + r.lambda * gradFull_[m.keptColumns[k]];
+    if (!std::isfinite(F) || !grad.allFinite()) {
+        grad.setZero();
+        return std::numeric_limits<double>::infinity();  // the line search backs off
+    }
+    if (F < bestF_) {
+        bestF_ = F;
+        bestZ_ = z;
+    }
+    return F;
+}
+
+void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& result) {
+    result.constraints.clear();
+    result.reached = result.converged = false;
+    result.iterations = result.evaluations = 0;
+    result.pose = request.start;
+    result.x = request.startX;
+    if (const std::string problem = validate(request); !problem.empty()) {
+        result.diagnostic = problem;
+        result.objective = result.lik = result.sigma2 = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    bind(request);
+    const gp::GpModel& m = *version_->model;
+    Eigen::VectorXd z(d_ + D_);
+    z.head(d_) = request.startX;
+    for (int k = 0; k < D_; ++k) z[d_ + k] = full_[m.keptColumns[k]];
+
+    LBFGSpp::LBFGSParam<double> param;
+    param.m = 8;
+    param.epsilon = 1e-12;
+    param.epsilon_rel = 1e-12;
+    param.past = request.stallWindow;
+    param.delta = request.stallRelative;
+    param.max_iterations = request.maxIterations;
+    param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
+    param.max_linesearch = 40;
+    LBFGSpp::LBFGSSolver<double> solver(param);
+    auto f = [this](const Eigen::VectorXd& zz, Eigen::VectorXd& g) { return objective(zz, g); };
+    double fz = 0.0;
+    try {
+        result.iterations = solver.minimize(f, z, fz);
+        result.diagnostic = result.iterations >= request.maxIterations ? "iteration cap" : "stalled";
+    } catch (const std::exception& e) {
+        result.diagnostic = std::string("line search: ") + e.what();
+        result.iterations = request.maxIterations;  // unknown; LBFGS++ does not report it
+    }
+    result.evaluations = evaluations_;
+    if (!std::isfinite(bestF_)) {  // nothing finite was ever seen: keep the start
+        result.diagnostic += "; no finite objective";
+        result.objective = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    // Re-evaluate at the best point so every output matches it exactly.
+    Eigen::VectorXd g;
+    const Eigen::VectorXd best = bestZ_;
+    result.objective = objective(best, g);
+    result.x = best.head(d_);
+    result.y = best.tail(D_);
+    result.pose = pose_;
+    Eigen::VectorXd mean;
+    version_->point->predict(result.x, mean, result.sigma2);
+    result.lik = version_->point->evaluate(result.x, result.y, nullptr, nullptr);
+    result.reached = true;
+    bool tight = true;
+    for (const IkConstraint& c : request.constraints) {
+        IkConstraintResult cr;
+        cr.effector = c.effector;
+        cr.pin = c.pin;
+        cr.residualCm = (effectorCm(m.clip.skeleton, fk_, c.effector) - c.targetCm).norm();
+        cr.reached = cr.residualCm <= kReachedToleranceCm;
+        result.reached = result.reached && cr.reached;
+        tight = tight && cr.residualCm < request.convergedResidualCm;
+        result.constraints.push_back(cr);
+    }
+    result.converged = tight && result.diagnostic == "stalled";
+    if (result.converged) result.diagnostic = "converged";
+}
+
+LearnedIkResult LearnedIkSolver::solve(const LearnedIkRequest& request) {
+    LearnedIkResult r;
+    solve(request, r);
+    return r;
+}
+
+Eigen::VectorXd latentStartForFrame(const gp::ModelVersion& version, int frame) {
+    const gp::GpModel& m = *version.model;
+    int nearest = 0;
+    for (int i = 0; i < m.N(); ++i) {
+        if (m.trainingFrames[i] == frame) return m.X.row(i).transpose();
+        if (std::abs(m.trainingFrames[i] - frame) < std::abs(m.trainingFrames[nearest] - frame)) nearest = i;
+    }
+    const PoseLayout layout(m.clip.skeleton);
+    const Eigen::VectorXd y = m.keptPose(layout.extract(m.clip.frames[frame]));
+    const gp::ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+        return version.point->evaluate(x, y, &g, nullptr);
+    };
+    gp::ScgOptions options;
+    options.maxIterations = 200;
+    return gp::scgMinimize(fg, m.X.row(nearest).transpose(), options).x;
+}
+
+}  // namespace mgp

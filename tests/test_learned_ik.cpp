@@ -1,0 +1,122 @@
+// Learned IK (§8): gradient through FK, reachable targets (§13 item 14), pins, unreachable targets.
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "ik/learned_ik.h"
+#include "ik/plain_ik.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+Eigen::Vector3d effectorOf(const Skeleton& sk, const Pose& p, Effector e) {
+    FkState fk;
+    forwardKinematics(sk, p, fk);
+    return effectorCm(sk, fk, e);
+}
+}  // namespace
+
+TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences (§13.7)") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    LearnedIkSolver solver(version);
+    LearnedIkRequest req;
+    req.start = m.clip.frames[100];
+    req.startX = latentStartForFrame(*version, 100);
+    const Eigen::Vector3d foot = effectorOf(m.clip.skeleton, req.start, Effector::kRFoot);
+    req.constraints = {{Effector::kRFoot, foot + Eigen::Vector3d(3, 12, -4), false},
+                       {Effector::kLHand, effectorOf(m.clip.skeleton, req.start, Effector::kLHand), true}};
+    solver.bind(req);
+    const PoseLayout layout(m.clip.skeleton);
+    const Eigen::VectorXd full = layout.extract(req.start);
+    Eigen::VectorXd z(m.latentDim() + m.D());
+    z.head(m.latentDim()) = req.startX + Eigen::VectorXd::Constant(m.latentDim(), 0.05);
+    for (int k = 0; k < m.D(); ++k) z[m.latentDim() + k] = full[m.keptColumns[k]] + 0.3 * std::sin(k);
+    Eigen::VectorXd g, gp_, gm;
+    solver.objective(z, g);
+    double worst = 0.0, scale = g.cwiseAbs().maxCoeff();
+    for (int i = 0; i < z.size(); ++i) {
+        const double h = 1e-6;
+        Eigen::VectorXd zp = z, zm = z;
+        zp[i] += h;
+        zm[i] -= h;
+        const double numeric = (solver.objective(zp, gp_) - solver.objective(zm, gm)) / (2 * h);
+        worst = std::max(worst, std::abs(numeric - g[i]));
+    }
+    MESSAGE("IK objective gradient: max abs error " << worst << " against max |g| " << scale);
+    CHECK(worst < 1e-5 * scale);
+}
+
+TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm to 0.5 cm on frame 101 (§13.14)") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    LearnedIkSolver solver(version);
+    LearnedIkRequest req;
+    req.start = m.clip.frames[100];
+    req.startX = latentStartForFrame(*version, 100);
+    req.maxIterations = 500;
+    const Eigen::Vector3d foot = effectorOf(m.clip.skeleton, req.start, Effector::kRFoot);
+    LearnedIkResult res;
+    for (int delta = 0; delta <= 40; delta += 2) {
+        CAPTURE(delta);
+        req.constraints = {{Effector::kRFoot, foot + Eigen::Vector3d(0, delta, 0), false}};
+        solver.solve(req, res);
+        REQUIRE(res.constraints.size() == 1);
+        if (delta == 0) CHECK(res.constraints[0].residualCm < 0.05);
+        CHECK(res.constraints[0].residualCm < 0.5);
+        CHECK(res.reached);
+        CHECK(std::isfinite(res.lik));
+        CHECK(res.sigma2 >= 1.0 / std::exp(m.logParams[gp::kBeta]));
+        CHECK((effectorOf(m.clip.skeleton, res.pose, Effector::kRFoot) - req.constraints[0].targetCm).norm() ==
+              doctest::Approx(res.constraints[0].residualCm).epsilon(1e-9));
+        CHECK(res.pose.rootCm == m.clip.frames[100].rootCm);
+        if (delta % 10 == 0)
+            MESSAGE("δ = " << delta << " cm: residual " << res.constraints[0].residualCm << " cm, L_IK " << res.lik
+                           << ", " << res.iterations << " iterations, " << res.diagnostic);
+        req.start = res.pose;  // warm start from δ − 2, as in the editing-range protocol
+        req.startX = res.x;
+    }
+}
+
+TEST_CASE("learned IK holds pins within 0.5 cm while a hand is dragged") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    LearnedIkSolver solver(version);
+    LearnedIkRequest req;
+    req.start = m.clip.frames[50];
+    req.startX = latentStartForFrame(*version, 50);
+    req.maxIterations = 500;
+    const Skeleton& sk = m.clip.skeleton;
+    const Eigen::Vector3d lf = effectorOf(sk, req.start, Effector::kLFoot), rf = effectorOf(sk, req.start, Effector::kRFoot);
+    req.constraints = {{Effector::kRHand, effectorOf(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
+                       {Effector::kLFoot, lf, true},
+                       {Effector::kRFoot, rf, true}};
+    const LearnedIkResult res = solver.solve(req);
+    for (const auto& c : res.constraints) {
+        CAPTURE(effectorName(c.effector));
+        CHECK(c.residualCm < 0.5);
+    }
+    CHECK(res.reached);
+}
+
+TEST_CASE("learned IK: unreachable and NaN targets give finite results, reached = false") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    LearnedIkSolver solver(version);
+    LearnedIkRequest req;
+    req.start = m.clip.frames[10];
+    req.startX = latentStartForFrame(*version, 10);
+    req.constraints = {{Effector::kHead, effectorOf(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
+    LearnedIkResult res = solver.solve(req);
+    CHECK_FALSE(res.reached);
+    CHECK(std::isfinite(res.constraints[0].residualCm));
+    CHECK(res.x.allFinite());
+    for (const auto& a : res.pose.anglesDeg) CHECK(a.allFinite());
+    req.constraints[0].targetCm.y() = NAN;
+    res = solver.solve(req);
+    CHECK(res.diagnostic == "expected a finite target for head, found NaN or Inf");
+    CHECK_FALSE(res.reached);
+    for (const auto& a : res.pose.anglesDeg) CHECK(a.allFinite());
+}
