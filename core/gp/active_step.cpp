@@ -1,0 +1,41 @@
+#include "gp/active_step.h"
+
+#include <algorithm>
+
+#include "gp/gp_objective.h"
+
+namespace mgp::gp {
+
+ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0, const Eigen::MatrixXd& XI0,
+                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options) {
+    const int m = static_cast<int>(XI0.rows()), d = static_cast<int>(XI0.cols());
+    const int p = paramCount(kind);
+    ActiveStepResult out;
+    const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
+        Eigen::VectorXd psi;
+        Eigen::MatrixXd XI;
+        unpackParams(z, p, m, d, psi, XI);
+        const GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat);
+        out.jitter = std::max(out.jitter, ev.jitter);
+        g = packParams(ev.gradPsi, ev.gradX);
+        return ev.value;
+    };
+    const Eigen::VectorXd z0 = packParams(psi0, XI0);
+    Eigen::VectorXd g0(z0.size());
+    out.before = fg(z0, g0);
+    const ScgResult r = scgMinimize(fg, z0, options);
+    out.iterations = r.iterations;
+    unpackParams(r.x, p, m, d, out.psi, out.XI);
+    out.psi = out.psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
+    const GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat);
+    out.jitter = std::max(out.jitter, fin.jitter);
+    out.after = fin.value;
+    out.ok = fin.ok && std::isfinite(fin.value);
+    if (out.ok) {
+        out.w = fin.w;
+        out.gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
+    }
+    return out;
+}
+
+}  // namespace mgp::gp

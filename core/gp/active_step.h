@@ -1,0 +1,27 @@
+#pragma once
+// Step 6 of the training loop (ALGORITHM.md §7) as a free function: SCG over (ψ = ln θ, X_I) on
+// L_GP with W profiled out under the gauge (§4.4), from the given warm start. Used by the
+// trainer's outer loop and by the adaptive update (§5.3).
+#include <Eigen/Core>
+
+#include "gp/kernel.h"
+#include "gp/scg.h"
+
+namespace mgp::gp {
+
+struct ActiveStepResult {
+    Eigen::VectorXd psi;     // clamped to the kernel's box, so it is the value evaluated
+    Eigen::MatrixXd XI;      // optimised active latent points
+    Eigen::VectorXd w;       // profiled weights at the end (empty if the end was not finite)
+    double before = 0.0;     // L_GP at the warm start
+    double after = 0.0;      // L_GP at the end
+    double gradInf = 0.0;    // ‖∇L_GP‖∞ at the end
+    double jitter = 0.0;     // largest Cholesky jitter seen
+    int iterations = 0;
+    bool ok = false;         // the end point evaluated finitely
+};
+
+ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI,
+                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options);
+
+}  // namespace mgp::gp
