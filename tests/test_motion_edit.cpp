@@ -1,0 +1,67 @@
+// Motion regeneration (§10): keys met, untouched frames bit-identical, deterministic over threads.
+#include "motion/motion_edit.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+MotionEditJob paperEdit(PathMode mode, int threads) {
+    MotionEditJob job;
+    job.version = test::walkModel35();
+    job.effector = Effector::kRFoot;
+    job.keyFrames = {89 - 1, 103 - 1, 117 - 1, 131 - 1};
+    job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d::Zero()};
+    job.mode = mode;
+    job.threads = threads;
+    return job;
+}
+}  // namespace
+
+TEST_CASE("regenerating 89..131 with the middle keys raised 20 cm") {
+    MotionEditJob job = paperEdit(PathMode::kDirect, 2);
+    CHECK(job.validate().empty());
+    job.run();
+    const Clip& clip = job.version->model->clip;
+    REQUIRE(job.solvedFrames.size() == 41);  // (89, 131) exclusive
+    CHECK(job.solvedFrames.front() == 89);
+    MESSAGE("max residual over the 41 solved frames: " << job.maxResidualCm << " cm");
+    CHECK(job.maxResidualCm < 0.5);
+    // FK at the moved keys meets the raised targets.
+    const auto captured = job.capturedTrajectory();
+    FkState fk;
+    for (int key : {103 - 1, 117 - 1}) {
+        forwardKinematics(clip.skeleton, job.frames[key], fk);
+        CHECK((effectorCm(clip.skeleton, fk, Effector::kRFoot) - (captured[key] + Eigen::Vector3d(0, 20, 0))).norm() < 0.5);
+    }
+    // Untouched frames (outside the open span, and the two end keys) are bit-identical.
+    for (int t = 0; t < clip.frameCount(); ++t) {
+        if (t > 88 && t < 130) continue;
+        CAPTURE(t);
+        CHECK(job.frames[t].rootCm == clip.frames[t].rootCm);
+        for (std::size_t j = 0; j < clip.frames[t].anglesDeg.size(); ++j)
+            CHECK(job.frames[t].anglesDeg[j] == clip.frames[t].anglesDeg[j]);
+    }
+}
+
+TEST_CASE("regeneration gives identical bits with 1 and 2 threads; displacement mode also meets its path") {
+    MotionEditJob a = paperEdit(PathMode::kDisplacement, 1), b = paperEdit(PathMode::kDisplacement, 2);
+    a.run();
+    b.run();
+    CHECK(a.maxResidualCm < 0.5);
+    for (std::size_t i = 0; i < a.solvedFrames.size(); ++i)
+        for (std::size_t j = 0; j < a.frames[0].anglesDeg.size(); ++j)
+            CHECK(a.frames[a.solvedFrames[i]].anglesDeg[j] == b.frames[b.solvedFrames[i]].anglesDeg[j]);
+    // Displacement mode: zero offset at the end keys means the path starts on the captured motion.
+    CHECK((a.pathCm.front() - a.capturedTrajectory()[89]).norm() < 2.0);
+}
+
+TEST_CASE("bad edit jobs say what is wrong") {
+    MotionEditJob job = paperEdit(PathMode::kDirect, 1);
+    job.keyFrames = {10, 5};
+    job.keyOffsetsCm.resize(2);
+    CHECK(job.validate() == "expected strictly increasing key frames");
+    job.keyFrames = {10, 5000};
+    CHECK(job.validate() == "expected key frames in 1..358, found 5001");
+    CHECK_THROWS_AS(job.run(), std::invalid_argument);
+}
