@@ -1,0 +1,86 @@
+// `motiongp edit MODEL --effector EFF --keys 89,103,117,131 --offset dx,dy,dz
+//  [--mode direct|displacement] [--adaptive --out-model MODEL2] --out OUT.bvh [--json]`:
+// moves the middle keys by the offset, regenerates the span with per-frame learned IK and writes
+// the whole clip as BVH (edited frames replaced).
+#include <chrono>
+#include <iostream>
+
+#include "cli_common.h"
+#include "command_registry.h"
+#include "gp/adaptive_update.h"
+#include "gp/model_file.h"
+#include "ik_cli.h"
+#include "io/bvh_writer.h"
+#include "motion/motion_edit.h"
+
+namespace mgp::app {
+namespace {
+
+struct EditOptions {
+    std::string model, effector, keys, offset, mode = "direct", out, outModel;
+    bool adaptive = false, json = false;
+    int iterations = 500;
+};
+
+int runEdit(const EditOptions& o) {
+    if (o.mode != "direct" && o.mode != "displacement")
+        throw UsageError("expected --mode direct or displacement, found '" + o.mode + "'");
+    if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
+    const auto t0 = std::chrono::steady_clock::now();
+    MotionEditJob job;
+    job.version = loadModelVersion(o.model);
+    job.effector = parseEffectorOption(o.effector, "--effector");
+    job.keyFrames = parseFrameList(o.keys, "--keys");
+    const Eigen::Vector3d offset = parseOffset(o.offset, "--offset");
+    job.keyOffsetsCm.assign(job.keyFrames.size(), Eigen::Vector3d::Zero());
+    // The offset moves the keys between the first and the last (the paper's two middle keys).
+    for (std::size_t i = 1; i + 1 < job.keyFrames.size(); ++i) job.keyOffsetsCm[i] = offset;
+    job.mode = o.mode == "direct" ? PathMode::kDirect : PathMode::kDisplacement;
+    job.maxIterations = o.iterations;
+    if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
+    job.run();
+    Clip edited = job.version->model->clip;
+    edited.frames = job.frames;
+    writeBvh(edited, o.out);
+    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm}};
+    if (o.adaptive) {
+        // The solved poses of the moved keys join the model's samples (not the in-betweens).
+        gp::ModelVersionPtr version = job.version;
+        int added = 0;
+        for (std::size_t k = 1; k + 1 < job.keyFrames.size(); ++k) {
+            const auto it = std::find(job.solvedFrames.begin(), job.solvedFrames.end(), job.keyFrames[k]);
+            if (it == job.solvedFrames.end()) continue;
+            const LearnedIkResult& r = job.results[static_cast<std::size_t>(it - job.solvedFrames.begin())];
+            const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, r.x, r.y, job.keyFrames[k]);
+            if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
+            version = u.version;
+            ++added;
+        }
+        gp::saveModel(o.outModel, *version->model);
+        j["adaptive"] = {{"samples_added", added}, {"rows", version->model->N()}, {"out_model", o.outModel}};
+    }
+    j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (o.json) printJson(j);
+    else std::cout << "solved " << job.solvedFrames.size() << " frames, max residual " << job.maxResidualCm
+                   << " cm; wrote " << o.out << "\n";
+    return 0;
+}
+
+const CommandRegistration reg("edit", "Edit an effector path (Hermite keys) and regenerate the motion",
+                              [](CLI::App& sub) -> CommandRunner {
+    auto o = std::make_shared<EditOptions>();
+    sub.add_option("model", o->model, "Model file")->required();
+    sub.add_option("--effector", o->effector, "lhand, rhand, lfoot, rfoot or head")->required();
+    sub.add_option("--keys", o->keys, "Key frames counted from 1, e.g. 89,103,117,131")->required();
+    sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
+    sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
+    sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap per frame")->check(CLI::Range(1, 100000));
+    sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");
+    sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
+    sub.add_option("--out", o->out, "Output BVH (every clip frame, edited ones replaced)")->required();
+    sub.add_flag("--json", o->json, "Print one JSON object");
+    return [o]() { return runEdit(*o); };
+});
+
+}  // namespace
+}  // namespace mgp::app

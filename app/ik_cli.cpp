@@ -1,0 +1,60 @@
+#include "ik_cli.h"
+
+#include <sstream>
+
+#include "cli_common.h"
+#include "gp/model_file.h"
+#include "io/text_reader.h"
+
+namespace mgp::app {
+
+Eigen::Vector3d parseOffset(const std::string& text, const std::string& option) {
+    Eigen::Vector3d v;
+    std::stringstream ss(text);
+    std::string part;
+    int i = 0;
+    while (std::getline(ss, part, ',')) {
+        if (i >= 3 || !parseDouble(trim(part), v[i]))
+            throw UsageError("expected " + option + " as dx,dy,dz in cm, found '" + text + "'");
+        ++i;
+    }
+    if (i != 3) throw UsageError("expected " + option + " as dx,dy,dz in cm, found '" + text + "'");
+    return v;
+}
+
+Effector parseEffectorOption(const std::string& text, const std::string& option) {
+    Effector e;
+    if (!parseEffector(text, e))
+        throw UsageError("expected " + option + " to be one of lhand, rhand, lfoot, rfoot, head, found '" + text + "'");
+    return e;
+}
+
+std::pair<Effector, Eigen::Vector3d> parseTarget(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos) throw UsageError("expected --target EFF=dx,dy,dz, found '" + text + "'");
+    return {parseEffectorOption(text.substr(0, eq), "--target"), parseOffset(text.substr(eq + 1), "--target")};
+}
+
+std::vector<int> parseFrameList(const std::string& text, const std::string& option) {
+    std::vector<int> out;
+    std::stringstream ss(text);
+    std::string part;
+    while (std::getline(ss, part, ',')) {
+        long long v = 0;
+        if (!parseInt(trim(part), v) || v < 1 || v > 100000000)
+            throw UsageError("expected " + option + " as frame numbers counted from 1 (e.g. 89,103,117,131), found '" + text + "'");
+        out.push_back(static_cast<int>(v - 1));
+    }
+    return out;
+}
+
+gp::ModelVersionPtr loadModelVersion(const std::string& path) { return gp::ModelVersion::make(gp::loadModel(path)); }
+
+nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& r : results)
+        if (r.pin == pins) out.push_back({{"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}});
+    return out;
+}
+
+}  // namespace mgp::app

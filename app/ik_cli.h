@@ -1,0 +1,23 @@
+#pragma once
+// Parsing and JSON helpers shared by the IK verbs (pose, edit, table2).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "gp/model_version.h"
+#include "ik/ik_types.h"
+
+namespace mgp::app {
+
+// "dx,dy,dz" → vector (cm); throws UsageError naming the option.
+Eigen::Vector3d parseOffset(const std::string& text, const std::string& option);
+// "EFF=dx,dy,dz".
+std::pair<Effector, Eigen::Vector3d> parseTarget(const std::string& text);
+Effector parseEffectorOption(const std::string& text, const std::string& option);
+// "89,103,117,131" (1-based) → clip indices.
+std::vector<int> parseFrameList(const std::string& text, const std::string& option);
+// Loads a model file as version 0 (throws ParseError for a bad file).
+gp::ModelVersionPtr loadModelVersion(const std::string& path);
+nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins);
+
+}  // namespace mgp::app
