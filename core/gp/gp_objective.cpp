@@ -65,11 +65,15 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
     if (!std::isfinite(value)) return ev;
 
     if (wantGradient) {
-        const Eigen::MatrixXd Kinv = llt.solve(Eigen::MatrixXd::Identity(m, m));
-        const Eigen::MatrixXd A = (Kinv * Yhat) * ev.w.asDiagonal();
-        Eigen::MatrixXd G = 0.5 * static_cast<double>(D) * Kinv;
-        G.noalias() -= 0.5 * A * A.transpose();
-        G = 0.5 * (G + G.transpose()).eval();  // exactly symmetric for gradX
+        // K⁻¹ = L⁻ᵀ L⁻¹ (triangular inverse, then a triangular product).
+        Eigen::MatrixXd Linv = Eigen::MatrixXd::Identity(m, m);
+        llt.matrixL().solveInPlace(Linv);
+        Eigen::MatrixXd G(m, m);
+        G.noalias() = Linv.transpose().triangularView<Eigen::Upper>() * Linv;  // K⁻¹
+        const Eigen::MatrixXd A = (G * Yhat) * ev.w.asDiagonal();
+        G *= 0.5 * static_cast<double>(D);
+        G.selfadjointView<Eigen::Lower>().rankUpdate(A, -0.5);  // G = ½(D K⁻¹ − A Aᵀ), lower half
+        G.triangularView<Eigen::StrictlyUpper>() = G.transpose();  // exactly symmetric for gradX
         ev.gradPsi = kernel.gradLogParams(parts, G);
         ev.gradPsi.array() += 1.0;  // each +ln θ prior adds exactly 1
         ev.gradX = kernel.gradX(XI, parts, G) + XI;

@@ -70,14 +70,11 @@ GramParts Kernel::parts(const Eigen::MatrixXd& X) const {
     const Eigen::Index m = X.rows();
     GramParts p;
     p.r2.resize(m, m);
-    p.R.resize(m, m);
-    for (Eigen::Index j = 0; j < m; ++j)
-        for (Eigen::Index i = j; i < m; ++i) {
-            const double r2 = i == j ? 0.0 : sqDist(X, i, j);
-            const double R = std::exp(-0.5 * gamma_ * r2);
-            p.r2(i, j) = p.r2(j, i) = r2;
-            p.R(i, j) = p.R(j, i) = R;
-        }
+    for (Eigen::Index j = 0; j < m; ++j) {
+        p.r2(j, j) = 0.0;
+        for (Eigen::Index i = j + 1; i < m; ++i) p.r2(i, j) = p.r2(j, i) = sqDist(X, i, j);
+    }
+    p.R = (p.r2.array() * (-0.5 * gamma_)).exp().matrix();  // elementwise: stays exactly symmetric
     if (hasEta()) {
         directions(X, p.phi, p.n);
         p.C.noalias() = p.phi * p.phi.transpose();

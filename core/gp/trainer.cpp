@@ -89,12 +89,21 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
-                                       {}, false);
+                                       objective(), false);
     lInit_ = ev.value;
     prevW_ = ev.ok ? ev.w : Eigen::VectorXd::Ones(data_.Y.cols());
     // The paper's Step 3 initialises w = 1; the Step-9 Δ of the first iteration is measured
     // against that.
     prevW_.setOnes();
+}
+
+GpObjectiveOptions Trainer::objective() const {
+    GpObjectiveOptions o;
+    if (opt_.paperLiteral) {
+        o.weights = WeightMode::kProfileFree;
+        o.jacobianCoef = static_cast<double>(data_.Y.rows());
+    }
+    return o;
 }
 
 std::vector<int> Trainer::selectActive() const {
@@ -110,7 +119,7 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
         Eigen::VectorXd psi;
         Eigen::MatrixXd XI;
         unpackParams(z, p, m, d, psi, XI);
-        const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi), XI, Yhat);
+        const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi), XI, Yhat, objective());
         maxJitter = std::max(maxJitter, ev.jitter);
         g = packParams(ev.gradPsi, ev.gradX);
         return ev.value;
@@ -130,7 +139,7 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     psi = psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
     psi_ = psi;
     for (int i = 0; i < m; ++i) X_.row(active[i]) = XI.row(i);
-    const GpEvaluation fin = evaluateGp(Kernel(opt_.kind, psi_), XI, Yhat);
+    const GpEvaluation fin = evaluateGp(Kernel(opt_.kind, psi_), XI, Yhat, objective());
     if (entry) {
         entry->L_before = before;
         entry->L = fin.value;
@@ -147,7 +156,7 @@ void Trainer::optimizeInactive(const std::vector<int>& active) {
     const std::vector<int> inactive = complementOf(active, static_cast<int>(X_.rows()));
     if (inactive.empty()) return;
     const Eigen::MatrixXd Yhat = centredRows(data_, active);
-    const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, {}, false);
+    const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, objective(), false);
     if (!ev.ok) return;  // cannot factor K: leave the inactive points where they are
     const PointModel pm(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, data_.mu, ev.w);
     ScgOptions so;
@@ -159,7 +168,7 @@ void Trainer::optimizeInactive(const std::vector<int>& active) {
 
 Eigen::VectorXd Trainer::currentWeights() const {
     const GpEvaluation ev =
-        evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_), {}, false);
+        evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_), objective(), false);
     return ev.ok ? ev.w : prevW_;
 }
 

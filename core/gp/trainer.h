@@ -20,6 +20,7 @@
 #include <functional>
 #include <vector>
 
+#include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/model.h"
 
@@ -38,6 +39,10 @@ struct TrainOptions {
     ConvergenceTest test = ConvergenceTest::kRaw;
     bool stopOnConvergence = true;
     int threads = 0;            // Step 8 threads, ≤ 0: hardware concurrency
+    // The paper-literal eq. 5 (for Table 1's comparison run only): Jacobian term −N Σ ln w_k
+    // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
+    // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
+    bool paperLiteral = false;
 };
 
 // The training matrix after §2.6 steps 1–3.
@@ -103,6 +108,8 @@ private:
     bool frozen_ = false;
     bool cancelled_ = false;
     std::vector<IterationLog> log_;
+
+    GpObjectiveOptions objective() const;
 };
 
 struct TrainResult {

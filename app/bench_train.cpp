@@ -1,0 +1,118 @@
+// bench section "train": the training speed bars of DESIGN.md §4.
+//  - outer_iteration_180: one outer iteration (Steps 5-8) on a 180-frame real clip, M = 200
+//    (N < M: every frame is active, so this is Step 6: 100 SCG iterations on L_GP);
+//  - gpc_equal_work: full model M = N = 150 real frames, one Step 6 of exactly 100 SCG
+//    iterations (tolerances off), the work GPc does in ~1.9 s on this machine;
+//  - scaling: one outer iteration at N = 600, 2 400, 9 600 rows of concatenated real clips,
+//    M = 200 (Step 8 dominates and must grow linearly in N);
+//  - paper_training_180: the whole paper-setting run (T = 100, S = 100, C = 0.01) on the
+//    180-frame clip, measured once.
+// Medians over ctx.repeats; the large sizes use fewer repeats (stated in the output).
+#include <algorithm>
+#include <thread>
+
+#include "bench_registry.h"
+#include "gp/trainer.h"
+#include "io/clip_loader.h"
+#include "skeleton/synthetic_clip.h"
+
+namespace mgp::app {
+namespace {
+
+Eigen::MatrixXd posesOf(const BenchContext& ctx, const std::string& trial, int frames) {
+    const Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk(frames)
+                                           : loadClip(ctx.mocapDir + "/asf_amc/" + trial + ".amc");
+    const Eigen::MatrixXd y = poseMatrix(clip);
+    return y.topRows(std::min<Eigen::Index>(frames, y.rows()));
+}
+
+gp::TrainingData dataOf(const Eigen::MatrixXd& poses) {
+    std::vector<int> frames(poses.rows());
+    for (int i = 0; i < poses.rows(); ++i) frames[i] = i;
+    return gp::prepareTrainingData(poses, frames);
+}
+
+// Concatenated real clips (in this order) up to n rows.
+Eigen::MatrixXd concatenated(const BenchContext& ctx, int n) {
+    static const char* trials[] = {"13_17", "49_18", "49_19", "10_01", "124_03", "10_02", "16_02", "16_03", "16_06"};
+    Eigen::MatrixXd out(n, 47);
+    int filled = 0;
+    for (const char* t : trials) {
+        if (filled >= n) break;
+        const Eigen::MatrixXd y = posesOf(ctx, t, n - filled);
+        const int take = std::min<int>(static_cast<int>(y.rows()), n - filled);
+        out.middleRows(filled, take) = y.topRows(take);
+        filled += take;
+    }
+    if (filled < n) {  // synthetic fallback when no mocap folder is present
+        const Eigen::MatrixXd y = poseMatrix(makeSyntheticWalk(n - filled));
+        out.bottomRows(n - filled) = y;
+    }
+    return out;
+}
+
+nlohmann::json timeOuterIteration(const gp::TrainingData& data, int repeats) {
+    gp::TrainOptions o;
+    o.activeSize = 200;
+    std::vector<double> s;
+    double step6 = 0.0, step8 = 0.0;
+    for (int r = 0; r < repeats; ++r) {
+        gp::Trainer t(data, o);
+        s.push_back(secondsOf([&] { t.step(); }));
+        step6 = secondsOf([&] { t.optimizeActive(t.activeSet(), nullptr); });
+        step8 = secondsOf([&] { t.optimizeInactive(t.activeSet()); });
+    }
+    return {{"N", data.Y.rows()}, {"D", data.Y.cols()}, {"M", std::min<Eigen::Index>(200, data.Y.rows())},
+            {"seconds", summarizeSeconds(s)}, {"step6_seconds_last", step6}, {"step8_seconds_last", step8}};
+}
+
+const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run",
+                            [](const BenchContext& ctx) {
+    nlohmann::json out;
+    out["threads"] = std::max(1u, std::thread::hardware_concurrency());
+    out["clip_180"] = ctx.mocapDir.empty() ? "synthetic walk 1:180" : "10_03 (soccer kick) frames 1:180";
+    const gp::TrainingData d180 = dataOf(posesOf(ctx, "10_03", 180));
+    out["outer_iteration_180"] = timeOuterIteration(d180, ctx.repeats);
+    out["outer_iteration_180"]["target_seconds"] = 0.5;
+
+    {
+        const gp::TrainingData d150 = dataOf(posesOf(ctx, "10_03", 150));
+        gp::TrainOptions o;
+        o.activeSize = 150;
+        o.scgTolX = 0.0;  // exactly 100 iterations, like GPc's fixed-count run
+        o.scgTolF = 0.0;
+        std::vector<double> s;
+        gp::IterationLog e;
+        for (int r = 0; r < ctx.repeats; ++r) {
+            gp::Trainer t(d150, o);
+            s.push_back(secondsOf([&] { t.optimizeActive(t.activeSet(), &e); }));
+        }
+        out["gpc_equal_work"] = {{"N", 150}, {"M", 150}, {"scg_iterations", e.scgIterations},
+                                 {"seconds", summarizeSeconds(s)}, {"target_seconds", 0.1},
+                                 {"gpc_seconds_reported", 1.9}};
+    }
+
+    nlohmann::json scaling = nlohmann::json::array();
+    const std::vector<int> sizes = ctx.quick ? std::vector<int>{300, 600} : std::vector<int>{600, 2400, 9600};
+    for (int n : sizes) {
+        const int reps = n >= 9600 ? 1 : n >= 2400 ? std::min(ctx.repeats, 3) : ctx.repeats;
+        nlohmann::json j = timeOuterIteration(dataOf(concatenated(ctx, n)), reps);
+        j["seconds_per_inactive_point"] = j["step8_seconds_last"].get<double>() / (n - 200);
+        scaling.push_back(j);
+    }
+    out["scaling"] = scaling;
+    out["scaling_clips"] = "13_17, 49_18, 49_19, 10_01, 124_03, 10_02, 16_02 concatenated in this order, first N frames";
+
+    {
+        gp::TrainOptions o;  // the paper's settings
+        if (ctx.quick) o.outerIterations = 3;
+        gp::TrainResult r;
+        const double sec = secondsOf([&] { r = gp::train(d180, o); });
+        out["paper_training_180"] = {{"seconds", sec}, {"iterations", r.log.size()}, {"converged", r.converged},
+                                     {"T", o.outerIterations}, {"measured_once", true}};
+    }
+    return out;
+});
+
+}  // namespace
+}  // namespace mgp::app

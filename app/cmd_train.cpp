@@ -1,0 +1,189 @@
+// `motiongp train CLIP [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
+//   [--scg-iters S] [--tol C] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
+// Learns a FASGPLVM (default) or SGPLVM pose model (ALGORITHM.md §7) and writes the model file
+// (core/gp/model_file.h). Progress goes to stderr; --json prints one object on stdout. Timings
+// are printed, never stored in the model. Ctrl-C cancels cleanly (no model is written).
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include "cli_common.h"
+#include "command_registry.h"
+#include "gp/model_file.h"
+#include "gp/sha256.h"
+#include "gp/trainer.h"
+#include "io/clip_loader.h"
+
+namespace mgp::app {
+
+namespace {
+
+std::atomic<bool> gCancel{false};
+extern "C" void onSigint(int) { gCancel.store(true); }
+
+struct FrameRange {
+    int first = 1, last = 0;  // 1-based inclusive; last 0 = to the end
+};
+
+FrameRange parseFrames(const std::string& s, int frameCount) {
+    FrameRange r;
+    if (s.empty()) {
+        r.last = frameCount;
+        return r;
+    }
+    const auto colon = s.find(':');
+    try {
+        if (colon == std::string::npos) throw std::invalid_argument("no colon");
+        std::size_t used = 0;
+        r.first = std::stoi(s.substr(0, colon), &used);
+        if (used != colon) throw std::invalid_argument("junk");
+        const std::string tail = s.substr(colon + 1);
+        r.last = std::stoi(tail, &used);
+        if (used != tail.size()) throw std::invalid_argument("junk");
+    } catch (const std::exception&) {
+        throw UsageError("expected --frames A:B with integers A ≤ B, found '" + s + "'");
+    }
+    if (r.first < 1 || r.last > frameCount || r.first > r.last)
+        throw UsageError("expected --frames A:B with 1 ≤ A ≤ B ≤ " + std::to_string(frameCount) +
+                         " (clip frames counted from 1), found '" + s + "'");
+    return r;
+}
+
+std::string baseName(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void printBar(int iter, int total, double L, double elapsed, bool tty) {
+    const int width = 30;
+    const int filled = total > 0 ? iter * width / total : width;
+    const double eta = iter > 0 ? elapsed / iter * (total - iter) : 0.0;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "[%-*s] iter %d/%d  L_GP %.6g  ETA %.0f s (upper bound)", width,
+                  std::string(static_cast<std::size_t>(filled), '#').c_str(), iter, total, L, eta);
+    std::cerr << (tty ? "\r" : "") << buf << (tty ? "" : "\n") << std::flush;
+}
+
+const CommandRegistration reg(
+    "train", "Learn a FASGPLVM or SGPLVM pose model from an ASF/AMC clip", [](CLI::App& sub) -> CommandRunner {
+        struct Opts {
+            std::string clip, skel, model = "fas", frames, out;
+            int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
+            double tol = 0.01;
+            bool json = false;
+        };
+        auto o = std::make_shared<Opts>();
+        sub.add_option("clip", o->clip, "AMC file (BVH is not supported for training yet)")->required();
+        sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
+        sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
+        sub.add_option("--active", o->active, "Active set size M (default 200; M ≥ N uses every frame)");
+        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default 100)");
+        sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
+        sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
+        sub.add_option("--frames", o->frames, "Keep clip frames A..B (from 1, inclusive), e.g. 1:180");
+        sub.add_option("--step", o->step, "Then keep every K-th frame (default 1)");
+        sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
+        sub.add_option("--out", o->out, "Model file to write")->required();
+        sub.add_flag("--json", o->json, "Print one JSON object");
+        return [o]() {
+            gp::KernelKind kind;
+            if (!gp::parseKernelKind(o->model, kind))
+                throw UsageError("expected --model fas or sgplvm, found '" + o->model + "'");
+            if (o->active < 1) throw UsageError("expected --active ≥ 1, found " + std::to_string(o->active));
+            if (o->iters < 1) throw UsageError("expected --iters ≥ 1, found " + std::to_string(o->iters));
+            if (o->scgIters < 1) throw UsageError("expected --scg-iters ≥ 1, found " + std::to_string(o->scgIters));
+            if (o->step < 1) throw UsageError("expected --step ≥ 1, found " + std::to_string(o->step));
+            if (!(o->tol > 0.0) || !std::isfinite(o->tol)) throw UsageError("expected --tol > 0, found " + std::to_string(o->tol));
+            if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
+
+            Clip clip = loadClip(o->clip, o->skel);
+            if (clip.format == ClipFormat::kBvh)
+                throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + o->clip + "')");
+            const FrameRange range = parseFrames(o->frames, clip.frameCount());
+            const Eigen::MatrixXd poses = poseMatrix(clip);
+            std::vector<int> frames;
+            for (int f = range.first; f <= range.last; f += o->step) frames.push_back(f - 1);
+            if (frames.size() < 3)
+                throw UsageError("expected at least 3 training frames after --frames/--step, found " +
+                                 std::to_string(frames.size()));
+            Eigen::MatrixXd rows(frames.size(), poses.cols());
+            for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = poses.row(frames[r]);
+            const gp::TrainingData data = gp::prepareTrainingData(rows, frames);
+
+            gp::TrainOptions opt;
+            opt.kind = kind;
+            opt.activeSize = o->active;
+            opt.outerIterations = o->iters;
+            opt.scgIterations = o->scgIters;
+            opt.tolerance = o->tol;
+            opt.threads = o->threads;
+
+            const bool tty = ::isatty(2) != 0;
+            const auto t0 = std::chrono::steady_clock::now();
+            auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+            std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clip.name << ", N = " << frames.size()
+                      << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(frames.size()))
+                      << ", T = " << o->iters << "\n";
+            gCancel.store(false);
+            auto previous = std::signal(SIGINT, onSigint);
+            gp::TrainResult res = gp::train(data, opt, [&](const gp::IterationLog& e) {
+                printBar(e.iter, o->iters, e.L, elapsed(), tty);
+            }, &gCancel);
+            std::signal(SIGINT, previous);
+            if (tty) std::cerr << "\n";
+            if (res.cancelled) {
+                std::cerr << "train: cancelled after " << res.log.size() << " iterations; no model written\n";
+                return 130;
+            }
+            const double seconds = elapsed();
+
+            gp::GpModel& model = res.model;
+            model.clip = std::move(clip);
+            model.sourceFile = baseName(o->clip);
+            model.sourceSha256 = gp::sha256OfFile(o->clip);
+            model.settings.frameFirst = range.first;
+            model.settings.frameLast = range.last;
+            model.settings.frameStep = o->step;
+            gp::saveModel(o->out, model);
+
+            const gp::Kernel k = model.kernel();
+            nlohmann::json j;
+            j["model"] = gp::kernelKindName(kind);
+            j["N"] = model.N();
+            j["D"] = model.D();
+            j["M"] = static_cast<int>(model.active.size());
+            j["iterations"] = model.iterations;
+            j["converged"] = res.converged;
+            j["L_init"] = res.lInit;
+            j["params"] = {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
+                           {"eta", k.hasEta() ? nlohmann::json(k.eta()) : nlohmann::json(nullptr)}};
+            nlohmann::json log = nlohmann::json::array();
+            for (const auto& e : res.log)
+                log.push_back({{"iter", e.iter}, {"L", e.L}, {"max_delta_raw", e.maxDeltaRaw},
+                               {"max_delta_log", e.maxDeltaLog}, {"active_overlap", e.activeOverlap},
+                               {"grad_inf", e.gradInf}, {"jitter", e.jitter}, {"seconds", e.seconds}});
+            j["log"] = log;
+            j["seconds"] = seconds;
+            j["out"] = o->out;
+            if (o->json) {
+                printJson(j);
+            } else {
+                std::cout << "trained " << gp::kernelKindName(kind) << " on " << model.clip.name << ": N = " << model.N()
+                          << ", D = " << model.D() << ", M = " << model.active.size() << ", " << model.iterations
+                          << " iterations (" << (res.converged ? "converged" : "not converged") << "), L_GP "
+                          << res.lInit << " -> " << (res.log.empty() ? res.lInit : res.log.back().L) << ", alpha "
+                          << k.alpha() << " beta " << k.beta() << " gamma " << k.gamma();
+                if (k.hasEta()) std::cout << " eta " << k.eta();
+                std::cout << ", " << seconds << " s -> " << o->out << "\n";
+            }
+            return 0;
+        };
+    });
+
+}  // namespace
+}  // namespace mgp::app

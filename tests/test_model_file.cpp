@@ -1,0 +1,144 @@
+// Model file: bit-exact doubles, self-contained round trip, version and damage errors, atomic
+// writes.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "gp/model_file.h"
+#include "gp/sha256.h"
+#include "gp/trainer.h"
+#include "io/clip_loader.h"
+#include "io/parse_error.h"
+
+using namespace mgp::gp;
+
+namespace {
+
+GpModel smallModel() {
+    const mgp::Clip clip = mgp::loadClip(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
+    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
+    std::vector<int> frames;
+    for (int t = 0; t < clip.frameCount(); t += 7) frames.push_back(t);
+    Eigen::MatrixXd rows(frames.size(), all.cols());
+    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
+    TrainOptions o;
+    o.activeSize = 30;
+    o.outerIterations = 1;
+    o.scgIterations = 10;
+    o.pointIterations = 10;
+    TrainResult r = train(prepareTrainingData(rows, frames), o);
+    r.model.clip = clip;
+    r.model.sourceFile = "35_01.amc";
+    r.model.sourceSha256 = sha256OfFile(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
+    return r.model;
+}
+
+std::string tmpDir() {
+    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/model_file";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return a.rows() == b.rows() && a.cols() == b.cols() &&
+           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("model_file: SHA-256 matches the published checksum of 35_01.amc and the FIPS vector") {
+    CHECK(sha256Hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    CHECK(sha256Hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    CHECK(sha256OfFile(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc") ==
+          "0743f4ea48e7e199cd56b2810b5ce81f8ede08d32ff79aa4e363c44cc4fe33aa");
+}
+
+TEST_CASE("model_file: nlohmann-json round-trips awkward doubles bit-exactly") {
+    std::mt19937_64 rng(42);
+    GpModel m = smallModel();
+    // Overwrite μ with random bit patterns of finite doubles (tiny, huge, subnormal).
+    for (Eigen::Index i = 0; i < m.mu.size(); ++i) {
+        double v;
+        do {
+            const std::uint64_t bits = rng();
+            std::memcpy(&v, &bits, sizeof v);
+        } while (!std::isfinite(v));
+        m.mu[i] = v;
+    }
+    m.mu[0] = 0.1;
+    m.mu[1] = 5e-324;
+    m.mu[2] = -1.7976931348623157e308;
+    const GpModel back = modelFromJsonText(modelToJsonText(m), "mem");
+    CHECK(bitsEqual(m.mu, back.mu));
+}
+
+TEST_CASE("model_file: save/load is self-contained and bit-exact; writes are atomic") {
+    const GpModel m = smallModel();
+    const std::string path = tmpDir() + "/m.json";
+    saveModel(path, m);
+    for (const auto& e : std::filesystem::directory_iterator(tmpDir()))
+        CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
+    const GpModel b = loadModel(path);
+    CHECK(b.kind == m.kind);
+    CHECK(bitsEqual(b.logParams, m.logParams));
+    CHECK(bitsEqual(b.w, m.w));
+    CHECK(bitsEqual(b.mu, m.mu));
+    CHECK(bitsEqual(b.X, m.X));
+    CHECK(bitsEqual(b.Y, m.Y));  // rebuilt from the stored clip poses
+    CHECK(bitsEqual(b.constantValues, m.constantValues));
+    CHECK(b.active == m.active);
+    CHECK(b.keptColumns == m.keptColumns);
+    CHECK(b.constantColumns == m.constantColumns);
+    CHECK(b.trainingFrames == m.trainingFrames);
+    CHECK(b.sourceSha256 == m.sourceSha256);
+    CHECK(b.clip.frameCount() == m.clip.frameCount());
+    CHECK(bitsEqual(mgp::poseMatrix(b.clip), mgp::poseMatrix(m.clip)));
+    CHECK(bitsEqual(mgp::rootTranslations(b.clip), mgp::rootTranslations(m.clip)));
+    CHECK(b.clip.skeleton.jointCount() == m.clip.skeleton.jointCount());
+    // Saving the loaded model reproduces the file byte for byte.
+    CHECK(modelToJsonText(b) == readAll(path));
+    // The loaded model predicts like the original.
+    Eigen::VectorXd f1, f2;
+    double v1 = 0, v2 = 0;
+    m.pointModel().predict(m.X.row(3).transpose(), f1, v1);
+    b.pointModel().predict(b.X.row(3).transpose(), f2, v2);
+    CHECK(bitsEqual(f1, f2));
+    CHECK(v1 == v2);
+}
+
+TEST_CASE("model_file: newer versions, other formats, truncated and empty files are clear errors") {
+    const std::string text = modelToJsonText(smallModel());
+    auto expectError = [](const std::string& t, const std::string& needle) {
+        try {
+            modelFromJsonText(t, "x.json");
+            FAIL("expected a ParseError");
+        } catch (const mgp::ParseError& e) {
+            const std::string msg = e.what();
+            CAPTURE(msg);
+            CHECK(msg.find("x.json") == 0);
+            CHECK(msg.find("expected") != std::string::npos);
+            CHECK(msg.find(needle) != std::string::npos);
+        }
+    };
+    std::string newer = text;
+    newer.replace(newer.find("\"version\": 1"), std::strlen("\"version\": 1"), "\"version\": 2");
+    expectError(newer, "version 2");
+    expectError(text.substr(0, text.size() / 2), "damaged JSON");
+    expectError("", "empty file");
+    expectError("{\"format\": \"something-else\", \"version\": 1}", "something-else");
+    std::string noX = text;
+    noX.replace(noX.find("\"X\""), 3, "\"Z\"");
+    expectError(noX, "'X'");
+    CHECK_THROWS_AS(loadModel(tmpDir() + "/does-not-exist.json"), mgp::ParseError);
+}
