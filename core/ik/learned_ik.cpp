@@ -22,6 +22,41 @@ LearnedIkSolver::LearnedIkSolver(gp::ModelVersionPtr version)
     gy_.resize(D_);
     jac_.resize(3, kPoseDofs);
     bestZ_.resize(d_ + D_);
+    scale_ = Eigen::VectorXd::Ones(d_ + D_);
+    zScaled_.resize(d_ + D_);
+    gScaled_.resize(d_ + D_);
+}
+
+void LearnedIkSolver::computeScaling(const Eigen::VectorXd& z0) {
+    const gp::GpModel& m = *version_->model;
+    const LearnedIkRequest& r = *request_;
+    Eigen::VectorXd g0, gp, gm;
+    objective(z0, g0);  // also leaves FK and σ² data for z0 in the workspace
+    // y: λ·2·Σ_e ‖J_e,k‖² + (1 − λ)·w_k² / σ²(x0).
+    Eigen::VectorXd mean;
+    double s2 = 1.0;
+    version_->point->predict(z0.head(d_), mean, s2);
+    Eigen::VectorXd colNorm2 = Eigen::VectorXd::Zero(kPoseDofs);
+    for (const IkConstraint& c : r.constraints) {
+        effectorJacobian(m.clip.skeleton, layout_, fk_, pose_, c.effector, jac_);
+        colNorm2 += jac_.colwise().squaredNorm().transpose();
+    }
+    for (int k = 0; k < D_; ++k) {
+        const double h = 2.0 * r.lambda * colNorm2[m.keptColumns[k]] + (1.0 - r.lambda) * m.w[k] * m.w[k] / s2;
+        scale_[d_ + k] = 1.0 / std::sqrt(std::max(h, 1e-12));
+    }
+    // x: central differences of the gradient (2d extra evaluations).
+    for (int i = 0; i < d_; ++i) {
+        const double h = 1e-4;
+        Eigen::VectorXd zp = z0, zm = z0;
+        zp[i] += h;
+        zm[i] -= h;
+        objective(zp, gp);
+        objective(zm, gm);
+        const double curvature = std::abs(gp[i] - gm[i]) / (2.0 * h);
+        scale_[i] = 1.0 / std::sqrt(std::max(curvature, 1e-6));
+    }
+    if (!scale_.allFinite()) scale_.setOnes();
 }
 
 std::string LearnedIkSolver::validate(const LearnedIkRequest& r) const {
@@ -108,10 +143,19 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
     param.max_linesearch = 40;
     LBFGSpp::LBFGSSolver<double> solver(param);
-    auto f = [this](const Eigen::VectorXd& zz, Eigen::VectorXd& g) { return objective(zz, g); };
+    if (request.precondition) computeScaling(z);
+    else scale_.setOnes();
+    // L-BFGS runs on u = S⁻¹ z.
+    auto f = [this](const Eigen::VectorXd& u, Eigen::VectorXd& g) {
+        zScaled_ = scale_.cwiseProduct(u);
+        const double F = objective(zScaled_, gScaled_);
+        g = scale_.cwiseProduct(gScaled_);
+        return F;
+    };
+    Eigen::VectorXd u = z.cwiseQuotient(scale_);
     double fz = 0.0;
     try {
-        result.iterations = solver.minimize(f, z, fz);
+        result.iterations = solver.minimize(f, u, fz);
         result.diagnostic = result.iterations >= request.maxIterations ? "iteration cap" : "stalled";
     } catch (const std::exception& e) {
         result.diagnostic = std::string("line search: ") + e.what();

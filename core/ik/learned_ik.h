@@ -33,6 +33,10 @@ struct LearnedIkRequest {
     double stallRelative = 1e-7;   // F change over `stallWindow` iterations
     int stallWindow = 5;
     double convergedResidualCm = 0.05;
+    // Diagonal preconditioning: L-BFGS runs on u with z = S·u, S = diag(H_ii^(-1/2)) from the
+    // start point's diagonal curvature (analytic for y, numeric for x). The problem is stiff
+    // (constraint curvature ~1000× the prior's, lever arms from cm to m), so this matters.
+    bool precondition = true;
 };
 
 struct LearnedIkResult {
@@ -66,6 +70,7 @@ public:
     void bind(const LearnedIkRequest& request);  // sets the request objective() evaluates
 
 private:
+    void computeScaling(const Eigen::VectorXd& z0);
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     int d_ = 0, D_ = 0;
@@ -75,7 +80,7 @@ private:
     FkState fk_;
     Eigen::VectorXd full_, gradFull_, x_, y_, gx_, gy_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
-    Eigen::VectorXd bestZ_;
+    Eigen::VectorXd bestZ_, scale_, zScaled_, gScaled_;
     double bestF_ = 0.0;
     int evaluations_ = 0;
 };
