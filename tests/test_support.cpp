@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +23,8 @@ std::string mocap(const std::string& relative) {
 }
 
 std::string scratchDir(const std::string& name) {
-    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/" + name;
+    // Per process: ctest runs test cases as parallel processes that must not share folders.
+    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/" + std::to_string(::getpid()) + "/" + name;
     const std::string cmd = "rm -rf '" + dir + "' && mkdir -p '" + dir + "'";
     REQUIRE(std::system(cmd.c_str()) == 0);
     return dir;

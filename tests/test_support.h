@@ -9,7 +9,7 @@ namespace mgp::test {
 // ../shared/mocap beside the checkout (CI has it too). Fails the calling test if it is missing.
 std::string mocap(const std::string& relative);
 bool haveMocap();
-// A fresh scratch directory under the build tree for one test.
+// A fresh scratch directory under the build tree, private to this test process.
 std::string scratchDir(const std::string& name);
 void writeText(const std::string& path, const std::string& text);
 std::string readText(const std::string& path);
