@@ -16,14 +16,10 @@ namespace {
 gp::ModelVersionPtr benchModel(const BenchContext& ctx, std::string& name, double& trainSeconds) {
     Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk(360) : loadClip(ctx.mocapDir + "/asf_amc/35_01.amc");
     name = clip.name;
+    unwrapClip(clip);
     const Eigen::MatrixXd poses = poseMatrix(clip);
-    const PoseLayout layout(clip.skeleton);
     std::vector<int> frames(clip.frameCount());
-    for (int t = 0; t < clip.frameCount(); ++t) {
-        frames[t] = t;
-        const Eigen::VectorXd row = poses.row(t).transpose();
-        layout.apply(row.data(), clip.frames[t]);
-    }
+    for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
     gp::TrainOptions options;
     options.activeSize = ctx.quick ? 100 : 200;
     options.outerIterations = ctx.quick ? 1 : 3;

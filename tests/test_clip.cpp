@@ -1,6 +1,7 @@
 // §2.5 unwrapping, §2.6 constant columns (§13.4), the pose matrix and the pose layout.
 #include "io/clip_loader.h"
 #include "skeleton/clip.h"
+#include "skeleton/forward_kinematics.h"
 #include "test_support.h"
 
 using namespace mgp;
@@ -72,4 +73,21 @@ TEST_CASE("constant-column test uses the population std with tolerance 1e-6 degr
     CHECK(constantColumns(y) == std::vector<int>{1, 2});
     y(0, 1) = 5.00001;  // std ≈ 4.3e-6 > 1e-6
     CHECK(constantColumns(y) == std::vector<int>{2});
+}
+
+TEST_CASE("unwrapClip writes the unwrapped angles back without moving any joint") {
+    Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    // Force a wrap: shift root ry of the later half by +360°, which FK cannot see.
+    const int root = 0;
+    for (int t = 200; t < clip.frameCount(); ++t) clip.frames[t].anglesDeg[root].y() += 360.0;
+    const Clip before = clip;
+    unwrapClip(clip);
+    const Eigen::MatrixXd y = poseMatrix(clip);
+    const PoseLayout layout(clip.skeleton);
+    for (int t = 0; t < clip.frameCount(); t += 17) CHECK((layout.extract(clip.frames[t]) - y.row(t).transpose()).norm() == 0.0);
+    CHECK(std::abs(clip.frames[250].anglesDeg[root].y() - before.frames[250].anglesDeg[root].y() + 360.0) < 1e-9);
+    FkState a, b;
+    forwardKinematics(clip.skeleton, clip.frames[250], a);
+    forwardKinematics(before.skeleton, before.frames[250], b);
+    CHECK((a.jointCm[5] - b.jointCm[5]).norm() < 1e-9);
 }

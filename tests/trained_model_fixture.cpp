@@ -13,14 +13,10 @@ gp::ModelVersionPtr walkModel35() {
     static gp::ModelVersionPtr model;
     std::call_once(once, [] {
         Clip clip = loadClip(mocap("asf_amc/35_01.amc"));
-        const Eigen::MatrixXd poses = poseMatrix(clip);  // unwrapped
-        const PoseLayout layout(clip.skeleton);
+        unwrapClip(clip);
+        const Eigen::MatrixXd poses = poseMatrix(clip);
         std::vector<int> frames(clip.frameCount());
-        for (int t = 0; t < clip.frameCount(); ++t) {
-            frames[t] = t;
-            const Eigen::VectorXd row = poses.row(t).transpose();
-            layout.apply(row.data(), clip.frames[t]);
-        }
+        for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
         gp::TrainOptions options;
         options.kind = gp::KernelKind::kFas;
         options.activeSize = 100;

@@ -1,6 +1,7 @@
 #include "skeleton/clip.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace mgp {
 
@@ -10,6 +11,19 @@ const char* clipFormatName(ClipFormat f) {
         case ClipFormat::kBvh: return "bvh";
         default: return "synthetic";
     }
+}
+
+void appendFrames(Clip& into, const Clip& from, int first, int count) {
+    if (first < 0 || count < 0 || first + count > from.frameCount())
+        throw std::invalid_argument("expected frames within 1.." + std::to_string(from.frameCount()) + " of " + from.name);
+    if (into.frames.empty() && into.skeleton.joints.empty()) {
+        std::vector<Pose> none;
+        into = from;
+        into.frames.swap(none);
+    } else if (into.skeleton.jointCount() != from.skeleton.jointCount()) {
+        throw std::invalid_argument("expected clips of one skeleton, found " + into.name + " and " + from.name);
+    }
+    into.frames.insert(into.frames.end(), from.frames.begin() + first, from.frames.begin() + first + count);
 }
 
 void unwrapAngles(Eigen::MatrixXd& a) {
@@ -35,6 +49,15 @@ Eigen::MatrixXd poseMatrix(const Clip& clip) {
     }
     unwrapAngles(y);
     return y;
+}
+
+void unwrapClip(Clip& clip) {
+    const Eigen::MatrixXd y = poseMatrix(clip);
+    const PoseLayout layout(clip.skeleton);
+    for (int t = 0; t < clip.frameCount(); ++t) {
+        const Eigen::VectorXd row = y.row(t).transpose();
+        layout.apply(row.data(), clip.frames[t]);
+    }
 }
 
 Eigen::MatrixXd rootTranslations(const Clip& clip) {

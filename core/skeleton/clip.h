@@ -30,12 +30,19 @@ struct Clip {
     int frameCount() const { return static_cast<int>(frames.size()); }
 };
 
+// Frames [first, first + count) of `from` appended to `into` (same skeleton: same joint count,
+// else std::invalid_argument). An empty `into` takes `from`'s metadata and skeleton first.
+void appendFrames(Clip& into, const Clip& from, int first, int count);
+
 // Unwraps each column over time (§2.5): when a frame-to-frame change exceeds 180° in magnitude,
 // add or subtract 360° to that frame and every later one.
 void unwrapAngles(Eigen::MatrixXd& anglesByFrame);
 
 // The N×47 pose matrix Y in the §2.3 order, degrees, unwrapped over time (§2.6 step 1).
 Eigen::MatrixXd poseMatrix(const Clip& clip);
+// Writes the unwrapped §2.3 angles back into the clip's frames, so its poses equal the rows of
+// poseMatrix() (a model's clip must match its training data; FK is unchanged by 360° shifts).
+void unwrapClip(Clip& clip);
 // Root translations, N×3, cm.
 Eigen::MatrixXd rootTranslations(const Clip& clip);
 

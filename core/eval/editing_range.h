@@ -1,0 +1,44 @@
+#pragma once
+// The editing-range sweep of ALGORITHM.md §11.2: target c(δ) = p_e(y_t) + δ·u for δ = 0, 1, 2, …
+// cm, each solved with the learned IK warm-started from δ − 1, judged by the naturalness tests.
+// A test's range is the largest δ such that every δ' ≤ δ passes it (−1: δ = 0 already fails);
+// the combined range needs every test. With `adaptive`, §5.3 runs after every accepted δ (all
+// tests pass) and the next δ uses the new model version. The sweep stops at maxDeltaCm or once
+// every test has failed (all ranges are then known).
+#include <vector>
+
+#include "eval/naturalness.h"
+#include "gp/model_version.h"
+
+namespace mgp {
+
+struct EditingStep {
+    int deltaCm = 0;
+    double residualCm = 0.0;
+    double lik = 0.0;
+    bool reach = false;
+    NaturalnessVerdict verdict;
+    bool accepted = false;     // reach and every naturalness test
+    bool updatedModel = false; // an adaptive update was applied after this step
+    Eigen::VectorXd pose47;    // the solved pose (degrees, §2.3 order)
+};
+
+struct EditingRange {
+    int combined = -1, reach = -1, ranges = -1, nearest = -1, density = -1, continuity = -1;
+    int adaptiveUpdates = 0;
+    std::vector<EditingStep> steps;
+};
+
+struct EditingRangeJob {
+    gp::ModelVersionPtr version;
+    int frame = 0;                              // clip frame (0-based)
+    Effector effector = Effector::kRFoot;
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitY();
+    const NaturalnessTests* tests = nullptr;
+    bool adaptive = false;
+    int maxDeltaCm = 80;
+    int ikIterations = 500;
+    EditingRange run() const;
+};
+
+}  // namespace mgp
