@@ -1,0 +1,516 @@
+#include "skeleton_renderer.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "gl_context.h"
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wconversion"
+#endif
+#include <stb_easy_font.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace mgp::render {
+
+namespace {
+
+// ---- Shaders (GLSL 3.30 core, embedded so installs need no asset files) -------------------------
+
+const char* kLitVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 uViewProj;
+uniform int uTube;       // 0: uModel (translate * uniform scale), 1: tapered tube uStart -> uEnd
+uniform mat4 uModel;
+uniform vec3 uStart;
+uniform vec3 uEnd;
+uniform float uR0;
+uniform float uR1;
+out vec3 vWorld;
+out vec3 vNormal;
+void main() {
+    vec3 p;
+    vec3 n;
+    if (uTube == 1) {
+        vec3 axis = uEnd - uStart;
+        float len = max(length(axis), 1e-6);
+        vec3 ay = axis / len;
+        vec3 helper = abs(ay.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        vec3 ax = normalize(cross(helper, ay));
+        vec3 az = cross(ax, ay);
+        float t = aPosition.y;
+        vec3 radial = aPosition.x * ax + aPosition.z * az;
+        p = uStart + ay * (len * t) + radial * mix(uR0, uR1, t);
+        n = normalize(radial * len + ay * (uR0 - uR1));
+    } else {
+        p = (uModel * vec4(aPosition, 1.0)).xyz;
+        n = normalize(mat3(uModel) * aNormal);
+    }
+    vWorld = p;
+    vNormal = n;
+    gl_Position = uViewProj * vec4(p, 1.0);
+}
+)";
+
+const char* kLitFs = R"(#version 330 core
+in vec3 vWorld;
+in vec3 vNormal;
+out vec4 fragColour;
+uniform vec3 uColour;     // sRGB
+uniform float uAlpha;
+uniform float uEmissive;
+uniform vec3 uEye;
+uniform vec3 uKeyDir;     // towards the key light (world)
+uniform vec3 uFillDir;    // towards the fill light (world)
+void main() {
+    vec3 n = normalize(vNormal);
+    vec3 v = normalize(uEye - vWorld);
+    if (dot(n, v) < 0.0) n = -n;
+    vec3 base = pow(uColour, vec3(2.2));
+    float hemi = 0.5 + 0.5 * n.y;
+    vec3 ambient = mix(vec3(0.10, 0.095, 0.09), vec3(0.30, 0.32, 0.36), hemi);
+    float key = max(dot(n, uKeyDir), 0.0);
+    float fill = max(dot(n, uFillDir), 0.0);
+    vec3 h = normalize(uKeyDir + v);
+    float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.22 * step(0.0, key);
+    float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0) * 0.30;
+    vec3 lin = base * (ambient + key * vec3(1.0, 0.96, 0.90) * 1.05 + fill * vec3(0.55, 0.62, 0.75) * 0.35)
+             + vec3(spec) + rim * vec3(0.55, 0.62, 0.75) * (0.4 + 0.6 * hemi) + base * uEmissive;
+    lin = lin / (1.0 + 0.15 * lin);  // gentle shoulder so highlights do not clip
+    fragColour = vec4(pow(lin, vec3(1.0 / 2.2)), uAlpha);
+}
+)";
+
+const char* kGroundVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform mat4 uViewProj;
+uniform vec3 uCentre;    // grid centre (x, ground height, z)
+uniform float uHalfSize;
+out vec3 vWorld;
+void main() {
+    vWorld = vec3(uCentre.x + aPosition.x * uHalfSize, uCentre.y, uCentre.z + aPosition.z * uHalfSize);
+    gl_Position = uViewProj * vec4(vWorld, 1.0);
+}
+)";
+
+const char* kGroundFs = R"(#version 330 core
+in vec3 vWorld;
+out vec4 fragColour;
+uniform vec3 uGround;
+uniform vec3 uMinor;
+uniform vec3 uMajor;
+uniform vec3 uFocus;        // where the character stands (fade and shadow centre)
+uniform float uFadeRadius;
+uniform vec4 uBlobs[64];    // x, z, radius, strength
+uniform int uBlobCount;
+float gridLine(vec2 p, float spacing, float widthPx) {
+    vec2 c = p / spacing;
+    vec2 d = max(fwidth(c), vec2(1e-6));
+    vec2 g = abs(fract(c - 0.5) - 0.5) / d;
+    float line = 1.0 - clamp(min(g.x, g.y) / widthPx, 0.0, 1.0);
+    // Fade a grid level out before its lines merge into moire.
+    float density = max(d.x, d.y);
+    return line * (1.0 - smoothstep(0.12, 0.35, density));
+}
+void main() {
+    vec2 p = vWorld.xz;
+    vec3 c = uGround;
+    c = mix(c, uMinor, gridLine(p, 10.0, 1.0) * 0.8);
+    c = mix(c, uMajor, gridLine(p, 100.0, 1.4));
+    // World axes through the origin: X reddish, Z bluish.
+    vec2 w = fwidth(p);
+    float ax = 1.0 - clamp(abs(p.y) / (1.6 * w.y), 0.0, 1.0);
+    float az = 1.0 - clamp(abs(p.x) / (1.6 * w.x), 0.0, 1.0);
+    c = mix(c, vec3(0.70, 0.30, 0.28), ax * 0.8);
+    c = mix(c, vec3(0.28, 0.42, 0.72), az * 0.8);
+    float shade = 1.0;
+    for (int i = 0; i < uBlobCount; ++i) {
+        vec2 d = p - uBlobs[i].xy;
+        shade *= 1.0 - uBlobs[i].w * exp(-dot(d, d) / (uBlobs[i].z * uBlobs[i].z));
+    }
+    c *= shade;
+    float dist = length(p - uFocus.xz);
+    float alpha = 1.0 - smoothstep(0.45 * uFadeRadius, uFadeRadius, dist);
+    fragColour = vec4(c, alpha);
+}
+)";
+
+const char* kBackgroundVs = R"(#version 330 core
+out float vHeight;
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
+    vHeight = p.y * 0.5 + 0.5;
+    gl_Position = vec4(p, 0.999, 1.0);
+}
+)";
+
+const char* kBackgroundFs = R"(#version 330 core
+in float vHeight;
+out vec4 fragColour;
+uniform vec3 uTop;
+uniform vec3 uHorizon;
+void main() {
+    fragColour = vec4(mix(uHorizon, uTop, smoothstep(0.0, 1.0, vHeight)), 1.0);
+}
+)";
+
+const char* kTextVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform vec2 uViewport;
+uniform vec2 uOffset;
+uniform float uScale;
+void main() {
+    vec2 px = aPosition.xy * uScale + uOffset;
+    gl_Position = vec4(px.x / uViewport.x * 2.0 - 1.0, 1.0 - px.y / uViewport.y * 2.0, 0.0, 1.0);
+}
+)";
+
+const char* kTextFs = R"(#version 330 core
+out vec4 fragColour;
+uniform vec4 uColour;
+void main() { fragColour = uColour; }
+)";
+
+constexpr int kMaxBlobs = 64;
+
+}  // namespace
+
+struct SceneRenderer::Impl {
+    ShaderProgram lit, ground, background, text;
+    GpuMesh sphere, smallSphere, tube, quad;
+    unsigned emptyVao = 0;
+    unsigned textVao = 0, textVbo = 0;
+    int samples = 4;
+    unsigned fbo = 0, colourRb = 0, depthRb = 0;
+    int fboWidth = 0, fboHeight = 0;
+
+    void ensureFramebuffer(int w, int h) {
+        if (fbo && w == fboWidth && h == fboHeight) return;
+        releaseFramebuffer();
+        glGenFramebuffers(1, &fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glGenRenderbuffers(1, &colourRb);
+        glBindRenderbuffer(GL_RENDERBUFFER, colourRb);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colourRb);
+        glGenRenderbuffers(1, &depthRb);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthRb);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRb);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RenderError("renderer: the " + std::to_string(samples) + "x multisampled framebuffer of " +
+                              std::to_string(w) + "x" + std::to_string(h) + " is incomplete");
+        fboWidth = w;
+        fboHeight = h;
+    }
+    void releaseFramebuffer() {
+        if (depthRb) glDeleteRenderbuffers(1, &depthRb);
+        if (colourRb) glDeleteRenderbuffers(1, &colourRb);
+        if (fbo) glDeleteFramebuffers(1, &fbo);
+        fbo = colourRb = depthRb = 0;
+    }
+};
+
+SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) {
+    Impl& r = *impl_;
+    GLint maxSamples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    r.samples = std::clamp(msaaSamples, 1, std::max(1, static_cast<int>(maxSamples)));
+    r.lit = ShaderProgram("lit", kLitVs, kLitFs);
+    r.ground = ShaderProgram("ground", kGroundVs, kGroundFs);
+    r.background = ShaderProgram("background", kBackgroundVs, kBackgroundFs);
+    r.text = ShaderProgram("text", kTextVs, kTextFs);
+    r.sphere = GpuMesh(makeSphere(32, 20));
+    r.smallSphere = GpuMesh(makeSphere(16, 10));
+    r.tube = GpuMesh(makeTube(32));
+    r.quad = GpuMesh(makeQuadXZ());
+    glGenVertexArrays(1, &r.emptyVao);
+    glGenVertexArrays(1, &r.textVao);
+    glGenBuffers(1, &r.textVbo);
+    glBindVertexArray(r.textVao);
+    glBindBuffer(GL_ARRAY_BUFFER, r.textVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    glBindVertexArray(0);
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw RenderError("renderer setup: GL error " + std::to_string(err));
+}
+
+SceneRenderer::~SceneRenderer() {
+    Impl& r = *impl_;
+    r.releaseFramebuffer();
+    glDeleteBuffers(1, &r.textVbo);
+    glDeleteVertexArrays(1, &r.textVao);
+    glDeleteVertexArrays(1, &r.emptyVao);
+}
+
+namespace {
+
+glm::vec3 sideColour(const RenderStyle& s, BodySide side) {
+    switch (side) {
+        case BodySide::kLeft: return s.leftBone;
+        case BodySide::kRight: return s.rightBone;
+        case BodySide::kCentre: break;
+    }
+    return s.centreBone;
+}
+
+struct Drawer {
+    ShaderProgram& lit;
+    const GpuMesh& sphere;
+    const GpuMesh& smallSphere;
+    const GpuMesh& tube;
+
+    void colour(const glm::vec3& c, float alpha = 1.0f, float emissive = 0.0f) {
+        lit.set("uColour", c);
+        lit.set("uAlpha", alpha);
+        lit.set("uEmissive", emissive);
+    }
+    void ball(const glm::vec3& centre, float radius, bool small = false) {
+        glm::mat4 m(radius);
+        m[3] = glm::vec4(centre, 1.0f);
+        lit.set("uTube", 0);
+        lit.set("uModel", m);
+        (small ? smallSphere : sphere).draw();
+    }
+    void segment(const glm::vec3& a, const glm::vec3& b, float r0, float r1) {
+        if (glm::length(b - a) < 1e-4f) return;
+        lit.set("uTube", 1);
+        lit.set("uStart", a);
+        lit.set("uEnd", b);
+        lit.set("uR0", r0);
+        lit.set("uR1", r1);
+        tube.draw();
+    }
+    void figure(const Figure& f, const RenderStyle& s, bool ghost) {
+        for (const BoneSegment& b : f.bones) {
+            if (!ghost) colour(sideColour(s, b.side));
+            segment(b.startCm, b.endCm, b.startRadiusCm, b.endRadiusCm);
+        }
+        for (const JointBall& j : f.joints) {
+            if (!ghost) colour(sideColour(s, j.side) * 0.92f);
+            ball(j.centreCm, j.radiusCm);
+        }
+    }
+};
+
+// Soft contact shadows: one gaussian blob under each joint of every shadow-casting figure,
+// wider and fainter with height, plus a broad one under the figure.
+int shadowBlobs(const Scene& scene, glm::vec4* blobs) {
+    int n = 0;
+    for (const Figure& f : scene.figures) {
+        if (!f.castsShadow || f.ghost || f.joints.empty()) continue;
+        glm::vec3 mean(0.0f);
+        for (const JointBall& j : f.joints) mean += j.centreCm;
+        mean /= static_cast<float>(f.joints.size());
+        if (n < kMaxBlobs) blobs[n++] = glm::vec4(mean.x, mean.z, 38.0f, 0.22f);
+        for (const JointBall& j : f.joints) {
+            if (n >= kMaxBlobs) break;
+            const float h = std::max(0.0f, j.centreCm.y - scene.groundHeightCm);
+            const float strength = 0.42f * std::exp(-h / 45.0f);
+            if (strength < 0.01f) continue;
+            blobs[n++] = glm::vec4(j.centreCm.x, j.centreCm.z, j.radiusCm * 1.6f + 0.30f * h, strength);
+        }
+    }
+    return n;
+}
+
+}  // namespace
+
+void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
+                         unsigned targetFramebuffer) {
+    Impl& r = *impl_;
+    const RenderStyle& s = style_;
+    r.ensureFramebuffer(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
+    glViewport(0, 0, width, height);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const glm::mat4 viewProj = camera.viewProjection(aspect);
+    const glm::vec3 eye = camera.eye();
+    const glm::mat4 view = camera.view();
+    const glm::vec3 camRight(view[0][0], view[1][0], view[2][0]);
+    const glm::vec3 camUp(view[0][1], view[1][1], view[2][1]);
+    const glm::vec3 camBack(view[0][2], view[1][2], view[2][2]);  // towards the eye
+    // Lights follow the camera (a studio setup): key from the upper left, fill from the right.
+    const glm::vec3 keyDir = glm::normalize(-0.55f * camRight + 0.85f * camUp + 0.65f * camBack);
+    const glm::vec3 fillDir = glm::normalize(0.8f * camRight - 0.1f * camUp + 0.5f * camBack);
+
+    // 1. Background gradient.
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    r.background.use();
+    r.background.set("uTop", s.backgroundTop);
+    r.background.set("uHorizon", s.backgroundHorizon);
+    glBindVertexArray(r.emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    // 2. Ground with grid and contact shadows (blended so it fades into the background).
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (scene.showGround) {
+        const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
+        const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
+                               std::round(focus.z / 100.0f) * 100.0f);
+        glm::vec4 blobs[kMaxBlobs];
+        const int blobCount = shadowBlobs(scene, blobs);
+        r.ground.use();
+        r.ground.set("uViewProj", viewProj);
+        r.ground.set("uCentre", centre);
+        r.ground.set("uHalfSize", s.groundHalfSizeCm);
+        r.ground.set("uGround", s.ground);
+        r.ground.set("uMinor", s.gridMinor);
+        r.ground.set("uMajor", s.gridMajor);
+        r.ground.set("uFocus", focus);
+        r.ground.set("uFadeRadius", s.groundHalfSizeCm);
+        r.ground.set("uBlobCount", blobCount);
+        if (blobCount > 0) r.ground.setArray("uBlobs", blobs, blobCount);
+        r.quad.draw();
+    }
+
+    // 3. Opaque solids: figures, paths, targets, pins.
+    glDisable(GL_BLEND);
+    r.lit.use();
+    r.lit.set("uViewProj", viewProj);
+    r.lit.set("uEye", eye);
+    r.lit.set("uKeyDir", keyDir);
+    r.lit.set("uFillDir", fillDir);
+    Drawer d{r.lit, r.sphere, r.smallSphere, r.tube};
+    for (const Figure& f : scene.figures)
+        if (!f.ghost) d.figure(f, s, false);
+    for (const Path& p : scene.paths) {
+        d.colour(p.colour);
+        for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
+            d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
+        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm, true);
+        d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
+        for (const glm::vec3& k : p.keysCm) d.ball(k, p.radiusCm * 3.2f);
+        if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
+            d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
+            d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);
+        }
+    }
+    for (const Target& t : scene.targets) {
+        const glm::vec3 c = t.reached ? s.targetReached : s.targetMissed;
+        d.colour(c, 1.0f, 0.15f);
+        const float arm = 5.0f;
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 e(0.0f);
+            e[axis] = arm;
+            d.segment(t.positionCm - e, t.positionCm + e, 0.7f, 0.7f);
+        }
+        d.ball(t.positionCm, 1.8f, true);
+        if (t.hasFrom) {
+            d.colour(glm::mix(c, glm::vec3(1.0f), 0.3f));
+            d.segment(t.fromCm, t.positionCm, 0.35f, 0.35f);
+        }
+    }
+    for (const Pin& p : scene.pins) {
+        d.colour(s.pin, 1.0f, 0.1f);
+        d.segment(p.positionCm, p.positionCm + glm::vec3(0.0f, 11.0f, 0.0f), 0.2f, 1.3f);
+        d.ball(p.positionCm + glm::vec3(0.0f, 13.0f, 0.0f), 2.6f);
+        d.segment(p.positionCm + glm::vec3(-4.0f, 0.0f, 0.0f), p.positionCm + glm::vec3(4.0f, 0.0f, 0.0f), 0.45f, 0.45f);
+        d.segment(p.positionCm + glm::vec3(0.0f, 0.0f, -4.0f), p.positionCm + glm::vec3(0.0f, 0.0f, 4.0f), 0.45f, 0.45f);
+    }
+
+    // 4. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
+    glEnable(GL_BLEND);
+    for (const Figure& f : scene.figures) {
+        if (!f.ghost) continue;
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        d.figure(f, s, true);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_EQUAL);
+        d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
+        d.figure(f, s, true);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LEQUAL);
+    }
+
+    // 5. Handles: faint where hidden by the body (x-ray), solid where visible.
+    auto handleColour = [&](const Handle& h) {
+        switch (h.state) {
+            case HandleState::kHover: return s.handleHover;
+            case HandleState::kSelected: return s.handleSelected;
+            case HandleState::kIdle: break;
+        }
+        return s.handleIdle;
+    };
+    auto handleRadius = [](const Handle& h) { return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm; };
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_GREATER);
+    for (const Handle& h : scene.handles) {
+        d.colour(handleColour(h), 0.28f, 0.5f);
+        d.ball(h.positionCm, handleRadius(h));
+    }
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    for (const Handle& h : scene.handles) {
+        const float emissive = h.state == HandleState::kIdle ? 0.15f : 0.55f;
+        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.75f : 0.95f, emissive);
+        d.ball(h.positionCm, handleRadius(h));
+    }
+
+    // 6. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
+    if (!scene.caption.empty()) {
+        std::vector<char> buffer(64 * 1024);
+        std::string text = scene.caption;
+        const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(),
+                                              static_cast<int>(buffer.size()));
+        std::vector<float> tris;
+        tris.reserve(static_cast<std::size_t>(quads) * 18);
+        for (int q = 0; q < quads; ++q) {
+            const float* v = reinterpret_cast<const float*>(buffer.data() + q * 64);
+            const int order[6] = {0, 1, 2, 0, 2, 3};
+            for (int k : order) tris.insert(tris.end(), {v[k * 4 + 0], v[k * 4 + 1], 0.0f});
+        }
+        const float scale = height >= 400 ? 2.0f : 1.0f;
+        const float textHeight = 8.0f * scale;
+        glDisable(GL_DEPTH_TEST);
+        r.text.use();
+        r.text.set("uViewport", glm::vec2(static_cast<float>(width), static_cast<float>(height)));
+        r.text.set("uScale", scale);
+        glBindVertexArray(r.textVao);
+        glBindBuffer(GL_ARRAY_BUFFER, r.textVbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(float)), tris.data(),
+                     GL_STREAM_DRAW);
+        const glm::vec2 origin(8.0f * scale, static_cast<float>(height) - textHeight - 6.0f * scale);
+        r.text.set("uOffset", origin + glm::vec2(scale, scale));
+        r.text.set("uColour", glm::vec4(0.0f, 0.0f, 0.0f, 0.6f));
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+        r.text.set("uOffset", origin);
+        r.text.set("uColour", glm::vec4(0.95f, 0.95f, 0.95f, 1.0f));
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+        glEnable(GL_DEPTH_TEST);
+    }
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+
+    // 7. Resolve the multisampled frame into the target framebuffer.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+}
+
+}  // namespace mgp::render
