@@ -54,7 +54,7 @@ struct Target {
     bool reached = false;
 };
 
-// A pinned effector (e.g. a planted foot).
+// A pinned effector (e.g. a planted foot): a pin stands on this point.
 struct Pin {
     glm::vec3 positionCm{0.0f};
 };

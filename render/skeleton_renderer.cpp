@@ -425,11 +425,13 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         }
     }
     for (const Pin& p : scene.pins) {
+        // A map pin standing on the pinned point, with a small cross at its tip.
         d.colour(s.pin, 1.0f, 0.1f);
-        d.segment(p.positionCm, p.positionCm + glm::vec3(0.0f, 11.0f, 0.0f), 0.2f, 1.3f);
-        d.ball(p.positionCm + glm::vec3(0.0f, 13.0f, 0.0f), 2.6f);
-        d.segment(p.positionCm + glm::vec3(-4.0f, 0.0f, 0.0f), p.positionCm + glm::vec3(4.0f, 0.0f, 0.0f), 0.45f, 0.45f);
-        d.segment(p.positionCm + glm::vec3(0.0f, 0.0f, -4.0f), p.positionCm + glm::vec3(0.0f, 0.0f, 4.0f), 0.45f, 0.45f);
+        const glm::vec3 tip = p.positionCm;
+        d.segment(tip, tip + glm::vec3(0.0f, 12.0f, 0.0f), 0.25f, 1.2f);
+        d.ball(tip + glm::vec3(0.0f, 14.0f, 0.0f), 2.6f);
+        d.segment(tip + glm::vec3(-3.5f, 0.0f, 0.0f), tip + glm::vec3(3.5f, 0.0f, 0.0f), 0.5f, 0.5f);
+        d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
     }
 
     // 4. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
@@ -460,7 +462,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_GREATER);
     for (const Handle& h : scene.handles) {
-        d.colour(handleColour(h), 0.28f, 0.5f);
+        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.15f : 0.3f, 0.5f);
         d.ball(h.positionCm, handleRadius(h));
     }
     glDepthFunc(GL_LEQUAL);
