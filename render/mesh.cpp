@@ -113,4 +113,23 @@ void GpuMesh::draw() const {
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
 }
 
+void GpuMesh::attachInstanceBuffer(unsigned buffer, int firstAttribute, int count) const {
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    const GLsizei stride = static_cast<GLsizei>(count * 4 * sizeof(float));
+    for (int i = 0; i < count; ++i) {
+        const auto attr = static_cast<GLuint>(firstAttribute + i);
+        glEnableVertexAttribArray(attr);
+        glVertexAttribPointer(attr, 4, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<void*>(static_cast<std::size_t>(i) * 4 * sizeof(float)));
+        glVertexAttribDivisor(attr, 1);
+    }
+    glBindVertexArray(0);
+}
+
+void GpuMesh::drawInstanced(int instances) const {
+    glBindVertexArray(vao_);
+    glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, instances);
+}
+
 }  // namespace mgp::render

@@ -30,6 +30,10 @@ public:
     GpuMesh& operator=(const GpuMesh&) = delete;
 
     void draw() const;
+    // Per-instance data: `count` vec4 attributes starting at `firstAttribute`, read from `buffer`
+    // (tightly packed, advancing once per instance).
+    void attachInstanceBuffer(unsigned buffer, int firstAttribute, int count) const;
+    void drawInstanced(int instances) const;
 
 private:
     void release();

@@ -26,23 +26,26 @@ namespace {
 
 // ---- Shaders (GLSL 3.30 core, embedded so installs need no asset files) -------------------------
 
+// Solids are drawn instanced, one draw per (mesh, pass). Per instance: iA = (start or centre,
+// radius), iB = (end, end radius) for tubes, iColour = (sRGB, alpha), iExtra.x = emissive.
 const char* kLitVs = R"(#version 330 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 iA;
+layout(location = 3) in vec4 iB;
+layout(location = 4) in vec4 iColour;
+layout(location = 5) in vec4 iExtra;
 uniform mat4 uViewProj;
-uniform int uTube;       // 0: uModel (translate * uniform scale), 1: tapered tube uStart -> uEnd
-uniform mat4 uModel;
-uniform vec3 uStart;
-uniform vec3 uEnd;
-uniform float uR0;
-uniform float uR1;
+uniform int uTube;       // 0: sphere at iA.xyz with radius iA.w, 1: tapered tube iA -> iB
 out vec3 vWorld;
 out vec3 vNormal;
+flat out vec4 vColour;
+flat out float vEmissive;
 void main() {
     vec3 p;
     vec3 n;
     if (uTube == 1) {
-        vec3 axis = uEnd - uStart;
+        vec3 axis = iB.xyz - iA.xyz;
         float len = max(length(axis), 1e-6);
         vec3 ay = axis / len;
         vec3 helper = abs(ay.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
@@ -50,14 +53,16 @@ void main() {
         vec3 az = cross(ax, ay);
         float t = aPosition.y;
         vec3 radial = aPosition.x * ax + aPosition.z * az;
-        p = uStart + ay * (len * t) + radial * mix(uR0, uR1, t);
-        n = normalize(radial * len + ay * (uR0 - uR1));
+        p = iA.xyz + ay * (len * t) + radial * mix(iA.w, iB.w, t);
+        n = normalize(radial * len + ay * (iA.w - iB.w));
     } else {
-        p = (uModel * vec4(aPosition, 1.0)).xyz;
-        n = normalize(mat3(uModel) * aNormal);
+        p = iA.xyz + aPosition * iA.w;
+        n = aNormal;
     }
     vWorld = p;
     vNormal = n;
+    vColour = vec4(pow(iColour.rgb, vec3(2.2)), iColour.a);
+    vEmissive = iExtra.x;
     gl_Position = uViewProj * vec4(p, 1.0);
 }
 )";
@@ -65,10 +70,9 @@ void main() {
 const char* kLitFs = R"(#version 330 core
 in vec3 vWorld;
 in vec3 vNormal;
+flat in vec4 vColour;     // linear rgb, alpha
+flat in float vEmissive;
 out vec4 fragColour;
-uniform vec3 uColour;     // sRGB
-uniform float uAlpha;
-uniform float uEmissive;
 uniform vec3 uEye;
 uniform vec3 uKeyDir;     // towards the key light (world)
 uniform vec3 uFillDir;    // towards the fill light (world)
@@ -76,7 +80,7 @@ void main() {
     vec3 n = normalize(vNormal);
     vec3 v = normalize(uEye - vWorld);
     if (dot(n, v) < 0.0) n = -n;
-    vec3 base = pow(uColour, vec3(2.2));
+    vec3 base = vColour.rgb;
     float hemi = 0.5 + 0.5 * n.y;
     vec3 ambient = mix(vec3(0.10, 0.095, 0.09), vec3(0.30, 0.32, 0.36), hemi);
     float key = max(dot(n, uKeyDir), 0.0);
@@ -85,9 +89,9 @@ void main() {
     float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.22 * step(0.0, key);
     float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0) * 0.30;
     vec3 lin = base * (ambient + key * vec3(1.0, 0.96, 0.90) * 1.05 + fill * vec3(0.55, 0.62, 0.75) * 0.35)
-             + vec3(spec) + rim * vec3(0.55, 0.62, 0.75) * (0.4 + 0.6 * hemi) + base * uEmissive;
+             + vec3(spec) + rim * vec3(0.55, 0.62, 0.75) * (0.4 + 0.6 * hemi) + base * vEmissive;
     lin = lin / (1.0 + 0.15 * lin);  // gentle shoulder so highlights do not clip
-    fragColour = vec4(pow(lin, vec3(1.0 / 2.2)), uAlpha);
+    fragColour = vec4(pow(lin, vec3(1.0 / 2.2)), vColour.a);
 }
 )";
 
@@ -111,8 +115,8 @@ uniform vec3 uMinor;
 uniform vec3 uMajor;
 uniform vec3 uFocus;        // where the character stands (fade and shadow centre)
 uniform float uFadeRadius;
-uniform vec4 uBlobs[64];    // x, z, radius, strength
-uniform int uBlobCount;
+uniform sampler2D uShadow;  // contact-shadow factor (1 = lit), baked on the CPU
+uniform vec4 uShadowRect;   // x, z of its corner, 1 / its size in x and z (cm)
 float gridLine(vec2 p, float spacing, float widthPx) {
     vec2 c = p / spacing;
     vec2 d = max(fwidth(c), vec2(1e-6));
@@ -133,11 +137,9 @@ void main() {
     float az = 1.0 - clamp(abs(p.x) / (1.6 * w.x), 0.0, 1.0);
     c = mix(c, vec3(0.70, 0.30, 0.28), ax * 0.8);
     c = mix(c, vec3(0.28, 0.42, 0.72), az * 0.8);
+    vec2 uv = (p - uShadowRect.xy) * uShadowRect.zw;
     float shade = 1.0;
-    for (int i = 0; i < uBlobCount; ++i) {
-        vec2 d = p - uBlobs[i].xy;
-        shade *= 1.0 - uBlobs[i].w * exp(-dot(d, d) / (uBlobs[i].z * uBlobs[i].z));
-    }
+    if (all(greaterThan(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)))) shade = texture(uShadow, uv).r;
     c *= shade;
     float dist = length(p - uFocus.xz);
     float alpha = 1.0 - smoothstep(0.45 * uFadeRadius, uFadeRadius, dist);
@@ -182,12 +184,20 @@ void main() { fragColour = uColour; }
 )";
 
 constexpr int kMaxBlobs = 64;
+constexpr int kShadowRes = 128;
 
 }  // namespace
 
 struct SceneRenderer::Impl {
     ShaderProgram lit, ground, background, text;
-    GpuMesh sphere, smallSphere, tube, quad;
+    GpuMesh sphere, smallSphere, tube, thinTube, quad;
+    unsigned instanceVbo = 0;
+    unsigned shadowTexture = 0;
+    std::vector<std::uint8_t> shadowTexels;
+
+    // Bakes the contact shadows (a product of gaussian blobs) into a kShadowRes² texture over
+    // the square that holds them; returns (corner x, corner z, 1/size, 1/size) for the shader.
+    glm::vec4 updateShadowTexture(const Scene& scene);
     unsigned emptyVao = 0;
     unsigned textVao = 0, textVbo = 0;
     int samples = 4;
@@ -230,10 +240,21 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     r.ground = ShaderProgram("ground", kGroundVs, kGroundFs);
     r.background = ShaderProgram("background", kBackgroundVs, kBackgroundFs);
     r.text = ShaderProgram("text", kTextVs, kTextFs);
-    r.sphere = GpuMesh(makeSphere(32, 20));
-    r.smallSphere = GpuMesh(makeSphere(16, 10));
-    r.tube = GpuMesh(makeTube(32));
+    // llvmpipe's cost is mostly per triangle: small and thin things get coarser meshes.
+    r.sphere = GpuMesh(makeSphere(20, 12));
+    r.smallSphere = GpuMesh(makeSphere(10, 6));
+    r.tube = GpuMesh(makeTube(20));
+    r.thinTube = GpuMesh(makeTube(8));
     r.quad = GpuMesh(makeQuadXZ());
+    glGenBuffers(1, &r.instanceVbo);
+    glGenTextures(1, &r.shadowTexture);
+    glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kShadowRes, kShadowRes, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    for (const GpuMesh* m : {&r.sphere, &r.smallSphere, &r.tube, &r.thinTube}) m->attachInstanceBuffer(r.instanceVbo, 2, 4);
     glGenVertexArrays(1, &r.emptyVao);
     glGenVertexArrays(1, &r.textVao);
     glGenBuffers(1, &r.textVbo);
@@ -250,6 +271,8 @@ SceneRenderer::~SceneRenderer() {
     Impl& r = *impl_;
     r.releaseFramebuffer();
     glDeleteBuffers(1, &r.textVbo);
+    glDeleteBuffers(1, &r.instanceVbo);
+    glDeleteTextures(1, &r.shadowTexture);
     glDeleteVertexArrays(1, &r.textVao);
     glDeleteVertexArrays(1, &r.emptyVao);
 }
@@ -265,32 +288,32 @@ glm::vec3 sideColour(const RenderStyle& s, BodySide side) {
     return s.centreBone;
 }
 
+// Collects solids with their colours, then draws them in two instanced calls (tubes, spheres).
+struct Instance {
+    glm::vec4 a, b, colour, extra;
+};
+
 struct Drawer {
     ShaderProgram& lit;
     const GpuMesh& sphere;
     const GpuMesh& smallSphere;
     const GpuMesh& tube;
+    const GpuMesh& thinTube;
+    unsigned instanceVbo;
+    std::vector<Instance> tubes, thinTubes, balls, smallBalls;
+    glm::vec4 current{1.0f};
+    float emissive = 0.0f;
 
-    void colour(const glm::vec3& c, float alpha = 1.0f, float emissive = 0.0f) {
-        lit.set("uColour", c);
-        lit.set("uAlpha", alpha);
-        lit.set("uEmissive", emissive);
+    void colour(const glm::vec3& c, float alpha = 1.0f, float emit = 0.0f) {
+        current = glm::vec4(c, alpha);
+        emissive = emit;
     }
-    void ball(const glm::vec3& centre, float radius, bool small = false) {
-        glm::mat4 m(radius);
-        m[3] = glm::vec4(centre, 1.0f);
-        lit.set("uTube", 0);
-        lit.set("uModel", m);
-        (small ? smallSphere : sphere).draw();
+    void ball(const glm::vec3& centre, float radius) {
+        (radius < 2.7f ? smallBalls : balls).push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void segment(const glm::vec3& a, const glm::vec3& b, float r0, float r1) {
         if (glm::length(b - a) < 1e-4f) return;
-        lit.set("uTube", 1);
-        lit.set("uStart", a);
-        lit.set("uEnd", b);
-        lit.set("uR0", r0);
-        lit.set("uR1", r1);
-        tube.draw();
+        (std::max(r0, r1) < 1.5f ? thinTubes : tubes).push_back({glm::vec4(a, r0), glm::vec4(b, r1), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void figure(const Figure& f, const RenderStyle& s, bool ghost) {
         for (const BoneSegment& b : f.bones) {
@@ -300,6 +323,31 @@ struct Drawer {
         for (const JointBall& j : f.joints) {
             if (!ghost) colour(sideColour(s, j.side) * 0.92f);
             ball(j.centreCm, j.radiusCm);
+        }
+    }
+    void drawBatch(const std::vector<Instance>& v, const GpuMesh& mesh, int isTube) {
+        if (v.empty()) return;
+        // Spheres are closed: cull their back faces (half the triangles). Tubes are open at the
+        // ends, so both of their sides are drawn.
+        if (isTube) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE);
+        glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Instance)), v.data(), GL_STREAM_DRAW);
+        lit.set("uTube", isTube);
+        mesh.drawInstanced(static_cast<int>(v.size()));
+    }
+    // Draws what was collected (tubes first), optionally keeping it for another pass.
+    void flush(bool keep = false) {
+        drawBatch(tubes, tube, 1);
+        drawBatch(thinTubes, thinTube, 1);
+        drawBatch(balls, sphere, 0);
+        drawBatch(smallBalls, smallSphere, 0);
+        glDisable(GL_CULL_FACE);
+        if (!keep) {
+            tubes.clear();
+            thinTubes.clear();
+            balls.clear();
+            smallBalls.clear();
         }
     }
 };
@@ -318,7 +366,7 @@ int shadowBlobs(const Scene& scene, glm::vec4* blobs) {
             if (n >= kMaxBlobs) break;
             const float h = std::max(0.0f, j.centreCm.y - scene.groundHeightCm);
             const float strength = 0.42f * std::exp(-h / 45.0f);
-            if (strength < 0.01f) continue;
+            if (strength < 0.06f) continue;  // high joints add little and cost a lot per pixel
             blobs[n++] = glm::vec4(j.centreCm.x, j.centreCm.z, j.radiusCm * 1.6f + 0.30f * h, strength);
         }
     }
@@ -326,6 +374,40 @@ int shadowBlobs(const Scene& scene, glm::vec4* blobs) {
 }
 
 }  // namespace
+
+glm::vec4 SceneRenderer::Impl::updateShadowTexture(const Scene& scene) {
+    glm::vec4 blobs[kMaxBlobs];
+    const int n = shadowBlobs(scene, blobs);
+    if (n == 0) return glm::vec4(0.0f, 0.0f, 0.0f, 0.0f);  // uv stays 0: no shadow anywhere
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int i = 0; i < n; ++i) {
+        const glm::vec2 c(blobs[i].x, blobs[i].y);
+        lo = glm::min(lo, c - glm::vec2(3.0f * blobs[i].z));
+        hi = glm::max(hi, c + glm::vec2(3.0f * blobs[i].z));
+    }
+    const float size = std::max(hi.x - lo.x, hi.y - lo.y);
+    const glm::vec2 corner = 0.5f * (lo + hi) - glm::vec2(0.5f * size);
+    shadowTexels.resize(static_cast<std::size_t>(kShadowRes) * kShadowRes);
+    for (int y = 0; y < kShadowRes; ++y)
+        for (int x = 0; x < kShadowRes; ++x) {
+            const glm::vec2 p = corner + (glm::vec2(static_cast<float>(x), static_cast<float>(y)) + 0.5f) *
+                                             (size / static_cast<float>(kShadowRes));
+            float shade = 1.0f;
+            for (int i = 0; i < n; ++i) {
+                const glm::vec2 d = p - glm::vec2(blobs[i].x, blobs[i].y);
+                const float q = glm::dot(d, d) / (blobs[i].z * blobs[i].z);
+                if (q < 9.0f) shade *= 1.0f - blobs[i].w * std::exp(-q);
+            }
+            // Texels on the border stay fully lit so the clamp-to-edge lookup outside is 1.
+            const bool border = x == 0 || y == 0 || x == kShadowRes - 1 || y == kShadowRes - 1;
+            shadowTexels[static_cast<std::size_t>(y) * kShadowRes + x] =
+                border ? 255 : static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(shade, 0.0f, 1.0f)));
+        }
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kShadowRes, kShadowRes, GL_RED, GL_UNSIGNED_BYTE, shadowTexels.data());
+    return glm::vec4(corner, 1.0f / size, 1.0f / size);
+}
 
 void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
                          unsigned targetFramebuffer) {
@@ -335,6 +417,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
     glViewport(0, 0, width, height);
     glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
@@ -362,46 +446,23 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glBindVertexArray(r.emptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    // 2. Ground with grid and contact shadows (blended so it fades into the background).
+    // 2. Opaque solids: figures, paths, targets, pins.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    if (scene.showGround) {
-        const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
-        const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
-                               std::round(focus.z / 100.0f) * 100.0f);
-        glm::vec4 blobs[kMaxBlobs];
-        const int blobCount = shadowBlobs(scene, blobs);
-        r.ground.use();
-        r.ground.set("uViewProj", viewProj);
-        r.ground.set("uCentre", centre);
-        r.ground.set("uHalfSize", s.groundHalfSizeCm);
-        r.ground.set("uGround", s.ground);
-        r.ground.set("uMinor", s.gridMinor);
-        r.ground.set("uMajor", s.gridMajor);
-        r.ground.set("uFocus", focus);
-        r.ground.set("uFadeRadius", s.groundHalfSizeCm);
-        r.ground.set("uBlobCount", blobCount);
-        if (blobCount > 0) r.ground.setArray("uBlobs", blobs, blobCount);
-        r.quad.draw();
-    }
-
-    // 3. Opaque solids: figures, paths, targets, pins.
     glDisable(GL_BLEND);
     r.lit.use();
     r.lit.set("uViewProj", viewProj);
     r.lit.set("uEye", eye);
     r.lit.set("uKeyDir", keyDir);
     r.lit.set("uFillDir", fillDir);
-    Drawer d{r.lit, r.sphere, r.smallSphere, r.tube};
+    Drawer d{r.lit, r.sphere, r.smallSphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {}, {}, glm::vec4(1.0f), 0.0f};
     for (const Figure& f : scene.figures)
         if (!f.ghost) d.figure(f, s, false);
     for (const Path& p : scene.paths) {
         d.colour(p.colour);
         for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
             d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
-        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm, true);
+        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
         d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
         for (const glm::vec3& k : p.keysCm) d.ball(k, p.radiusCm * 3.2f);
         if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
@@ -418,7 +479,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
             e[axis] = arm;
             d.segment(t.positionCm - e, t.positionCm + e, 0.7f, 0.7f);
         }
-        d.ball(t.positionCm, 1.8f, true);
+        d.ball(t.positionCm, 1.8f);
         if (t.hasFrom) {
             d.colour(glm::mix(c, glm::vec3(1.0f), 0.3f));
             d.segment(t.fromCm, t.positionCm, 0.35f, 0.35f);
@@ -434,17 +495,48 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
     }
 
+    d.flush();
+
+    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected
+    // (blended so it fades into the background).
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (scene.showGround) {
+        const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
+        const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
+                               std::round(focus.z / 100.0f) * 100.0f);
+        const glm::vec4 rect = r.updateShadowTexture(scene);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+        r.ground.use();
+        r.ground.set("uViewProj", viewProj);
+        r.ground.set("uCentre", centre);
+        r.ground.set("uHalfSize", s.groundHalfSizeCm);
+        r.ground.set("uGround", s.ground);
+        r.ground.set("uMinor", s.gridMinor);
+        r.ground.set("uMajor", s.gridMajor);
+        r.ground.set("uFocus", focus);
+        r.ground.set("uFadeRadius", s.groundHalfSizeCm);
+        r.ground.set("uShadow", 0);
+        r.ground.set("uShadowRect", rect);
+        r.quad.draw();
+    }
+    r.lit.use();
+
     // 4. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
     glEnable(GL_BLEND);
     for (const Figure& f : scene.figures) {
         if (!f.ghost) continue;
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
         d.figure(f, s, true);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        d.flush(true);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_EQUAL);
-        d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
-        d.figure(f, s, true);
+        d.flush();
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LEQUAL);
     }
@@ -472,6 +564,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.75f : 0.95f, emissive);
         d.ball(h.positionCm, handleRadius(h));
     }
+    d.flush();
 
     // 6. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
     if (!scene.caption.empty()) {
