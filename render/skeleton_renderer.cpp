@@ -115,6 +115,9 @@ uniform vec3 uMinor;
 uniform vec3 uMajor;
 uniform vec3 uFocus;        // where the character stands (fade and shadow centre)
 uniform float uFadeRadius;
+uniform vec3 uTop;          // background gradient, to fade into (the ground is opaque)
+uniform vec3 uHorizon;
+uniform float uViewportHeight;
 uniform sampler2D uShadow;  // contact-shadow factor (1 = lit), baked on the CPU
 uniform vec4 uShadowRect;   // x, z of its corner, 1 / its size in x and z (cm)
 float gridLine(vec2 p, float spacing, float widthPx) {
@@ -143,26 +146,25 @@ void main() {
     c *= shade;
     float dist = length(p - uFocus.xz);
     float alpha = 1.0 - smoothstep(0.45 * uFadeRadius, uFadeRadius, dist);
-    fragColour = vec4(c, alpha);
+    vec3 background = mix(uHorizon, uTop, smoothstep(0.0, 1.0, gl_FragCoord.y / uViewportHeight));
+    fragColour = vec4(mix(background, c, alpha), 1.0);
 }
 )";
 
 const char* kBackgroundVs = R"(#version 330 core
-out float vHeight;
 void main() {
     vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
-    vHeight = p.y * 0.5 + 0.5;
-    gl_Position = vec4(p, 0.999, 1.0);
+    gl_Position = vec4(p, 1.0, 1.0);  // on the far plane: only pixels nothing has covered
 }
 )";
 
 const char* kBackgroundFs = R"(#version 330 core
-in float vHeight;
 out vec4 fragColour;
 uniform vec3 uTop;
 uniform vec3 uHorizon;
+uniform float uViewportHeight;
 void main() {
-    fragColour = vec4(mix(uHorizon, uTop, smoothstep(0.0, 1.0, vHeight)), 1.0);
+    fragColour = vec4(mix(uHorizon, uTop, smoothstep(0.0, 1.0, gl_FragCoord.y / uViewportHeight)), 1.0);
 }
 )";
 
@@ -437,15 +439,6 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     const glm::vec3 keyDir = glm::normalize(-0.55f * camRight + 0.85f * camUp + 0.65f * camBack);
     const glm::vec3 fillDir = glm::normalize(0.8f * camRight - 0.1f * camUp + 0.5f * camBack);
 
-    // 1. Background gradient.
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    r.background.use();
-    r.background.set("uTop", s.backgroundTop);
-    r.background.set("uHorizon", s.backgroundHorizon);
-    glBindVertexArray(r.emptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-
     // 2. Opaque solids: figures, paths, targets, pins.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -497,12 +490,9 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
 
     d.flush();
 
-    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected
-    // (blended so it fades into the background).
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
+    // It is opaque and fades into the background gradient by itself.
+    const float viewportHeight = static_cast<float>(height);
     if (scene.showGround) {
         const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
         const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
@@ -521,12 +511,26 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         r.ground.set("uFadeRadius", s.groundHalfSizeCm);
         r.ground.set("uShadow", 0);
         r.ground.set("uShadowRect", rect);
+        r.ground.set("uTop", s.backgroundTop);
+        r.ground.set("uHorizon", s.backgroundHorizon);
+        r.ground.set("uViewportHeight", viewportHeight);
         r.quad.draw();
     }
+
+    // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
+    r.background.use();
+    r.background.set("uTop", s.backgroundTop);
+    r.background.set("uHorizon", s.backgroundHorizon);
+    r.background.set("uViewportHeight", viewportHeight);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(r.emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
     r.lit.use();
 
-    // 4. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
+    // 5. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
     glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     for (const Figure& f : scene.figures) {
         if (!f.ghost) continue;
         d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
@@ -541,7 +545,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         glDepthFunc(GL_LEQUAL);
     }
 
-    // 5. Handles: faint where hidden by the body (x-ray), solid where visible.
+    // 6. Handles: faint where hidden by the body (x-ray), solid where visible.
     auto handleColour = [&](const Handle& h) {
         switch (h.state) {
             case HandleState::kHover: return s.handleHover;
@@ -566,7 +570,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     }
     d.flush();
 
-    // 6. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
+    // 7. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
     if (!scene.caption.empty()) {
         std::vector<char> buffer(64 * 1024);
         std::string text = scene.caption;
@@ -601,7 +605,7 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glBindVertexArray(0);
     glDisable(GL_BLEND);
 
-    // 7. Resolve the multisampled frame into the target framebuffer.
+    // 8. Resolve the multisampled frame into the target framebuffer.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
