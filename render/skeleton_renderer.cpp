@@ -238,6 +238,9 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
     r.samples = std::clamp(msaaSamples, 1, std::max(1, static_cast<int>(maxSamples)));
+    if (r.samples > 1 && msaaSamples != r.samples)
+        throw RenderError("renderer: " + std::to_string(msaaSamples) + "x MSAA requested, the driver offers at most " +
+                          std::to_string(maxSamples) + "x");
     r.lit = ShaderProgram("lit", kLitVs, kLitFs);
     r.ground = ShaderProgram("ground", kGroundVs, kGroundFs);
     r.background = ShaderProgram("background", kBackgroundVs, kBackgroundFs);
@@ -268,6 +271,8 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
         throw RenderError("renderer setup: GL error " + std::to_string(err));
 }
+
+int SceneRenderer::msaaSamples() const { return impl_->samples; }
 
 SceneRenderer::~SceneRenderer() {
     Impl& r = *impl_;
@@ -415,8 +420,11 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
                          unsigned targetFramebuffer) {
     Impl& r = *impl_;
     const RenderStyle& s = style_;
-    r.ensureFramebuffer(width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
+    // With MSAA the frame goes through the renderer's multisampled framebuffer; without it, straight
+    // into the target (which must then have a depth buffer, as the pbuffer and GLFW windows do).
+    const bool msaa = r.samples > 1;
+    if (msaa) r.ensureFramebuffer(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.fbo : targetFramebuffer);
     glViewport(0, 0, width, height);
     glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
@@ -606,9 +614,11 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glDisable(GL_BLEND);
 
     // 8. Resolve the multisampled frame into the target framebuffer.
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (msaa) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
 }
 

@@ -37,7 +37,10 @@ struct RenderStyle {
 class SceneRenderer {
 public:
     // Needs a current 3.3 core context; compiles the shaders and builds the meshes.
+    // msaaSamples 4 (the default, used for PNGs and goldens) or 1 (no antialiasing: draws straight
+    // into the target, cheaper on llvmpipe). Asking for more than the driver offers throws.
     explicit SceneRenderer(int msaaSamples = 4);
+    int msaaSamples() const;
     ~SceneRenderer();
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
