@@ -45,12 +45,29 @@ BodySide sideOfBone(const std::string& role) {
 
 Figure makeFigure(const Skeleton& skeleton, const FkState& fk) {
     Figure fig;
+    // Joints without an ASF role (BVH fingers, thumbs, extra spine joints) take their side from
+    // the parent and are drawn thinner than it.
+    std::vector<BodySide> sides(static_cast<std::size_t>(skeleton.jointCount()), BodySide::kCentre);
+    std::vector<BoneStyle> styles(static_cast<std::size_t>(skeleton.jointCount()), BoneStyle{3.0f, 2.5f});
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        const Joint& joint = skeleton.joints[j];
+        const auto ju = static_cast<std::size_t>(j);
+        if (!joint.bone.empty() || joint.parent < 0) {
+            sides[ju] = sideOfBone(joint.bone);
+            styles[ju] = styleOf(joint.bone);
+        } else {
+            const auto pu = static_cast<std::size_t>(joint.parent);
+            sides[ju] = sides[pu];
+            const float r = std::min(2.0f, 0.7f * styles[pu].endRadius);
+            styles[ju] = {r, r};
+        }
+    }
     for (int j = 0; j < skeleton.jointCount(); ++j) {
         const Joint& joint = skeleton.joints[j];
         const glm::vec3 a = toGlm(fk.jointCm[j]);
         const glm::vec3 b = toGlm(boneEndCm(skeleton, fk, j));
-        const BodySide side = sideOfBone(joint.bone);
-        const BoneStyle style = styleOf(joint.bone);
+        const BodySide side = sides[static_cast<std::size_t>(j)];
+        const BoneStyle style = styles[static_cast<std::size_t>(j)];
         if (joint.bone == "head") {
             // The head as a ball around the head bone with the neck running into it.
             const glm::vec3 dir = glm::length(b - a) > 1e-3f ? glm::normalize(b - a) : glm::vec3(0, 1, 0);
