@@ -1,0 +1,96 @@
+// `motiongp render (CLIP [--skel ASF] | MODEL) --frame T --out FILE.png [--size WxH]
+//  [--camera front|side|three-quarter] [--ghost-captured] [--path EFFECTOR]... [--select EFFECTOR]
+//  [--no-handles]`: draws one frame offscreen (EGL surfaceless, no display) and writes a PNG.
+// The MODEL form (a trained model file: its source clip and pose) is pending the model format;
+// it will build a ClipSceneOptions from the model's source clip like the CLIP form does.
+#include <algorithm>
+#include <iostream>
+#include <regex>
+
+#include "cli_common.h"
+#include "command_registry.h"
+#include "io/clip_loader.h"
+#include "scene_builder.h"
+#include "snapshot.h"
+
+namespace mgp::app {
+namespace {
+
+bool isClipPath(const std::string& path) {
+    std::string lower = path;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    auto endsWith = [&](const char* ext) {
+        const std::string e(ext);
+        return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
+    };
+    return endsWith(".amc") || endsWith(".bvh");
+}
+
+Effector effectorFromCli(const std::string& option, const std::string& name) {
+    Effector e{};
+    if (!parseEffector(name, e))
+        throw UsageError("expected " + option + " among {lhand, rhand, lfoot, rfoot, head}, found '" + name + "'");
+    return e;
+}
+
+const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no display needed)",
+                              [](CLI::App& sub) -> CommandRunner {
+    auto input = std::make_shared<std::string>();
+    auto skel = std::make_shared<std::string>();
+    auto frame = std::make_shared<long long>(1);
+    auto out = std::make_shared<std::string>();
+    auto size = std::make_shared<std::string>("1280x720");
+    auto camera = std::make_shared<std::string>("three-quarter");
+    auto ghost = std::make_shared<bool>(false);
+    auto paths = std::make_shared<std::vector<std::string>>();
+    auto select = std::make_shared<std::string>();
+    auto noHandles = std::make_shared<bool>(false);
+    sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (pending: model files of the GP issue)")
+        ->required();
+    sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
+    sub.add_option("--frame", *frame, "Frame, counted from 1")->required();
+    sub.add_option("--out", *out, "PNG file to write (atomically)")->required();
+    sub.add_option("--size", *size, "Image size WxH (default 1280x720)");
+    sub.add_option("--camera", *camera, "front | side | three-quarter (relative to where the character faces)");
+    sub.add_flag("--ghost-captured", *ghost, "Also draw the captured pose as a ghost beside the shown one");
+    sub.add_option("--path", *paths, "Draw this effector's trajectory (±60 frames, keys every 20)");
+    sub.add_option("--select", *select, "Show this effector's handle as selected");
+    sub.add_flag("--no-handles", *noHandles, "Hide the effector handles");
+    return [=]() {
+        if (!isClipPath(*input))
+            throw UsageError("expected a CLIP (.amc or .bvh); the MODEL form of `render` is pending the model "
+                             "file format, found '" + *input + "'");
+        std::smatch m;
+        if (!std::regex_match(*size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+            throw UsageError("expected --size WxH (e.g. 1280x720), found '" + *size + "'");
+        const int width = std::stoi(m[1]), height = std::stoi(m[2]);
+        if (width < 16 || height < 16 || width > 8192 || height > 8192)
+            throw UsageError("expected --size between 16x16 and 8192x8192, found '" + *size + "'");
+        render::CameraPreset preset{};
+        if (!render::parseCameraPreset(camera->c_str(), preset))
+            throw UsageError("expected --camera among {front, side, three-quarter}, found '" + *camera + "'");
+
+        const Clip clip = loadClip(*input, *skel);
+        render::ClipSceneOptions opt;
+        opt.frameIndex = frameIndexFromCli(clip, *frame);
+        opt.ghostCaptured = *ghost;
+        opt.handles = !*noHandles;
+        for (const std::string& p : *paths) opt.paths.push_back(effectorFromCli("--path", p));
+        if (!select->empty()) opt.selected = effectorFromCli("--select", *select);
+        const render::Scene scene = render::buildClipScene(clip, opt);
+
+        FkState fk;
+        forwardKinematics(clip.skeleton, clip.frames[opt.frameIndex], fk);
+        render::OffscreenContext context(width, height);
+        render::SceneRenderer renderer;
+        const render::OrbitCamera cam = render::framedPresetCamera(
+            preset, scene, render::characterForward(clip.skeleton, fk), width, height);
+        render::writePng(render::snapshot(context, renderer, scene, cam), *out);
+        std::cout << "wrote " << *out << " (" << width << "x" << height << ", " << clip.name << " frame " << *frame
+                  << ", " << render::cameraPresetName(preset) << " camera)\n";
+        return 0;
+    };
+});
+
+}  // namespace
+}  // namespace mgp::app

@@ -1,0 +1,21 @@
+#pragma once
+// Picking effector handles with a ray from a pixel (pure maths, no GL context).
+#include <vector>
+
+#include "camera.h"
+#include "scene.h"
+
+namespace mgp::render {
+
+// Distance along the ray to the first hit of a sphere, or a negative value for a miss.
+float raySphere(const Ray& ray, const glm::vec3& centreCm, float radiusCm);
+
+// Index into `handles` of the nearest handle the ray hits, -1 for none. Each handle's sphere
+// is grown by `slackCm` so small handles stay easy to grab.
+int pickHandle(const std::vector<Handle>& handles, const Ray& ray, float slackCm = 1.0f);
+
+// Convenience: picks under pixel (x, y) (y down) of a width×height viewport.
+int pickHandleAtPixel(const std::vector<Handle>& handles, const OrbitCamera& camera, float x, float y, int width,
+                      int height, float slackCm = 1.0f);
+
+}  // namespace mgp::render

@@ -1,0 +1,80 @@
+#include "png_capture.h"
+
+#include <GL/gl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "gl_context.h"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#endif
+#include <stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace mgp::render {
+
+Image readFramebuffer(int width, int height) {
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    std::vector<std::uint8_t> tmp(row);
+    for (int y = 0; y < height / 2; ++y) {
+        std::uint8_t* a = img.rgba.data() + row * y;
+        std::uint8_t* b = img.rgba.data() + row * (height - 1 - y);
+        std::memcpy(tmp.data(), a, row);
+        std::memcpy(a, b, row);
+        std::memcpy(b, tmp.data(), row);
+    }
+    return img;
+}
+
+std::vector<std::uint8_t> encodePng(const Image& image) {
+    if (image.width < 1 || image.height < 1 ||
+        image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+        throw RenderError("PNG encode: expected a non-empty RGBA8 image, found " + std::to_string(image.width) +
+                          "x" + std::to_string(image.height) + " with " + std::to_string(image.rgba.size()) +
+                          " bytes");
+    std::vector<std::uint8_t> out;
+    auto sink = [](void* ctx, void* data, int size) {
+        auto* v = static_cast<std::vector<std::uint8_t>*>(ctx);
+        const auto* p = static_cast<const std::uint8_t*>(data);
+        v->insert(v->end(), p, p + size);
+    };
+    if (!stbi_write_png_to_func(sink, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+        throw RenderError("PNG encode failed");
+    return out;
+}
+
+void writePng(const Image& image, const std::string& path) {
+    const std::vector<std::uint8_t> bytes = encodePng(image);
+    const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        if (!f) throw RenderError("cannot write PNG: expected a writable path, found '" + path + "'");
+        f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        f.close();
+        if (!f) {
+            std::remove(tmp.c_str());
+            throw RenderError("cannot write PNG '" + path + "' (disk full?)");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw RenderError("cannot write PNG: rename to '" + path + "' failed: " + std::strerror(errno));
+    }
+}
+
+}  // namespace mgp::render

@@ -1,0 +1,84 @@
+#pragma once
+// What the viewport shows, as plain data (no GL): the ui/ layer and the CLI fill a Scene and
+// SceneRenderer draws it. World is Y up, right-handed, centimetres (DESIGN.md §2).
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace mgp::render {
+
+// Which side of the body a bone belongs to: left bones (ASF roles starting with 'l') are drawn
+// grey as in the paper, right bones in a warm colour, the spine and head neutral.
+enum class BodySide { kCentre, kLeft, kRight };
+
+struct BoneSegment {
+    glm::vec3 startCm{0.0f};
+    glm::vec3 endCm{0.0f};
+    float startRadiusCm = 3.0f;  // tapered solid: start radius ...
+    float endRadiusCm = 2.0f;    // ... to end radius
+    BodySide side = BodySide::kCentre;
+};
+
+struct JointBall {
+    glm::vec3 centreCm{0.0f};
+    float radiusCm = 3.0f;
+    BodySide side = BodySide::kCentre;
+};
+
+// One posed skeleton. A ghost is drawn semi-transparent in one tint (e.g. the captured pose
+// beside the edited one, or a second model side by side).
+struct Figure {
+    std::vector<BoneSegment> bones;
+    std::vector<JointBall> joints;
+    bool ghost = false;
+    glm::vec3 ghostTint{0.45f, 0.62f, 0.95f};
+    float ghostAlpha = 0.35f;
+    bool castsShadow = true;
+};
+
+enum class HandleState { kIdle, kHover, kSelected };
+
+// A draggable effector handle (hands, feet, head); `id` is the caller's (e.g. the Effector).
+struct Handle {
+    int id = 0;
+    glm::vec3 positionCm{0.0f};
+    float radiusCm = 4.5f;
+    HandleState state = HandleState::kIdle;
+};
+
+// An IK target; when `fromCm` is set a thin line joins the effector to it.
+struct Target {
+    glm::vec3 positionCm{0.0f};
+    bool hasFrom = false;
+    glm::vec3 fromCm{0.0f};
+    bool reached = false;
+};
+
+// A pinned effector (e.g. a planted foot): a pin stands on this point.
+struct Pin {
+    glm::vec3 positionCm{0.0f};
+};
+
+// A polyline (an effector trajectory, e.g. a Hermite curve) with optional key points and a
+// highlighted current point.
+struct Path {
+    std::vector<glm::vec3> pointsCm;
+    std::vector<glm::vec3> keysCm;
+    glm::vec3 colour{0.20f, 0.55f, 0.95f};
+    int currentPoint = -1;  // index into pointsCm, -1 for none
+    float radiusCm = 0.6f;
+};
+
+struct Scene {
+    std::vector<Figure> figures;
+    std::vector<Handle> handles;
+    std::vector<Target> targets;
+    std::vector<Pin> pins;
+    std::vector<Path> paths;
+    float groundHeightCm = 0.0f;
+    bool showGround = true;
+    glm::vec3 groundCentreCm{0.0f};  // the grid is centred (snapped to 1 m) under this point
+    std::string caption;             // drawn at the bottom-left ("" for none)
+};
+
+}  // namespace mgp::render

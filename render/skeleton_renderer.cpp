@@ -1,0 +1,625 @@
+#include "skeleton_renderer.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "gl_context.h"
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wconversion"
+#endif
+#include <stb_easy_font.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace mgp::render {
+
+namespace {
+
+// ---- Shaders (GLSL 3.30 core, embedded so installs need no asset files) -------------------------
+
+// Solids are drawn instanced, one draw per (mesh, pass). Per instance: iA = (start or centre,
+// radius), iB = (end, end radius) for tubes, iColour = (sRGB, alpha), iExtra.x = emissive.
+const char* kLitVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 iA;
+layout(location = 3) in vec4 iB;
+layout(location = 4) in vec4 iColour;
+layout(location = 5) in vec4 iExtra;
+uniform mat4 uViewProj;
+uniform int uTube;       // 0: sphere at iA.xyz with radius iA.w, 1: tapered tube iA -> iB
+out vec3 vWorld;
+out vec3 vNormal;
+flat out vec4 vColour;
+flat out float vEmissive;
+void main() {
+    vec3 p;
+    vec3 n;
+    if (uTube == 1) {
+        vec3 axis = iB.xyz - iA.xyz;
+        float len = max(length(axis), 1e-6);
+        vec3 ay = axis / len;
+        vec3 helper = abs(ay.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        vec3 ax = normalize(cross(helper, ay));
+        vec3 az = cross(ax, ay);
+        float t = aPosition.y;
+        vec3 radial = aPosition.x * ax + aPosition.z * az;
+        p = iA.xyz + ay * (len * t) + radial * mix(iA.w, iB.w, t);
+        n = normalize(radial * len + ay * (iA.w - iB.w));
+    } else {
+        p = iA.xyz + aPosition * iA.w;
+        n = aNormal;
+    }
+    vWorld = p;
+    vNormal = n;
+    vColour = vec4(pow(iColour.rgb, vec3(2.2)), iColour.a);
+    vEmissive = iExtra.x;
+    gl_Position = uViewProj * vec4(p, 1.0);
+}
+)";
+
+const char* kLitFs = R"(#version 330 core
+in vec3 vWorld;
+in vec3 vNormal;
+flat in vec4 vColour;     // linear rgb, alpha
+flat in float vEmissive;
+out vec4 fragColour;
+uniform vec3 uEye;
+uniform vec3 uKeyDir;     // towards the key light (world)
+uniform vec3 uFillDir;    // towards the fill light (world)
+void main() {
+    vec3 n = normalize(vNormal);
+    vec3 v = normalize(uEye - vWorld);
+    if (dot(n, v) < 0.0) n = -n;
+    vec3 base = vColour.rgb;
+    float hemi = 0.5 + 0.5 * n.y;
+    vec3 ambient = mix(vec3(0.10, 0.095, 0.09), vec3(0.30, 0.32, 0.36), hemi);
+    float key = max(dot(n, uKeyDir), 0.0);
+    float fill = max(dot(n, uFillDir), 0.0);
+    vec3 h = normalize(uKeyDir + v);
+    float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.22 * step(0.0, key);
+    float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0) * 0.30;
+    vec3 lin = base * (ambient + key * vec3(1.0, 0.96, 0.90) * 1.05 + fill * vec3(0.55, 0.62, 0.75) * 0.35)
+             + vec3(spec) + rim * vec3(0.55, 0.62, 0.75) * (0.4 + 0.6 * hemi) + base * vEmissive;
+    lin = lin / (1.0 + 0.15 * lin);  // gentle shoulder so highlights do not clip
+    fragColour = vec4(pow(lin, vec3(1.0 / 2.2)), vColour.a);
+}
+)";
+
+const char* kGroundVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform mat4 uViewProj;
+uniform vec3 uCentre;    // grid centre (x, ground height, z)
+uniform float uHalfSize;
+out vec3 vWorld;
+void main() {
+    vWorld = vec3(uCentre.x + aPosition.x * uHalfSize, uCentre.y, uCentre.z + aPosition.z * uHalfSize);
+    gl_Position = uViewProj * vec4(vWorld, 1.0);
+}
+)";
+
+const char* kGroundFs = R"(#version 330 core
+in vec3 vWorld;
+out vec4 fragColour;
+uniform vec3 uGround;
+uniform vec3 uMinor;
+uniform vec3 uMajor;
+uniform vec3 uFocus;        // where the character stands (fade and shadow centre)
+uniform float uFadeRadius;
+uniform vec3 uTop;          // background gradient, to fade into (the ground is opaque)
+uniform vec3 uHorizon;
+uniform float uViewportHeight;
+uniform sampler2D uShadow;  // contact-shadow factor (1 = lit), baked on the CPU
+uniform vec4 uShadowRect;   // x, z of its corner, 1 / its size in x and z (cm)
+float gridLine(vec2 p, float spacing, float widthPx) {
+    vec2 c = p / spacing;
+    vec2 d = max(fwidth(c), vec2(1e-6));
+    vec2 g = abs(fract(c - 0.5) - 0.5) / d;
+    float line = 1.0 - clamp(min(g.x, g.y) / widthPx, 0.0, 1.0);
+    // Fade a grid level out before its lines merge into moire.
+    float density = max(d.x, d.y);
+    return line * (1.0 - smoothstep(0.12, 0.35, density));
+}
+void main() {
+    vec2 p = vWorld.xz;
+    vec3 c = uGround;
+    c = mix(c, uMinor, gridLine(p, 10.0, 1.0) * 0.8);
+    c = mix(c, uMajor, gridLine(p, 100.0, 1.4));
+    // World axes through the origin: X reddish, Z bluish.
+    vec2 w = fwidth(p);
+    float ax = 1.0 - clamp(abs(p.y) / (1.6 * w.y), 0.0, 1.0);
+    float az = 1.0 - clamp(abs(p.x) / (1.6 * w.x), 0.0, 1.0);
+    c = mix(c, vec3(0.70, 0.30, 0.28), ax * 0.8);
+    c = mix(c, vec3(0.28, 0.42, 0.72), az * 0.8);
+    vec2 uv = (p - uShadowRect.xy) * uShadowRect.zw;
+    float shade = 1.0;
+    if (all(greaterThan(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)))) shade = texture(uShadow, uv).r;
+    c *= shade;
+    float dist = length(p - uFocus.xz);
+    float alpha = 1.0 - smoothstep(0.45 * uFadeRadius, uFadeRadius, dist);
+    vec3 background = mix(uHorizon, uTop, smoothstep(0.0, 1.0, gl_FragCoord.y / uViewportHeight));
+    fragColour = vec4(mix(background, c, alpha), 1.0);
+}
+)";
+
+const char* kBackgroundVs = R"(#version 330 core
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
+    gl_Position = vec4(p, 1.0, 1.0);  // on the far plane: only pixels nothing has covered
+}
+)";
+
+const char* kBackgroundFs = R"(#version 330 core
+out vec4 fragColour;
+uniform vec3 uTop;
+uniform vec3 uHorizon;
+uniform float uViewportHeight;
+void main() {
+    fragColour = vec4(mix(uHorizon, uTop, smoothstep(0.0, 1.0, gl_FragCoord.y / uViewportHeight)), 1.0);
+}
+)";
+
+const char* kTextVs = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform vec2 uViewport;
+uniform vec2 uOffset;
+uniform float uScale;
+void main() {
+    vec2 px = aPosition.xy * uScale + uOffset;
+    gl_Position = vec4(px.x / uViewport.x * 2.0 - 1.0, 1.0 - px.y / uViewport.y * 2.0, 0.0, 1.0);
+}
+)";
+
+const char* kTextFs = R"(#version 330 core
+out vec4 fragColour;
+uniform vec4 uColour;
+void main() { fragColour = uColour; }
+)";
+
+constexpr int kMaxBlobs = 64;
+constexpr int kShadowRes = 128;
+
+}  // namespace
+
+struct SceneRenderer::Impl {
+    ShaderProgram lit, ground, background, text;
+    GpuMesh sphere, smallSphere, tube, thinTube, quad;
+    unsigned instanceVbo = 0;
+    unsigned shadowTexture = 0;
+    std::vector<std::uint8_t> shadowTexels;
+
+    // Bakes the contact shadows (a product of gaussian blobs) into a kShadowRes² texture over
+    // the square that holds them; returns (corner x, corner z, 1/size, 1/size) for the shader.
+    glm::vec4 updateShadowTexture(const Scene& scene);
+    unsigned emptyVao = 0;
+    unsigned textVao = 0, textVbo = 0;
+    int samples = 4;
+    unsigned fbo = 0, colourRb = 0, depthRb = 0;
+    int fboWidth = 0, fboHeight = 0;
+
+    void ensureFramebuffer(int w, int h) {
+        if (fbo && w == fboWidth && h == fboHeight) return;
+        releaseFramebuffer();
+        glGenFramebuffers(1, &fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glGenRenderbuffers(1, &colourRb);
+        glBindRenderbuffer(GL_RENDERBUFFER, colourRb);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colourRb);
+        glGenRenderbuffers(1, &depthRb);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthRb);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRb);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RenderError("renderer: the " + std::to_string(samples) + "x multisampled framebuffer of " +
+                              std::to_string(w) + "x" + std::to_string(h) + " is incomplete");
+        fboWidth = w;
+        fboHeight = h;
+    }
+    void releaseFramebuffer() {
+        if (depthRb) glDeleteRenderbuffers(1, &depthRb);
+        if (colourRb) glDeleteRenderbuffers(1, &colourRb);
+        if (fbo) glDeleteFramebuffers(1, &fbo);
+        fbo = colourRb = depthRb = 0;
+    }
+};
+
+SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) {
+    Impl& r = *impl_;
+    GLint maxSamples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    r.samples = std::clamp(msaaSamples, 1, std::max(1, static_cast<int>(maxSamples)));
+    if (r.samples > 1 && msaaSamples != r.samples)
+        throw RenderError("renderer: " + std::to_string(msaaSamples) + "x MSAA requested, the driver offers at most " +
+                          std::to_string(maxSamples) + "x");
+    r.lit = ShaderProgram("lit", kLitVs, kLitFs);
+    r.ground = ShaderProgram("ground", kGroundVs, kGroundFs);
+    r.background = ShaderProgram("background", kBackgroundVs, kBackgroundFs);
+    r.text = ShaderProgram("text", kTextVs, kTextFs);
+    // llvmpipe's cost is mostly per triangle: small and thin things get coarser meshes.
+    r.sphere = GpuMesh(makeSphere(20, 12));
+    r.smallSphere = GpuMesh(makeSphere(10, 6));
+    r.tube = GpuMesh(makeTube(20));
+    r.thinTube = GpuMesh(makeTube(8));
+    r.quad = GpuMesh(makeQuadXZ());
+    glGenBuffers(1, &r.instanceVbo);
+    glGenTextures(1, &r.shadowTexture);
+    glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kShadowRes, kShadowRes, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    for (const GpuMesh* m : {&r.sphere, &r.smallSphere, &r.tube, &r.thinTube}) m->attachInstanceBuffer(r.instanceVbo, 2, 4);
+    glGenVertexArrays(1, &r.emptyVao);
+    glGenVertexArrays(1, &r.textVao);
+    glGenBuffers(1, &r.textVbo);
+    glBindVertexArray(r.textVao);
+    glBindBuffer(GL_ARRAY_BUFFER, r.textVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    glBindVertexArray(0);
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw RenderError("renderer setup: GL error " + std::to_string(err));
+}
+
+int SceneRenderer::msaaSamples() const { return impl_->samples; }
+
+SceneRenderer::~SceneRenderer() {
+    Impl& r = *impl_;
+    r.releaseFramebuffer();
+    glDeleteBuffers(1, &r.textVbo);
+    glDeleteBuffers(1, &r.instanceVbo);
+    glDeleteTextures(1, &r.shadowTexture);
+    glDeleteVertexArrays(1, &r.textVao);
+    glDeleteVertexArrays(1, &r.emptyVao);
+}
+
+namespace {
+
+glm::vec3 sideColour(const RenderStyle& s, BodySide side) {
+    switch (side) {
+        case BodySide::kLeft: return s.leftBone;
+        case BodySide::kRight: return s.rightBone;
+        case BodySide::kCentre: break;
+    }
+    return s.centreBone;
+}
+
+// Collects solids with their colours, then draws them in two instanced calls (tubes, spheres).
+struct Instance {
+    glm::vec4 a, b, colour, extra;
+};
+
+struct Drawer {
+    ShaderProgram& lit;
+    const GpuMesh& sphere;
+    const GpuMesh& smallSphere;
+    const GpuMesh& tube;
+    const GpuMesh& thinTube;
+    unsigned instanceVbo;
+    std::vector<Instance> tubes, thinTubes, balls, smallBalls;
+    glm::vec4 current{1.0f};
+    float emissive = 0.0f;
+
+    void colour(const glm::vec3& c, float alpha = 1.0f, float emit = 0.0f) {
+        current = glm::vec4(c, alpha);
+        emissive = emit;
+    }
+    void ball(const glm::vec3& centre, float radius) {
+        (radius < 2.7f ? smallBalls : balls).push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
+    }
+    void segment(const glm::vec3& a, const glm::vec3& b, float r0, float r1) {
+        if (glm::length(b - a) < 1e-4f) return;
+        (std::max(r0, r1) < 1.5f ? thinTubes : tubes).push_back({glm::vec4(a, r0), glm::vec4(b, r1), current, glm::vec4(emissive, 0, 0, 0)});
+    }
+    void figure(const Figure& f, const RenderStyle& s, bool ghost) {
+        for (const BoneSegment& b : f.bones) {
+            if (!ghost) colour(sideColour(s, b.side));
+            segment(b.startCm, b.endCm, b.startRadiusCm, b.endRadiusCm);
+        }
+        for (const JointBall& j : f.joints) {
+            if (!ghost) colour(sideColour(s, j.side) * 0.92f);
+            ball(j.centreCm, j.radiusCm);
+        }
+    }
+    void drawBatch(const std::vector<Instance>& v, const GpuMesh& mesh, int isTube) {
+        if (v.empty()) return;
+        // Spheres are closed: cull their back faces (half the triangles). Tubes are open at the
+        // ends, so both of their sides are drawn.
+        if (isTube) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE);
+        glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Instance)), v.data(), GL_STREAM_DRAW);
+        lit.set("uTube", isTube);
+        mesh.drawInstanced(static_cast<int>(v.size()));
+    }
+    // Draws what was collected (tubes first), optionally keeping it for another pass.
+    void flush(bool keep = false) {
+        drawBatch(tubes, tube, 1);
+        drawBatch(thinTubes, thinTube, 1);
+        drawBatch(balls, sphere, 0);
+        drawBatch(smallBalls, smallSphere, 0);
+        glDisable(GL_CULL_FACE);
+        if (!keep) {
+            tubes.clear();
+            thinTubes.clear();
+            balls.clear();
+            smallBalls.clear();
+        }
+    }
+};
+
+// Soft contact shadows: one gaussian blob under each joint of every shadow-casting figure,
+// wider and fainter with height, plus a broad one under the figure.
+int shadowBlobs(const Scene& scene, glm::vec4* blobs) {
+    int n = 0;
+    for (const Figure& f : scene.figures) {
+        if (!f.castsShadow || f.ghost || f.joints.empty()) continue;
+        glm::vec3 mean(0.0f);
+        for (const JointBall& j : f.joints) mean += j.centreCm;
+        mean /= static_cast<float>(f.joints.size());
+        if (n < kMaxBlobs) blobs[n++] = glm::vec4(mean.x, mean.z, 38.0f, 0.22f);
+        for (const JointBall& j : f.joints) {
+            if (n >= kMaxBlobs) break;
+            const float h = std::max(0.0f, j.centreCm.y - scene.groundHeightCm);
+            const float strength = 0.42f * std::exp(-h / 45.0f);
+            if (strength < 0.06f) continue;  // high joints add little and cost a lot per pixel
+            blobs[n++] = glm::vec4(j.centreCm.x, j.centreCm.z, j.radiusCm * 1.6f + 0.30f * h, strength);
+        }
+    }
+    return n;
+}
+
+}  // namespace
+
+glm::vec4 SceneRenderer::Impl::updateShadowTexture(const Scene& scene) {
+    glm::vec4 blobs[kMaxBlobs];
+    const int n = shadowBlobs(scene, blobs);
+    if (n == 0) return glm::vec4(0.0f, 0.0f, 0.0f, 0.0f);  // uv stays 0: no shadow anywhere
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int i = 0; i < n; ++i) {
+        const glm::vec2 c(blobs[i].x, blobs[i].y);
+        lo = glm::min(lo, c - glm::vec2(3.0f * blobs[i].z));
+        hi = glm::max(hi, c + glm::vec2(3.0f * blobs[i].z));
+    }
+    const float size = std::max(hi.x - lo.x, hi.y - lo.y);
+    const glm::vec2 corner = 0.5f * (lo + hi) - glm::vec2(0.5f * size);
+    shadowTexels.resize(static_cast<std::size_t>(kShadowRes) * kShadowRes);
+    for (int y = 0; y < kShadowRes; ++y)
+        for (int x = 0; x < kShadowRes; ++x) {
+            const glm::vec2 p = corner + (glm::vec2(static_cast<float>(x), static_cast<float>(y)) + 0.5f) *
+                                             (size / static_cast<float>(kShadowRes));
+            float shade = 1.0f;
+            for (int i = 0; i < n; ++i) {
+                const glm::vec2 d = p - glm::vec2(blobs[i].x, blobs[i].y);
+                const float q = glm::dot(d, d) / (blobs[i].z * blobs[i].z);
+                if (q < 9.0f) shade *= 1.0f - blobs[i].w * std::exp(-q);
+            }
+            // Texels on the border stay fully lit so the clamp-to-edge lookup outside is 1.
+            const bool border = x == 0 || y == 0 || x == kShadowRes - 1 || y == kShadowRes - 1;
+            shadowTexels[static_cast<std::size_t>(y) * kShadowRes + x] =
+                border ? 255 : static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(shade, 0.0f, 1.0f)));
+        }
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kShadowRes, kShadowRes, GL_RED, GL_UNSIGNED_BYTE, shadowTexels.data());
+    return glm::vec4(corner, 1.0f / size, 1.0f / size);
+}
+
+void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
+                         unsigned targetFramebuffer) {
+    Impl& r = *impl_;
+    const RenderStyle& s = style_;
+    // With MSAA the frame goes through the renderer's multisampled framebuffer; without it, straight
+    // into the target (which must then have a depth buffer, as the pbuffer and GLFW windows do).
+    const bool msaa = r.samples > 1;
+    if (msaa) r.ensureFramebuffer(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.fbo : targetFramebuffer);
+    glViewport(0, 0, width, height);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const glm::mat4 viewProj = camera.viewProjection(aspect);
+    const glm::vec3 eye = camera.eye();
+    const glm::mat4 view = camera.view();
+    const glm::vec3 camRight(view[0][0], view[1][0], view[2][0]);
+    const glm::vec3 camUp(view[0][1], view[1][1], view[2][1]);
+    const glm::vec3 camBack(view[0][2], view[1][2], view[2][2]);  // towards the eye
+    // Lights follow the camera (a studio setup): key from the upper left, fill from the right.
+    const glm::vec3 keyDir = glm::normalize(-0.55f * camRight + 0.85f * camUp + 0.65f * camBack);
+    const glm::vec3 fillDir = glm::normalize(0.8f * camRight - 0.1f * camUp + 0.5f * camBack);
+
+    // 2. Opaque solids: figures, paths, targets, pins.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_BLEND);
+    r.lit.use();
+    r.lit.set("uViewProj", viewProj);
+    r.lit.set("uEye", eye);
+    r.lit.set("uKeyDir", keyDir);
+    r.lit.set("uFillDir", fillDir);
+    Drawer d{r.lit, r.sphere, r.smallSphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {}, {}, glm::vec4(1.0f), 0.0f};
+    for (const Figure& f : scene.figures)
+        if (!f.ghost) d.figure(f, s, false);
+    for (const Path& p : scene.paths) {
+        d.colour(p.colour);
+        for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
+            d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
+        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
+        d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
+        for (const glm::vec3& k : p.keysCm) d.ball(k, p.radiusCm * 3.2f);
+        if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
+            d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
+            d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);
+        }
+    }
+    for (const Target& t : scene.targets) {
+        const glm::vec3 c = t.reached ? s.targetReached : s.targetMissed;
+        d.colour(c, 1.0f, 0.15f);
+        const float arm = 5.0f;
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 e(0.0f);
+            e[axis] = arm;
+            d.segment(t.positionCm - e, t.positionCm + e, 0.7f, 0.7f);
+        }
+        d.ball(t.positionCm, 1.8f);
+        if (t.hasFrom) {
+            d.colour(glm::mix(c, glm::vec3(1.0f), 0.3f));
+            d.segment(t.fromCm, t.positionCm, 0.35f, 0.35f);
+        }
+    }
+    for (const Pin& p : scene.pins) {
+        // A map pin standing on the pinned point, with a small cross at its tip.
+        d.colour(s.pin, 1.0f, 0.1f);
+        const glm::vec3 tip = p.positionCm;
+        d.segment(tip, tip + glm::vec3(0.0f, 12.0f, 0.0f), 0.25f, 1.2f);
+        d.ball(tip + glm::vec3(0.0f, 14.0f, 0.0f), 2.6f);
+        d.segment(tip + glm::vec3(-3.5f, 0.0f, 0.0f), tip + glm::vec3(3.5f, 0.0f, 0.0f), 0.5f, 0.5f);
+        d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
+    }
+
+    d.flush();
+
+    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
+    // It is opaque and fades into the background gradient by itself.
+    const float viewportHeight = static_cast<float>(height);
+    if (scene.showGround) {
+        const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
+        const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
+                               std::round(focus.z / 100.0f) * 100.0f);
+        const glm::vec4 rect = r.updateShadowTexture(scene);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
+        r.ground.use();
+        r.ground.set("uViewProj", viewProj);
+        r.ground.set("uCentre", centre);
+        r.ground.set("uHalfSize", s.groundHalfSizeCm);
+        r.ground.set("uGround", s.ground);
+        r.ground.set("uMinor", s.gridMinor);
+        r.ground.set("uMajor", s.gridMajor);
+        r.ground.set("uFocus", focus);
+        r.ground.set("uFadeRadius", s.groundHalfSizeCm);
+        r.ground.set("uShadow", 0);
+        r.ground.set("uShadowRect", rect);
+        r.ground.set("uTop", s.backgroundTop);
+        r.ground.set("uHorizon", s.backgroundHorizon);
+        r.ground.set("uViewportHeight", viewportHeight);
+        r.quad.draw();
+    }
+
+    // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
+    r.background.use();
+    r.background.set("uTop", s.backgroundTop);
+    r.background.set("uHorizon", s.backgroundHorizon);
+    r.background.set("uViewportHeight", viewportHeight);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(r.emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    r.lit.use();
+
+    // 5. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    for (const Figure& f : scene.figures) {
+        if (!f.ghost) continue;
+        d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
+        d.figure(f, s, true);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        d.flush(true);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_EQUAL);
+        d.flush();
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LEQUAL);
+    }
+
+    // 6. Handles: faint where hidden by the body (x-ray), solid where visible.
+    auto handleColour = [&](const Handle& h) {
+        switch (h.state) {
+            case HandleState::kHover: return s.handleHover;
+            case HandleState::kSelected: return s.handleSelected;
+            case HandleState::kIdle: break;
+        }
+        return s.handleIdle;
+    };
+    auto handleRadius = [](const Handle& h) { return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm; };
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_GREATER);
+    for (const Handle& h : scene.handles) {
+        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.15f : 0.3f, 0.5f);
+        d.ball(h.positionCm, handleRadius(h));
+    }
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    for (const Handle& h : scene.handles) {
+        const float emissive = h.state == HandleState::kIdle ? 0.15f : 0.55f;
+        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.75f : 0.95f, emissive);
+        d.ball(h.positionCm, handleRadius(h));
+    }
+    d.flush();
+
+    // 7. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
+    if (!scene.caption.empty()) {
+        std::vector<char> buffer(64 * 1024);
+        std::string text = scene.caption;
+        const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(),
+                                              static_cast<int>(buffer.size()));
+        std::vector<float> tris;
+        tris.reserve(static_cast<std::size_t>(quads) * 18);
+        for (int q = 0; q < quads; ++q) {
+            const float* v = reinterpret_cast<const float*>(buffer.data() + q * 64);
+            const int order[6] = {0, 1, 2, 0, 2, 3};
+            for (int k : order) tris.insert(tris.end(), {v[k * 4 + 0], v[k * 4 + 1], 0.0f});
+        }
+        const float scale = height >= 400 ? 2.0f : 1.0f;
+        const float textHeight = 8.0f * scale;
+        glDisable(GL_DEPTH_TEST);
+        r.text.use();
+        r.text.set("uViewport", glm::vec2(static_cast<float>(width), static_cast<float>(height)));
+        r.text.set("uScale", scale);
+        glBindVertexArray(r.textVao);
+        glBindBuffer(GL_ARRAY_BUFFER, r.textVbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(float)), tris.data(),
+                     GL_STREAM_DRAW);
+        const glm::vec2 origin(8.0f * scale, static_cast<float>(height) - textHeight - 6.0f * scale);
+        r.text.set("uOffset", origin + glm::vec2(scale, scale));
+        r.text.set("uColour", glm::vec4(0.0f, 0.0f, 0.0f, 0.6f));
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+        r.text.set("uOffset", origin);
+        r.text.set("uColour", glm::vec4(0.95f, 0.95f, 0.95f, 1.0f));
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+        glEnable(GL_DEPTH_TEST);
+    }
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+
+    // 8. Resolve the multisampled frame into the target framebuffer.
+    if (msaa) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+}
+
+}  // namespace mgp::render

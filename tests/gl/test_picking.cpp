@@ -1,0 +1,38 @@
+// Picking effector handles with a ray from a pixel: no GL context needed.
+#include <doctest/doctest.h>
+
+#include "picking.h"
+
+using namespace mgp::render;
+
+TEST_CASE("picking: ray-sphere hits, misses and starts inside") {
+    const Ray r{{0, 0, 0}, {0, 0, -1}};
+    CHECK(raySphere(r, {0, 0, -10}, 2) == doctest::Approx(8));
+    CHECK(raySphere(r, {3, 0, -10}, 2) < 0);
+    CHECK(raySphere(r, {0, 0, 10}, 2) < 0);  // behind the origin
+    CHECK(raySphere(r, {0, 0, 0}, 2) == doctest::Approx(0));
+}
+
+TEST_CASE("picking: the nearest handle under the pixel wins") {
+    OrbitCamera cam;
+    cam.targetCm = {0, 100, 0};
+    cam.yawDeg = 0;
+    cam.pitchDeg = 0;
+    cam.distanceCm = 300;
+    std::vector<Handle> handles(3);
+    handles[0].id = 10;
+    handles[0].positionCm = {0, 100, -50};  // behind handle 1 on the same line of sight
+    handles[1].id = 11;
+    handles[1].positionCm = {0, 100, 20};
+    handles[2].id = 12;
+    handles[2].positionCm = {60, 140, 0};
+    const int w = 640, h = 480;
+    CHECK(pickHandleAtPixel(handles, cam, w / 2.0f, h / 2.0f, w, h) == 1);
+    glm::vec3 px;
+    REQUIRE(cam.project(handles[2].positionCm, w, h, px));
+    CHECK(pickHandleAtPixel(handles, cam, px.x, px.y, w, h) == 2);
+    // Just outside the handle's radius (plus slack) in pixels: nothing.
+    CHECK(pickHandleAtPixel(handles, cam, px.x + 40.0f, px.y, w, h) == -1);
+    CHECK(pickHandleAtPixel(handles, cam, 5, 5, w, h) == -1);
+    CHECK(pickHandle({}, cam.rayFromPixel(1, 1, w, h)) == -1);
+}
