@@ -67,22 +67,28 @@ double sqDist(const Eigen::MatrixXd& X, Eigen::Index i, const Eigen::VectorXd& x
 }  // namespace
 
 GramParts Kernel::parts(const Eigen::MatrixXd& X) const {
-    const Eigen::Index m = X.rows();
     GramParts p;
+    parts(X, p);
+    return p;
+}
+
+void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
+    const Eigen::Index m = X.rows();
     p.r2.resize(m, m);
     for (Eigen::Index j = 0; j < m; ++j) {
         p.r2(j, j) = 0.0;
         for (Eigen::Index i = j + 1; i < m; ++i) p.r2(i, j) = p.r2(j, i) = sqDist(X, i, j);
     }
-    p.R = (p.r2.array() * (-0.5 * gamma_)).exp().matrix();  // elementwise: stays exactly symmetric
+    p.R.resize(m, m);
+    p.R.array() = (p.r2.array() * (-0.5 * gamma_)).exp();  // elementwise: stays exactly symmetric
     if (hasEta()) {
         directions(X, p.phi, p.n);
         p.C.noalias() = p.phi * p.phi.transpose();
         for (Eigen::Index j = 0; j < m; ++j)
             for (Eigen::Index i = j + 1; i < m; ++i) p.C(j, i) = p.C(i, j);  // exactly symmetric
-        p.E = p.C.array().exp().matrix();
+        p.E.resize(m, m);
+        p.E.array() = p.C.array().exp();
     }
-    return p;
 }
 
 Eigen::MatrixXd Kernel::gram(const GramParts& p) const {
@@ -109,11 +115,14 @@ Eigen::VectorXd Kernel::gradLogParams(const Eigen::MatrixXd& X, const Eigen::Mat
 
 Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const {
     // RBF: 2 Σ_j G_ij (−αγ)(x_i − x_j) R_ij = −2αγ (diag(H1) X − H X)_i with H = G∘R.
-    const Eigen::MatrixXd H = (G.array() * p.R.array()).matrix();
+    thread_local Eigen::MatrixXd H, Q;  // scratch storage reused across calls
+    H.resize(G.rows(), G.cols());
+    H.array() = G.array() * p.R.array();
     Eigen::MatrixXd out = (-2.0 * alpha_ * gamma_) * (H.rowwise().sum().asDiagonal() * X - H * X);
     if (hasEta()) {
         // Angular: 2 Σ_j G_ij η E_ij (φ_j − C_ij φ_i)/n_i = 2η/n_i ((QΦ)_i − ((Q∘C)1)_i φ_i), Q = G∘E.
-        const Eigen::MatrixXd Q = (G.array() * p.E.array()).matrix();
+        Q.resize(G.rows(), G.cols());
+        Q.array() = G.array() * p.E.array();
         const Eigen::VectorXd qc = (Q.array() * p.C.array()).rowwise().sum();
         const Eigen::MatrixXd ang = Q * p.phi - qc.asDiagonal() * p.phi;
         out += (2.0 * eta_) * (p.n.cwiseInverse().asDiagonal() * ang);
