@@ -170,15 +170,19 @@ Eigen::MatrixXd Kernel::crossGradX(const Eigen::MatrixXd& X, const Eigen::Vector
     const double nx = norm(x);
     const Eigen::VectorXd phiX = x / nx;
     for (Eigen::Index j = 0; j < m; ++j) {
-        const double R = std::exp(-0.5 * gamma_ * sqDist(X, j, x));
-        Eigen::VectorXd g = (-alpha_ * gamma_ * R) * (x - X.row(j).transpose());
+        const double rbf = -alpha_ * gamma_ * std::exp(-0.5 * gamma_ * sqDist(X, j, x));
+        for (Eigen::Index c = 0; c < d; ++c) J(j, c) = rbf * (x[c] - X(j, c));
         if (hasEta()) {
-            const double nj = std::sqrt(X.row(j).squaredNorm() + kAngularEps * kAngularEps);
-            const Eigen::VectorXd phiJ = X.row(j).transpose() / nj;
-            const double C = phiJ.dot(phiX);
-            g += (eta_ * std::exp(C) / nx) * (phiJ - C * phiX);
+            double nj2 = kAngularEps * kAngularEps, dot = 0.0;
+            for (Eigen::Index c = 0; c < d; ++c) {
+                nj2 += X(j, c) * X(j, c);
+                dot += X(j, c) * phiX[c];
+            }
+            const double nj = std::sqrt(nj2);
+            const double C = dot / nj;  // φ_j·φ(x)
+            const double s = eta_ * std::exp(C) / nx;
+            for (Eigen::Index c = 0; c < d; ++c) J(j, c) += s * (X(j, c) / nj - C * phiX[c]);
         }
-        J.row(j) = g.transpose();
     }
     return J;
 }

@@ -94,8 +94,9 @@ public:
 
     // Individual steps (public for the benchmark and tests).
     std::vector<int> selectActive() const;                       // Step 5/7
-    double optimizeActive(const std::vector<int>& active, IterationLog* entry);  // Step 6
-    void optimizeInactive(const std::vector<int>& active);      // Step 8
+    double optimizeActive(const std::vector<int>& active, IterationLog* entry,
+                          const std::atomic<bool>* cancel = nullptr);  // Step 6
+    void optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel = nullptr);  // Step 8
 
 private:
     TrainingData data_;
