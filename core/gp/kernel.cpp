@@ -73,21 +73,37 @@ GramParts Kernel::parts(const Eigen::MatrixXd& X) const {
 }
 
 void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
+    // Lower triangle with scalar std::exp (faster here than Eigen's vectorised exp on the full
+    // matrix), then mirrored, so every matrix is exactly symmetric.
     const Eigen::Index m = X.rows();
+    const double g = -0.5 * gamma_;
     p.r2.resize(m, m);
+    p.R.resize(m, m);
     for (Eigen::Index j = 0; j < m; ++j) {
         p.r2(j, j) = 0.0;
-        for (Eigen::Index i = j + 1; i < m; ++i) p.r2(i, j) = p.r2(j, i) = sqDist(X, i, j);
+        p.R(j, j) = 1.0;
+        for (Eigen::Index i = j + 1; i < m; ++i) {
+            const double r2 = sqDist(X, i, j);
+            p.r2(i, j) = r2;
+            p.R(i, j) = std::exp(g * r2);
+        }
     }
-    p.R.resize(m, m);
-    p.R.array() = (p.r2.array() * (-0.5 * gamma_)).exp();  // elementwise: stays exactly symmetric
+    p.r2.triangularView<Eigen::StrictlyUpper>() = p.r2.transpose();
+    p.R.triangularView<Eigen::StrictlyUpper>() = p.R.transpose();
     if (hasEta()) {
         directions(X, p.phi, p.n);
-        p.C.noalias() = p.phi * p.phi.transpose();
-        for (Eigen::Index j = 0; j < m; ++j)
-            for (Eigen::Index i = j + 1; i < m; ++i) p.C(j, i) = p.C(i, j);  // exactly symmetric
+        p.C.resize(m, m);
         p.E.resize(m, m);
-        p.E.array() = p.C.array().exp();
+        const Eigen::Index d = X.cols();
+        for (Eigen::Index j = 0; j < m; ++j)
+            for (Eigen::Index i = j; i < m; ++i) {
+                double c = 0.0;
+                for (Eigen::Index k = 0; k < d; ++k) c += p.phi(i, k) * p.phi(j, k);
+                p.C(i, j) = c;
+                p.E(i, j) = std::exp(c);
+            }
+        p.C.triangularView<Eigen::StrictlyUpper>() = p.C.transpose();
+        p.E.triangularView<Eigen::StrictlyUpper>() = p.E.transpose();
     }
 }
 
