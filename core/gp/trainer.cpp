@@ -146,7 +146,8 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
         entry->L = fin.value;
         entry->gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
         entry->scgIterations = r.iterations;
-        entry->jitter = std::max(maxJitter, fin.jitter);
+        entry->jitter = fin.jitter;
+        entry->trialJitterMax = std::max(maxJitter, fin.jitter);
         entry->psi = psi_;
         entry->w = fin.ok ? fin.w : prevW_;
     }
