@@ -97,10 +97,13 @@ nlohmann::json runOne(const gp::TrainingData& data, gp::TrainOptions opt, int T,
     out["grad_inf"] = e.gradInf;                          // (d)
     out["active_overlap"] = e.activeOverlap;              // (e)
     out["L_final"] = e.L;
-    out["max_jitter"] = 0.0;
-    double jit = 0.0;
-    for (const auto& x : trainer.log()) jit = std::max(jit, x.jitter);
-    out["max_jitter"] = jit;
+    double jit = 0.0, trialJit = 0.0;
+    for (const auto& x : trainer.log()) {
+        jit = std::max(jit, x.jitter);
+        trialJit = std::max(trialJit, x.trialJitterMax);
+    }
+    out["max_jitter_end_of_step6"] = jit;
+    out["max_jitter_any_trial"] = trialJit;
     out["params"] = paramsJson(opt.kind, e.psi);
     out["w_min"] = e.w.minCoeff();
     out["w_max"] = e.w.maxCoeff();

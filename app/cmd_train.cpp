@@ -166,7 +166,8 @@ const CommandRegistration reg(
             for (const auto& e : res.log)
                 log.push_back({{"iter", e.iter}, {"L", e.L}, {"max_delta_raw", e.maxDeltaRaw},
                                {"max_delta_log", e.maxDeltaLog}, {"active_overlap", e.activeOverlap},
-                               {"grad_inf", e.gradInf}, {"jitter", e.jitter}, {"seconds", e.seconds}});
+                               {"grad_inf", e.gradInf}, {"jitter", e.jitter}, {"trial_jitter_max", e.trialJitterMax},
+                               {"seconds", e.seconds}});
             j["log"] = log;
             j["seconds"] = seconds;
             j["out"] = o->out;

@@ -92,3 +92,12 @@ TEST_CASE("cmd train: BVH clips and bad values give clear errors and a non-zero 
     CHECK(model.status != 0);
     CHECK(stderrText().find("fas or sgplvm") != std::string::npos);
 }
+
+TEST_CASE("cmd table1: bad option values are usage errors") {
+    const Run a = run("table1 --iters-scale 2");
+    CHECK(a.status != 0);
+    CHECK(stderrText().find("--iters-scale") != std::string::npos);
+    const Run b = run("table1 --scg-iters 0");
+    CHECK(b.status != 0);
+    CHECK(stderrText().find("--scg-iters") != std::string::npos);
+}

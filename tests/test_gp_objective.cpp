@@ -49,7 +49,7 @@ double maxGradError(KernelKind kind, const Fixture& f) {
     auto value = [&](const Eigen::VectorXd& z) {
         Eigen::VectorXd ps;
         Eigen::MatrixXd X;
-        unpackParams(z, p, m, 2, ps, X);
+        unpackParams(z, p, m, static_cast<int>(f.XI.cols()), ps, X);
         return evaluateGp(Kernel(kind, ps), X, f.Yhat, {}, false).value;
     };
     const Eigen::VectorXd z = packParams(psi, f.XI);
@@ -77,6 +77,12 @@ TEST_CASE("L_GP: gradient w.r.t. log-params and X_I matches central differences 
     }
     // One point at ‖x‖ = 1e-4.
     f.XI.row(5) << 0.6e-4, 0.8e-4;
+    for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
+        CAPTURE(kernelKindName(kind));
+        CHECK(maxGradError(kind, f) < 1e-5);
+    }
+    // The code is generic in d: a 3-D latent space.
+    f.XI = whitenedPca(f.Yhat, 3).X;
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
         CAPTURE(kernelKindName(kind));
         CHECK(maxGradError(kind, f) < 1e-5);

@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -111,6 +113,23 @@ TEST_CASE("trainer: a cancel flag set from another thread stops the loop") {
     }, &cancel);
     CHECK(r.cancelled);
     CHECK(r.log.size() == 2);
+}
+
+TEST_CASE("trainer: cancelling from another thread interrupts a long run") {
+    const mgp::Clip clip = mgp::loadClip(kClip);
+    const TrainingData data = smallData(clip, 3);
+    std::atomic<bool> cancel{false};
+    TrainOptions o = smallOptions(KernelKind::kFas, 2);
+    o.outerIterations = 1000000;  // would run for hours without the cancel
+    o.stopOnConvergence = false;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        cancel.store(true);
+    });
+    const TrainResult r = train(data, o, nullptr, &cancel);
+    canceller.join();
+    CHECK(r.cancelled);
+    CHECK(r.log.size() < 1000000);
 }
 
 TEST_CASE("trainer: the raw Step-9 test stops the loop once max |Δ| < C") {

@@ -34,9 +34,16 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
     ev.gradX = Eigen::MatrixXd::Zero(m, d);
     if (m == 0 || D == 0 || Yhat.rows() != m || !XI.allFinite()) return ev;
 
-    const GramParts parts = kernel.parts(XI);
-    const Eigen::MatrixXd K = kernel.gram(parts);
-    Eigen::LLT<Eigen::MatrixXd> llt;
+    // Per-thread scratch: the M×M buffers are reused across calls (no page faults per call).
+    // Only storage is shared between calls, never values, so results do not depend on history.
+    thread_local GramParts parts;
+    thread_local Eigen::MatrixXd K, Linv, G;
+    kernel.parts(XI, parts);
+    K.resize(m, m);
+    K.noalias() = kernel.alpha() * parts.R;
+    if (kernel.hasEta()) K.noalias() += kernel.eta() * parts.E;
+    K.diagonal().array() += 1.0 / kernel.beta();
+    thread_local Eigen::LLT<Eigen::MatrixXd> llt;
     if (!jitterCholesky(K, llt, ev.jitter)) return ev;
     const Eigen::MatrixXd& L = llt.matrixLLT();
     const double logDet = 2.0 * L.diagonal().array().log().sum();
@@ -66,9 +73,9 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
 
     if (wantGradient) {
         // K⁻¹ = L⁻ᵀ L⁻¹ (triangular inverse, then a triangular product).
-        Eigen::MatrixXd Linv = Eigen::MatrixXd::Identity(m, m);
+        Linv.setIdentity(m, m);
         llt.matrixL().solveInPlace(Linv);
-        Eigen::MatrixXd G(m, m);
+        G.resize(m, m);
         G.noalias() = Linv.transpose().triangularView<Eigen::Upper>() * Linv;  // K⁻¹
         const Eigen::MatrixXd A = (G * Yhat) * ev.w.asDiagonal();
         G *= 0.5 * static_cast<double>(D);

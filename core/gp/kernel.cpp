@@ -67,22 +67,44 @@ double sqDist(const Eigen::MatrixXd& X, Eigen::Index i, const Eigen::VectorXd& x
 }  // namespace
 
 GramParts Kernel::parts(const Eigen::MatrixXd& X) const {
-    const Eigen::Index m = X.rows();
     GramParts p;
+    parts(X, p);
+    return p;
+}
+
+void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
+    // Lower triangle with scalar std::exp (faster here than Eigen's vectorised exp on the full
+    // matrix), then mirrored, so every matrix is exactly symmetric.
+    const Eigen::Index m = X.rows();
+    const double g = -0.5 * gamma_;
     p.r2.resize(m, m);
+    p.R.resize(m, m);
     for (Eigen::Index j = 0; j < m; ++j) {
         p.r2(j, j) = 0.0;
-        for (Eigen::Index i = j + 1; i < m; ++i) p.r2(i, j) = p.r2(j, i) = sqDist(X, i, j);
+        p.R(j, j) = 1.0;
+        for (Eigen::Index i = j + 1; i < m; ++i) {
+            const double r2 = sqDist(X, i, j);
+            p.r2(i, j) = r2;
+            p.R(i, j) = std::exp(g * r2);
+        }
     }
-    p.R = (p.r2.array() * (-0.5 * gamma_)).exp().matrix();  // elementwise: stays exactly symmetric
+    p.r2.triangularView<Eigen::StrictlyUpper>() = p.r2.transpose();
+    p.R.triangularView<Eigen::StrictlyUpper>() = p.R.transpose();
     if (hasEta()) {
         directions(X, p.phi, p.n);
-        p.C.noalias() = p.phi * p.phi.transpose();
+        p.C.resize(m, m);
+        p.E.resize(m, m);
+        const Eigen::Index d = X.cols();
         for (Eigen::Index j = 0; j < m; ++j)
-            for (Eigen::Index i = j + 1; i < m; ++i) p.C(j, i) = p.C(i, j);  // exactly symmetric
-        p.E = p.C.array().exp().matrix();
+            for (Eigen::Index i = j; i < m; ++i) {
+                double c = 0.0;
+                for (Eigen::Index k = 0; k < d; ++k) c += p.phi(i, k) * p.phi(j, k);
+                p.C(i, j) = c;
+                p.E(i, j) = std::exp(c);
+            }
+        p.C.triangularView<Eigen::StrictlyUpper>() = p.C.transpose();
+        p.E.triangularView<Eigen::StrictlyUpper>() = p.E.transpose();
     }
-    return p;
 }
 
 Eigen::MatrixXd Kernel::gram(const GramParts& p) const {
@@ -109,11 +131,14 @@ Eigen::VectorXd Kernel::gradLogParams(const Eigen::MatrixXd& X, const Eigen::Mat
 
 Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const {
     // RBF: 2 Σ_j G_ij (−αγ)(x_i − x_j) R_ij = −2αγ (diag(H1) X − H X)_i with H = G∘R.
-    const Eigen::MatrixXd H = (G.array() * p.R.array()).matrix();
+    thread_local Eigen::MatrixXd H, Q;  // scratch storage reused across calls
+    H.resize(G.rows(), G.cols());
+    H.array() = G.array() * p.R.array();
     Eigen::MatrixXd out = (-2.0 * alpha_ * gamma_) * (H.rowwise().sum().asDiagonal() * X - H * X);
     if (hasEta()) {
         // Angular: 2 Σ_j G_ij η E_ij (φ_j − C_ij φ_i)/n_i = 2η/n_i ((QΦ)_i − ((Q∘C)1)_i φ_i), Q = G∘E.
-        const Eigen::MatrixXd Q = (G.array() * p.E.array()).matrix();
+        Q.resize(G.rows(), G.cols());
+        Q.array() = G.array() * p.E.array();
         const Eigen::VectorXd qc = (Q.array() * p.C.array()).rowwise().sum();
         const Eigen::MatrixXd ang = Q * p.phi - qc.asDiagonal() * p.phi;
         out += (2.0 * eta_) * (p.n.cwiseInverse().asDiagonal() * ang);
@@ -161,15 +186,19 @@ Eigen::MatrixXd Kernel::crossGradX(const Eigen::MatrixXd& X, const Eigen::Vector
     const double nx = norm(x);
     const Eigen::VectorXd phiX = x / nx;
     for (Eigen::Index j = 0; j < m; ++j) {
-        const double R = std::exp(-0.5 * gamma_ * sqDist(X, j, x));
-        Eigen::VectorXd g = (-alpha_ * gamma_ * R) * (x - X.row(j).transpose());
+        const double rbf = -alpha_ * gamma_ * std::exp(-0.5 * gamma_ * sqDist(X, j, x));
+        for (Eigen::Index c = 0; c < d; ++c) J(j, c) = rbf * (x[c] - X(j, c));
         if (hasEta()) {
-            const double nj = std::sqrt(X.row(j).squaredNorm() + kAngularEps * kAngularEps);
-            const Eigen::VectorXd phiJ = X.row(j).transpose() / nj;
-            const double C = phiJ.dot(phiX);
-            g += (eta_ * std::exp(C) / nx) * (phiJ - C * phiX);
+            double nj2 = kAngularEps * kAngularEps, dot = 0.0;
+            for (Eigen::Index c = 0; c < d; ++c) {
+                nj2 += X(j, c) * X(j, c);
+                dot += X(j, c) * phiX[c];
+            }
+            const double nj = std::sqrt(nj2);
+            const double C = dot / nj;  // φ_j·φ(x)
+            const double s = eta_ * std::exp(C) / nx;
+            for (Eigen::Index c = 0; c < d; ++c) J(j, c) += s * (X(j, c) / nj - C * phiX[c]);
         }
-        J.row(j) = g.transpose();
     }
     return J;
 }

@@ -54,6 +54,7 @@ public:
     Eigen::VectorXd diagFRows(const Eigen::MatrixXd& X) const;
 
     GramParts parts(const Eigen::MatrixXd& X) const;
+    void parts(const Eigen::MatrixXd& X, GramParts& out) const;  // reuses out's storage
     Eigen::MatrixXd gram(const GramParts& p) const;
     Eigen::VectorXd gradLogParams(const GramParts& p, const Eigen::MatrixXd& G) const;
     Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const;

@@ -51,7 +51,8 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
 }
 
 void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
-                            Eigen::MatrixXd& X, const ScgOptions& options, int threads) {
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads,
+                            const std::atomic<bool>* cancel) {
     if (points.empty()) return;
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min<int>(threads, static_cast<int>(points.size()));
@@ -60,6 +61,10 @@ void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, c
     auto worker = [&]() {
         for (std::size_t t = next++; t < points.size(); t = next++) {
             const int i = points[t];
+            if (cancel && cancel->load()) {
+                results[t] = X.row(i).transpose();
+                continue;
+            }
             const Eigen::VectorXd y = Y.row(i).transpose();
             const ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
                 return model.evaluate(x, y, &g, nullptr);

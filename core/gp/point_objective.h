@@ -11,6 +11,7 @@
 // preallocated slot, so the output is bit-identical for any thread count.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <atomic>
 #include <vector>
 
 #include "gp/kernel.h"
@@ -48,7 +49,9 @@ private:
 
 // Step 8: for every row index in `points`, minimise L_IK(x, Y.row(i)) over x from X.row(i) with
 // SCG, writing the result back into X. threads ≤ 0 means std::thread::hardware_concurrency().
+// If `cancel` becomes true the remaining points are skipped (X is then partly updated).
 void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
-                            Eigen::MatrixXd& X, const ScgOptions& options, int threads = 0);
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads = 0,
+                            const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace mgp::gp

@@ -12,6 +12,7 @@ const char* scgStopName(ScgStop s) {
         case ScgStop::kConverged: return "converged";
         case ScgStop::kZeroGradient: return "zero_gradient";
         case ScgStop::kTinyDirection: return "tiny_direction";
+        case ScgStop::kStopped: return "stopped";
         default: return "bad_start";
     }
 }
@@ -39,6 +40,10 @@ ScgResult scgMinimize(const ValueAndGradient& fg, const Eigen::VectorXd& x0, con
     double mu = 0.0, kappa = 0.0, theta = 0.0;
 
     for (int j = 1; j <= opt.maxIterations; ++j) {
+        if (opt.shouldStop && opt.shouldStop()) {
+            res.stop = ScgStop::kStopped;
+            break;
+        }
         res.iterations = j;
         if (success) {
             mu = dir.dot(g);

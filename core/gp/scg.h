@@ -15,9 +15,10 @@ struct ScgOptions {
     int maxIterations = 100;
     double tolX = 1e-4;  // stop when max_i |α d_i| < tolX AND |Δf| < tolF (on a success)
     double tolF = 1e-4;
+    std::function<bool()> shouldStop;  // optional: polled once per iteration (cancellation)
 };
 
-enum class ScgStop { kMaxIterations, kConverged, kZeroGradient, kTinyDirection, kBadStart };
+enum class ScgStop { kMaxIterations, kConverged, kZeroGradient, kTinyDirection, kBadStart, kStopped };
 const char* scgStopName(ScgStop s);
 
 struct ScgResult {

@@ -110,7 +110,7 @@ std::vector<int> Trainer::selectActive() const {
     return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize).active;
 }
 
-double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry) {
+double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry, const std::atomic<bool>* cancel) {
     const int m = static_cast<int>(active.size()), d = static_cast<int>(X_.cols());
     const int p = paramCount(opt_.kind);
     const Eigen::MatrixXd Yhat = centredRows(data_, active);
@@ -131,6 +131,7 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     so.maxIterations = opt_.scgIterations;
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
+    if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
     const ScgResult r = scgMinimize(fg, z0, so);
     Eigen::VectorXd psi;
     Eigen::MatrixXd XI;
@@ -145,14 +146,15 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
         entry->L = fin.value;
         entry->gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
         entry->scgIterations = r.iterations;
-        entry->jitter = std::max(maxJitter, fin.jitter);
+        entry->jitter = fin.jitter;
+        entry->trialJitterMax = std::max(maxJitter, fin.jitter);
         entry->psi = psi_;
         entry->w = fin.ok ? fin.w : prevW_;
     }
     return fin.value;
 }
 
-void Trainer::optimizeInactive(const std::vector<int>& active) {
+void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel) {
     const std::vector<int> inactive = complementOf(active, static_cast<int>(X_.rows()));
     if (inactive.empty()) return;
     const Eigen::MatrixXd Yhat = centredRows(data_, active);
@@ -163,7 +165,7 @@ void Trainer::optimizeInactive(const std::vector<int>& active) {
     so.maxIterations = opt_.pointIterations;
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
-    optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads);
+    optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads, cancel);
 }
 
 Eigen::VectorXd Trainer::currentWeights() const {
@@ -183,13 +185,17 @@ bool Trainer::step(const std::atomic<bool>* cancel) {
     e.iter = static_cast<int>(log_.size()) + 1;
     const std::vector<int> previous = active_;
     const std::vector<int> i5 = frozen_ ? active_ : selectActive();          // Step 5
-    optimizeActive(i5, &e);                                                    // Step 6
+    optimizeActive(i5, &e, cancel);                                            // Step 6
     if (isCancelled()) {
         cancelled_ = true;
         return false;
     }
     active_ = frozen_ ? i5 : selectActive();                                   // Step 7
-    optimizeInactive(active_);                                                 // Step 8
+    optimizeInactive(active_, cancel);                                         // Step 8
+    if (isCancelled()) {  // the state is part-way through an iteration: not logged
+        cancelled_ = true;
+        return false;
+    }
     // Step 9.
     const Eigen::VectorXd rawNow = rawParams(e.psi), rawPrev = rawParams(log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi);
     const Eigen::VectorXd logNow = e.psi, logPrev = log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi;

@@ -65,7 +65,9 @@ struct IterationLog {
     double activeOverlap = 1.0;   // |I_t ∩ I_{t−1}| / M (Step-7 sets)
     double gradInf = 0.0;         // ‖∇L_GP‖∞ at the end of Step 6
     int scgIterations = 0;
-    double jitter = 0.0;          // largest Cholesky jitter seen in Step 6 (0 normally)
+    double jitter = 0.0;          // Cholesky jitter at the end of Step 6 (0 normally)
+    double trialJitterMax = 0.0;  // largest jitter on any Step-6 evaluation, rejected SCG trials
+                                  // included (wild trial steps, e.g. ψ_α near +36, need it)
     double seconds = 0.0;         // wall time of this iteration (never written to a model file)
     Eigen::VectorXd psi, w;       // θ (log) and W after Step 6
 };
@@ -94,8 +96,9 @@ public:
 
     // Individual steps (public for the benchmark and tests).
     std::vector<int> selectActive() const;                       // Step 5/7
-    double optimizeActive(const std::vector<int>& active, IterationLog* entry);  // Step 6
-    void optimizeInactive(const std::vector<int>& active);      // Step 8
+    double optimizeActive(const std::vector<int>& active, IterationLog* entry,
+                          const std::atomic<bool>* cancel = nullptr);  // Step 6
+    void optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel = nullptr);  // Step 8
 
 private:
     TrainingData data_;
