@@ -1,14 +1,18 @@
 // `motiongp render (CLIP [--skel ASF] | MODEL) --frame T --out FILE.png [--size WxH]
 //  [--camera front|side|three-quarter] [--ghost-captured] [--path EFFECTOR]... [--select EFFECTOR]
 //  [--no-handles]`: draws one frame offscreen (EGL surfaceless, no display) and writes a PNG.
-// The MODEL form (a trained model file: its source clip and pose) is pending the model format;
-// it will build a ClipSceneOptions from the model's source clip like the CLIP form does.
+// The MODEL form (a trained model file) draws the model's source clip with the model's own
+// reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
+// --ghost-captured shows the captured pose beside what the model makes of it.
 #include <algorithm>
 #include <iostream>
 #include <regex>
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "gp/model_version.h"
+#include "ik/learned_ik.h"
+#include "ik_cli.h"
 #include "io/clip_loader.h"
 #include "scene_builder.h"
 #include "snapshot.h"
@@ -45,7 +49,7 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
     auto paths = std::make_shared<std::vector<std::string>>();
     auto select = std::make_shared<std::string>();
     auto noHandles = std::make_shared<bool>(false);
-    sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (pending: model files of the GP issue)")
+    sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (a file written by `motiongp train`)")
         ->required();
     sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
     sub.add_option("--frame", *frame, "Frame, counted from 1")->required();
@@ -57,9 +61,6 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
     sub.add_option("--select", *select, "Show this effector's handle as selected");
     sub.add_flag("--no-handles", *noHandles, "Hide the effector handles");
     return [=]() {
-        if (!isClipPath(*input))
-            throw UsageError("expected a CLIP (.amc or .bvh); the MODEL form of `render` is pending the model "
-                             "file format, found '" + *input + "'");
         std::smatch m;
         if (!std::regex_match(*size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
             throw UsageError("expected --size WxH (e.g. 1280x720), found '" + *size + "'");
@@ -70,9 +71,21 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
         if (!render::parseCameraPreset(camera->c_str(), preset))
             throw UsageError("expected --camera among {front, side, three-quarter}, found '" + *camera + "'");
 
-        const Clip clip = loadClip(*input, *skel);
         render::ClipSceneOptions opt;
+        gp::ModelVersionPtr model;
+        if (!isClipPath(*input)) model = loadModelVersion(*input);  // a clear error if it is not a model file
+        const Clip clip = model ? model->model->clip : loadClip(*input, *skel);
         opt.frameIndex = frameIndexFromCli(clip, *frame);
+        if (model) {
+            const gp::GpModel& m = *model->model;
+            Eigen::VectorXd mean;
+            double variance = 0.0;
+            model->point->predict(latentStartForFrame(*model, opt.frameIndex), mean, variance);
+            Pose reconstructed = clip.frames[opt.frameIndex];
+            const Eigen::VectorXd full = m.fullPose(mean);
+            PoseLayout(clip.skeleton).apply(full.data(), reconstructed);
+            opt.editedPose = reconstructed;
+        }
         opt.ghostCaptured = *ghost;
         opt.handles = !*noHandles;
         for (const std::string& p : *paths) opt.paths.push_back(effectorFromCli("--path", p));

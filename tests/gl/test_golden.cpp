@@ -262,7 +262,7 @@ TEST_CASE("determinism: `motiongp render` twice writes identical PNGs, with no d
     // Bad arguments give one clear error and a non-zero exit.
     CHECK(std::system((std::string("'") + MOTIONGP_TEST_BINARY + "' render '" + kMocap +
                        "/asf_amc/35_01.amc' --frame 0 --out /dev/null 2> /dev/null").c_str()) != 0);
-    CHECK(std::system((std::string("'") + MOTIONGP_TEST_BINARY + "' render model.mgp --frame 1 --out x.png 2> /dev/null")
+    CHECK(std::system((std::string("'") + MOTIONGP_TEST_BINARY + "' render no-such.model --frame 1 --out x.png 2> /dev/null")
                           .c_str()) != 0);
 }
 
