@@ -1,13 +1,12 @@
 #include "png_capture.h"
 
 #include <GL/gl.h>
-#include <unistd.h>
 
-#include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <stdexcept>
 
 #include "gl_context.h"
+#include "io/atomic_file.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #if defined(__GNUC__)
@@ -60,20 +59,10 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
 
 void writePng(const Image& image, const std::string& path) {
     const std::vector<std::uint8_t> bytes = encodePng(image);
-    const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw RenderError("cannot write PNG: expected a writable path, found '" + path + "'");
-        f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-        f.close();
-        if (!f) {
-            std::remove(tmp.c_str());
-            throw RenderError("cannot write PNG '" + path + "' (disk full?)");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw RenderError("cannot write PNG: rename to '" + path + "' failed: " + std::strerror(errno));
+    try {
+        writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+    } catch (const std::runtime_error& e) {
+        throw RenderError(std::string("cannot write PNG: ") + e.what());
     }
 }
 

@@ -17,18 +17,11 @@ bool isFrameNumberLine(const std::vector<std::string_view>& tok, long long& numb
     return tok.size() == 1 && parseInt(tok[0], number);
 }
 
-std::string stemOf(const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
-}
-
 Clip parse(TextReader& r, const AsfSkeleton& asf) {
     Clip clip;
     clip.sourcePath = r.fileName();
     clip.skeletonPath = asf.path;
-    clip.name = stemOf(r.fileName());
+    clip.name = fileStem(r.fileName());
     clip.format = ClipFormat::kAmc;
     clip.convention = "cmu-asf";
     clip.fps = 120.0;  // not stored in AMC; CMU captured at 120 Hz

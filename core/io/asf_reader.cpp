@@ -38,16 +38,6 @@ bool parseAxisOrder(std::string_view s, RotationOrder& out) {
     return true;
 }
 
-// Rotation order from the rotational channels in file order (first listed = applied first).
-RotationOrder orderFromChannels(const std::vector<Channel>& channels) {
-    std::vector<int> applied;
-    for (const Channel& c : channels)
-        if (!c.translation) applied.push_back(c.axis);
-    for (int a = 0; a < 3; ++a)
-        if (std::find(applied.begin(), applied.end(), a) == applied.end()) applied.push_back(a);
-    return {applied[2], applied[1], applied[0]};
-}
-
 bool parseChannel(std::string_view token, bool allowTranslation, Channel& out) {
     const std::string t = toLower(token);
     if (t.size() != 2 || (t[0] != 'r' && t[0] != 't') || t[1] < 'x' || t[1] > 'z') return false;
@@ -251,7 +241,7 @@ AsfSkeleton parse(TextReader& r) {
     Joint root;
     root.name = root.bone = "root";
     root.axis = eulerMatrix(rootOrientation * angleScale, rootAxisOrder);
-    root.order = orderFromChannels(rootChannels);
+    root.order = rotationOrderOf(rootChannels, ChannelListing::kAppliedFirst);
     for (const Channel& c : rootChannels)
         if (!c.translation) root.dof[c.axis] = true;
     sk.joints.push_back(root);
@@ -275,7 +265,7 @@ AsfSkeleton parse(TextReader& r) {
         j.tailCm = dir * b.length * out.cmPerUnit;
         j.offsetCm = parentNode == 0 ? Eigen::Vector3d::Zero() : sk.joints[j.parent].tailCm;
         j.axis = eulerMatrix(b.axisAngles * angleScale, b.axisOrder);
-        j.order = orderFromChannels(b.channels);
+        j.order = rotationOrderOf(b.channels, ChannelListing::kAppliedFirst);
         for (const Channel& c : b.channels) j.dof[c.axis] = true;
         jointOfNode[node] = sk.jointCount();
         sk.joints.push_back(j);

@@ -187,22 +187,6 @@ Eigen::Vector3d tailOf(const std::vector<RawJoint>& raw, const std::vector<std::
     return joint.children.empty() ? mean : Eigen::Vector3d(mean / double(joint.children.size()));
 }
 
-RotationOrder orderFromBvhChannels(const std::vector<Channel>& channels) {
-    std::vector<int> outer;
-    for (const Channel& c : channels)
-        if (!c.translation) outer.push_back(c.axis);
-    for (int a = 0; a < 3; ++a)
-        if (std::find(outer.begin(), outer.end(), a) == outer.end()) outer.push_back(a);
-    return {outer[0], outer[1], outer[2]};
-}
-
-std::string stemOf(const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
-}
-
 Clip parse(TextReader& r) {
     HierarchyParser hp(r);
     hp.tokenize();
@@ -237,7 +221,7 @@ Clip parse(TextReader& r) {
 
     Clip clip;
     clip.sourcePath = r.fileName();
-    clip.name = stemOf(r.fileName());
+    clip.name = fileStem(r.fileName());
     clip.format = ClipFormat::kBvh;
     double fps = 1.0 / frameTime;
     if (std::abs(fps - std::round(fps)) < 0.01) fps = std::round(fps);
@@ -266,7 +250,7 @@ Clip parse(TextReader& r) {
         j.parent = raw[i].parent;
         j.offsetCm = i == 0 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(raw[i].offset * conv.cmPerUnit);
         j.tailCm = tailOf(raw, roles, static_cast<int>(i)) * conv.cmPerUnit;
-        j.order = orderFromBvhChannels(raw[i].channels);
+        j.order = rotationOrderOf(raw[i].channels, ChannelListing::kOutermostFirst);
         for (const Channel& c : raw[i].channels)
             if (!c.translation) j.dof[c.axis] = true;
         sk.joints.push_back(std::move(j));

@@ -8,15 +8,6 @@
 
 namespace mgp {
 
-namespace {
-std::string extensionOf(const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    const std::size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    return toLower(path.substr(dot + 1));
-}
-}  // namespace
-
 std::string defaultAsfFor(const std::string& amcPath) {
     const std::size_t slash = amcPath.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "" : amcPath.substr(0, slash + 1);
@@ -28,7 +19,7 @@ std::string defaultAsfFor(const std::string& amcPath) {
 }
 
 Clip loadClip(const std::string& path, const std::string& skeletonPath) {
-    const std::string ext = extensionOf(path);
+    const std::string ext = fileExtension(path);
     if (ext == "bvh") return readBvh(path);
     if (ext == "amc") {
         const std::string asfPath = skeletonPath.empty() ? defaultAsfFor(path) : skeletonPath;

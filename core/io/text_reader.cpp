@@ -156,6 +156,20 @@ bool parseInt(std::string_view token, long long& out) {
     return true;
 }
 
+std::string fileStem(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    const std::size_t dot = base.find_last_of('.');
+    return dot == std::string::npos ? base : base.substr(0, dot);
+}
+
+std::string fileExtension(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    return toLower(path.substr(dot + 1));
+}
+
 std::string quoteToken(std::string_view token) {
     std::string t(token.substr(0, 40));
     for (char& c : t)

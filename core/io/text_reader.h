@@ -46,6 +46,9 @@ std::string toLower(std::string_view s);
 // Strict parsers: the whole token must be a number; returns false otherwise (NaN/Inf rejected).
 bool parseDouble(std::string_view token, double& out);
 bool parseInt(std::string_view token, long long& out);
+// "dir/35_01.amc" → "35_01" and "amc" (lower case).
+std::string fileStem(const std::string& path);
+std::string fileExtension(const std::string& path);
 // Shortens a token for an error message ("…" past 40 characters).
 std::string quoteToken(std::string_view token);
 
