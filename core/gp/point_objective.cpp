@@ -19,6 +19,69 @@ PointModel::PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Ei
         throw std::runtime_error("PointModel: the kernel matrix could not be factored");
     Kinv_ = llt_.solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
     B_ = llt_.solve(Yhat);
+    phiI_.resize(XI_.rows(), XI_.cols());
+    for (Eigen::Index j = 0; j < XI_.rows(); ++j)
+        phiI_.row(j) = XI_.row(j) / std::sqrt(XI_.row(j).squaredNorm() + kAngularEps * kAngularEps);
+}
+
+double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
+                            Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
+    const Eigen::Index m = XI_.rows(), d = XI_.cols();
+    const double D = static_cast<double>(mu_.size());
+    const double alpha = kernel_.alpha(), gamma = kernel_.gamma(), eta = kernel_.eta();
+    const bool fas = kernel_.hasEta();
+    ws.k.resize(m);
+    ws.a.resize(m);
+    ws.J.resize(m, d);
+    ws.phiX.resize(d);
+    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
+    const double n = std::sqrt(n2);
+    ws.phiX = x / n;
+    const double phi2 = ws.phiX.squaredNorm();
+    // One pass over the active points: k_j and row j of ∂k/∂x (§3.3).
+    for (Eigen::Index j = 0; j < m; ++j) {
+        double r2 = 0.0;
+        for (Eigen::Index c = 0; c < d; ++c) {
+            const double diff = x[c] - XI_(j, c);
+            r2 += diff * diff;
+        }
+        const double R = alpha * std::exp(-0.5 * gamma * r2);
+        double kj = R, C = 0.0, E = 0.0;
+        if (fas) {
+            for (Eigen::Index c = 0; c < d; ++c) C += ws.phiX[c] * phiI_(j, c);
+            E = eta * std::exp(C);
+            kj += E;
+        }
+        ws.k[j] = kj;
+        for (Eigen::Index c = 0; c < d; ++c) {
+            double g = -gamma * (x[c] - XI_(j, c)) * R;
+            if (fas) g += E * (phiI_(j, c) - C * ws.phiX[c]) / n;
+            ws.J(j, c) = g;
+        }
+    }
+    ws.a.noalias() = Kinv_ * ws.k;
+    ws.f = mu_;
+    ws.f.noalias() += B_.transpose() * ws.k;
+    const double diag = alpha + (fas ? eta * std::exp(phi2) : 0.0);
+    const double noiseFree = diag - ws.k.dot(ws.a);
+    const bool clamped = !(noiseFree > 0.0);
+    const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
+    ws.r = w_.cwiseProduct(y - ws.f);
+    const double E = ws.r.squaredNorm();
+    const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
+    if (gradX) {
+        ws.wr = w_.cwiseProduct(ws.r);
+        ws.bwr.noalias() = B_ * ws.wr;
+        const double c = D / (2.0 * s2) - E / (2.0 * s2 * s2);
+        // ∂k(x,x)/∂x = 2η e^{|φ|²} ε² x / n⁴ (FAS only).
+        const double diagGrad = fas ? 2.0 * eta * std::exp(phi2) * kAngularEps * kAngularEps / (n2 * n2) : 0.0;
+        for (Eigen::Index i = 0; i < d; ++i) {
+            const double dS2 = clamped ? 0.0 : diagGrad * x[i] - 2.0 * ws.J.col(i).dot(ws.a);
+            (*gradX)[i] = -(1.0 / s2) * ws.J.col(i).dot(ws.bwr) + c * dS2 + x[i];
+        }
+    }
+    if (gradY) *gradY = w_.cwiseProduct(ws.r) / s2;  // same size: evaluated in place
+    return value;
 }
 
 void PointModel::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {

@@ -19,6 +19,12 @@
 
 namespace mgp::gp {
 
+// Scratch for the allocation-free PointModel::evaluate overload: sized on first use, reused after.
+struct PointWorkspace {
+    Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
+    Eigen::MatrixXd J;  // M×d: ∂k/∂x
+};
+
 class PointModel {
 public:
     // XI: active latent points (M×d); Yhat: centred active rows (M×D); mu: training mean (D);
@@ -37,6 +43,11 @@ public:
     // L_IK(x, y); gradients are written when the pointers are non-null (sized by the callee).
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
+    // The same value and gradients with no heap allocation after the first call on `ws` (the
+    // interactive IK path): one fused pass builds k(x) and ∂k/∂x together. gradX/gradY, when
+    // given, must already have sizes d and D.
+    double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws, Eigen::VectorXd* gradX,
+                    Eigen::VectorXd* gradY) const;
 
 private:
     Kernel kernel_;
@@ -44,6 +55,7 @@ private:
     Eigen::VectorXd mu_, w_;
     Eigen::LLT<Eigen::MatrixXd> llt_;
     Eigen::MatrixXd Kinv_, B_;
+    Eigen::MatrixXd phiI_;  // φ(x_j) of the active points (FAS), for the fused evaluation
     double jitter_ = 0.0;
 };
 

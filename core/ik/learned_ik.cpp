@@ -89,7 +89,7 @@ double LearnedIkSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& gra
     ++evaluations_;
     x_ = z.head(d_);
     y_ = z.tail(D_);
-    const double lik = version_->point->evaluate(x_, y_, &gx_, &gy_);
+    const double lik = version_->point->evaluate(x_, y_, pointWs_, &gx_, &gy_);
     for (int k = 0; k < D_; ++k) full_[m.keptColumns[k]] = y_[k];
     layout_.apply(full_.data(), pose_);
     forwardKinematics(m.clip.skeleton, pose_, fk_);

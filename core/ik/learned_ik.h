@@ -79,6 +79,7 @@ private:
     Pose pose_;
     FkState fk_;
     Eigen::VectorXd full_, gradFull_, x_, y_, gx_, gy_;
+    gp::PointWorkspace pointWs_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
     Eigen::VectorXd bestZ_, scale_, zScaled_, gScaled_;
     double bestF_ = 0.0;
