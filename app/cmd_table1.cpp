@@ -219,7 +219,7 @@ const CommandRegistration reg(
                 return 0;
             }
             for (const auto& r : reductions) std::cout << "reduction: " << r.get<std::string>() << "\n";
-            std::printf("%-13s %-34s %5s %4s | %-6s %10s %10s %10s %10s %6s | %10s %10s\n", "kind", "clips", "N", "T",
+            std::printf("%-13s %-34s %5s %4s | %-14s %10s %10s %10s %10s %6s | %10s %10s\n", "kind", "clips", "N", "T",
                         "model", "(a) raw", "(b) log", "(c) |dL|", "(d) |g|inf", "(e) ov", "frozen raw", "frozen log");
             for (const auto& r : rows) {
                 std::vector<std::string> models = {"fas", "sgplvm"};
@@ -229,9 +229,9 @@ const CommandRegistration reg(
                 }
                 for (const auto& m : models) {
                     const auto& x = r[m];
-                    std::printf("%-13s %-34s %5d %4d | %-6s %10.4g %10.4g %10.4g %10.4g %6.3f | %10.4g %10.4g\n",
+                    std::printf("%-13s %-34s %5d %4d | %-14s %10.4g %10.4g %10.4g %10.4g %6.3f | %10.4g %10.4g\n",
                                 r["kind"].get<std::string>().c_str(), r["clips"].get<std::string>().c_str(),
-                                r["N"].get<int>(), r["T_report"].get<int>(), m.substr(0, 6).c_str(),
+                                r["N"].get<int>(), r["T_report"].get<int>(), m.c_str(),
                                 x["raw_max_delta"].get<double>(), x["log_max_delta"].get<double>(),
                                 x["abs_delta_L_fixed_active"].get<double>(), x["grad_inf"].get<double>(),
                                 x["active_overlap"].get<double>(), x.value("frozen_raw_max_delta", std::nan("")),

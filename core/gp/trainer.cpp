@@ -81,8 +81,18 @@ Eigen::VectorXd rawParams(const Eigen::VectorXd& psi) {
 
 }  // namespace
 
+void TrainOptions::validate() const {
+    if (activeSize < 1) throw std::invalid_argument("TrainOptions: expected activeSize ≥ 1");
+    if (outerIterations < 0) throw std::invalid_argument("TrainOptions: expected outerIterations ≥ 0");
+    if (scgIterations < 0 || pointIterations < 0)
+        throw std::invalid_argument("TrainOptions: expected scgIterations, pointIterations ≥ 0");
+    if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+        throw std::invalid_argument("TrainOptions: expected a finite tolerance > 0");
+    if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
+}
+
 Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::move(data)), opt_(options) {
-    if (opt_.activeSize < 1) throw std::invalid_argument("Trainer: M must be ≥ 1");
+    opt_.validate();
     const Eigen::MatrixXd Ybar = data_.Y.rowwise() - data_.mu.transpose();
     const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;

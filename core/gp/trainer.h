@@ -43,6 +43,9 @@ struct TrainOptions {
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
     // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
     bool paperLiteral = false;
+
+    // Throws std::invalid_argument naming the first bad field.
+    void validate() const;
 };
 
 // The training matrix after §2.6 steps 1–3.
