@@ -105,6 +105,7 @@ const CommandRegistration reg(
             if (clip.format == ClipFormat::kBvh)
                 throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + o->clip + "')");
             const FrameRange range = parseFrames(o->frames, clip.frameCount());
+            unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
             const Eigen::MatrixXd poses = poseMatrix(clip);
             std::vector<int> frames;
             for (int f = range.first; f <= range.last; f += o->step) frames.push_back(f - 1);

@@ -8,40 +8,27 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "test_support.h"
+
 namespace {
 
+// The shared CLI runner (stdout, stderr, exit code) of test_support.
 struct Run {
     int status = -1;
-    std::string out;
+    std::string out, err;
 };
 
 Run run(const std::string& args) {
-    const std::string cmd = std::string(MOTIONGP_TEST_BINARY) + " " + args + " 2>" + MOTIONGP_TEST_TMP + "/train_stderr.txt";
-    Run r;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    REQUIRE(p != nullptr);
-    std::array<char, 4096> buf{};
-    std::size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    r.status = ::pclose(p);
-    return r;
+    const mgp::test::CliResult r = mgp::test::runCli(args);
+    return {r.exitCode, r.out, r.err};
 }
-
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string stderrText() { return readAll(std::string(MOTIONGP_TEST_TMP) + "/train_stderr.txt"); }
 
 const std::string kMocap = MOTIONGP_TEST_MOCAP;
 
 }  // namespace
 
 TEST_CASE("cmd train: --json contract and deterministic model files") {
-    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/cmd_train";
+    const std::string dir = mgp::test::scratchDir("cmd_train");
     std::filesystem::create_directories(dir);
     const std::string args = kMocap + "/asf_amc/16_35.amc --frames 11:130 --step 3 --active 25 --iters 2 --scg-iters 20 --json";
     const Run a = run("train " + args + " --out " + dir + "/a.json");
@@ -60,18 +47,18 @@ TEST_CASE("cmd train: --json contract and deterministic model files") {
         CHECK(j["log"][0].contains(k));
     CHECK(j["log"][0]["L"].get<double>() < j["L_init"].get<double>());
     CHECK(j["seconds"].is_number());
-    CHECK(stderrText().find("iter 2/2") != std::string::npos);  // the progress bar
+    CHECK(a.err.find("iter 2/2") != std::string::npos);  // the progress bar
 
     const Run b = run("train " + args + " --threads 1 --out " + dir + "/b.json");
     REQUIRE(b.status == 0);
-    CHECK(readAll(dir + "/a.json") == readAll(dir + "/b.json"));
+    CHECK(mgp::test::readText(dir + "/a.json") == mgp::test::readText(dir + "/b.json"));
 
     const Run s = run("train " + kMocap + "/asf_amc/16_35.amc --model sgplvm --step 6 --active 10 --iters 1 --scg-iters 5 --json --out " + dir + "/s.json");
     REQUIRE(s.status == 0);
     const auto js = nlohmann::json::parse(s.out);
     CHECK(js["model"] == "sgplvm");
     CHECK(js["params"]["eta"].is_null());
-    const auto model = nlohmann::json::parse(readAll(dir + "/s.json"));
+    const auto model = nlohmann::json::parse(mgp::test::readText(dir + "/s.json"));
     CHECK(model["format"] == "motiongp-model");
     CHECK(model["version"] == 1);
     CHECK(model["source"]["file"] == "16_35.amc");
@@ -79,25 +66,25 @@ TEST_CASE("cmd train: --json contract and deterministic model files") {
 }
 
 TEST_CASE("cmd train: BVH clips and bad values give clear errors and a non-zero exit") {
-    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/cmd_train";
+    const std::string dir = mgp::test::scratchDir("cmd_train");
     std::filesystem::create_directories(dir);
     const Run bvh = run("train " + kMocap + "/bvh/02_03.bvh --out " + dir + "/x.json");
     CHECK(bvh.status != 0);
-    CHECK(stderrText().find("train needs an ASF/AMC clip; training on BVH is not supported yet") != std::string::npos);
+    CHECK(bvh.err.find("train needs an ASF/AMC clip; training on BVH is not supported yet") != std::string::npos);
     CHECK(!std::filesystem::exists(dir + "/x.json"));
     const Run frames = run("train " + kMocap + "/asf_amc/16_35.amc --frames 100:5000 --out " + dir + "/x.json");
     CHECK(frames.status != 0);
-    CHECK(stderrText().find("--frames") != std::string::npos);
+    CHECK(frames.err.find("--frames") != std::string::npos);
     const Run model = run("train " + kMocap + "/asf_amc/16_35.amc --model gplvm --out " + dir + "/x.json");
     CHECK(model.status != 0);
-    CHECK(stderrText().find("fas or sgplvm") != std::string::npos);
+    CHECK(model.err.find("fas or sgplvm") != std::string::npos);
 }
 
 TEST_CASE("cmd table1: bad option values are usage errors") {
     const Run a = run("table1 --iters-scale 2");
     CHECK(a.status != 0);
-    CHECK(stderrText().find("--iters-scale") != std::string::npos);
+    CHECK(a.err.find("--iters-scale") != std::string::npos);
     const Run b = run("table1 --scg-iters 0");
     CHECK(b.status != 0);
-    CHECK(stderrText().find("--scg-iters") != std::string::npos);
+    CHECK(b.err.find("--scg-iters") != std::string::npos);
 }

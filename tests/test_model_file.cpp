@@ -2,6 +2,8 @@
 // writes.
 #include <doctest/doctest.h>
 
+#include "test_support.h"
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +40,7 @@ GpModel smallModel() {
 }
 
 std::string tmpDir() {
-    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/model_file";
+    const std::string dir = mgp::test::scratchDir("model_file");
     std::filesystem::create_directories(dir);
     return dir;
 }

@@ -2,6 +2,8 @@
 // model files across runs and thread counts), lowers L_GP below L_init, and can be cancelled.
 #include <doctest/doctest.h>
 
+#include "test_support.h"
+
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -61,7 +63,7 @@ std::string trainAndSave(const mgp::Clip& clip, const TrainingData& data, Kernel
 TEST_CASE("trainer: two runs give byte-identical model files, with any thread count") {
     const mgp::Clip clip = mgp::loadClip(kClip);
     const TrainingData data = smallData(clip, 3);  // 54 frames, M = 25 < N: Steps 7-8 active
-    const std::string dir = std::string(MOTIONGP_TEST_TMP) + "/trainer";
+    const std::string dir = mgp::test::scratchDir("trainer");
     std::filesystem::create_directories(dir);
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
         TrainResult r;

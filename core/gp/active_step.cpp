@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "gp/gp_objective.h"
 
 namespace mgp::gp {
 
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0, const Eigen::MatrixXd& XI0,
-                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options) {
+                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options,
+                                    const GpObjectiveOptions& objective) {
     const int m = static_cast<int>(XI0.rows()), d = static_cast<int>(XI0.cols());
     const int p = paramCount(kind);
     ActiveStepResult out;
@@ -15,8 +15,8 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
         Eigen::VectorXd psi;
         Eigen::MatrixXd XI;
         unpackParams(z, p, m, d, psi, XI);
-        const GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat);
-        out.jitter = std::max(out.jitter, ev.jitter);
+        const GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
+        out.trialJitterMax = std::max(out.trialJitterMax, ev.jitter);
         g = packParams(ev.gradPsi, ev.gradX);
         return ev.value;
     };
@@ -27,8 +27,9 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     out.iterations = r.iterations;
     unpackParams(r.x, p, m, d, out.psi, out.XI);
     out.psi = out.psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
-    const GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat);
-    out.jitter = std::max(out.jitter, fin.jitter);
+    const GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat, objective);
+    out.jitter = fin.jitter;
+    out.trialJitterMax = std::max(out.trialJitterMax, fin.jitter);
     out.after = fin.value;
     out.ok = fin.ok && std::isfinite(fin.value);
     if (out.ok) {

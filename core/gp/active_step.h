@@ -4,6 +4,7 @@
 // trainer's outer loop and by the adaptive update (§5.3).
 #include <Eigen/Core>
 
+#include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/scg.h"
 
@@ -16,12 +17,14 @@ struct ActiveStepResult {
     double before = 0.0;     // L_GP at the warm start
     double after = 0.0;      // L_GP at the end
     double gradInf = 0.0;    // ‖∇L_GP‖∞ at the end
-    double jitter = 0.0;     // largest Cholesky jitter seen
+    double jitter = 0.0;     // Cholesky jitter at the end point (0 normally)
+    double trialJitterMax = 0.0;  // largest jitter of any evaluation, rejected trial steps included
     int iterations = 0;
     bool ok = false;         // the end point evaluated finitely
 };
 
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI,
-                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options);
+                                    const Eigen::MatrixXd& Yhat, const ScgOptions& options,
+                                    const GpObjectiveOptions& objective = {});
 
 }  // namespace mgp::gp

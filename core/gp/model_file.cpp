@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/clip_json.h"
 #include "io/parse_error.h"
 #include "skeleton/pose_layout.h"
@@ -178,33 +179,6 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
     return m;
 }
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) throwParseError(path, 0, "a writable location", std::strerror(errno));
-    std::size_t done = 0;
-    while (done < text.size()) {
-        const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-        if (w < 0) {
-            if (errno == EINTR) continue;
-            const std::string why = std::strerror(errno);
-            ::close(fd);
-            std::remove(tmp.c_str());
-            throwParseError(path, 0, "a complete write", why);
-        }
-        done += static_cast<std::size_t>(w);
-    }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(tmp.c_str());
-        throwParseError(path, 0, "a file synced to disk", why);
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(tmp.c_str());
-        throwParseError(path, 0, "a file that can be renamed into place", why);
-    }
-}
 
 void saveModel(const std::string& path, const GpModel& model) { writeFileAtomically(path, modelToJsonText(model)); }
 

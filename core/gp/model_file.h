@@ -35,12 +35,9 @@ constexpr const char* kModelFileFormat = "motiongp-model";
 std::string modelToJsonText(const GpModel& model);
 GpModel modelFromJsonText(const std::string& text, const std::string& file);
 
-// Writes `path` atomically: a temp file in the same directory, fsync, rename.
-// Throws ParseError if the file cannot be written.
+// Writes `path` atomically (io/atomic_file.h: temp file, fsync, rename); throws
+// std::runtime_error ("PATH: expected a writable file, found …") if it cannot.
 void saveModel(const std::string& path, const GpModel& model);
 GpModel loadModel(const std::string& path);
-
-// Atomic text write used by saveModel (exposed for other writers).
-void writeFileAtomically(const std::string& path, const std::string& text);
 
 }  // namespace mgp::gp

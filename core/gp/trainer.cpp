@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "gp/active_step.h"
 #include "gp/gp_objective.h"
 #include "gp/ivm.h"
 #include "gp/pca_init.h"
@@ -121,47 +122,26 @@ std::vector<int> Trainer::selectActive() const {
 }
 
 double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry, const std::atomic<bool>* cancel) {
-    const int m = static_cast<int>(active.size()), d = static_cast<int>(X_.cols());
-    const int p = paramCount(opt_.kind);
-    const Eigen::MatrixXd Yhat = centredRows(data_, active);
-    double maxJitter = 0.0;
-    const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
-        Eigen::VectorXd psi;
-        Eigen::MatrixXd XI;
-        unpackParams(z, p, m, d, psi, XI);
-        const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi), XI, Yhat, objective());
-        maxJitter = std::max(maxJitter, ev.jitter);
-        g = packParams(ev.gradPsi, ev.gradX);
-        return ev.value;
-    };
-    const Eigen::VectorXd z0 = packParams(psi_, rowsOf(X_, active));
-    Eigen::VectorXd g0(z0.size());
-    const double before = fg(z0, g0);
     ScgOptions so;
     so.maxIterations = opt_.scgIterations;
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
     if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
-    const ScgResult r = scgMinimize(fg, z0, so);
-    Eigen::VectorXd psi;
-    Eigen::MatrixXd XI;
-    unpackParams(r.x, p, m, d, psi, XI);
-    // Keep ψ inside the box the kernel uses, so the stored value is the one that was evaluated.
-    psi = psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
-    psi_ = psi;
-    for (int i = 0; i < m; ++i) X_.row(active[i]) = XI.row(i);
-    const GpEvaluation fin = evaluateGp(Kernel(opt_.kind, psi_), XI, Yhat, objective());
+    const ActiveStepResult step =
+        optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective());
+    psi_ = step.psi;
+    for (std::size_t i = 0; i < active.size(); ++i) X_.row(active[i]) = step.XI.row(static_cast<Eigen::Index>(i));
     if (entry) {
-        entry->L_before = before;
-        entry->L = fin.value;
-        entry->gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
-        entry->scgIterations = r.iterations;
-        entry->jitter = fin.jitter;
-        entry->trialJitterMax = std::max(maxJitter, fin.jitter);
+        entry->L_before = step.before;
+        entry->L = step.after;
+        entry->gradInf = step.gradInf;
+        entry->scgIterations = step.iterations;
+        entry->jitter = step.jitter;
+        entry->trialJitterMax = step.trialJitterMax;
         entry->psi = psi_;
-        entry->w = fin.ok ? fin.w : prevW_;
+        entry->w = step.ok ? step.w : prevW_;
     }
-    return fin.value;
+    return step.after;
 }
 
 void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel) {
