@@ -16,16 +16,11 @@ namespace {
 gp::ModelVersionPtr benchModel(const BenchContext& ctx, std::string& name, double& trainSeconds) {
     Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk(360) : loadClip(ctx.mocapDir + "/asf_amc/35_01.amc");
     name = clip.name;
-    unwrapClip(clip);
-    const Eigen::MatrixXd poses = poseMatrix(clip);
-    std::vector<int> frames(clip.frameCount());
-    for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
     gp::TrainOptions options;
     options.activeSize = ctx.quick ? 100 : 200;
     options.outerIterations = ctx.quick ? 1 : 3;
     gp::TrainResult result;
-    trainSeconds = secondsOf([&] { result = gp::train(gp::prepareTrainingData(poses, frames), options); });
-    result.model.clip = std::move(clip);
+    trainSeconds = secondsOf([&] { result = gp::trainOnClip(std::move(clip), options); });
     return gp::ModelVersion::make(std::move(result.model));
 }
 

@@ -169,20 +169,17 @@ const CommandRegistration reg(
                                {"stop_on_convergence", false}};
             nlohmann::json rows = nlohmann::json::array();
             for (const Table1Clip& c : clips()) {
-                Eigen::MatrixXd poses(0, 47);
-                std::vector<int> frames;
+                Clip joined;
                 for (const Segment& s : c.segments) {
                     const Clip clip = loadClip(*dir + "/asf_amc/" + s.trial + ".amc");
                     if (s.last > clip.frameCount())
                         throw UsageError(std::string("expected ") + s.trial + " to have " + std::to_string(s.last) +
                                          " frames, found " + std::to_string(clip.frameCount()));
-                    const Eigen::MatrixXd y = poseMatrix(clip).middleRows(s.first - 1, s.last - s.first + 1);
-                    Eigen::MatrixXd grown(poses.rows() + y.rows(), 47);
-                    grown << poses, y;
-                    poses = grown;
-                    for (int f = s.first; f <= s.last; ++f) frames.push_back(static_cast<int>(frames.size()));
+                    appendFrames(joined, clip, s.first - 1, s.last - s.first + 1);
                 }
-                const gp::TrainingData data = gp::prepareTrainingData(poses, frames);
+                std::vector<int> frames(joined.frameCount());
+                for (int f = 0; f < joined.frameCount(); ++f) frames[f] = f;
+                const gp::TrainingData data = gp::trainingDataFromClip(joined, frames);
                 const int T = std::max(3, static_cast<int>(std::lround(c.paperIterations * o->itersScale)));
                 nlohmann::json row;
                 row["kind"] = c.kind;

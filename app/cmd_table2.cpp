@@ -69,15 +69,11 @@ Clip buildClip(const std::string& dir, const std::vector<Span>& spans, std::map<
 }
 
 gp::ModelVersionPtr trainOn(const Clip& clip, gp::KernelKind kind, int active, int iters) {
-    std::vector<int> frames(clip.frameCount());
-    for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
     gp::TrainOptions options;
     options.kind = kind;
     options.activeSize = active;
     options.outerIterations = iters;
-    gp::TrainResult res = gp::train(gp::prepareTrainingData(poseMatrix(clip), frames), options);
-    res.model.clip = clip;
-    return gp::ModelVersion::make(std::move(res.model));
+    return gp::ModelVersion::make(gp::trainOnClip(clip, options).model);
 }
 
 double wrap180(double a) { return a - 360.0 * std::round(a / 360.0); }

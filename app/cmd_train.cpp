@@ -106,15 +106,12 @@ const CommandRegistration reg(
                 throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + o->clip + "')");
             const FrameRange range = parseFrames(o->frames, clip.frameCount());
             unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
-            const Eigen::MatrixXd poses = poseMatrix(clip);
             std::vector<int> frames;
             for (int f = range.first; f <= range.last; f += o->step) frames.push_back(f - 1);
             if (frames.size() < 3)
                 throw UsageError("expected at least 3 training frames after --frames/--step, found " +
                                  std::to_string(frames.size()));
-            Eigen::MatrixXd rows(frames.size(), poses.cols());
-            for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = poses.row(frames[r]);
-            const gp::TrainingData data = gp::prepareTrainingData(rows, frames);
+            const gp::TrainingData data = gp::trainingDataFromClip(clip, frames);
 
             gp::TrainOptions opt;
             opt.kind = kind;

@@ -13,12 +13,9 @@ using namespace mgp::gp;
 namespace {
 TrainingData walkData(int step) {
     const mgp::Clip clip = mgp::loadClip(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
-    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
     std::vector<int> frames;
     for (int t = 0; t < clip.frameCount(); t += step) frames.push_back(t);
-    Eigen::MatrixXd rows(frames.size(), all.cols());
-    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
-    return prepareTrainingData(rows, frames);
+    return trainingDataFromClip(clip, frames);
 }
 }  // namespace
 

@@ -22,12 +22,9 @@ namespace {
 const std::string kClip = std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/16_35.amc";
 
 TrainingData smallData(const mgp::Clip& clip, int step) {
-    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
     std::vector<int> frames;
     for (int t = 0; t < clip.frameCount(); t += step) frames.push_back(t);
-    Eigen::MatrixXd rows(frames.size(), all.cols());
-    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
-    return prepareTrainingData(rows, frames);
+    return trainingDataFromClip(clip, frames);
 }
 
 TrainOptions smallOptions(KernelKind kind, int threads) {

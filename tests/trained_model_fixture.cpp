@@ -12,18 +12,11 @@ gp::ModelVersionPtr walkModel35() {
     static std::once_flag once;
     static gp::ModelVersionPtr model;
     std::call_once(once, [] {
-        Clip clip = loadClip(mocap("asf_amc/35_01.amc"));
-        unwrapClip(clip);
-        const Eigen::MatrixXd poses = poseMatrix(clip);
-        std::vector<int> frames(clip.frameCount());
-        for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
         gp::TrainOptions options;
         options.kind = gp::KernelKind::kFas;
         options.activeSize = 100;
         options.outerIterations = 3;
-        gp::TrainResult result = gp::train(gp::prepareTrainingData(poses, frames), options);
-        result.model.clip = std::move(clip);
-        model = gp::ModelVersion::make(std::move(result.model));
+        model = gp::ModelVersion::make(gp::trainOnClip(loadClip(mocap("asf_amc/35_01.amc")), options).model);
     });
     return model;
 }

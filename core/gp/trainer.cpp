@@ -200,6 +200,27 @@ bool Trainer::step(const std::atomic<bool>* cancel) {
     return std::isfinite(metric) && metric < opt_.tolerance;
 }
 
+TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& frames) {
+    const Eigen::MatrixXd all = poseMatrix(clip);
+    Eigen::MatrixXd rows(frames.size(), all.cols());
+    for (std::size_t r = 0; r < frames.size(); ++r) {
+        if (frames[r] < 0 || frames[r] >= clip.frameCount())
+            throw std::invalid_argument("trainingDataFromClip: frame " + std::to_string(frames[r]) + " outside the clip");
+        rows.row(static_cast<Eigen::Index>(r)) = all.row(frames[r]);
+    }
+    return prepareTrainingData(rows, frames);
+}
+
+TrainResult trainOnClip(Clip clip, const TrainOptions& options, const std::function<void(const IterationLog&)>& progress,
+                        const std::atomic<bool>* cancel) {
+    unwrapClip(clip);
+    std::vector<int> frames(clip.frameCount());
+    for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
+    TrainResult result = train(trainingDataFromClip(clip, frames), options, progress, cancel);
+    result.model.clip = std::move(clip);
+    return result;
+}
+
 TrainResult train(const TrainingData& data, const TrainOptions& options,
                   const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
     Trainer trainer(data, options);

@@ -58,6 +58,8 @@ struct TrainingData {
 };
 // poses47: N×47 (unwrapped); frames: clip frame index of each row (size N).
 TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames);
+// The rows of the clip's unwrapped pose matrix at `frames` (clip indices, 0-based).
+TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& frames);
 
 struct IterationLog {
     int iter = 0;
@@ -131,6 +133,12 @@ struct TrainResult {
 TrainResult train(const TrainingData& data, const TrainOptions& options,
                   const std::function<void(const IterationLog&)>& progress = nullptr,
                   const std::atomic<bool>* cancel = nullptr);
+
+// Trains on every frame of `clip` and stores the clip (unwrapped, so it matches the training rows)
+// in the model; provenance fields are left to the caller.
+TrainResult trainOnClip(Clip clip, const TrainOptions& options,
+                        const std::function<void(const IterationLog&)>& progress = nullptr,
+                        const std::atomic<bool>* cancel = nullptr);
 
 // Fraction of `a` also in `b` (|a ∩ b| / |a|).
 double overlapFraction(const std::vector<int>& a, const std::vector<int>& b);
