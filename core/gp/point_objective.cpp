@@ -66,6 +66,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     const double noiseFree = diag - ws.k.dot(ws.a);
     const bool clamped = !(noiseFree > 0.0);
     const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
+    ws.variance = s2;
     ws.r = w_.cwiseProduct(y - ws.f);
     const double E = ws.r.squaredNorm();
     const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();

@@ -22,7 +22,8 @@ namespace mgp::gp {
 // Scratch for the allocation-free PointModel::evaluate overload: sized on first use, reused after.
 struct PointWorkspace {
     Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
-    Eigen::MatrixXd J;  // M×d: ∂k/∂x
+    Eigen::MatrixXd J;      // M×d: ∂k/∂x
+    double variance = 0.0;  // σ²(x) of the last evaluation
 };
 
 class PointModel {

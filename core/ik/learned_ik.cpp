@@ -23,37 +23,44 @@ LearnedIkSolver::LearnedIkSolver(gp::ModelVersionPtr version)
     jac_.resize(3, kPoseDofs);
     bestZ_.resize(d_ + D_);
     scale_ = Eigen::VectorXd::Ones(d_ + D_);
-    zScaled_.resize(d_ + D_);
-    gScaled_.resize(d_ + D_);
+    for (Eigen::VectorXd* v : {&zScaled_, &gScaled_, &z_, &u_, &gTmp_, &zProbe_}) v->resize(d_ + D_);
+    gx_.setZero();
+    gy_.setZero();
+    lbfgsParam_.m = 8;
+    lbfgsParam_.epsilon = 1e-12;
+    lbfgsParam_.epsilon_rel = 1e-12;
+    lbfgsParam_.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
+    lbfgsParam_.max_linesearch = 40;
+    lbfgsParam_.past = 5;
+    lbfgsParam_.delta = 1e-7;
+    lbfgs_ = std::make_unique<LBFGSpp::LBFGSSolver<double>>(lbfgsParam_);
 }
 
 void LearnedIkSolver::computeScaling(const Eigen::VectorXd& z0) {
     const gp::GpModel& m = *version_->model;
     const LearnedIkRequest& r = *request_;
-    Eigen::VectorXd g0, gp, gm;
-    objective(z0, g0);  // also leaves FK and σ² data for z0 in the workspace
-    // y: λ·2·Σ_e ‖J_e,k‖² + (1 − λ)·w_k² / σ²(x0).
-    Eigen::VectorXd mean;
-    double s2 = 1.0;
-    version_->point->predict(z0.head(d_), mean, s2);
-    Eigen::VectorXd colNorm2 = Eigen::VectorXd::Zero(kPoseDofs);
+    objective(z0, gTmp_);  // leaves FK and σ² of z0 in the workspace
+    // y: λ·2·Σ_e ‖J_e,k‖² + (1 − λ)·w_k² / σ²(x0). gradFull_ is reused as the column-norm sum.
+    const double s2 = pointWs_.variance;
+    gradFull_.setZero();
     for (const IkConstraint& c : r.constraints) {
         effectorJacobian(m.clip.skeleton, layout_, fk_, pose_, c.effector, jac_);
-        colNorm2 += jac_.colwise().squaredNorm().transpose();
+        gradFull_.noalias() += jac_.colwise().squaredNorm().transpose();
     }
     for (int k = 0; k < D_; ++k) {
-        const double h = 2.0 * r.lambda * colNorm2[m.keptColumns[k]] + (1.0 - r.lambda) * m.w[k] * m.w[k] / s2;
+        const double h = 2.0 * r.lambda * gradFull_[m.keptColumns[k]] + (1.0 - r.lambda) * m.w[k] * m.w[k] / s2;
         scale_[d_ + k] = 1.0 / std::sqrt(std::max(h, 1e-12));
     }
     // x: central differences of the gradient (2d extra evaluations).
     for (int i = 0; i < d_; ++i) {
         const double h = 1e-4;
-        Eigen::VectorXd zp = z0, zm = z0;
-        zp[i] += h;
-        zm[i] -= h;
-        objective(zp, gp);
-        objective(zm, gm);
-        const double curvature = std::abs(gp[i] - gm[i]) / (2.0 * h);
+        zProbe_ = z0;
+        zProbe_[i] += h;
+        objective(zProbe_, gTmp_);
+        const double gPlus = gTmp_[i];
+        zProbe_[i] -= 2.0 * h;
+        objective(zProbe_, gTmp_);
+        const double curvature = std::abs(gPlus - gTmp_[i]) / (2.0 * h);
         scale_[i] = 1.0 / std::sqrt(std::max(curvature, 1e-6));
     }
     if (!scale_.allFinite()) scale_.setOnes();
@@ -129,21 +136,13 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     }
     bind(request);
     const gp::GpModel& m = *version_->model;
-    Eigen::VectorXd z(d_ + D_);
-    z.head(d_) = request.startX;
-    for (int k = 0; k < D_; ++k) z[d_ + k] = full_[m.keptColumns[k]];
-
-    LBFGSpp::LBFGSParam<double> param;
-    param.m = 8;
-    param.epsilon = 1e-12;
-    param.epsilon_rel = 1e-12;
-    param.past = request.stallWindow;
-    param.delta = request.stallRelative;
-    param.max_iterations = request.maxIterations;
-    param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
-    param.max_linesearch = 40;
-    LBFGSpp::LBFGSSolver<double> solver(param);
-    if (request.precondition) computeScaling(z);
+    z_.head(d_) = request.startX;
+    for (int k = 0; k < D_; ++k) z_[d_ + k] = full_[m.keptColumns[k]];
+    // The solver reads these through its reference at minimize() time.
+    lbfgsParam_.past = std::max(1, request.stallWindow);
+    lbfgsParam_.delta = std::max(0.0, request.stallRelative);
+    lbfgsParam_.max_iterations = request.maxIterations;
+    if (request.precondition) computeScaling(z_);
     else scale_.setOnes();
     // L-BFGS runs on u = S⁻¹ z.
     auto f = [this](const Eigen::VectorXd& u, Eigen::VectorXd& g) {
@@ -152,10 +151,10 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
         g = scale_.cwiseProduct(gScaled_);
         return F;
     };
-    Eigen::VectorXd u = z.cwiseQuotient(scale_);
+    u_ = z_.cwiseQuotient(scale_);
     double fz = 0.0;
     try {
-        result.iterations = solver.minimize(f, u, fz);
+        result.iterations = lbfgs_->minimize(f, u_, fz);
         result.diagnostic = result.iterations >= request.maxIterations ? "iteration cap" : "stalled";
     } catch (const std::exception& e) {
         result.diagnostic = std::string("line search: ") + e.what();
@@ -168,15 +167,13 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
         return;
     }
     // Re-evaluate at the best point so every output matches it exactly.
-    Eigen::VectorXd g;
-    const Eigen::VectorXd best = bestZ_;
-    result.objective = objective(best, g);
-    result.x = best.head(d_);
-    result.y = best.tail(D_);
+    zProbe_ = bestZ_;
+    result.objective = objective(zProbe_, gTmp_);
+    result.x = zProbe_.head(d_);
+    result.y = zProbe_.tail(D_);
     result.pose = pose_;
-    Eigen::VectorXd mean;
-    version_->point->predict(result.x, mean, result.sigma2);
-    result.lik = version_->point->evaluate(result.x, result.y, nullptr, nullptr);
+    result.sigma2 = pointWs_.variance;
+    result.lik = version_->point->evaluate(x_, y_, pointWs_, nullptr, nullptr);
     result.reached = true;
     bool tight = true;
     for (const IkConstraint& c : request.constraints) {

@@ -11,9 +11,12 @@
 // leaves x at its last trial point: the solver keeps the best (F, x, y) it evaluated, catches,
 // and returns that best with a diagnostic. No exception leaves solve().
 //
-// LearnedIkSolver holds a preallocated workspace for one model version: repeated solves (a
-// drag) reuse it; only LBFGS++'s own small temporaries are allocated per iteration.
+// LearnedIkSolver holds a preallocated workspace for one model version (vectors, FK state, the
+// L-BFGS solver): after the first solve, a drag allocates nothing of ours; LBFGS++ itself makes
+// two small temporaries per iteration (its add_correction(x − x_prev, g − g_prev)).
 #include <Eigen/Core>
+#include <LBFGS.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,7 +84,9 @@ private:
     Eigen::VectorXd full_, gradFull_, x_, y_, gx_, gy_;
     gp::PointWorkspace pointWs_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
-    Eigen::VectorXd bestZ_, scale_, zScaled_, gScaled_;
+    Eigen::VectorXd bestZ_, scale_, zScaled_, gScaled_, z_, u_, gTmp_, zProbe_;
+    LBFGSpp::LBFGSParam<double> lbfgsParam_;
+    std::unique_ptr<LBFGSpp::LBFGSSolver<double>> lbfgs_;  // holds a reference to lbfgsParam_
     double bestF_ = 0.0;
     int evaluations_ = 0;
 };
