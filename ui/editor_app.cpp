@@ -308,6 +308,7 @@ void EditorApp::menus() {
     }
     if (ImGui::BeginMenu("View")) {
         if (ImGui::MenuItem("Frame character", "F")) state_.requestFrameCamera = true;
+        ImGui::MenuItem("Follow character", nullptr, &state_.followCharacter);
         if (ImGui::BeginMenu("Compare ghost")) {
             if (ImGui::MenuItem("Off", nullptr, doc.compareMode() == CompareMode::kNone)) doc.setCompareMode(CompareMode::kNone);
             if (ImGui::MenuItem("Plain IK", nullptr, doc.compareMode() == CompareMode::kPlainIk))
@@ -351,7 +352,7 @@ void EditorApp::menus() {
 void EditorApp::layout(int w, int h) {
     const float menuH = ImGui::GetFrameHeight();
     const float rightW = 380.0f, timelineH = 104.0f;
-    const float modelH = 236.0f, latentH = 404.0f;
+    const float modelH = 262.0f, latentH = 372.0f;
     const float leftW = float(w) - rightW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;

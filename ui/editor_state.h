@@ -18,6 +18,7 @@ struct EditorState {
     gp::TrainOptions trainOptions;
     render::OrbitCamera camera;
     bool cameraNeedsFraming = true;
+    bool followCharacter = true;  // the camera follows the root over the ground
 
     std::string clipLabel;   // shown in the title bar
     std::string modelLabel;  // "trained fas", a file name, ...

@@ -58,7 +58,7 @@ LatentImage computeLatentImage(const gp::ModelVersion& version, int size) {
     img.maxLogVar = hi;
     img.rgba.resize(std::size_t(size) * size * 4);
     for (std::size_t i = 0; i < logVar.size(); ++i) {
-        colourMap((logVar[i] - lo) / (hi - lo), &img.rgba[i * 4]);
+        colourMap(1.0 - (logVar[i] - lo) / (hi - lo), &img.rgba[i * 4]);
         img.rgba[i * 4 + 3] = 255;
     }
     return img;

@@ -13,7 +13,9 @@
 
 namespace mgp::ui {
 
-// Colour map (perceptually ordered, dark = low) for t in [0, 1]; RGB 0..255.
+// Colour map (perceptually ordered, viridis-like: dark purple at 0, yellow at 1), RGB 0..255.
+// The image uses t = 1 - normalised log σ², so confident regions are bright (as in the paper's
+// figures) and the colour bar runs from low σ² (left, bright) to high σ² (right, dark).
 void colourMap(double t, std::uint8_t rgb[3]);
 
 struct LatentImage {

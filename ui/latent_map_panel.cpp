@@ -16,11 +16,11 @@ ImU32 mapColour(double t, int alpha = 255) {
     colourMap(t, rgb);
     return IM_COL32(rgb[0], rgb[1], rgb[2], alpha);
 }
-// Training points: coloured by frame along a hue ramp (blue -> magenta -> orange), distinct from
-// the variance colours.
+// Training points: coloured by frame along a hue ramp (blue at the first frame -> green -> yellow
+// at the last), light so they stand out on the dark (uncertain) background.
 ImU32 frameColour(double t) {
     float r, g, b;
-    ImGui::ColorConvertHSVtoRGB(float(0.62 - 0.62 * std::clamp(t, 0.0, 1.0) * 1.1), 0.75f, 1.0f, r, g, b);
+    ImGui::ColorConvertHSVtoRGB(float(0.60 - 0.50 * std::clamp(t, 0.0, 1.0)), 0.65f, 1.0f, r, g, b);
     return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1.0f));
 }
 }  // namespace
@@ -74,7 +74,7 @@ void LatentMapPanel::draw(EditorState& s) {
 
     // Geometry: a square map, the colour bar below it.
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float barBlock = 46.0f;
+    const float barBlock = 84.0f;
     const float side = std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f));
     const ImVec2 cur = ImGui::GetCursorScreenPos();
     const ImVec2 p0(cur.x + 16.0f, cur.y), p1(p0.x + side, p0.y + side);
@@ -184,9 +184,9 @@ void LatentMapPanel::draw(EditorState& s) {
     const int segs = 48;
     for (int k = 0; k < segs; ++k) {
         const float xa = b0.x + (b1.x - b0.x) * k / segs, xb = b0.x + (b1.x - b0.x) * (k + 1) / segs;
-        dl->AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(double(k) / segs),
-                                    mapColour(double(k + 1) / segs), mapColour(double(k + 1) / segs),
-                                    mapColour(double(k) / segs));
+        dl->AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
+                                    mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
+                                    mapColour(1.0 - double(k) / segs));
     }
     dl->AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
     char lo[48], hi[48];
@@ -195,12 +195,13 @@ void LatentMapPanel::draw(EditorState& s) {
     dl->AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
     const float hiW = ImGui::CalcTextSize(hi).x;
     dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
-    const char* cap = "sigma^2(x): model uncertainty (log)";
+    const char* cap = "predictive variance sigma^2(x), log scale";
     const float capW = ImGui::CalcTextSize(cap).x;
-    dl->AddText(ImVec2(0.5f * (b0.x + b1.x) - 0.5f * capW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), cap);
-    ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 18.0f));
+    const float lineH = ImGui::GetTextLineHeight();
+    dl->AddText(ImVec2(0.5f * (b0.x + b1.x) - 0.5f * capW, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
+    ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 4.0f + 2.0f * lineH));
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
-    else ImGui::TextDisabled("dark = confident | dots: frames (blue->orange) | rings: active set");
+    else ImGui::TextDisabled("bright: confident   dots: frames   rings: active set");
 }
 
 }  // namespace mgp::ui

@@ -103,7 +103,8 @@ void drawModelPanel(EditorState& s) {
         ImGui::EndDisabled();
     }
     const std::string msg = s.training.message();
-    if (!msg.empty() && !s.training.running()) ImGui::TextDisabled("%s", msg.c_str());
+    if (!msg.empty() && !s.training.running() && msg.rfind("trained", 0) != 0)
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "%s", msg.c_str());
     ImGui::Separator();
 
     // Compare ghost.

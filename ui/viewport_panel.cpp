@@ -67,10 +67,10 @@ void ViewportPanel::frameCharacter(EditorState& s) const {
     const float aspect = height_ > 0 ? float(width_) / float(height_) : 1.5f;
     if (s.cameraNeedsFraming) {
         s.camera = render::presetCamera(render::CameraPreset::kThreeQuarter,
-                                        render::characterForward(s.doc.clip().skeleton, fk), b.centreCm, b.radiusCm,
-                                        aspect);
+                                        render::characterForward(s.doc.clip().skeleton, fk), b.centreCm,
+                                        b.radiusCm * 1.25f, aspect);
     } else {
-        s.camera.frame(b.centreCm, b.radiusCm, aspect);
+        s.camera.frame(b.centreCm, b.radiusCm * 1.25f, aspect);
     }
     s.cameraNeedsFraming = false;
 }
@@ -79,6 +79,7 @@ bool ViewportPanel::handleScreenPosition(const EditorState& s, Effector e, float
     if (!s.doc.hasEffector(e) || width_ <= 0) return false;
     glm::vec3 p;
     if (!s.camera.project(toGlm(s.doc.effectorPosition(e)), width_, height_, p)) return false;
+    if (p.x < 0 || p.y < 0 || p.x >= width_ || p.y >= height_) return false;
     x = originX_ + p.x;
     y = originY_ + p.y;
     return true;
@@ -88,8 +89,9 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
     ImGuiIO& io = ImGui::GetIO();
     const bool shift = io.KeyShift;
     EditorDocument& doc = s.doc;
-    movedThisFrame_ = (mx != lastX_ || my != lastY_);
-    const float dx = mx - lastX_, dy = my - lastY_;
+    float dx = mx - lastX_, dy = my - lastY_;
+    if (!std::isfinite(dx) || !std::isfinite(dy)) dx = dy = 0.0f;
+    movedThisFrame_ = dx != 0.0f || dy != 0.0f;
 
     // Hover (only when not in another mode).
     std::vector<render::Handle> handles;
@@ -147,7 +149,7 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 doc.endDrag();
                 mode_ = Mode::kNone;
                 s.setStatus(std::string("accepted pose for frame ") + std::to_string(doc.frame() + 1) +
-                            (doc.hasModel() && doc.adaptiveEnabled() ? "; adaptive update running" : ""));
+                            (doc.hasModel() && doc.adaptiveEnabled() ? " (adaptive update queued)" : ""));
             } else if (movedThisFrame_) {
                 const render::Ray ray = s.camera.rayFromPixel(mx, my, width_, height_);
                 const glm::vec3 anchor = toGlm(doc.dragTarget());
@@ -210,7 +212,20 @@ void ViewportPanel::draw(EditorState& s) {
                                ImGuiButtonFlags_MouseButtonMiddle);
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    if (s.doc.hasClip()) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
+    // Follow: the camera keeps the character's root (projected on the ground) where it was, so a
+    // walk stays in view during playback and scrubbing.
+    if (s.doc.hasClip()) {
+        const Eigen::Vector3d root = s.doc.currentPose().rootCm;
+        if (s.followCharacter && followValid_ && s.doc.clip().name == followClip_) {
+            s.camera.targetCm.x += float(root.x() - followRoot_.x());
+            s.camera.targetCm.z += float(root.z() - followRoot_.z());
+        }
+        followRoot_ = root;
+        followClip_ = s.doc.clip().name;
+        followValid_ = root.allFinite();
+    }
+    // The mouse can leave the window (ImGui reports -FLT_MAX): no camera or drag update then.
+    if (s.doc.hasClip() && ImGui::IsMousePosValid(&mouse)) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
 
     // Keys that act on the viewport.
     ImGuiIO& io = ImGui::GetIO();

@@ -3,7 +3,9 @@
 // the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
 // zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left
 // drag moves it on a camera-facing plane, Shift on a horizontal plane; right-click or P pins).
+#include <Eigen/Core>
 #include <memory>
+#include <string>
 
 #include "editor_state.h"
 #include "skeleton_renderer.h"
@@ -34,6 +36,9 @@ private:
     enum class Mode { kNone, kOrbit, kPan, kDragHandle } mode_ = Mode::kNone;
     float lastX_ = 0, lastY_ = 0;
     bool movedThisFrame_ = false;
+    bool followValid_ = false;
+    Eigen::Vector3d followRoot_ = Eigen::Vector3d::Zero();
+    std::string followClip_;
 };
 
 }  // namespace mgp::ui

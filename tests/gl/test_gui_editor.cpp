@@ -206,15 +206,16 @@ TEST_CASE("gui golden: latent map and timeline panels") {
     auto h = makeHarness(true);
     if (!h) return;
     h->app->state().doc.setFrame(59);
+    h->app->state().setStatus("golden");  // the status line would show training times
     h->frame(3);
     REQUIRE(h->app->latentMapUpToDate());
     const render::Image img = h->app->capture(kW, kH);
     fs::create_directories(kOutDir);
     render::writePng(img, kOutDir + "/ui_window.png");
     // Fixed layout (EditorApp::layout): right column 380 px wide; the latent map window starts
-    // at menu height + 236 and is 404 px tall; the timeline is the bottom 104 px left of it.
+    // at menu height + 262 and is 372 px tall; the timeline is the bottom 104 px left of it.
     const int menuH = 19;  // ImGui's built-in font: frame height 13 + 2*3
-    compareGolden("ui_latent_map", crop(img, kW - 380, menuH + 236, 380, 404));
+    compareGolden("ui_latent_map", crop(img, kW - 380, menuH + 262, 380, 372));
     compareGolden("ui_timeline", crop(img, 0, kH - 104, kW - 380, 104));
 }
 
@@ -226,12 +227,13 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
     const int keys[] = {ui::key::kSpace, ui::key::kLeft, ui::key::kRight, 'F', 'P', ui::key::kHome, ui::key::kEnd,
                         ui::key::kEscape, ui::key::kLeftShift};
     EditorDocument& doc = h->app->state().doc;
+    int dragFrames = 0;
     for (int i = 0; i < 600; ++i) {
         ui::InputState& in = h->input;
         // Release one-shot keys from the previous event (not Shift, which is toggled).
         for (int k : keys)
             if (k != ui::key::kLeftShift) in.keys[k] = false;
-        switch (rng() % 8) {
+        switch (rng() % 10) {
             case 0: in.mouseX = ux(rng), in.mouseY = uy(rng); break;
             case 1:
             case 2: in.mouseX += step(rng), in.mouseY += step(rng); break;
@@ -243,14 +245,18 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
                 in.keys[k] = !in.keys[k];
                 break;
             }
-            case 7: {  // aim at a handle to provoke drags
+            case 7:
+            case 8: {  // aim at a handle with the buttons up, to provoke drags
                 float x, y;
                 if (h->app->handleScreenPosition(static_cast<Effector>(rng() % kEffectorCount), x, y))
                     in.mouseX = x, in.mouseY = y;
+                in.mouseDown.fill(false);
                 break;
             }
+            case 9: in.mouseDown[0] = true; break;
         }
         h->frame();
+        dragFrames += doc.dragging();
         REQUIRE(finite(doc.currentPose()));
         const auto& cam = h->app->state().camera;
         REQUIRE(std::isfinite(cam.distanceCm));
@@ -266,6 +272,9 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
         (void)f;
         CHECK(finite(e.pose));
     }
+    MESSAGE("random events: " << dragFrames << " frames inside an effector drag, " << doc.edits().size()
+                                << " edited frames");
+    CHECK(dragFrames > 0);  // the events did exercise the learned IK, not only the camera
     h->app->state().playing = false;
     doc.waitIdle();
 }
