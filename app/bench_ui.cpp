@@ -9,6 +9,8 @@
 #include "bench_registry.h"
 #include "editor_app.h"
 #include "gl_context.h"
+#include "scene_builder.h"
+#include "skeleton_renderer.h"
 
 namespace mgp::app {
 
@@ -58,6 +60,22 @@ nlohmann::json benchUi(const BenchContext& ctx) {
         frame();
     }
     app.waitIdle();
+    // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
+    // UI frame that is the renderer's, not the editor's.
+    std::vector<double> sceneOnly;
+    {
+        render::SceneRenderer renderer(1);
+        render::ClipSceneOptions so;
+        so.frameIndex = app.state().doc.frame();
+        so.editedPose = app.state().doc.currentPose();
+        so.caption = false;
+        const render::Scene scene = render::buildClipScene(app.state().doc.clip(), so);
+        for (int i = 0; i < 30; ++i)
+            sceneOnly.push_back(secondsOf([&] {
+                renderer.draw(scene, app.state().camera, kW - 380, kH - 123, 0);
+                glFinish();
+            }));
+    }
     const render::GlInfo info = render::currentGlInfo();
     nlohmann::json j;
     j["width"] = kW;
@@ -68,6 +86,8 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     j["idle_frame_seconds"] = summarizeSeconds(idle);
     j["drag_frame_seconds"] = summarizeSeconds(drag);
     j["drag_frames"] = dragFrames;
+    j["scene_only_seconds"] = summarizeSeconds(sceneOnly);
+    j["scene_only_size"] = {kW - 380, kH - 123};
     j["adaptive_updates"] = app.state().doc.adaptiveUpdates();
     j["latent_map_texels"] = 160 * 160;
     j["target_seconds"] = 0.016;

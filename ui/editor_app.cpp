@@ -363,7 +363,7 @@ void EditorApp::layout(int w, int h) {
 
     place(0, menuH, leftW, float(h) - menuH - timelineH);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+    ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBackground |
                                           ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     viewport_->draw(state_);

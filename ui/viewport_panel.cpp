@@ -168,14 +168,23 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
 
 render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     const EditorDocument& doc = s.doc;
-    render::ClipSceneOptions o;
-    o.frameIndex = doc.frame();
-    o.editedPose = doc.currentPose();
-    o.caption = false;
-    o.handles = true;
-    if (s.hoveredHandle >= 0) o.hovered = static_cast<Effector>(s.hoveredHandle);
-    if (doc.dragging()) o.selected = doc.dragEffector();
-    render::Scene scene = render::buildClipScene(doc.clip(), o);
+    // Built here rather than with render::buildClipScene, which recomputes the clip's floor
+    // height (FK over every frame) on each call; the floor is cached per clip.
+    if (groundClip_ != doc.clip().name + "#" + std::to_string(doc.frameCount())) {
+        groundClip_ = doc.clip().name + "#" + std::to_string(doc.frameCount());
+        groundHeight_ = render::clipGroundHeight(doc.clip());
+    }
+    render::Scene scene;
+    FkState fk;
+    forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
+    scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
+    scene.groundHeightCm = groundHeight_;
+    scene.groundCentreCm = toGlm(fk.jointCm[0]);
+    scene.handles = render::effectorHandles(doc.clip().skeleton, fk);
+    for (render::Handle& h : scene.handles) {
+        if (h.id == s.hoveredHandle) h.state = render::HandleState::kHover;
+        if (doc.dragging() && h.id == static_cast<int>(doc.dragEffector())) h.state = render::HandleState::kSelected;
+    }
     if (doc.comparePose()) {
         FkState fk;
         forwardKinematics(doc.clip().skeleton, *doc.comparePose(), fk);

@@ -39,6 +39,8 @@ private:
     bool followValid_ = false;
     Eigen::Vector3d followRoot_ = Eigen::Vector3d::Zero();
     std::string followClip_;
+    mutable std::string groundClip_;
+    mutable float groundHeight_ = 0.0f;
 };
 
 }  // namespace mgp::ui
