@@ -97,7 +97,10 @@ std::string EditorApp::openClip(const std::string& path) {
         state_.modelLabel.clear();
         state_.cameraNeedsFraming = true;
         state_.playing = false;
-        state_.setStatus("opened " + path + (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
+        std::error_code ec;
+        const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
+        state_.setStatus("opened " + (ec ? path : shown) +
+                         (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
         return "";
     } catch (const std::exception& e) {
         state_.setStatus(e.what(), true);

@@ -96,6 +96,10 @@ std::optional<std::string> FileDialog::draw() {
             else if (mode_ == Mode::kOpen && !fs::exists(p, ec)) error_ = "no such file: " + p.string();
             else chosen = p.string();
         }
+        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+            open_ = false;
+            ImGui::CloseCurrentPopup();
+        }
         if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error_.c_str());
         if (chosen) {
             open_ = false;

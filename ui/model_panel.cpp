@@ -61,7 +61,9 @@ void drawModelPanel(EditorState& s) {
         if (pending > 0) ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
         else if (!st.empty()) ImGui::TextDisabled("last %s", st.c_str());
     } else {
-        ImGui::TextDisabled("No model: drags use plain IK until one is trained or opened");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("No model: drags use plain IK until one is trained or opened");
+        ImGui::PopStyleColor();
     }
     ImGui::Separator();
 
@@ -134,7 +136,9 @@ void drawModelPanel(EditorState& s) {
 void drawIkReadout(EditorState& s) {
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {
-        ImGui::TextDisabled("Drag a hand, foot or head handle to pose. Residuals appear here.");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Drag a hand, foot or head handle to pose. Residuals appear here.");
+        ImGui::PopStyleColor();
         return;
     }
     ImGui::Text("%s%s", r.learned ? "Learned IK" : "Plain IK (no model)", s.doc.dragging() ? "  (live)" : "  (last drag)");

@@ -29,6 +29,7 @@ std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options
         progress_.kernel = gp::kernelKindName(options.kind);
         result_.reset();
         message_.clear();
+        started_ = std::chrono::steady_clock::now();
     }
     thread_ = std::thread(&TrainingJob::run, this, clip, options, sourceFile);
     return "";
@@ -38,7 +39,10 @@ void TrainingJob::cancel() { cancel_.store(true); }
 
 TrainingProgress TrainingJob::progress() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return progress_;
+    TrainingProgress p = progress_;
+    if (p.running)
+        p.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    return p;
 }
 
 gp::ModelVersionPtr TrainingJob::take() {

@@ -4,6 +4,7 @@
 // training). The UI polls progress() every frame and takes the finished model once.
 // No GL or ImGui here.
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -52,6 +53,7 @@ private:
     TrainingProgress progress_;
     gp::ModelVersionPtr result_;
     std::string message_;
+    std::chrono::steady_clock::time_point started_;
 };
 
 }  // namespace mgp

@@ -13,7 +13,10 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 #include "editor_app.h"
@@ -277,4 +280,51 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
     CHECK(dragFrames > 0);  // the events did exercise the learned IK, not only the camera
     h->app->state().playing = false;
     doc.waitIdle();
+}
+
+TEST_CASE("gui verb: --offscreen --script runs the frames, writes the screenshots and exits 0 with no display") {
+    if (!fs::exists(kMocap + "/asf_amc/35_01.amc")) {
+        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << kMocap);
+        return;
+    }
+    const std::string dir = kOutDir + "/gui_cli";
+    fs::create_directories(dir);
+    fs::remove(dir + "/mid.png");
+    fs::remove(dir + "/end.png");
+    {
+        std::ofstream s(dir + "/script.txt");
+        s << "# scrub, play, pause, pin, shot\n2 key RIGHT\n4 key SPACE\n10 key SPACE\n12 action pin lfoot\n"
+             "14 action screenshot " << dir << "/mid.png\n";
+    }
+    const std::string cmd = std::string("DISPLAY= ") + MOTIONGP_TEST_BINARY + " gui '" + kMocap +
+                            "/asf_amc/35_01.amc' --offscreen --size 640x400 --script '" + dir + "/script.txt' --screenshot '" +
+                            dir + "/end.png' > '" + dir + "/log.txt' 2>&1";
+    const int rc = std::system(cmd.c_str());
+    if (rc != 0) {
+        std::ifstream log(dir + "/log.txt");
+        const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+        if (text.find("EGL") != std::string::npos) {
+            MESSAGE("MOTIONGP_GL_SKIP: " << text);
+            return;
+        }
+        FAIL("gui exited " << rc << ": " << text);
+    }
+    int w = 0, h = 0, n = 0;
+    stbi_uc* img = stbi_load((dir + "/end.png").c_str(), &w, &h, &n, 4);
+    REQUIRE(img);
+    CHECK(w == 640);
+    CHECK(h == 400);
+    stbi_image_free(img);
+    CHECK(fs::exists(dir + "/mid.png"));
+    // A malformed script is one clear error with file:line.
+    {
+        std::ofstream s(dir + "/bad.txt");
+        s << "1 move 10\n";
+    }
+    const std::string bad = std::string("DISPLAY= ") + MOTIONGP_TEST_BINARY + " gui --offscreen --script '" + dir +
+                            "/bad.txt' > '" + dir + "/bad.log' 2>&1";
+    CHECK(std::system(bad.c_str()) != 0);
+    std::ifstream log(dir + "/bad.log");
+    const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    CHECK(text.find("bad.txt:1: expected two pixel coordinates") != std::string::npos);
 }
