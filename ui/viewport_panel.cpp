@@ -45,8 +45,8 @@ void ViewportPanel::ensureTarget(int w, int h) {
     }
     glBindTexture(GL_TEXTURE_2D, colour_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindRenderbuffer(GL_RENDERBUFFER, depth_);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -257,12 +257,36 @@ void ViewportPanel::draw(EditorState& s) {
 
     if (s.doc.hasClip()) {
         const render::Scene scene = buildScene(s);
-        renderer_->draw(scene, s.camera, w, h, fbo_);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        // Redraw only when what the viewport shows changed (llvmpipe spends most of a frame
+        // rasterising the scene; an idle editor should not).
+        // While the user drags, orbits or plays, the scene is drawn at a lower resolution into the
+        // corner of the target and scaled up (as Blender does during navigation); at rest it is
+        // drawn at full resolution again.
+        const bool moving = mode_ != Mode::kNone || s.playing || s.doc.latentDragging();
+        const float scale = moving ? kMovingScale : 1.0f;
+        rw_ = std::max(16, int(w * scale));
+        rh_ = std::max(16, int(h * scale));
+        std::vector<float> sig = {float(rw_), float(rh_), s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z,
+                                  s.camera.yawDeg, s.camera.pitchDeg, s.camera.distanceCm, s.camera.fovYDeg};
+        auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
+        for (const render::Figure& f : scene.figures) {
+            sig.push_back(f.ghost ? 1.0f : 0.0f);
+            for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
+        }
+        for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
+        for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
+        for (const render::Pin& p : scene.pins) addVec(p.positionCm);
+        sig.push_back(scene.groundHeightCm);
+        if (sig != lastSignature_) {
+            renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            lastSignature_ = std::move(sig);
+            ++sceneDraws_;
+        }
     }
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(colour_)), origin,
-                 ImVec2(origin.x + w, origin.y + h), ImVec2(0, 1), ImVec2(1, 0));
+                 ImVec2(origin.x + w, origin.y + h), ImVec2(0, float(rh_) / float(h)), ImVec2(float(rw_) / float(w), 0));
     // Overlay: what the mouse does.
     const char* hint = mode_ == Mode::kDragHandle
                            ? "Dragging: release to accept  |  Shift: ground plane  |  Esc: cancel"

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "editor_state.h"
 #include "skeleton_renderer.h"
@@ -23,6 +24,7 @@ public:
     // Screen (window) pixel of an effector's handle; false if not visible or not drawn yet.
     bool handleScreenPosition(const EditorState& state, Effector e, float& x, float& y) const;
     void frameCharacter(EditorState& state) const;
+    long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
 
 private:
     void ensureTarget(int w, int h);
@@ -32,6 +34,8 @@ private:
     std::unique_ptr<render::SceneRenderer> renderer_;
     unsigned fbo_ = 0, colour_ = 0, depth_ = 0;
     int width_ = 0, height_ = 0;
+    int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
+    static constexpr float kMovingScale = 0.7f;
     float originX_ = 0, originY_ = 0;
     enum class Mode { kNone, kOrbit, kPan, kDragHandle } mode_ = Mode::kNone;
     float lastX_ = 0, lastY_ = 0;
@@ -39,6 +43,8 @@ private:
     bool followValid_ = false;
     Eigen::Vector3d followRoot_ = Eigen::Vector3d::Zero();
     std::string followClip_;
+    std::vector<float> lastSignature_;
+    long sceneDraws_ = 0;
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;
 };
