@@ -58,13 +58,22 @@ int runGui(const GuiArgs& args) {
     const bool scripted = total > 0;
 
     ui::InputState scriptInput;
+    int settle = 2;
     auto t0 = std::chrono::steady_clock::now();
     for (int i = 0; total == 0 || i < total; ++i) {
         ui::InputState* input = &scriptInput;
         int w = args.width, h = args.height;
         double dt = 1.0 / 60.0;
         if (window) {
-            window->pollEvents();
+            // Interactive and nothing moving: sleep until input (at most 0.25 s) instead of
+            // redrawing at the display rate. Every input event gets two frames (ImGui settles
+            // hover state and popups one frame late).
+            if (!scripted && !app.animating() && i > 2 && --settle <= 0) {
+                window->waitEvents(0.25);
+                settle = 2;
+            } else {
+                window->pollEvents();
+            }
             if (window->shouldClose()) break;
             if (!scripted) input = &window->input();
             w = window->width();

@@ -192,6 +192,13 @@ void EditorApp::waitIdle() {
     latent_.waitIdle();
 }
 
+bool EditorApp::animating() const {
+    const EditorDocument& d = state_.doc;
+    return state_.playing || d.dragging() || d.latentDragging() || state_.training.running() ||
+           state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
+           (d.hasModel() && !latent_.upToDate(state_));
+}
+
 std::string EditorApp::title() const {
     std::string t = "MotionGP - ";
     if (!state_.doc.hasClip()) t += "no clip";
@@ -217,6 +224,11 @@ std::string EditorApp::runAction(const std::vector<std::string>& a) {
         if (a.size() > 2) state_.trainOptions.activeSize = std::atoi(a[2].c_str());
         if (a.size() > 3) state_.trainOptions.outerIterations = std::atoi(a[3].c_str());
         return startTraining();
+    }
+    if (n == "train-compare") {
+        state_.requestTrainCompare = true;
+        pollJobs();
+        return "";
     }
     if (n == "cancel-train") {
         state_.training.cancel();
@@ -355,7 +367,7 @@ void EditorApp::menus() {
 void EditorApp::layout(int w, int h) {
     const float menuH = ImGui::GetFrameHeight();
     const float rightW = 380.0f, timelineH = 104.0f;
-    const float modelH = 262.0f, latentH = 372.0f;
+    const float modelH = 262.0f, latentH = 356.0f;
     const float leftW = float(w) - rightW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;

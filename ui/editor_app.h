@@ -48,6 +48,9 @@ public:
     void waitIdle();
 
     std::string title() const;
+    // Whether the next frames change on their own (playback, a drag being refined, background
+    // work to pick up); when false the window may sleep until the next input event.
+    bool animating() const;
     bool quitRequested() const { return state_.requestQuit; }
     EditorState& state() { return state_; }
     const EditorState& state() const { return state_; }

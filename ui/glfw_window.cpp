@@ -69,6 +69,7 @@ int GlfwWindow::height() const {
 
 void GlfwWindow::present() { glfwSwapBuffers(window_); }
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
+void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
 
 void GlfwWindow::setTitle(const std::string& title) {

@@ -26,6 +26,7 @@ public:
     void present() override;      // swap buffers
 
     void pollEvents();
+    void waitEvents(double timeoutSeconds);  // sleeps until input or the timeout
     bool shouldClose() const;
     void setTitle(const std::string& title);
     InputState& input() { return input_; }

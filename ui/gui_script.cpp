@@ -42,7 +42,7 @@ bool isNumber(const std::string& s) {
 GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
     static const std::set<std::string> verbs = {"move", "moveby", "hover", "down", "up", "wheel",
                                                 "key", "keydown", "keyup", "action"};
-    static const std::set<std::string> actions = {"open", "open-model", "save-model", "train", "cancel-train",
+    static const std::set<std::string> actions = {"open", "open-model", "save-model", "train", "train-compare", "cancel-train",
                                                   "wait", "play", "pause", "frame", "pin", "compare",
                                                   "frame-camera", "screenshot"};
     GuiScript script;
@@ -89,7 +89,7 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             need(1, "an action name");
             if (!actions.count(args[0]))
                 throwParseError(file, lineNo,
-                                "open, open-model, save-model, train, cancel-train, wait, play, pause, frame, pin, "
+                                "open, open-model, save-model, train, train-compare, cancel-train, wait, play, pause, frame, pin, "
                                 "compare, frame-camera or screenshot",
                                 "'" + args[0] + "'");
             const std::string& a = args[0];

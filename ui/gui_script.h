@@ -20,6 +20,7 @@
 //       open-model PATH      open a saved model (its clip comes with it)
 //       save-model PATH      save the current model
 //       train [fas|sgplvm] [M] [T]   start training on the open clip (defaults from the panel)
+//       train-compare        train the compare model (the other kernel) for `compare model`
 //       cancel-train         cancel the training run
 //       wait                 block until training, adaptive updates and the latent map are done
 //       play | pause         timeline playback

@@ -216,9 +216,9 @@ TEST_CASE("gui golden: latent map and timeline panels") {
     fs::create_directories(kOutDir);
     render::writePng(img, kOutDir + "/ui_window.png");
     // Fixed layout (EditorApp::layout): right column 380 px wide; the latent map window starts
-    // at menu height + 262 and is 372 px tall; the timeline is the bottom 104 px left of it.
+    // at menu height + 262 and is 356 px tall; the timeline is the bottom 104 px left of it.
     const int menuH = 19;  // ImGui's built-in font: frame height 13 + 2*3
-    compareGolden("ui_latent_map", crop(img, kW - 380, menuH + 262, 380, 372));
+    compareGolden("ui_latent_map", crop(img, kW - 380, menuH + 262, 380, 356));
     compareGolden("ui_timeline", crop(img, 0, kH - 104, kW - 380, 104));
 }
 
