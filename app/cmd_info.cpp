@@ -1,7 +1,10 @@
 // `motiongp info CLIP [--skel ASF] [--json]`: what a clip holds, in the model's terms.
 #include <iostream>
 
+#include <cstdlib>
+
 #include "cli_common.h"
+#include "gui_run.h"
 #include "command_registry.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
@@ -64,19 +67,24 @@ const CommandRegistration reg("info", "Summarise a clip (frames, fps, DOFs, cons
 }  // namespace
 
 int runDefault() {
-    // Until the editor exists (issue 6) the run command prints the default clip's summary.
+    // `motiongp` with no verb opens the editor on the default clip (the 10_02 kick, else the
+    // synthetic demo clip) when a display is available; otherwise it says how to run it.
     const auto dir = findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
     if (!globalOptions().dataDir.empty() && !dir)
         throw UsageError("expected --data to name a folder holding asf_amc/ or bvh/, found '" +
                          globalOptions().dataDir + "'");
+    const char* display = std::getenv("DISPLAY");
+    if (display && *display) return runGui(GuiArgs{});
     const auto clipPath = dir ? defaultClipIn(*dir) : std::nullopt;
     if (clipPath) {
         printHuman(clipInfoJson(loadClip(*clipPath)));
     } else {
-        std::cout << "No mocap folder found: showing the built-in synthetic demo clip.\n";
+        std::cout << "No mocap folder found: the editor opens the built-in synthetic demo clip.\n";
         printHuman(clipInfoJson(makeSyntheticWalk()));
     }
-    std::cout << "(The interactive editor is not built yet; see `motiongp --help` for the verbs.)\n";
+    std::cout << "motiongp: no display: run `xvfb-run -a -s '-screen 0 1280x800x24' motiongp` for the editor, or "
+                 "`motiongp gui --offscreen --frames 3 --screenshot out.png` (default clip: "
+              << (clipPath ? *clipPath : std::string("synthetic demo, no mocap folder found")) << ")\n";
     return 0;
 }
 

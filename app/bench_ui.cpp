@@ -1,0 +1,100 @@
+// `motiongp bench --only ui`: editor frame time at 1280×720 on the offscreen context (llvmpipe
+// here), the whole UI (ImGui panels, viewport without MSAA, latent map) while dragging the right
+// foot with live learned IK. Drags are released between rounds, so adaptive updates and the
+// latent-map recomputation (a 160×160 σ² image on a worker thread) run during later rounds.
+#include <GL/gl.h>
+
+#include <filesystem>
+
+#include "bench_registry.h"
+#include "editor_app.h"
+#include "gl_context.h"
+#include "scene_builder.h"
+#include "skeleton_renderer.h"
+
+namespace mgp::app {
+
+namespace {
+
+nlohmann::json benchUi(const BenchContext& ctx) {
+    constexpr int kW = 1280, kH = 720;
+    render::OffscreenContext gl(kW, kH);
+    ui::EditorApp app;
+    const std::string amc = ctx.mocapDir + "/asf_amc/35_01.amc";
+    const bool real = !ctx.mocapDir.empty() && std::filesystem::exists(amc);
+    if (real) app.openClip(amc);
+    else app.openSyntheticClip("bench");
+    const int M = ctx.quick ? 100 : 200;
+    app.runAction({"train", "fas", std::to_string(M), "3"});
+    app.waitIdle();
+    ui::InputState in;
+    auto frame = [&] {
+        app.frame(in, 1.0 / 60.0, kW, kH);
+        glFinish();
+    };
+    for (int i = 0; i < 3; ++i) frame();
+    app.waitIdle();
+    for (int i = 0; i < 3; ++i) frame();
+    app.state().doc.setFrame(99 % app.state().doc.frameCount());
+    frame();
+
+    std::vector<double> idle, drag;
+    for (int i = 0; i < 30; ++i) idle.push_back(secondsOf(frame));
+    const int rounds = ctx.quick ? 2 : std::max(3, ctx.repeats);
+    int dragFrames = 0;
+    for (int r = 0; r < rounds; ++r) {
+        float x, y;
+        if (!app.handleScreenPosition(Effector::kRFoot, x, y)) break;
+        in.mouseX = x;
+        in.mouseY = y;
+        frame();
+        in.mouseDown[0] = true;
+        frame();
+        // Up 30 px and back in 1.5 px steps (0.25–0.5 cm per event at this zoom), like a hand on a mouse.
+        for (int k = 0; k < 40; ++k) {
+            in.mouseY += k < 20 ? -1.5f : 1.5f;
+            drag.push_back(secondsOf(frame));
+            ++dragFrames;
+        }
+        in.mouseDown[0] = false;
+        frame();
+    }
+    app.waitIdle();
+    // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
+    // UI frame that is the renderer's, not the editor's.
+    std::vector<double> sceneOnly;
+    {
+        render::SceneRenderer renderer(1);
+        render::ClipSceneOptions so;
+        so.frameIndex = app.state().doc.frame();
+        so.editedPose = app.state().doc.currentPose();
+        so.caption = false;
+        const render::Scene scene = render::buildClipScene(app.state().doc.clip(), so);
+        for (int i = 0; i < 30; ++i)
+            sceneOnly.push_back(secondsOf([&] {
+                renderer.draw(scene, app.state().camera, kW - 380, kH - 123, 0);
+                glFinish();
+            }));
+    }
+    const render::GlInfo info = render::currentGlInfo();
+    nlohmann::json j;
+    j["width"] = kW;
+    j["height"] = kH;
+    j["renderer"] = info.renderer;
+    j["clip"] = real ? "35_01" : "synthetic";
+    j["model"] = {{"kernel", "fas"}, {"M", M}, {"T", 3}};
+    j["idle_frame_seconds"] = summarizeSeconds(idle);
+    j["drag_frame_seconds"] = summarizeSeconds(drag);
+    j["drag_frames"] = dragFrames;
+    j["scene_only_seconds"] = summarizeSeconds(sceneOnly);
+    j["scene_only_size"] = {kW - 380, kH - 123};
+    j["adaptive_updates"] = app.state().doc.adaptiveUpdates();
+    j["latent_map_texels"] = 160 * 160;
+    j["target_seconds"] = 0.016;
+    return j;
+}
+
+const BenchRegistration reg("ui", "Editor frame time at 1280x720 while dragging (offscreen, whole UI)", benchUi);
+
+}  // namespace
+}  // namespace mgp::app

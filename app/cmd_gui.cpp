@@ -1,0 +1,125 @@
+// `motiongp gui [FILE] [--model MODEL] [--frames N] [--script FILE] [--screenshot OUT.png]
+//               [--offscreen] [--size WxH]`: the interactive editor. With --frames or --script it
+// runs that many frames (scripted input replaces the mouse and keyboard), optionally saves a
+// screenshot of the whole window, and exits 0. --offscreen uses the EGL surfaceless context
+// (no display); otherwise a GLFW window (a desktop or xvfb-run).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <iostream>
+#include <memory>
+
+#include "cli_common.h"
+#include "command_registry.h"
+#include "editor_app.h"
+#include "gl_context.h"
+#include "glfw_window.h"
+#include "gui_run.h"
+#include "gui_script.h"
+#include "io/data_paths.h"
+#include "io/parse_error.h"
+#include "png_capture.h"
+
+namespace mgp::app {
+
+int runGui(const GuiArgs& args) {
+    if (args.width < 320 || args.height < 240 || args.width > 8192 || args.height > 8192)
+        throw UsageError("expected --size between 320x240 and 8192x8192, found " + std::to_string(args.width) + "x" +
+                         std::to_string(args.height));
+    if (args.frames < 0) throw UsageError("expected --frames ≥ 0, found " + std::to_string(args.frames));
+    std::optional<ui::ScriptPlayer> player;
+    if (!args.script.empty()) player.emplace(ui::GuiScript::load(args.script));
+
+    std::unique_ptr<render::OffscreenContext> offscreen;
+    std::unique_ptr<ui::GlfwWindow> window;
+    if (args.offscreen) offscreen = std::make_unique<render::OffscreenContext>(args.width, args.height);
+    else window = std::make_unique<ui::GlfwWindow>(args.width, args.height, "MotionGP");
+
+    const auto mocap = findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
+    ui::EditorOptions eo;
+    if (mocap) eo.mocapDir = *mocap;
+    ui::EditorApp app(eo);
+    if (!args.model.empty()) {
+        const std::string err = app.openModel(args.model);
+        if (!err.empty()) throw ParseError(err);
+    } else if (!args.clip.empty()) {
+        const std::string err = app.openClip(args.clip);
+        if (!err.empty()) throw ParseError(err);
+    } else if (const auto def = mocap ? defaultClipIn(*mocap) : std::nullopt) {
+        app.openClip(*def);
+    } else {
+        app.openSyntheticClip("no mocap folder found: showing the synthetic demo clip");
+    }
+
+    int total = args.frames;
+    if (player) total = std::max(total, player->lastFrame() + 3);
+    if (total == 0 && (args.offscreen || !args.screenshot.empty())) total = 3;
+    const bool scripted = total > 0;
+
+    ui::InputState scriptInput;
+    int settle = 2;
+    auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; total == 0 || i < total; ++i) {
+        ui::InputState* input = &scriptInput;
+        int w = args.width, h = args.height;
+        double dt = 1.0 / 60.0;
+        if (window) {
+            // Interactive and nothing moving: sleep until input (at most 0.25 s) instead of
+            // redrawing at the display rate. Every input event gets two frames (ImGui settles
+            // hover state and popups one frame late).
+            if (!scripted && !app.animating() && i > 2 && --settle <= 0) {
+                window->waitEvents(0.25);
+                settle = 2;
+            } else {
+                window->pollEvents();
+            }
+            if (window->shouldClose()) break;
+            if (!scripted) input = &window->input();
+            w = window->width();
+            h = window->height();
+            if (!scripted) {
+                const auto now = std::chrono::steady_clock::now();
+                dt = std::chrono::duration<double>(now - t0).count();
+                t0 = now;
+            }
+        }
+        std::vector<std::string> shots;
+        if (player) player->apply(i, *input, app, shots);
+        app.frame(*input, dt, w, h);
+        for (const std::string& s : shots) render::writePng(app.capture(w, h), s);
+        if (!args.screenshot.empty() && scripted && i == total - 1) render::writePng(app.capture(w, h), args.screenshot);
+        if (window) {
+            window->setTitle(app.title());
+            window->present();
+        }
+        if (app.quitRequested()) break;
+    }
+    if (player)
+        for (const std::string& e : player->errors()) std::cerr << "gui: script " << args.script << ": " << e << "\n";
+    return 0;
+}
+
+namespace {
+
+const CommandRegistration reg("gui", "Open the interactive editor (or run it scripted and save a screenshot)",
+                              [](CLI::App& sub) -> CommandRunner {
+    auto a = std::make_shared<GuiArgs>();
+    auto size = std::make_shared<std::string>("1280x800");
+    sub.add_option("file", a->clip, "ASF/AMC or BVH clip to open (default: the 10_02 kick, else a synthetic walk)");
+    sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
+    sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
+    sub.add_option("--script", a->script, "Timed input events (format: ui/gui_script.h)");
+    sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
+    sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
+    sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
+    return [=]() {
+        GuiArgs g = *a;
+        if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)
+            throw UsageError("expected --size WxH (e.g. 1280x800), found '" + *size + "'");
+        return runGui(g);
+    };
+});
+
+}  // namespace
+}  // namespace mgp::app

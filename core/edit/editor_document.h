@@ -1,0 +1,198 @@
+#pragma once
+// EditorDocument: what the interactive editor edits, with no GL or ImGui (DESIGN.md §1). The UI
+// calls these methods; tests call them directly.
+//
+//   clip            the loaded motion (angles unwrapped over time, so it matches a model's rows)
+//   frame           current frame, 0-based
+//   edits           accepted poses per frame (a frame without an edit shows the captured pose)
+//   model           the current immutable model version (an AdaptiveWorker publishes new ones
+//                   after each accepted drag; the UI never waits for it)
+//   pins            effectors held where they are while another one is dragged
+//   drag            the state machine  beginDrag(e) -> dragTo(target)* / refine()* -> endDrag()
+//
+// Units: cm, world Y up (DESIGN.md §2). One drag = one accepted pose = one future undo step
+// (part 2 records `DragRecord`s: frame, pose and latent before/after, model version before).
+// Without a model, drags are solved by plain IK (damped least squares) so a clip can be posed
+// before training; the readout says which solver ran.
+#include <array>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "edit/adaptive_worker.h"
+#include "ik/learned_ik.h"
+#include "ik/plain_ik.h"
+#include "skeleton/clip.h"
+
+namespace mgp {
+
+// What the compare ghost shows: the same targets solved by another solver.
+enum class CompareMode { kNone, kPlainIk, kSecondModel };
+
+struct EditRecord {
+    Pose pose;
+    Eigen::VectorXd x;  // latent point of the accepted pose (empty if solved without a model)
+};
+
+// What one drag changed (returned by endDrag; part 2 turns it into an undo command).
+struct DragRecord {
+    int frame = 0;
+    Effector effector = Effector::kRFoot;
+    std::optional<EditRecord> before;  // the frame's edit before the drag (none = captured pose)
+    EditRecord after;
+    int modelVersionBefore = 0;
+};
+
+// Readout of the latest solve.
+struct SolveReadout {
+    bool valid = false;
+    bool learned = false;  // false: plain IK (no model loaded)
+    std::vector<IkConstraintResult> constraints;
+    bool reached = false;
+    double sigma2 = 0.0, lik = 0.0;
+    int iterations = 0;  // total over the drag's last target (live solve + refinements)
+    std::string diagnostic;
+};
+
+class EditorDocument {
+public:
+    EditorDocument();
+    ~EditorDocument();
+    EditorDocument(const EditorDocument&) = delete;
+    EditorDocument& operator=(const EditorDocument&) = delete;
+
+    // ---- clip ------------------------------------------------------------------------------
+    // Replaces the clip (edits, pins and drag are cleared). A model trained on another clip is
+    // dropped unless `keepModel` (used by setModel, whose clip this is).
+    void setClip(Clip clip, bool synthetic = false);
+    const Clip& clip() const { return clip_; }
+    bool hasClip() const { return clip_.frameCount() > 0; }
+    bool synthetic() const { return synthetic_; }
+    // Training needs ASF/AMC (or the synthetic clip): BVH is view-only for now.
+    bool trainable() const { return hasClip() && clip_.format != ClipFormat::kBvh; }
+    int frame() const { return frame_; }
+    int frameCount() const { return clip_.frameCount(); }
+    void setFrame(int frame);  // clamped; ends a drag in progress (accepting it)
+    const Pose& currentPose() const;
+    const Pose& capturedPose() const { return clip_.frames[frame_]; }
+    bool isEdited(int frame) const { return edits_.count(frame) != 0; }
+    const std::map<int, EditRecord>& edits() const { return edits_; }
+    void clearEdit(int frame);
+    Eigen::Vector3d effectorPosition(Effector e) const;  // FK of the current pose (cm)
+    bool hasEffector(Effector e) const { return hasClip() && clip_.skeleton.hasEffector(e); }
+
+    // ---- model -----------------------------------------------------------------------------
+    // Installs a model (its clip becomes the document's clip if `adoptClip`); restarts the
+    // adaptive worker on it.
+    void setModel(gp::ModelVersionPtr version, bool adoptClip);
+    void clearModel();
+    gp::ModelVersionPtr model() const;  // the latest published version (null if none)
+    bool hasModel() const { return worker_ != nullptr; }
+    void setAdaptiveEnabled(bool on);
+    bool adaptiveEnabled() const { return adaptive_; }
+    int adaptivePending() const { return worker_ ? worker_->pending() : 0; }
+    std::string adaptiveStatus() const;  // last update's outcome, "" if none yet
+    int adaptiveUpdates() const;
+    // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
+    void setCompareModel(gp::ModelVersionPtr version) { compareModel_ = std::move(version); }
+    gp::ModelVersionPtr compareModel() const { return compareModel_; }
+    void setCompareMode(CompareMode mode);
+    CompareMode compareMode() const { return compare_; }
+    // The compare ghost for the current targets (none when not dragging or mode is none).
+    const std::optional<Pose>& comparePose() const { return comparePose_; }
+
+    // Latent point shown for the current frame: the drag's x, else the frame's accepted x, else
+    // latentStartForFrame (cached per frame and model version). Empty without a model.
+    Eigen::VectorXd currentLatent();
+    // Latent points visited by the current drag (or the last one), in order.
+    const std::vector<Eigen::VectorXd>& latentPath() const { return latentPath_; }
+
+    // ---- pins ------------------------------------------------------------------------------
+    // A pin holds the effector at its position in the current frame's pose (re-read when the
+    // frame changes, so a planted foot stays planted wherever it is on that frame).
+    void togglePin(Effector e);
+    void setPinned(Effector e, bool on);
+    bool pinned(Effector e) const { return pins_[static_cast<int>(e)]; }
+    std::vector<Effector> pinnedEffectors() const;
+
+    // ---- drag ------------------------------------------------------------------------------
+    // Returns "" when the drag started, else why not (no clip, effector absent).
+    std::string beginDrag(Effector e);
+    // Solves for a new target, warm-started from the previous solve (iteration cap per event).
+    void dragTo(const Eigen::Vector3d& targetCm, int maxIterations = 50);
+    // More iterations on the same target while the user holds still; false if nothing to do
+    // (converged, no drag, or the refinement budget is spent).
+    bool refine(int maxIterations = 50);
+    // Accepts the pose (refining a little more first if it has not converged) and posts it to
+    // the adaptive worker. Returns what changed.
+    std::optional<DragRecord> endDrag();
+    void cancelDrag();  // restores the pose before the drag
+    bool dragging() const { return drag_.active; }
+    Effector dragEffector() const { return drag_.effector; }
+    Eigen::Vector3d dragTarget() const { return drag_.targetCm; }
+    const SolveReadout& readout() const { return readout_; }
+
+    // Latent drag: pose the current frame from the model mean f(x) (root translation kept).
+    bool beginLatentDrag();
+    void latentDragTo(const Eigen::VectorXd& x);
+    void endLatentDrag();
+    bool latentDragging() const { return latentDrag_; }
+
+    // Blocks until background updates finish (tests and scripts only).
+    void waitIdle();
+
+private:
+    std::vector<IkConstraint> constraintsFor(const Eigen::Vector3d& target) const;
+    void solveLearned(int maxIterations, bool fromDragStart);
+    void solvePlain();
+    void solveCompare();
+    void updatePinPositions();
+    Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
+
+    Clip clip_;
+    bool synthetic_ = false;
+    int frame_ = 0;
+    std::map<int, EditRecord> edits_;
+    std::array<bool, kEffectorCount> pins_{};
+    std::array<Eigen::Vector3d, kEffectorCount> pinPositions_{};
+
+    std::unique_ptr<AdaptiveWorker> worker_;
+    gp::ModelVersionPtr compareModel_;
+    bool adaptive_ = true;
+    mutable std::mutex statusMutex_;
+    std::string adaptiveStatus_;
+    int adaptiveUpdates_ = 0;
+
+    CompareMode compare_ = CompareMode::kNone;
+    std::optional<Pose> comparePose_;
+
+    std::unique_ptr<LearnedIkSolver> solver_, compareSolver_;
+    LearnedIkRequest request_;
+    LearnedIkResult result_;
+    SolveReadout readout_;
+
+    struct Drag {
+        bool active = false;
+        Effector effector = Effector::kRFoot;
+        Eigen::Vector3d targetCm = Eigen::Vector3d::Zero();
+        Pose startPose, pose;
+        Eigen::VectorXd startX, x;
+        std::optional<EditRecord> before;
+        int versionBefore = 0;
+        int refineBudget = 0;
+        bool converged = false;
+    } drag_;
+    bool latentDrag_ = false;
+    std::optional<EditRecord> latentBefore_;
+    std::vector<Eigen::VectorXd> latentPath_;
+
+    // latentStartForFrame cache
+    int cacheFrame_ = -1, cacheVersion_ = -1;
+    const void* cacheModel_ = nullptr;
+    Eigen::VectorXd cacheX_;
+};
+
+}  // namespace mgp

@@ -1,0 +1,59 @@
+#pragma once
+// TrainingJob: trains a model from a clip on a background thread, one outer iteration at a time,
+// with progress, an ETA and cancellation (DESIGN.md §4: the app never blocks the UI on
+// training). The UI polls progress() every frame and takes the finished model once.
+// No GL or ImGui here.
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "gp/model_version.h"
+#include "gp/trainer.h"
+#include "skeleton/clip.h"
+
+namespace mgp {
+
+struct TrainingProgress {
+    bool running = false;
+    int iteration = 0;     // outer iterations done
+    int total = 0;         // T
+    double objective = 0;  // L_GP after the last iteration
+    double elapsedSeconds = 0;
+    double etaSeconds = -1;  // < 0 until one iteration has finished (an upper bound: Step 9 may stop early)
+    std::string kernel;      // "fas" | "sgplvm"
+};
+
+class TrainingJob {
+public:
+    TrainingJob() = default;
+    ~TrainingJob();  // cancels and joins
+    TrainingJob(const TrainingJob&) = delete;
+    TrainingJob& operator=(const TrainingJob&) = delete;
+
+    // Starts training on every frame of `clip` (ASF/AMC or synthetic). Returns "" or why not
+    // (a job is running, BVH clip, fewer than 3 frames).
+    std::string start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile = "");
+    void cancel();
+    bool running() const { return running_.load(); }
+    TrainingProgress progress() const;
+    // The finished model, once (null while running, after a cancel, or when already taken).
+    gp::ModelVersionPtr take();
+    // "" or the last job's outcome ("cancelled after 3 iterations", an error message, ...).
+    std::string message() const;
+    void join();
+
+private:
+    void run(Clip clip, gp::TrainOptions options, std::string sourceFile);
+    std::thread thread_;
+    std::atomic<bool> cancel_{false}, running_{false};
+    mutable std::mutex mutex_;
+    TrainingProgress progress_;
+    gp::ModelVersionPtr result_;
+    std::string message_;
+    std::chrono::steady_clock::time_point started_;
+};
+
+}  // namespace mgp

@@ -1,0 +1,40 @@
+#pragma once
+// A GLFW window with an OpenGL 3.3 core context (the interactive editor). It implements
+// render::GlSurface and collects mouse, wheel, key and character events into an InputState
+// (GLFW key codes pass through unchanged). GLFW needs a display (a desktop or xvfb-run); tests
+// never create one (DESIGN.md §3).
+#include <string>
+
+#include "gl_context.h"
+#include "input_state.h"
+
+struct GLFWwindow;
+
+namespace mgp::ui {
+
+class GlfwWindow final : public render::GlSurface {
+public:
+    // Throws render::RenderError when GLFW or the context cannot start (e.g. no DISPLAY).
+    GlfwWindow(int width, int height, const std::string& title);
+    ~GlfwWindow() override;
+    GlfwWindow(const GlfwWindow&) = delete;
+    GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+    void makeCurrent() override;
+    int width() const override;   // framebuffer pixels
+    int height() const override;
+    void present() override;      // swap buffers
+
+    void pollEvents();
+    void waitEvents(double timeoutSeconds);  // sleeps until input or the timeout
+    bool shouldClose() const;
+    void setTitle(const std::string& title);
+    InputState& input() { return input_; }
+
+private:
+    GLFWwindow* window_ = nullptr;
+    InputState input_;
+    std::string title_;
+};
+
+}  // namespace mgp::ui

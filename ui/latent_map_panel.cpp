@@ -1,0 +1,207 @@
+#include "latent_map_panel.h"
+
+#include <GL/gl.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace mgp::ui {
+
+namespace {
+ImU32 mapColour(double t, int alpha = 255) {
+    std::uint8_t rgb[3];
+    colourMap(t, rgb);
+    return IM_COL32(rgb[0], rgb[1], rgb[2], alpha);
+}
+// Training points: coloured by frame along a hue ramp (blue at the first frame -> green -> yellow
+// at the last), light so they stand out on the dark (uncertain) background.
+ImU32 frameColour(double t) {
+    float r, g, b;
+    ImGui::ColorConvertHSVtoRGB(float(0.60 - 0.50 * std::clamp(t, 0.0, 1.0)), 0.65f, 1.0f, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1.0f));
+}
+}  // namespace
+
+LatentMapPanel::LatentMapPanel() = default;
+
+LatentMapPanel::~LatentMapPanel() {
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+bool LatentMapPanel::upToDate(const EditorState& s) const {
+    const gp::ModelVersionPtr v = s.doc.model();
+    return v && shown_.model == v->model.get() && shown_.version == v->number;
+}
+
+void LatentMapPanel::prefetch(const EditorState& s) {
+    const gp::ModelVersionPtr v = s.doc.model();
+    if (!v) return;
+    if (requestedModel_ != v->model.get() || requestedVersion_ != v->number) {
+        worker_.request(v);
+        requestedModel_ = v->model.get();
+        requestedVersion_ = v->number;
+    }
+}
+
+void LatentMapPanel::draw(EditorState& s) {
+    EditorDocument& doc = s.doc;
+    const gp::ModelVersionPtr v = doc.model();
+    s.hoveredTrainingRow = -1;
+    if (!v) {
+        ImGui::TextWrapped("No model yet. Train one in the Model panel (Ctrl+T) or open a model file (Ctrl+M).");
+        return;
+    }
+    const gp::GpModel& model = *v->model;
+    prefetch(s);
+    LatentImage fresh;
+    if (worker_.take(fresh)) {
+        if (!texture_) glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, fresh.size, fresh.size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     fresh.rgba.data());
+        fresh.rgba.clear();
+        fresh.rgba.shrink_to_fit();
+        shown_ = std::move(fresh);
+    }
+
+    // Geometry: a square map, the colour bar below it.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float barBlock = 84.0f;
+    const float side = std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f));
+    const ImVec2 cur = ImGui::GetCursorScreenPos();
+    const ImVec2 p0(cur.x + 16.0f, cur.y), p1(p0.x + side, p0.y + side);
+    double bx0, by0, bx1, by1;
+    if (shown_.size > 0) {
+        bx0 = shown_.x0, by0 = shown_.y0, bx1 = shown_.x1, by1 = shown_.y1;
+    } else {
+        latentBox(model, 0.15, bx0, by0, bx1, by1);
+    }
+    auto toScreen = [&](double lx, double ly) {
+        return ImVec2(float(p0.x + (lx - bx0) / (bx1 - bx0) * side), float(p0.y + (by1 - ly) / (by1 - by0) * side));
+    };
+    auto toLatent = [&](ImVec2 p) {
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(model.latentDim());
+        x[0] = bx0 + (p.x - p0.x) / side * (bx1 - bx0);
+        if (x.size() > 1) x[1] = by1 - (p.y - p0.y) / side * (by1 - by0);
+        return x;
+    };
+
+    ImGui::SetCursorScreenPos(p0);
+    ImGui::InvisibleButton("##latentmap", ImVec2(side, side));
+    const bool hovered = ImGui::IsItemHovered();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(p0, p1, true);
+    if (shown_.size > 0 && texture_)
+        dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), p0, p1);
+    else
+        dl->AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
+
+    // Training points coloured by frame, active set ringed.
+    const int frames = std::max(1, doc.frameCount() - 1);
+    int nearest = -1;
+    float nearestD2 = 7.0f * 7.0f;
+    for (int i = 0; i < model.N(); ++i) {
+        const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
+        const int frame = i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0;
+        dl->AddCircleFilled(p, 2.3f, frameColour(double(frame) / frames));
+        if (hovered) {
+            const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
+            if (d2 < nearestD2) {
+                nearestD2 = d2;
+                nearest = i;
+            }
+        }
+    }
+    for (int i : model.active) {
+        if (i < 0 || i >= model.N()) continue;
+        dl->AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
+                      IM_COL32(255, 255, 255, 170), 10, 1.0f);
+    }
+    // Path of the current/last drag and the current latent point.
+    const auto& path = doc.latentPath();
+    for (std::size_t k = 1; k < path.size(); ++k)
+        dl->AddLine(toScreen(path[k - 1][0], path[k - 1].size() > 1 ? path[k - 1][1] : 0.0),
+                    toScreen(path[k][0], path[k].size() > 1 ? path[k][1] : 0.0), IM_COL32(255, 70, 70, 230), 2.0f);
+    const Eigen::VectorXd xc = doc.currentLatent();
+    ImVec2 pc(-1e6f, -1e6f);
+    if (xc.size() > 0 && xc.allFinite()) {
+        pc = toScreen(xc[0], xc.size() > 1 ? xc[1] : 0.0);
+        dl->AddCircleFilled(pc, 6.0f, IM_COL32(255, 60, 60, 255));
+        dl->AddCircle(pc, 6.5f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
+    }
+    if (nearest >= 0) {
+        const ImVec2 p = toScreen(model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0);
+        dl->AddCircle(p, 6.0f, IM_COL32(255, 230, 60, 255), 16, 2.0f);
+    }
+    dl->PopClipRect();
+    dl->AddRect(p0, p1, IM_COL32(120, 124, 132, 255));
+    dl->AddText(ImVec2(p0.x + side * 0.5f - 8.0f, p1.y + 1.0f), IM_COL32(200, 200, 205, 255), "x1");
+    dl->AddText(ImVec2(cur.x, p0.y + side * 0.5f - 7.0f), IM_COL32(200, 200, 205, 255), "x2");
+
+    // Interaction: drag the current point (pose from the model mean), click a training point.
+    const float dc2 = (pc.x - mouse.x) * (pc.x - mouse.x) + (pc.y - mouse.y) * (pc.y - mouse.y);
+    if (hovered && ImGui::IsMouseClicked(0)) {
+        if (dc2 <= 9.0f * 9.0f && doc.beginLatentDrag()) {
+            dragging_ = true;
+            s.playing = false;
+        } else if (nearest >= 0 && nearest < int(model.trainingFrames.size())) {
+            doc.setFrame(model.trainingFrames[nearest]);
+            s.setStatus("jumped to frame " + std::to_string(model.trainingFrames[nearest] + 1));
+        }
+    }
+    if (dragging_) {
+        if (!ImGui::IsMouseDown(0)) {
+            doc.endLatentDrag();
+            dragging_ = false;
+            s.setStatus("posed frame " + std::to_string(doc.frame() + 1) + " from the model mean");
+        } else if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) {
+            doc.latentDragTo(toLatent(mouse));
+        }
+    }
+    if (nearest >= 0 && !dragging_) {
+        s.hoveredTrainingRow = nearest;
+        const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
+        ImGui::SetTooltip("Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: go to this frame",
+                          model.clip.name.c_str(), frame + 1,
+                          model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
+                          std::find(model.active.begin(), model.active.end(), nearest) != model.active.end()
+                              ? "  [active set]" : "");
+    } else if (hovered && dc2 <= 81.0f && !dragging_) {
+        ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
+    }
+
+    // Colour bar.
+    const ImVec2 b0(p0.x, p1.y + 18.0f), b1(p1.x, p1.y + 28.0f);
+    const int segs = 48;
+    for (int k = 0; k < segs; ++k) {
+        const float xa = b0.x + (b1.x - b0.x) * k / segs, xb = b0.x + (b1.x - b0.x) * (k + 1) / segs;
+        dl->AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
+                                    mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
+                                    mapColour(1.0 - double(k) / segs));
+    }
+    dl->AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
+    char lo[48], hi[48];
+    std::snprintf(lo, sizeof lo, "%.2g", shown_.size ? std::exp(shown_.minLogVar) : 0.0);
+    std::snprintf(hi, sizeof hi, "%.2g", shown_.size ? std::exp(shown_.maxLogVar) : 0.0);
+    dl->AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
+    const float hiW = ImGui::CalcTextSize(hi).x;
+    dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
+    const char* cap = "predictive variance sigma^2(x), log scale";
+    const float capW = ImGui::CalcTextSize(cap).x;
+    const float lineH = ImGui::GetTextLineHeight();
+    dl->AddText(ImVec2(0.5f * (b0.x + b1.x) - 0.5f * capW, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
+    ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 4.0f + 2.0f * lineH));
+    if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
+    else ImGui::TextDisabled("bright: confident   dots: frames   rings: active set");
+}
+
+}  // namespace mgp::ui

@@ -1,0 +1,35 @@
+#pragma once
+// The latent map: the 2-D latent space with σ²(x) as one colour texture (computed off the UI
+// thread after every model change), a colour bar saying what the colour means, the training
+// points coloured by frame, the active set ringed, the current latent point and its path during a
+// drag. Hover names the nearest training frame; clicking a training point jumps the timeline
+// there; dragging the current point poses the character from the model mean f(x).
+#include "editor_state.h"
+#include "latent_map_image.h"
+
+namespace mgp::ui {
+
+class LatentMapPanel {
+public:
+    LatentMapPanel();
+    ~LatentMapPanel();
+    LatentMapPanel(const LatentMapPanel&) = delete;
+    LatentMapPanel& operator=(const LatentMapPanel&) = delete;
+    void draw(EditorState& state);
+    // Requests the image of the current model version if not requested yet (no ImGui calls).
+    void prefetch(const EditorState& state);
+    bool busy() const { return worker_.busy(); }
+    void waitIdle() { worker_.waitIdle(); }
+    // Whether the texture shows the state's current model version.
+    bool upToDate(const EditorState& state) const;
+
+private:
+    LatentImageWorker worker_;
+    LatentImage shown_;  // metadata of the uploaded image (pixels dropped after upload)
+    unsigned texture_ = 0;
+    const void* requestedModel_ = nullptr;
+    int requestedVersion_ = -1;
+    bool dragging_ = false;
+};
+
+}  // namespace mgp::ui

@@ -1,0 +1,12 @@
+#pragma once
+// The Model panel (clip facts, model facts, training with progress/ETA/Cancel, open/save, the
+// adaptive update switch, the compare ghost) and the IK readout (per-target residual in cm,
+// reached or not, σ²(x), L_IK).
+#include "editor_state.h"
+
+namespace mgp::ui {
+
+void drawModelPanel(EditorState& state);
+void drawIkReadout(EditorState& state);
+
+}  // namespace mgp::ui

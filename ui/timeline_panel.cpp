@@ -1,0 +1,97 @@
+#include "timeline_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace mgp::ui {
+
+void TimelinePanel::advance(EditorState& s, double dt) {
+    if (!s.playing || !s.doc.hasClip() || s.doc.dragging() || s.doc.latentDragging()) return;
+    s.playAccumulator += dt * s.doc.clip().fps;
+    const int steps = int(std::floor(s.playAccumulator));
+    if (steps <= 0) return;
+    s.playAccumulator -= steps;
+    const int n = s.doc.frameCount();
+    s.doc.setFrame((s.doc.frame() + steps) % std::max(1, n));
+}
+
+void TimelinePanel::draw(EditorState& s) {
+    EditorDocument& doc = s.doc;
+    if (!doc.hasClip()) {
+        ImGui::TextDisabled("No clip");
+        return;
+    }
+    const int n = doc.frameCount();
+    const double fps = doc.clip().fps;
+    // Transport.
+    if (ImGui::Button("|<")) doc.setFrame(0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("First frame (Home)");
+    ImGui::SameLine();
+    if (ImGui::Button("<")) doc.setFrame(doc.frame() - 1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Previous frame (Left)");
+    ImGui::SameLine();
+    if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(56, 0))) s.playing = !s.playing;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
+    ImGui::SameLine();
+    if (ImGui::Button(">")) doc.setFrame(doc.frame() + 1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Next frame (Right)");
+    ImGui::SameLine();
+    if (ImGui::Button(">|")) doc.setFrame(n - 1);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Last frame (End)");
+    ImGui::SameLine();
+    ImGui::Text("Frame %d / %d   %.2f s / %.2f s   %.0f fps%s", doc.frame() + 1, n, doc.frame() / fps, (n - 1) / fps,
+                fps, doc.isEdited(doc.frame()) ? "   [edited]" : "");
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 170.0f);
+    ImGui::TextDisabled("%zu edited frame%s", doc.edits().size(), doc.edits().size() == 1 ? "" : "s");
+
+    // Track.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const ImVec2 t0 = ImGui::GetCursorScreenPos();
+    const float h = std::max(24.0f, avail.y - 2.0f);
+    ImGui::InvisibleButton("##track", ImVec2(avail.x, h));
+    const bool active = ImGui::IsItemActive();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 t1(t0.x + avail.x, t0.y + h);
+    const float pad = 8.0f;
+    auto xOf = [&](int f) { return t0.x + pad + (avail.x - 2 * pad) * (n > 1 ? float(f) / (n - 1) : 0.0f); };
+    dl->AddRectFilled(t0, t1, IM_COL32(34, 36, 42, 255), 4.0f);
+    // Ticks: every 10 frames small, every second labelled.
+    const int major = std::max(1, int(std::lround(fps)));
+    const int minor = std::max(1, major / 12);
+    for (int f = 0; f < n; f += minor) {
+        const bool isMajor = f % major == 0;
+        const float x = xOf(f);
+        dl->AddLine(ImVec2(x, t1.y - (isMajor ? 12.0f : 5.0f)), ImVec2(x, t1.y), IM_COL32(120, 124, 132, 255));
+        if (isMajor) {
+            char buf[16];
+            std::snprintf(buf, sizeof buf, "%d", f + 1);
+            dl->AddText(ImVec2(x + 2, t0.y + 2), IM_COL32(150, 154, 162, 255), buf);
+        }
+    }
+    for (const auto& [f, rec] : doc.edits()) {
+        (void)rec;
+        const float x = xOf(f);
+        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
+    }
+    const float xc = xOf(doc.frame());
+    dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);
+    dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8), IM_COL32(90, 170, 255, 255));
+    if (ImGui::IsItemHovered() && !active) {
+        const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
+        const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
+        ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
+    }
+    if (active) {
+        const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
+        const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
+        if (f != doc.frame()) doc.setFrame(f);
+        scrubbing_ = true;
+    } else {
+        scrubbing_ = false;
+    }
+}
+
+}  // namespace mgp::ui

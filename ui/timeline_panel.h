@@ -1,0 +1,18 @@
+#pragma once
+// The timeline: scrub (click or drag on the track), play/pause (Space), step (Left/Right),
+// first/last (Home/End), the current frame number and time; edited frames are marked.
+#include "editor_state.h"
+
+namespace mgp::ui {
+
+class TimelinePanel {
+public:
+    void draw(EditorState& state);
+    // Advances playback by dt seconds (called once per frame by the app).
+    static void advance(EditorState& state, double dt);
+
+private:
+    bool scrubbing_ = false;
+};
+
+}  // namespace mgp::ui

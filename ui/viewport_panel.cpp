@@ -1,0 +1,302 @@
+#include "viewport_panel.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "picking.h"
+#include "scene_builder.h"
+#include "skeleton/forward_kinematics.h"
+
+namespace mgp::ui {
+
+namespace {
+glm::vec3 toGlm(const Eigen::Vector3d& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
+Eigen::Vector3d toEigen(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// Ray-plane intersection; false if parallel or behind the eye.
+bool intersectPlane(const render::Ray& ray, const glm::vec3& point, const glm::vec3& normal, glm::vec3& hit) {
+    const float denom = glm::dot(ray.direction, normal);
+    if (std::abs(denom) < 1e-6f) return false;
+    const float t = glm::dot(point - ray.origin, normal) / denom;
+    if (!(t > 0.0f) || !std::isfinite(t)) return false;
+    hit = ray.origin + ray.direction * t;
+    return true;
+}
+}  // namespace
+
+ViewportPanel::ViewportPanel() : renderer_(std::make_unique<render::SceneRenderer>(1)) {}
+
+ViewportPanel::~ViewportPanel() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (colour_) glDeleteTextures(1, &colour_);
+    if (depth_) glDeleteRenderbuffers(1, &depth_);
+}
+
+void ViewportPanel::ensureTarget(int w, int h) {
+    if (w == width_ && h == height_ && fbo_) return;
+    if (!fbo_) {
+        glGenFramebuffers(1, &fbo_);
+        glGenTextures(1, &colour_);
+        glGenRenderbuffers(1, &depth_);
+    }
+    glBindTexture(GL_TEXTURE_2D, colour_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    width_ = w;
+    height_ = h;
+}
+
+void ViewportPanel::frameCharacter(EditorState& s) const {
+    if (!s.doc.hasClip()) return;
+    FkState fk;
+    forwardKinematics(s.doc.clip().skeleton, s.doc.currentPose(), fk);
+    render::Scene scene;
+    scene.figures.push_back(render::makeFigure(s.doc.clip().skeleton, fk));
+    const render::Bounds b = render::sceneBounds(scene);
+    const float aspect = height_ > 0 ? float(width_) / float(height_) : 1.5f;
+    if (s.cameraNeedsFraming) {
+        s.camera = render::presetCamera(render::CameraPreset::kThreeQuarter,
+                                        render::characterForward(s.doc.clip().skeleton, fk), b.centreCm,
+                                        b.radiusCm * 1.25f, aspect);
+    } else {
+        s.camera.frame(b.centreCm, b.radiusCm * 1.25f, aspect);
+    }
+    s.cameraNeedsFraming = false;
+}
+
+bool ViewportPanel::handleScreenPosition(const EditorState& s, Effector e, float& x, float& y) const {
+    if (!s.doc.hasEffector(e) || width_ <= 0) return false;
+    glm::vec3 p;
+    if (!s.camera.project(toGlm(s.doc.effectorPosition(e)), width_, height_, p)) return false;
+    if (p.x < 0 || p.y < 0 || p.x >= width_ || p.y >= height_) return false;
+    x = originX_ + p.x;
+    y = originY_ + p.y;
+    return true;
+}
+
+void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
+    ImGuiIO& io = ImGui::GetIO();
+    const bool shift = io.KeyShift;
+    EditorDocument& doc = s.doc;
+    float dx = mx - lastX_, dy = my - lastY_;
+    if (!std::isfinite(dx) || !std::isfinite(dy)) dx = dy = 0.0f;
+    movedThisFrame_ = dx != 0.0f || dy != 0.0f;
+
+    // Hover (only when not in another mode).
+    std::vector<render::Handle> handles;
+    if (doc.hasClip()) {
+        FkState fk;
+        forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
+        handles = render::effectorHandles(doc.clip().skeleton, fk);
+    }
+    if (mode_ == Mode::kNone) {
+        s.hoveredHandle = -1;
+        if (hovered) {
+            const int i = render::pickHandleAtPixel(handles, s.camera, mx, my, width_, height_, 2.5f);
+            if (i >= 0) s.hoveredHandle = handles[i].id;
+        }
+    }
+
+    if (mode_ == Mode::kNone && hovered) {
+        if (io.MouseClicked[0]) {
+            if (s.hoveredHandle >= 0) {
+                const auto e = static_cast<Effector>(s.hoveredHandle);
+                const std::string err = doc.beginDrag(e);
+                if (err.empty()) {
+                    mode_ = Mode::kDragHandle;
+                    s.selected = e;
+                    s.playing = false;
+                } else {
+                    s.setStatus(err, true);
+                }
+            } else {
+                mode_ = shift ? Mode::kPan : Mode::kOrbit;
+            }
+        } else if (io.MouseClicked[2]) {
+            mode_ = Mode::kPan;
+        } else if (io.MouseClicked[1] && s.hoveredHandle >= 0) {
+            const auto e = static_cast<Effector>(s.hoveredHandle);
+            doc.togglePin(e);
+            s.setStatus(std::string(doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
+        }
+        if (io.MouseWheel != 0.0f) s.camera.zoom(std::pow(0.88f, io.MouseWheel));
+    }
+
+    switch (mode_) {
+        case Mode::kOrbit:
+            if (!io.MouseDown[0]) mode_ = Mode::kNone;
+            else if (movedThisFrame_) s.camera.orbit(-dx * 0.4f, dy * 0.4f);
+            break;
+        case Mode::kPan:
+            if (!io.MouseDown[0] && !io.MouseDown[2]) mode_ = Mode::kNone;
+            else if (movedThisFrame_) s.camera.pan(dx, dy, height_);
+            break;
+        case Mode::kDragHandle:
+            if (!doc.dragging()) {
+                mode_ = Mode::kNone;
+            } else if (!io.MouseDown[0]) {
+                doc.endDrag();
+                mode_ = Mode::kNone;
+                s.setStatus(std::string("accepted pose for frame ") + std::to_string(doc.frame() + 1) +
+                            (doc.hasModel() && doc.adaptiveEnabled() ? " (adaptive update queued)" : ""));
+            } else if (movedThisFrame_) {
+                const render::Ray ray = s.camera.rayFromPixel(mx, my, width_, height_);
+                const glm::vec3 anchor = toGlm(doc.dragTarget());
+                const glm::vec3 normal = shift ? glm::vec3(0, 1, 0) : glm::normalize(s.camera.eye() - s.camera.targetCm);
+                glm::vec3 hit;
+                if (intersectPlane(ray, anchor, normal, hit)) doc.dragTo(toEigen(hit), 50);
+            } else {
+                doc.refine(50);  // the user holds still: keep converging
+            }
+            break;
+        case Mode::kNone: break;
+    }
+    lastX_ = mx;
+    lastY_ = my;
+}
+
+render::Scene ViewportPanel::buildScene(const EditorState& s) const {
+    const EditorDocument& doc = s.doc;
+    // Built here rather than with render::buildClipScene, which recomputes the clip's floor
+    // height (FK over every frame) on each call; the floor is cached per clip.
+    if (groundClip_ != doc.clip().name + "#" + std::to_string(doc.frameCount())) {
+        groundClip_ = doc.clip().name + "#" + std::to_string(doc.frameCount());
+        groundHeight_ = render::clipGroundHeight(doc.clip());
+    }
+    render::Scene scene;
+    FkState fk;
+    forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
+    scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
+    scene.groundHeightCm = groundHeight_;
+    scene.groundCentreCm = toGlm(fk.jointCm[0]);
+    scene.handles = render::effectorHandles(doc.clip().skeleton, fk);
+    for (render::Handle& h : scene.handles) {
+        if (h.id == s.hoveredHandle) h.state = render::HandleState::kHover;
+        if (doc.dragging() && h.id == static_cast<int>(doc.dragEffector())) h.state = render::HandleState::kSelected;
+    }
+    if (doc.comparePose()) {
+        FkState fk;
+        forwardKinematics(doc.clip().skeleton, *doc.comparePose(), fk);
+        render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
+        ghost.ghost = true;
+        ghost.castsShadow = false;
+        scene.figures.push_back(std::move(ghost));
+    }
+    if (doc.dragging()) {
+        render::Target t;
+        t.positionCm = toGlm(doc.dragTarget());
+        t.hasFrom = true;
+        t.fromCm = toGlm(doc.effectorPosition(doc.dragEffector()));
+        t.reached = doc.readout().valid && doc.readout().reached;
+        scene.targets.push_back(t);
+    }
+    for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
+    return scene;
+}
+
+void ViewportPanel::draw(EditorState& s) {
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    const int w = std::max(16, int(avail.x)), h = std::max(16, int(avail.y));
+    ensureTarget(w, h);
+    originX_ = origin.x;
+    originY_ = origin.y;
+    if (s.cameraNeedsFraming || s.requestFrameCamera) {
+        frameCharacter(s);
+        s.requestFrameCamera = false;
+    }
+    ImGui::InvisibleButton("##viewport", ImVec2(float(w), float(h)),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const bool hovered = ImGui::IsItemHovered();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    // Follow: the camera keeps the character's root (projected on the ground) where it was, so a
+    // walk stays in view during playback and scrubbing.
+    if (s.doc.hasClip()) {
+        const Eigen::Vector3d root = s.doc.currentPose().rootCm;
+        if (s.followCharacter && followValid_ && s.doc.clip().name == followClip_) {
+            s.camera.targetCm.x += float(root.x() - followRoot_.x());
+            s.camera.targetCm.z += float(root.z() - followRoot_.z());
+        }
+        followRoot_ = root;
+        followClip_ = s.doc.clip().name;
+        followValid_ = root.allFinite();
+    }
+    // The mouse can leave the window (ImGui reports -FLT_MAX): no camera or drag update then.
+    if (s.doc.hasClip() && ImGui::IsMousePosValid(&mouse)) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
+
+    // Keys that act on the viewport.
+    ImGuiIO& io = ImGui::GetIO();
+    if (!io.WantTextInput && !io.KeyCtrl) {
+        if (ImGui::IsKeyPressed('F', false)) frameCharacter(s);
+        if (ImGui::IsKeyPressed('P', false)) {
+            const int target = s.hoveredHandle >= 0 ? s.hoveredHandle : (s.selected ? int(*s.selected) : -1);
+            if (target >= 0) {
+                const auto e = static_cast<Effector>(target);
+                s.doc.togglePin(e);
+                s.setStatus(std::string(s.doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
+            }
+        }
+        if (ImGui::IsKeyPressed(256 /*Escape*/, false) && s.doc.dragging()) {
+            s.doc.cancelDrag();
+            mode_ = Mode::kNone;
+            s.setStatus("drag cancelled");
+        }
+    }
+
+    if (s.doc.hasClip()) {
+        const render::Scene scene = buildScene(s);
+        // Redraw only when what the viewport shows changed (llvmpipe spends most of a frame
+        // rasterising the scene; an idle editor should not).
+        // While the user drags, orbits or plays, the scene is drawn at a lower resolution into the
+        // corner of the target and scaled up (as Blender does during navigation); at rest it is
+        // drawn at full resolution again.
+        const bool moving = mode_ != Mode::kNone || s.playing || s.doc.latentDragging();
+        const float scale = moving ? kMovingScale : 1.0f;
+        rw_ = std::max(16, int(w * scale));
+        rh_ = std::max(16, int(h * scale));
+        std::vector<float> sig = {float(rw_), float(rh_), s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z,
+                                  s.camera.yawDeg, s.camera.pitchDeg, s.camera.distanceCm, s.camera.fovYDeg};
+        auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
+        for (const render::Figure& f : scene.figures) {
+            sig.push_back(f.ghost ? 1.0f : 0.0f);
+            for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
+        }
+        for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
+        for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
+        for (const render::Pin& p : scene.pins) addVec(p.positionCm);
+        sig.push_back(scene.groundHeightCm);
+        if (sig != lastSignature_) {
+            renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            lastSignature_ = std::move(sig);
+            ++sceneDraws_;
+        }
+    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(colour_)), origin,
+                 ImVec2(origin.x + w, origin.y + h), ImVec2(0, float(rh_) / float(h)), ImVec2(float(rw_) / float(w), 0));
+    // Overlay: what the mouse does.
+    const char* hint = mode_ == Mode::kDragHandle
+                           ? "Dragging: release to accept  |  Shift: ground plane  |  Esc: cancel"
+                           : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
+    dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(230, 232, 236, 200), hint);
+    if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
+        const auto e = static_cast<Effector>(s.hoveredHandle);
+        ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
+                          s.doc.pinned(e) ? "unpin" : "pin");
+    }
+}
+
+}  // namespace mgp::ui

@@ -1,0 +1,52 @@
+#pragma once
+// The 3-D viewport: draws the scene into an offscreen texture shown as an ImGui image and maps
+// the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
+// zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left
+// drag moves it on a camera-facing plane, Shift on a horizontal plane; right-click or P pins).
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "editor_state.h"
+#include "skeleton_renderer.h"
+
+namespace mgp::ui {
+
+class ViewportPanel {
+public:
+    ViewportPanel();
+    ~ViewportPanel();
+    ViewportPanel(const ViewportPanel&) = delete;
+    ViewportPanel& operator=(const ViewportPanel&) = delete;
+    // Draws the panel content (call between ImGui::Begin/End of the viewport window).
+    void draw(EditorState& state);
+    // Screen (window) pixel of an effector's handle; false if not visible or not drawn yet.
+    bool handleScreenPosition(const EditorState& state, Effector e, float& x, float& y) const;
+    void frameCharacter(EditorState& state) const;
+    long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
+
+private:
+    void ensureTarget(int w, int h);
+    void interact(EditorState& state, float mx, float my, bool hovered);
+    render::Scene buildScene(const EditorState& state) const;
+
+    std::unique_ptr<render::SceneRenderer> renderer_;
+    unsigned fbo_ = 0, colour_ = 0, depth_ = 0;
+    int width_ = 0, height_ = 0;
+    int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
+    static constexpr float kMovingScale = 0.7f;
+    float originX_ = 0, originY_ = 0;
+    enum class Mode { kNone, kOrbit, kPan, kDragHandle } mode_ = Mode::kNone;
+    float lastX_ = 0, lastY_ = 0;
+    bool movedThisFrame_ = false;
+    bool followValid_ = false;
+    Eigen::Vector3d followRoot_ = Eigen::Vector3d::Zero();
+    std::string followClip_;
+    std::vector<float> lastSignature_;
+    long sceneDraws_ = 0;
+    mutable std::string groundClip_;
+    mutable float groundHeight_ = 0.0f;
+};
+
+}  // namespace mgp::ui
