@@ -46,7 +46,8 @@ std::string readText(const std::string& path) {
 CliResult runCli(const std::string& args) {
     const std::string dir = scratchDir("cli_capture");
     const std::string errPath = dir + "/stderr.txt";
-    const std::string cmd = std::string("'") + MOTIONGP_TEST_BINARY + "' " + args + " 2>'" + errPath + "'";
+    // No display: `motiongp` with no verb would open the editor window where DISPLAY is set.
+    const std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + MOTIONGP_TEST_BINARY + "' " + args + " 2>'" + errPath + "'";
     CliResult r;
     FILE* pipe = ::popen(cmd.c_str(), "r");
     REQUIRE(pipe != nullptr);

@@ -198,7 +198,9 @@ void LatentMapPanel::draw(EditorState& s) {
     const char* cap = "predictive variance sigma^2(x), log scale";
     const float capW = ImGui::CalcTextSize(cap).x;
     const float lineH = ImGui::GetTextLineHeight();
-    dl->AddText(ImVec2(0.5f * (b0.x + b1.x) - 0.5f * capW, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
+    // Centred under the bar, but never left of the panel's content edge (the caption is wider).
+    const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
+    dl->AddText(ImVec2(capX, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
     ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 4.0f + 2.0f * lineH));
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
     else ImGui::TextDisabled("bright: confident   dots: frames   rings: active set");
