@@ -4,16 +4,9 @@
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "test_support.h"
+#include "trained_model_fixture.h"
 
 using namespace mgp;
-
-namespace {
-Eigen::Vector3d effectorAt(const Clip& clip, int t, Effector e) {
-    FkState fk;
-    forwardKinematics(clip.skeleton, clip.frames[t], fk);
-    return effectorCm(clip.skeleton, fk, e);
-}
-}  // namespace
 
 TEST_CASE("FK anchors of 35_01 (§2.2, §13.2)") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
@@ -97,7 +90,7 @@ TEST_CASE("root translation moves every effector one-for-one") {
     moved.frames[5].rootCm += Eigen::Vector3d(10, -3, 7);
     for (int e = 0; e < kEffectorCount; ++e) {
         const auto eff = static_cast<Effector>(e);
-        const Eigen::Vector3d d = effectorAt(moved, 5, eff) - effectorAt(clip, 5, eff);
+        const Eigen::Vector3d d = test::effectorAt(moved.skeleton, moved.frames[5], eff) - test::effectorAt(clip.skeleton, clip.frames[5], eff);
         CHECK((d - Eigen::Vector3d(10, -3, 7)).norm() < 1e-9);
     }
 }

@@ -10,24 +10,14 @@
 
 using namespace mgp;
 
-namespace {
-Eigen::Vector3d effectorOf(const Skeleton& sk, const Pose& p, Effector e) {
-    FkState fk;
-    forwardKinematics(sk, p, fk);
-    return effectorCm(sk, fk, e);
-}
-}  // namespace
-
 TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences (§13.7)") {
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
-    LearnedIkRequest req;
-    req.start = m.clip.frames[100];
-    req.startX = latentStartForFrame(*version, 100);
-    const Eigen::Vector3d foot = effectorOf(m.clip.skeleton, req.start, Effector::kRFoot);
+    LearnedIkRequest req = test::requestAtFrame(*version, 100, 50);
+    const Eigen::Vector3d foot = test::effectorAt(m.clip.skeleton, req.start, Effector::kRFoot);
     req.constraints = {{Effector::kRFoot, foot + Eigen::Vector3d(3, 12, -4), false},
-                       {Effector::kLHand, effectorOf(m.clip.skeleton, req.start, Effector::kLHand), true}};
+                       {Effector::kLHand, test::effectorAt(m.clip.skeleton, req.start, Effector::kLHand), true}};
     solver.bind(req);
     const PoseLayout layout(m.clip.skeleton);
     const Eigen::VectorXd full = layout.extract(req.start);
@@ -53,11 +43,8 @@ TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm t
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
-    LearnedIkRequest req;
-    req.start = m.clip.frames[100];
-    req.startX = latentStartForFrame(*version, 100);
-    req.maxIterations = 500;
-    const Eigen::Vector3d foot = effectorOf(m.clip.skeleton, req.start, Effector::kRFoot);
+    LearnedIkRequest req = test::requestAtFrame(*version, 100);
+    const Eigen::Vector3d foot = test::effectorAt(m.clip.skeleton, req.start, Effector::kRFoot);
     LearnedIkResult res;
     for (int delta = 0; delta <= 40; delta += 2) {
         CAPTURE(delta);
@@ -69,7 +56,7 @@ TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm t
         CHECK(res.reached);
         CHECK(std::isfinite(res.lik));
         CHECK(res.sigma2 >= 1.0 / std::exp(m.logParams[gp::kBeta]));
-        CHECK((effectorOf(m.clip.skeleton, res.pose, Effector::kRFoot) - req.constraints[0].targetCm).norm() ==
+        CHECK((test::effectorAt(m.clip.skeleton, res.pose, Effector::kRFoot) - req.constraints[0].targetCm).norm() ==
               doctest::Approx(res.constraints[0].residualCm).epsilon(1e-9));
         CHECK(res.pose.rootCm == m.clip.frames[100].rootCm);
         if (delta % 10 == 0)
@@ -84,13 +71,10 @@ TEST_CASE("learned IK holds pins within 0.5 cm while a hand is dragged") {
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
-    LearnedIkRequest req;
-    req.start = m.clip.frames[50];
-    req.startX = latentStartForFrame(*version, 50);
-    req.maxIterations = 500;
+    LearnedIkRequest req = test::requestAtFrame(*version, 50);
     const Skeleton& sk = m.clip.skeleton;
-    const Eigen::Vector3d lf = effectorOf(sk, req.start, Effector::kLFoot), rf = effectorOf(sk, req.start, Effector::kRFoot);
-    req.constraints = {{Effector::kRHand, effectorOf(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
+    const Eigen::Vector3d lf = test::effectorAt(sk, req.start, Effector::kLFoot), rf = test::effectorAt(sk, req.start, Effector::kRFoot);
+    req.constraints = {{Effector::kRHand, test::effectorAt(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
                        {Effector::kLFoot, lf, true},
                        {Effector::kRFoot, rf, true}};
     const LearnedIkResult res = solver.solve(req);
@@ -105,10 +89,8 @@ TEST_CASE("learned IK: unreachable and NaN targets give finite results, reached 
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
-    LearnedIkRequest req;
-    req.start = m.clip.frames[10];
-    req.startX = latentStartForFrame(*version, 10);
-    req.constraints = {{Effector::kHead, effectorOf(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
+    LearnedIkRequest req = test::requestAtFrame(*version, 10, 50);
+    req.constraints = {{Effector::kHead, test::effectorAt(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
     LearnedIkResult res = solver.solve(req);
     CHECK_FALSE(res.reached);
     CHECK(std::isfinite(res.constraints[0].residualCm));

@@ -1,6 +1,5 @@
 // `motiongp render MODEL`: the model's source clip, showing the model's reconstruction f(x_t).
 #include <doctest/doctest.h>
-#include <stb/stb_image.h>
 
 #include <unistd.h>
 
@@ -10,6 +9,8 @@
 #include <iterator>
 #include <string>
 #include <vector>
+
+#include "stb_image_include.h"
 
 namespace fs = std::filesystem;
 
