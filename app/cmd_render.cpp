@@ -4,6 +4,7 @@
 // The MODEL form (a trained model file: its source clip and pose) is pending the model format;
 // it will build a ClipSceneOptions from the model's source clip like the CLIP form does.
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <regex>
 
@@ -70,6 +71,9 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
         if (!render::parseCameraPreset(camera->c_str(), preset))
             throw UsageError("expected --camera among {front, side, three-quarter}, found '" + *camera + "'");
 
+        const std::filesystem::path outDir = std::filesystem::path(*out).parent_path();
+        if (!outDir.empty() && !std::filesystem::is_directory(outDir))
+            throw UsageError("expected --out in an existing folder, found '" + *out + "'");
         const Clip clip = loadClip(*input, *skel);
         render::ClipSceneOptions opt;
         opt.frameIndex = frameIndexFromCli(clip, *frame);
