@@ -5,6 +5,7 @@
 // reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
 // --ghost-captured shows the captured pose beside what the model makes of it.
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <regex>
 
@@ -71,6 +72,9 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
         if (!render::parseCameraPreset(camera->c_str(), preset))
             throw UsageError("expected --camera among {front, side, three-quarter}, found '" + *camera + "'");
 
+        const std::filesystem::path outDir = std::filesystem::path(*out).parent_path();
+        if (!outDir.empty() && !std::filesystem::is_directory(outDir))
+            throw UsageError("expected --out in an existing folder, found '" + *out + "'");
         render::ClipSceneOptions opt;
         gp::ModelVersionPtr model;
         if (!isClipPath(*input)) model = loadModelVersion(*input);  // a clear error if it is not a model file

@@ -46,13 +46,28 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
         throw RenderError("PNG encode: expected a non-empty RGBA8 image, found " + std::to_string(image.width) +
                           "x" + std::to_string(image.height) + " with " + std::to_string(image.rgba.size()) +
                           " bytes");
+
     std::vector<std::uint8_t> out;
     auto sink = [](void* ctx, void* data, int size) {
         auto* v = static_cast<std::vector<std::uint8_t>*>(ctx);
         const auto* p = static_cast<const std::uint8_t*>(data);
         v->insert(v->end(), p, p + size);
     };
-    if (!stbi_write_png_to_func(sink, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+    // Frames are opaque: write RGB when every alpha is 255 (a quarter less to filter and deflate).
+    bool opaque = true;
+    for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4) opaque = image.rgba[i] == 255;
+    std::vector<std::uint8_t> rgb;
+    if (opaque) {
+        rgb.resize(image.rgba.size() / 4 * 3);
+        for (std::size_t p = 0, q = 0; p < image.rgba.size(); p += 4, q += 3) {
+            rgb[q] = image.rgba[p];
+            rgb[q + 1] = image.rgba[p + 1];
+            rgb[q + 2] = image.rgba[p + 2];
+        }
+    }
+    const int channels = opaque ? 3 : 4;
+    const void* data = opaque ? static_cast<const void*>(rgb.data()) : static_cast<const void*>(image.rgba.data());
+    if (!stbi_write_png_to_func(sink, &out, image.width, image.height, channels, data, image.width * channels))
         throw RenderError("PNG encode failed");
     return out;
 }

@@ -15,7 +15,8 @@ struct Image {
 // Reads framebuffer 0 (or the currently bound read framebuffer) of the current context.
 Image readFramebuffer(int width, int height);
 
-// Encodes to PNG bytes in memory (deterministic: same pixels -> same bytes).
+// Encodes to PNG bytes in memory (deterministic: same pixels -> same bytes). An image whose
+// alpha is 255 everywhere is written as RGB.
 std::vector<std::uint8_t> encodePng(const Image& image);
 
 // Writes PNG atomically: to "<path>.tmp-<pid>" then rename, so a crash never leaves a half-written
