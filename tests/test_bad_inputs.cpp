@@ -50,6 +50,14 @@ struct Case {
     std::string expected;
 };
 
+// Each case's text, parsed by `parse`, must fail with exactly its expected message.
+void checkCases(const std::vector<Case>& cases, const std::function<void(const std::string&)>& parse) {
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        CHECK(errorOf([&] { parse(c.text); }) == c.expected);
+    }
+}
+
 }  // namespace
 
 TEST_CASE("the valid base files parse") {
@@ -85,10 +93,7 @@ TEST_CASE("bad ASF files") {
          "t.asf:29: expected an axis order such as XYZ after the 3 axis angles, found 'XYQ'"},
         {"missing root order", replaced(kAsf, "   order TX TY TZ RX RY RZ\n", ""), "t.asf:35: expected an 'order' line in :root, found none"},
     };
-    for (const Case& c : cases) {
-        CAPTURE(c.name);
-        CHECK(errorOf([&] { parseAsf("t.asf", c.text); }) == c.expected);
-    }
+    checkCases(cases, [](const std::string& text) { parseAsf("t.asf", text); });
 }
 
 TEST_CASE("bad AMC files") {
@@ -111,10 +116,7 @@ TEST_CASE("bad AMC files") {
         {"truncated last frame", std::string(kAmc).substr(0, std::string(kAmc).size() - 9),
          "t.amc:8: expected a line for bone 'ltibia' in frame 2, found none"},
     };
-    for (const Case& c : cases) {
-        CAPTURE(c.name);
-        CHECK(errorOf([&] { parseAmc("t.amc", c.text, asf); }) == c.expected);
-    }
+    checkCases(cases, [&](const std::string& text) { parseAmc("t.amc", text, asf); });
 }
 
 TEST_CASE("bad BVH files") {
@@ -142,10 +144,7 @@ TEST_CASE("bad BVH files") {
         {"1e308 value", replaced(kBvh, "0 17 0 0 0 0 5 0 0", "0 17 0 0 0 0 1e308 0 0"), "t.bvh:20: expected a value within ±1e7, found '1e308'"},
         {"missing Frame Time", replaced(kBvh, "Frame Time: .0083333\n", ""), "t.bvh:18: expected 'Frame Time: SECONDS', found '0'"},
     };
-    for (const Case& c : cases) {
-        CAPTURE(c.name);
-        CHECK(errorOf([&] { parseBvh("t.bvh", c.text); }) == c.expected);
-    }
+    checkCases(cases, [](const std::string& text) { parseBvh("t.bvh", text); });
 }
 
 TEST_CASE("bad files at the file level: missing, directory, empty, binary, wrong extension") {

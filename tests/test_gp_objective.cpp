@@ -21,12 +21,9 @@ struct Fixture {
 // 40 active rows of 35_01 (every 9th frame), D = 43, whitened-PCA latent points.
 Fixture walkFixture() {
     const mgp::Clip clip = mgp::loadClip(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
-    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
     std::vector<int> frames;
     for (int t = 0; t < clip.frameCount() && frames.size() < 40; t += 9) frames.push_back(t);
-    Eigen::MatrixXd rows(frames.size(), all.cols());
-    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
-    const TrainingData data = prepareTrainingData(rows, frames);
+    const TrainingData data = trainingDataFromClip(clip, frames);
     Fixture f;
     f.Yhat = data.Y.rowwise() - data.mu.transpose();
     f.XI = whitenedPca(f.Yhat, 2).X;

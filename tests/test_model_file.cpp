@@ -22,17 +22,14 @@ namespace {
 
 GpModel smallModel() {
     const mgp::Clip clip = mgp::loadClip(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
-    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
     std::vector<int> frames;
     for (int t = 0; t < clip.frameCount(); t += 7) frames.push_back(t);
-    Eigen::MatrixXd rows(frames.size(), all.cols());
-    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
     TrainOptions o;
     o.activeSize = 30;
     o.outerIterations = 1;
     o.scgIterations = 10;
     o.pointIterations = 10;
-    TrainResult r = train(prepareTrainingData(rows, frames), o);
+    TrainResult r = train(trainingDataFromClip(clip, frames), o);
     r.model.clip = clip;
     r.model.sourceFile = "35_01.amc";
     r.model.sourceSha256 = sha256OfFile(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");

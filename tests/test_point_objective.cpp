@@ -22,13 +22,10 @@ struct Setup {
 
 Setup walkSetup() {
     const mgp::Clip clip = mgp::loadClip(std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc");
-    const Eigen::MatrixXd all = mgp::poseMatrix(clip);
     std::vector<int> frames;
     for (int t = 0; t < clip.frameCount(); t += 4) frames.push_back(t);
-    Eigen::MatrixXd rows(frames.size(), all.cols());
-    for (std::size_t r = 0; r < frames.size(); ++r) rows.row(r) = all.row(frames[r]);
     Setup s;
-    s.data = prepareTrainingData(rows, frames);
+    s.data = trainingDataFromClip(clip, frames);
     s.X = whitenedPca(s.data.Y.rowwise() - s.data.mu.transpose(), 2).X;
     for (int i = 0; i < s.X.rows(); ++i) (i % 3 == 0 ? s.active : s.inactive).push_back(i);
     return s;

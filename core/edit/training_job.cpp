@@ -63,11 +63,7 @@ void TrainingJob::run(Clip clip, gp::TrainOptions options, std::string sourceFil
     std::string msg;
     gp::ModelVersionPtr version;
     try {
-        unwrapClip(clip);
-        std::vector<int> frames(clip.frameCount());
-        for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
-        const gp::TrainingData data = gp::prepareTrainingData(poseMatrix(clip), frames);
-        gp::TrainResult res = gp::train(data, options, [&](const gp::IterationLog& e) {
+        gp::TrainResult res = gp::trainOnClip(std::move(clip), options, [&](const gp::IterationLog& e) {
             std::lock_guard<std::mutex> lock(mutex_);
             progress_.iteration = e.iter;
             progress_.objective = e.L;
@@ -77,7 +73,6 @@ void TrainingJob::run(Clip clip, gp::TrainOptions options, std::string sourceFil
         if (res.cancelled) {
             msg = "training cancelled after " + std::to_string(res.log.size()) + " iterations";
         } else {
-            res.model.clip = std::move(clip);
             res.model.sourceFile = sourceFile;
             version = gp::ModelVersion::make(std::move(res.model));
             char buf[160];
