@@ -36,8 +36,8 @@ nlohmann::json dragBench(const gp::ModelVersionPtr& version, int frame, bool pin
     req.maxIterations = cap;
     FkState fk;
     forwardKinematics(sk, req.start, fk);
-    const Eigen::Vector3d foot = effectorCm(sk, fk, Effector::kRHand);
-    std::vector<IkConstraint> constraints = {{Effector::kRHand, foot, false}};
+    const Eigen::Vector3d hand = effectorCm(sk, fk, Effector::kRHand);
+    std::vector<IkConstraint> constraints = {{Effector::kRHand, hand, false}};
     if (pins) {
         constraints.push_back({Effector::kLFoot, effectorCm(sk, fk, Effector::kLFoot), true});
         constraints.push_back({Effector::kRFoot, effectorCm(sk, fk, Effector::kRFoot), true});
@@ -54,7 +54,7 @@ nlohmann::json dragBench(const gp::ModelVersionPtr& version, int frame, bool pin
     for (int s = 1; s <= steps; ++s) {
         req.start = res.pose;
         req.startX = res.x;
-        constraints[0].targetCm = foot + Eigen::Vector3d(0.0, 0.25 * s, 0.1 * s);  // up and forward
+        constraints[0].targetCm = hand + Eigen::Vector3d(0.0, 0.25 * s, 0.1 * s);  // up and forward
         req.constraints = constraints;
         seconds.push_back(secondsOf([&] { solver.solve(req, res); }));
         iterations.push_back(res.iterations);

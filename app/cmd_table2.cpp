@@ -166,9 +166,7 @@ int runTable2(int iters, int active, int maxDelta, bool quick, bool json) {
         // Learned (FAS static) against plain IK: closeness to real poses (R) at a few displacements.
         const Eigen::MatrixXd candidates = tests.referencePoses();
         nlohmann::json compare = nlohmann::json::array();
-        FkState fk;
-        forwardKinematics(clip.skeleton, clip.frames[frame], fk);
-        const Eigen::Vector3d origin = effectorCm(clip.skeleton, fk, row.effector);
+        const Eigen::Vector3d origin = effectorCm(clip.skeleton, clip.frames[frame], row.effector);
         for (int delta : {10, 20, 30}) {
             if (delta > maxDelta || delta >= static_cast<int>(fasStatic.steps.size())) continue;
             const EditingStep& learned = fasStatic.steps[delta];

@@ -90,7 +90,7 @@ TEST_CASE("root translation moves every effector one-for-one") {
     moved.frames[5].rootCm += Eigen::Vector3d(10, -3, 7);
     for (int e = 0; e < kEffectorCount; ++e) {
         const auto eff = static_cast<Effector>(e);
-        const Eigen::Vector3d d = test::effectorAt(moved.skeleton, moved.frames[5], eff) - test::effectorAt(clip.skeleton, clip.frames[5], eff);
+        const Eigen::Vector3d d = effectorCm(moved.skeleton, moved.frames[5], eff) - effectorCm(clip.skeleton, clip.frames[5], eff);
         CHECK((d - Eigen::Vector3d(10, -3, 7)).norm() < 1e-9);
     }
 }

@@ -39,8 +39,8 @@ TEST_CASE("learned IK drag: no allocations besides LBFGS++'s two per iteration")
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 200, 50);
-    const Eigen::Vector3d hand = test::effectorAt(m.clip.skeleton, req.start, Effector::kRHand);
-    const Eigen::Vector3d foot = test::effectorAt(m.clip.skeleton, req.start, Effector::kLFoot);
+    const Eigen::Vector3d hand = effectorCm(m.clip.skeleton, req.start, Effector::kRHand);
+    const Eigen::Vector3d foot = effectorCm(m.clip.skeleton, req.start, Effector::kLFoot);
     req.constraints = {{Effector::kRHand, hand, false}, {Effector::kLFoot, foot, true}};
     LearnedIkResult res;
     solver.solve(req, res);  // first solve sizes everything

@@ -15,9 +15,9 @@ TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 100, 50);
-    const Eigen::Vector3d foot = test::effectorAt(m.clip.skeleton, req.start, Effector::kRFoot);
+    const Eigen::Vector3d foot = effectorCm(m.clip.skeleton, req.start, Effector::kRFoot);
     req.constraints = {{Effector::kRFoot, foot + Eigen::Vector3d(3, 12, -4), false},
-                       {Effector::kLHand, test::effectorAt(m.clip.skeleton, req.start, Effector::kLHand), true}};
+                       {Effector::kLHand, effectorCm(m.clip.skeleton, req.start, Effector::kLHand), true}};
     solver.bind(req);
     const PoseLayout layout(m.clip.skeleton);
     const Eigen::VectorXd full = layout.extract(req.start);
@@ -44,7 +44,7 @@ TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm t
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 100);
-    const Eigen::Vector3d foot = test::effectorAt(m.clip.skeleton, req.start, Effector::kRFoot);
+    const Eigen::Vector3d foot = effectorCm(m.clip.skeleton, req.start, Effector::kRFoot);
     LearnedIkResult res;
     for (int delta = 0; delta <= 40; delta += 2) {
         CAPTURE(delta);
@@ -56,7 +56,7 @@ TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm t
         CHECK(res.reached);
         CHECK(std::isfinite(res.lik));
         CHECK(res.sigma2 >= 1.0 / std::exp(m.logParams[gp::kBeta]));
-        CHECK((test::effectorAt(m.clip.skeleton, res.pose, Effector::kRFoot) - req.constraints[0].targetCm).norm() ==
+        CHECK((effectorCm(m.clip.skeleton, res.pose, Effector::kRFoot) - req.constraints[0].targetCm).norm() ==
               doctest::Approx(res.constraints[0].residualCm).epsilon(1e-9));
         CHECK(res.pose.rootCm == m.clip.frames[100].rootCm);
         if (delta % 10 == 0)
@@ -73,8 +73,8 @@ TEST_CASE("learned IK holds pins within 0.5 cm while a hand is dragged") {
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 50);
     const Skeleton& sk = m.clip.skeleton;
-    const Eigen::Vector3d lf = test::effectorAt(sk, req.start, Effector::kLFoot), rf = test::effectorAt(sk, req.start, Effector::kRFoot);
-    req.constraints = {{Effector::kRHand, test::effectorAt(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
+    const Eigen::Vector3d lf = effectorCm(sk, req.start, Effector::kLFoot), rf = effectorCm(sk, req.start, Effector::kRFoot);
+    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
                        {Effector::kLFoot, lf, true},
                        {Effector::kRFoot, rf, true}};
     const LearnedIkResult res = solver.solve(req);
@@ -90,7 +90,7 @@ TEST_CASE("learned IK: unreachable and NaN targets give finite results, reached 
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 10, 50);
-    req.constraints = {{Effector::kHead, test::effectorAt(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
+    req.constraints = {{Effector::kHead, effectorCm(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
     LearnedIkResult res = solver.solve(req);
     CHECK_FALSE(res.reached);
     CHECK(std::isfinite(res.constraints[0].residualCm));

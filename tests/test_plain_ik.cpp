@@ -14,8 +14,8 @@ TEST_CASE("plain IK raises the right foot 20 cm with the left foot pinned") {
     PlainIkJob job;
     job.skeleton = &clip.skeleton;
     job.start = start;
-    const Eigen::Vector3d target = test::effectorAt(clip.skeleton, start, Effector::kRFoot) + Eigen::Vector3d(0, 20, 0);
-    const Eigen::Vector3d pinAt = test::effectorAt(clip.skeleton, start, Effector::kLFoot);
+    const Eigen::Vector3d target = effectorCm(clip.skeleton, start, Effector::kRFoot) + Eigen::Vector3d(0, 20, 0);
+    const Eigen::Vector3d pinAt = effectorCm(clip.skeleton, start, Effector::kLFoot);
     job.constraints = {{Effector::kRFoot, target, false}, {Effector::kLFoot, pinAt, true}};
     CHECK(job.validate().empty());
     job.solve();
@@ -24,7 +24,7 @@ TEST_CASE("plain IK raises the right foot 20 cm with the left foot pinned") {
     CHECK(job.reached);
     CHECK(job.results[0].residualCm < 0.5);
     CHECK(job.results[1].residualCm < 0.5);
-    CHECK((test::effectorAt(clip.skeleton, job.pose, Effector::kRFoot) - target).norm() < 0.5);
+    CHECK((effectorCm(clip.skeleton, job.pose, Effector::kRFoot) - target).norm() < 0.5);
     CHECK(job.pose.rootCm == start.rootCm);  // root translation fixed
 }
 
@@ -33,7 +33,7 @@ TEST_CASE("plain IK: an unreachable target gives the best effort, reached = fals
     PlainIkJob job;
     job.skeleton = &clip.skeleton;
     job.start = clip.frames[0];
-    job.constraints = {{Effector::kRHand, test::effectorAt(clip.skeleton, clip.frames[0], Effector::kRHand) + Eigen::Vector3d(0, 500, 0), false}};
+    job.constraints = {{Effector::kRHand, effectorCm(clip.skeleton, clip.frames[0], Effector::kRHand) + Eigen::Vector3d(0, 500, 0), false}};
     job.solve();
     CHECK_FALSE(job.reached);
     CHECK(job.results[0].residualCm > 100.0);

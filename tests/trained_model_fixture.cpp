@@ -21,12 +21,6 @@ gp::ModelVersionPtr walkModel35() {
     return model;
 }
 
-Eigen::Vector3d effectorAt(const Skeleton& skeleton, const Pose& pose, Effector e) {
-    FkState fk;
-    forwardKinematics(skeleton, pose, fk);
-    return effectorCm(skeleton, fk, e);
-}
-
 LearnedIkRequest requestAtFrame(const gp::ModelVersion& version, int frame, int maxIterations) {
     LearnedIkRequest req;
     req.start = version.model->clip.frames[frame];

@@ -7,8 +7,6 @@
 namespace mgp::test {
 
 gp::ModelVersionPtr walkModel35();
-// Where FK puts an effector for `pose` (cm).
-Eigen::Vector3d effectorAt(const Skeleton& skeleton, const Pose& pose, Effector e);
 // A learned-IK request starting at clip frame `frame` (captured pose, the frame's latent point).
 LearnedIkRequest requestAtFrame(const gp::ModelVersion& version, int frame, int maxIterations = 500);
 

@@ -60,9 +60,7 @@ void EditorDocument::clearEdit(int frame) {
 
 Eigen::Vector3d EditorDocument::effectorPosition(Effector e) const {
     if (!hasEffector(e)) return Eigen::Vector3d::Zero();
-    FkState fk;
-    forwardKinematics(clip_.skeleton, currentPose(), fk);
-    return effectorCm(clip_.skeleton, fk, e);
+    return effectorCm(clip_.skeleton, currentPose(), e);
 }
 
 // ---- model ---------------------------------------------------------------------------------

@@ -11,9 +11,7 @@ EditingRange EditingRangeJob::run() const {
     const gp::GpModel& m0 = *version->model;
     const Skeleton& sk = m0.clip.skeleton;
     const PoseLayout layout(sk);
-    FkState fk;
-    forwardKinematics(sk, m0.clip.frames[frame], fk);
-    const Eigen::Vector3d origin = effectorCm(sk, fk, effector);
+    const Eigen::Vector3d origin = effectorCm(sk, m0.clip.frames[frame], effector);
 
     LearnedIkRequest req;
     req.start = m0.clip.frames[frame];

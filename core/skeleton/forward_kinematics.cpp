@@ -37,6 +37,12 @@ Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector
     return fk.jointCm[site.joint] + fk.global[site.joint] * site.localCm;
 }
 
+Eigen::Vector3d effectorCm(const Skeleton& skeleton, const Pose& pose, Effector e) {
+    FkState fk;
+    forwardKinematics(skeleton, pose, fk);
+    return effectorCm(skeleton, fk, e);
+}
+
 Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
                              int joint, int axis) {
     // With R = R_o0 · R_o1 · R_o2, the DOF o_k rotates about (base · R_o0 ⋯ R_o(k-1)) e_{o_k}.

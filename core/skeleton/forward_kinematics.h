@@ -22,6 +22,8 @@ void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk);
 // End point of joint j's bone (p_j + G_j · tail_j).
 Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint);
 Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector e);
+// One effector of a pose (runs FK; use the FkState form when you need several).
+Eigen::Vector3d effectorCm(const Skeleton& skeleton, const Pose& pose, Effector e);
 
 // World axis of joint j's rotation DOF `axis` (unit vector), given its current angles.
 Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
