@@ -1,5 +1,7 @@
 #include "eval/editing_range.h"
 
+#include <memory>
+
 #include "gp/adaptive_update.h"
 #include "ik/learned_ik.h"
 
@@ -20,10 +22,11 @@ EditingRange EditingRangeJob::run() const {
     bool passing[6] = {true, true, true, true, true, true};  // combined, reach, ranges, nearest, density, continuity
     int* ranges[6] = {&out.combined, &out.reach, &out.ranges, &out.nearest, &out.density, &out.continuity};
     Eigen::VectorXd previous;
+    std::unique_ptr<LearnedIkSolver> solver;  // rebuilt only when an adaptive update changed the model
     for (int delta = 0; delta <= maxDeltaCm; ++delta) {
-        LearnedIkSolver solver(current);
+        if (!solver || solver->version() != current) solver = std::make_unique<LearnedIkSolver>(current);
         req.constraints = {{effector, origin + delta * direction, false}};
-        const LearnedIkResult res = solver.solve(req);
+        const LearnedIkResult res = solver->solve(req);
         EditingStep step;
         step.deltaCm = delta;
         step.residualCm = res.constraints.empty() ? std::numeric_limits<double>::infinity() : res.constraints[0].residualCm;
