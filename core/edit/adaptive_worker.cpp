@@ -27,13 +27,16 @@ bool AdaptiveWorker::enabled() const {
     return enabled_;
 }
 
-void AdaptiveWorker::post(AdaptiveSample sample) {
+long AdaptiveWorker::post(AdaptiveSample sample) {
+    long sequence = 0;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        if (!enabled_) return;
+        if (!enabled_) return 0;
+        sequence = sample.sequence = nextSequence_++;
         queue_.push_back(std::move(sample));
     }
     wake_.notify_one();
+    return sequence;
 }
 
 gp::ModelVersionPtr AdaptiveWorker::current() const {
@@ -75,12 +78,15 @@ void AdaptiveWorker::run() {
         const auto t0 = std::chrono::steady_clock::now();
         AdaptiveReport report;
         report.versionBefore = base->number;
+        report.sequence = sample.sequence;
+        report.frame = sample.clipFrame;
         report.result = gp::adaptiveUpdate(*base, sample.x, sample.yKept, sample.clipFrame, scgIterations_);
         report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         lock.lock();
         // Publish only if nobody replaced the version meanwhile (undo/redo, a new model).
         if (report.result.accepted && current_ == base) current_ = report.result.version;
         report.modelRows = current_->model->N();
+        report.published = current_;
         const auto listener = listener_;
         busy_ = false;
         lock.unlock();

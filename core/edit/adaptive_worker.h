@@ -18,6 +18,7 @@ struct AdaptiveSample {
     Eigen::VectorXd x;
     Eigen::VectorXd yKept;
     int clipFrame = 0;
+    long sequence = 0;  // set by post(): 1, 2, 3, … in posting order
 };
 
 struct AdaptiveReport {
@@ -25,6 +26,9 @@ struct AdaptiveReport {
     int versionBefore = 0;
     double seconds = 0.0;
     int modelRows = 0;          // N after the update
+    long sequence = 0;          // the sample's sequence number
+    int frame = 0;              // the sample's clip frame
+    gp::ModelVersionPtr published;  // the current version once this sample is done
 };
 
 class AdaptiveWorker {
@@ -36,7 +40,8 @@ public:
 
     void setEnabled(bool enabled);
     bool enabled() const;
-    void post(AdaptiveSample sample);
+    // Queues an update; returns the sample's sequence number (0 when disabled: nothing queued).
+    long post(AdaptiveSample sample);
     gp::ModelVersionPtr current() const;
     // Replace the published version (undo/redo, loading a model); pending updates are dropped.
     void reset(gp::ModelVersionPtr version);
@@ -55,6 +60,7 @@ private:
     std::function<void(const AdaptiveReport&)> listener_;
     int scgIterations_;
     bool enabled_ = true, busy_ = false, stop_ = false;
+    long nextSequence_ = 1;
     std::thread thread_;
 };
 

@@ -80,7 +80,21 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
     worker_->setEnabled(adaptive_);
     worker_->setListener([this](const AdaptiveReport& r) {
         std::lock_guard<std::mutex> lock(statusMutex_);
-        ++adaptiveUpdates_;
+        AdaptiveHistoryEntry h;
+        h.when = std::chrono::system_clock::now();
+        h.frame = r.frame;
+        h.accepted = r.result.accepted;
+        h.diagnostic = r.result.diagnostic;
+        h.seconds = r.seconds;
+        h.versionBefore = r.versionBefore;
+        h.versionAfter = r.published->number;
+        h.rowsAfter = r.modelRows;
+        h.activeSize = static_cast<int>(r.published->model->active.size());
+        h.activeChanged = r.result.activeChanged;
+        h.newPointActive = r.result.newPointActive;
+        h.objectiveBefore = r.result.objectiveBefore;
+        h.objectiveAfter = r.result.objectiveAfter;
+        adaptiveHistory_.push_back(std::move(h));
         char buf[160];
         std::snprintf(buf, sizeof buf, "update %s in %.2f s (N = %d)", r.result.accepted ? "accepted" : "rejected",
                       r.seconds, r.modelRows);
@@ -92,7 +106,7 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
     cacheFrame_ = -1;
     std::lock_guard<std::mutex> lock(statusMutex_);
     adaptiveStatus_.clear();
-    adaptiveUpdates_ = 0;
+    adaptiveHistory_.clear();
 }
 
 void EditorDocument::clearModel() {
@@ -116,7 +130,12 @@ std::string EditorDocument::adaptiveStatus() const {
 
 int EditorDocument::adaptiveUpdates() const {
     std::lock_guard<std::mutex> lock(statusMutex_);
-    return adaptiveUpdates_;
+    return static_cast<int>(adaptiveHistory_.size());
+}
+
+std::vector<AdaptiveHistoryEntry> EditorDocument::adaptiveHistory() const {
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    return adaptiveHistory_;
 }
 
 void EditorDocument::setCompareMode(CompareMode mode) {

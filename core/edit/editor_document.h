@@ -15,6 +15,7 @@
 // Without a model, drags are solved by plain IK (damped least squares) so a clip can be posed
 // before training; the readout says which solver ran.
 #include <array>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -44,6 +45,21 @@ struct DragRecord {
     std::optional<EditRecord> before;  // the frame's edit before the drag (none = captured pose)
     EditRecord after;
     int modelVersionBefore = 0;
+};
+
+// One adaptive update as the Model panel lists it (when, how long, how the active set changed).
+struct AdaptiveHistoryEntry {
+    std::chrono::system_clock::time_point when;  // when the update finished
+    int frame = 0;                               // the edited clip frame (0-based)
+    bool accepted = false;
+    std::string diagnostic;                      // why it was rejected ("ok" if accepted)
+    double seconds = 0.0;                        // how long the update took
+    int versionBefore = 0, versionAfter = 0;     // equal when rejected
+    int rowsAfter = 0;                           // N after the update
+    int activeSize = 0;                          // M after the update
+    int activeChanged = 0;                       // points that entered the active set
+    bool newPointActive = false;                 // the edited pose itself entered it
+    double objectiveBefore = 0.0, objectiveAfter = 0.0;  // L_GP around Step 6
 };
 
 // Readout of the latest solve.
@@ -96,6 +112,8 @@ public:
     int adaptivePending() const { return worker_ ? worker_->pending() : 0; }
     std::string adaptiveStatus() const;  // last update's outcome, "" if none yet
     int adaptiveUpdates() const;
+    // Every update since the model was installed, oldest first.
+    std::vector<AdaptiveHistoryEntry> adaptiveHistory() const;
     // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
     void setCompareModel(gp::ModelVersionPtr version) { compareModel_ = std::move(version); }
     gp::ModelVersionPtr compareModel() const { return compareModel_; }
@@ -164,7 +182,7 @@ private:
     bool adaptive_ = true;
     mutable std::mutex statusMutex_;
     std::string adaptiveStatus_;
-    int adaptiveUpdates_ = 0;
+    std::vector<AdaptiveHistoryEntry> adaptiveHistory_;
 
     CompareMode compare_ = CompareMode::kNone;
     std::optional<Pose> comparePose_;
