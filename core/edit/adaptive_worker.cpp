@@ -39,6 +39,11 @@ long AdaptiveWorker::post(AdaptiveSample sample) {
     return sequence;
 }
 
+long AdaptiveWorker::lastSequence() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return nextSequence_ - 1;
+}
+
 gp::ModelVersionPtr AdaptiveWorker::current() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return current_;

@@ -42,6 +42,7 @@ public:
     bool enabled() const;
     // Queues an update; returns the sample's sequence number (0 when disabled: nothing queued).
     long post(AdaptiveSample sample);
+    long lastSequence() const;  // the latest number post() handed out (0 before the first)
     gp::ModelVersionPtr current() const;
     // Replace the published version (undo/redo, loading a model); pending updates are dropped.
     void reset(gp::ModelVersionPtr version);

@@ -25,6 +25,13 @@ EditorDocument::~EditorDocument() = default;
 
 void EditorDocument::setClip(Clip clip, bool synthetic) {
     cancelDrag();
+    regenerate_.cancel();
+    regenerate_.join();
+    regenerate_.take();
+    history_.clear();
+    path_.reset();
+    trajectoryEffector_ = -1;
+    ++revision_;
     unwrapClip(clip);
     clip_ = std::move(clip);
     synthetic_ = synthetic;
@@ -54,8 +61,26 @@ const Pose& EditorDocument::currentPose() const {
 }
 
 void EditorDocument::clearEdit(int frame) {
-    edits_.erase(frame);
+    if (!edits_.count(frame)) return;
+    EditStep step;
+    step.label = "reset frame " + std::to_string(frame + 1) + " to the captured pose";
+    step.before[frame] = edits_.at(frame);
+    step.after[frame] = std::nullopt;
+    applyFrames(step.after);
+    pushStep(std::move(step));
+}
+
+void EditorDocument::restoreEdits(std::map<int, EditRecord> edits) {
+    cancelDrag();
+    edits_ = std::move(edits);
+    history_.clear();
     updatePinPositions();
+    ++revision_;
+}
+
+std::optional<EditRecord> EditorDocument::editAt(int frame) const {
+    const auto it = edits_.find(frame);
+    return it == edits_.end() ? std::nullopt : std::optional<EditRecord>(it->second);
 }
 
 Eigen::Vector3d EditorDocument::effectorPosition(Effector e) const {
@@ -75,11 +100,25 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
         clip_.name = version->model->clip.name;
     }
     cancelDrag();
+    if (!adoptClip) history_.forgetModels();  // the steps' versions belong to the old model
+    installWorker(std::move(version));
+    ++revision_;
+}
+
+void EditorDocument::installWorker(gp::ModelVersionPtr version) {
     worker_.reset();
     worker_ = std::make_unique<AdaptiveWorker>(version);
     worker_->setEnabled(adaptive_);
+    {
+        std::lock_guard<std::mutex> lock(statusMutex_);
+        adaptiveStatus_.clear();
+        adaptiveHistory_.clear();
+        versionLog_.reset(version, 0);
+    }
     worker_->setListener([this](const AdaptiveReport& r) {
         std::lock_guard<std::mutex> lock(statusMutex_);
+        versionLog_.record(r.sequence, r.published);
+        ++revision_;
         AdaptiveHistoryEntry h;
         h.when = std::chrono::system_clock::now();
         h.frame = r.frame;
@@ -104,13 +143,11 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
     solver_.reset();
     latentPath_.clear();
     cacheFrame_ = -1;
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    adaptiveStatus_.clear();
-    adaptiveHistory_.clear();
 }
 
 void EditorDocument::clearModel() {
     cancelDrag();
+    history_.forgetModels();
     worker_.reset();
     solver_.reset();
     cacheFrame_ = -1;
@@ -323,17 +360,21 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     rec.after.pose = drag_.pose;
     rec.after.x = drag_.x;
     rec.modelVersionBefore = drag_.versionBefore;
-    edits_[frame_] = rec.after;
     drag_.active = false;
     comparePose_.reset();
+    EditStep step;
+    step.label = std::string("drag ") + effectorName(rec.effector) + " on frame " + std::to_string(frame_ + 1);
+    step.before[frame_] = rec.before;
+    step.after[frame_] = rec.after;
     if (worker_ && solver_ && readout_.valid && readout_.learned && result_.y.allFinite() && result_.x.allFinite()) {
         AdaptiveSample s;
         s.x = drag_.x;
         s.yKept = result_.y;
         s.clipFrame = frame_;
-        worker_->post(std::move(s));
+        if (const long seq = worker_->post(std::move(s)); seq > 0) step.samples.push_back(seq);
     }
-    updatePinPositions();
+    applyFrames(step.after);
+    pushStep(std::move(step));
     return rec;
 }
 
@@ -379,11 +420,245 @@ void EditorDocument::latentDragTo(const Eigen::VectorXd& x) {
 }
 
 void EditorDocument::endLatentDrag() {
+    if (!latentDrag_) return;
     latentDrag_ = false;
+    EditStep step;
+    step.label = "latent pose on frame " + std::to_string(frame_ + 1);
+    step.before[frame_] = latentBefore_;
+    step.after[frame_] = editAt(frame_);
+    if (step.after[frame_] && latentPath_.size() > 1) pushStep(std::move(step));
     updatePinPositions();
 }
 
+// ---- undo / redo ---------------------------------------------------------------------------
+
+void EditorDocument::pushStep(EditStep step) {
+    history_.push(std::move(step));
+    ++revision_;
+}
+
+void EditorDocument::applyFrames(const std::map<int, std::optional<EditRecord>>& frames) {
+    for (const auto& [frame, record] : frames) {
+        if (record) edits_[frame] = *record;
+        else edits_.erase(frame);
+    }
+    updatePinPositions();
+}
+
+void EditorDocument::resolveStepModels(EditStep& step) {
+    if (step.modelResolved) return;
+    step.modelResolved = true;
+    if (step.samples.empty() || !worker_) return;
+    worker_->waitIdle();  // the step's own updates must have published before we can undo them
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    step.modelBefore = versionLog_.before(step.samples.front());
+    step.modelAfter = worker_->current();
+    if (!step.modelBefore) step.modelAfter = nullptr;  // unknown: leave the model alone
+}
+
+void EditorDocument::installVersion(const gp::ModelVersionPtr& version) {
+    if (!version || !worker_ || worker_->current() == version) return;
+    worker_->waitIdle();
+    worker_->reset(version);
+    {
+        // Samples posted from now on start from this version.
+        std::lock_guard<std::mutex> lock(statusMutex_);
+        versionLog_.record(worker_->lastSequence(), version);
+    }
+    cacheFrame_ = -1;
+}
+
+std::string EditorDocument::undoLabel() const {
+    const EditStep* s = history_.topUndo();
+    return s ? s->label : "";
+}
+
+std::string EditorDocument::redoLabel() const {
+    const EditStep* s = history_.topRedo();
+    return s ? s->label : "";
+}
+
+std::string EditorDocument::undo() {
+    cancelDrag();
+    if (latentDrag_) endLatentDrag();
+    if (regenerating()) return "a regeneration is running: wait for it or cancel it";
+    EditStep* step = history_.topUndo();
+    if (!step) return "nothing to undo";
+    resolveStepModels(*step);
+    applyFrames(step->before);
+    installVersion(step->modelBefore);
+    history_.moveUndoToRedo();
+    ++revision_;
+    return "";
+}
+
+std::string EditorDocument::redo() {
+    cancelDrag();
+    if (latentDrag_) endLatentDrag();
+    if (regenerating()) return "a regeneration is running: wait for it or cancel it";
+    EditStep* step = history_.topRedo();
+    if (!step) return "nothing to redo";
+    applyFrames(step->after);
+    installVersion(step->modelAfter);
+    history_.moveRedoToUndo();
+    ++revision_;
+    return "";
+}
+
+std::optional<Pose> EditorDocument::beforeGhost() const {
+    const EditStep* s = history_.topUndo();
+    if (!s) return std::nullopt;
+    const auto it = s->before.find(frame_);
+    if (it == s->before.end()) return std::nullopt;
+    return it->second ? it->second->pose : clip_.frames[frame_];
+}
+
+// ---- path editing --------------------------------------------------------------------------
+
+const std::vector<Eigen::Vector3d>& EditorDocument::capturedTrajectory(Effector e) const {
+    if (trajectoryEffector_ != static_cast<int>(e)) {
+        trajectory_.assign(clip_.frameCount(), Eigen::Vector3d::Zero());
+        FkState fk;
+        for (int t = 0; t < clip_.frameCount(); ++t) {
+            forwardKinematics(clip_.skeleton, clip_.frames[t], fk);
+            trajectory_[t] = effectorCm(clip_.skeleton, fk, e);
+        }
+        trajectoryEffector_ = static_cast<int>(e);
+    }
+    return trajectory_;
+}
+
+std::string EditorDocument::beginPathEdit(Effector e) {
+    PathEdit p;
+    p.effector = e;
+    p.keyFrames = defaultPathKeys(frame_, frameCount());
+    p.keyOffsetsCm.assign(p.keyFrames.size(), Eigen::Vector3d::Zero());
+    return setPathEdit(std::move(p));
+}
+
+std::string EditorDocument::setPathEdit(PathEdit p) {
+    if (!hasClip()) return "no clip is open";
+    if (!hasEffector(p.effector)) return std::string("this skeleton has no ") + effectorName(p.effector);
+    if (std::string problem = validatePathKeys(p.keyFrames, frameCount()); !problem.empty()) return problem;
+    if (p.keyOffsetsCm.size() != p.keyFrames.size())
+        return "expected one offset per key (" + std::to_string(p.keyFrames.size()) + "), found " +
+               std::to_string(p.keyOffsetsCm.size());
+    for (const Eigen::Vector3d& o : p.keyOffsetsCm)
+        if (!o.allFinite()) return "expected finite key offsets, found NaN or Inf";
+    path_ = std::move(p);
+    ++revision_;
+    return "";
+}
+
+void EditorDocument::endPathEdit() {
+    if (path_) ++revision_;
+    path_.reset();
+}
+
+std::string EditorDocument::setPathKeyFrames(std::vector<int> keyFrames) {
+    if (!path_) return "no path is being edited";
+    PathEdit p = *path_;
+    p.keyFrames = std::move(keyFrames);
+    p.keyOffsetsCm.assign(p.keyFrames.size(), Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < p.keyFrames.size(); ++i) {
+        const auto it = std::find(path_->keyFrames.begin(), path_->keyFrames.end(), p.keyFrames[i]);
+        if (it != path_->keyFrames.end()) p.keyOffsetsCm[i] = path_->keyOffsetsCm[it - path_->keyFrames.begin()];
+    }
+    return setPathEdit(std::move(p));
+}
+
+std::string EditorDocument::setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) {
+    if (!path_) return "no path is being edited";
+    if (key < 0 || key >= static_cast<int>(path_->keyFrames.size()))
+        return "expected a key in 1.." + std::to_string(path_->keyFrames.size()) + ", found " + std::to_string(key + 1);
+    if (!offsetCm.allFinite()) return "expected a finite offset, found NaN or Inf";
+    path_->keyOffsetsCm[key] = offsetCm;
+    ++revision_;
+    return "";
+}
+
+std::string EditorDocument::setPathKeyPosition(int key, const Eigen::Vector3d& positionCm) {
+    if (!path_ || key < 0 || key >= static_cast<int>(path_->keyFrames.size())) return setPathKeyOffset(key, positionCm);
+    return setPathKeyOffset(key, positionCm - capturedTrajectory(path_->effector)[path_->keyFrames[key]]);
+}
+
+void EditorDocument::setPathMode(PathMode mode) {
+    if (!path_ || path_->mode == mode) return;
+    path_->mode = mode;
+    ++revision_;
+}
+
+Eigen::Vector3d EditorDocument::pathKeyPosition(int key) const {
+    return capturedTrajectory(path_->effector)[path_->keyFrames[key]] + path_->keyOffsetsCm[key];
+}
+
+std::vector<Eigen::Vector3d> EditorDocument::pathTargets() const {
+    if (!path_) return {};
+    return editTargetPath(capturedTrajectory(path_->effector), path_->keyFrames, path_->keyOffsetsCm, path_->mode);
+}
+
+std::vector<Eigen::Vector3d> EditorDocument::pathCaptured() const {
+    if (!path_) return {};
+    const std::vector<Eigen::Vector3d>& c = capturedTrajectory(path_->effector);
+    return {c.begin() + path_->keyFrames.front(), c.begin() + path_->keyFrames.back() + 1};
+}
+
+std::string EditorDocument::startRegenerate(int maxIterations) {
+    if (!path_) return "no path is being edited";
+    const gp::ModelVersionPtr v = model();
+    if (!v) return "regeneration needs a model: train one or open one first";
+    const Clip& mc = v->model->clip;
+    if (mc.frameCount() != clip_.frameCount() || mc.skeleton.jointCount() != clip_.skeleton.jointCount())
+        return "expected a model trained on this clip, found one trained on " + mc.name;
+    cancelDrag();
+    MotionEditJob job;
+    job.version = v;
+    job.effector = path_->effector;
+    job.keyFrames = path_->keyFrames;
+    job.keyOffsetsCm = path_->keyOffsetsCm;
+    job.mode = path_->mode;
+    job.maxIterations = maxIterations;
+    return regenerate_.start(std::move(job));
+}
+
+std::string EditorDocument::pollRegenerate(std::string* error) {
+    if (regenerate_.running()) return "";
+    std::optional<MotionEditJob> job = regenerate_.take();
+    if (!job) {
+        if (error) *error = regenerate_.message();
+        return "";
+    }
+    EditStep step;
+    char label[96];
+    std::snprintf(label, sizeof label, "regenerate %s, frames %d–%d", effectorName(job->effector),
+                  job->keyFrames.front() + 2, job->keyFrames.back());
+    step.label = label;
+    for (std::size_t i = 0; i < job->solvedFrames.size(); ++i) {
+        const int t = job->solvedFrames[i];
+        step.before[t] = editAt(t);
+        step.after[t] = EditRecord{job->frames[t], job->results[i].x};
+    }
+    // As the CLI's `edit --adaptive`: the moved keys' poses join the model, not the in-betweens.
+    if (worker_) {
+        for (std::size_t k = 1; k + 1 < job->keyFrames.size(); ++k) {
+            if (job->keyOffsetsCm[k].isZero()) continue;
+            const int t = job->keyFrames[k];
+            const auto it = std::find(job->solvedFrames.begin(), job->solvedFrames.end(), t);
+            const LearnedIkResult& r = job->results[static_cast<std::size_t>(it - job->solvedFrames.begin())];
+            if (!r.x.allFinite() || !r.y.allFinite()) continue;
+            if (const long seq = worker_->post({r.x, r.y, t}); seq > 0) step.samples.push_back(seq);
+        }
+    }
+    applyFrames(step.after);
+    pushStep(std::move(step));
+    char summary[160];
+    std::snprintf(summary, sizeof summary, "regenerated %zu frames, max residual %.3f cm%s", job->solvedFrames.size(),
+                  job->maxResidualCm, worker_ && adaptive_ ? " (adaptive update queued)" : "");
+    return summary;
+}
+
 void EditorDocument::waitIdle() {
+    regenerate_.join();
     if (worker_) worker_->waitIdle();
 }
 

@@ -10,11 +10,15 @@
 //   pins            effectors held where they are while another one is dragged
 //   drag            the state machine  beginDrag(e) -> dragTo(target)* / refine()* -> endDrag()
 //
-// Units: cm, world Y up (DESIGN.md §2). One drag = one accepted pose = one future undo step
-// (part 2 records `DragRecord`s: frame, pose and latent before/after, model version before).
+//   path            the effector path being edited (keys, offsets, mode) and its regeneration
+//   history         undo/redo steps; undo also restores the model version a step changed
+//
+// Units: cm, world Y up (DESIGN.md §2). One drag, one latent drag, one regeneration or one
+// cleared edit = one undo step.
 // Without a model, drags are solved by plain IK (damped least squares) so a clip can be posed
 // before training; the readout says which solver ran.
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -24,6 +28,10 @@
 #include <vector>
 
 #include "edit/adaptive_worker.h"
+#include "edit/edit_history.h"
+#include "edit/edit_record.h"
+#include "edit/path_edit.h"
+#include "edit/regenerate_job.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
 #include "skeleton/clip.h"
@@ -33,12 +41,7 @@ namespace mgp {
 // What the compare ghost shows: the same targets solved by another solver.
 enum class CompareMode { kNone, kPlainIk, kSecondModel };
 
-struct EditRecord {
-    Pose pose;
-    Eigen::VectorXd x;  // latent point of the accepted pose (empty if solved without a model)
-};
-
-// What one drag changed (returned by endDrag; part 2 turns it into an undo command).
+// What one drag changed (returned by endDrag; the undo history keeps it as one step).
 struct DragRecord {
     int frame = 0;
     Effector effector = Effector::kRFoot;
@@ -96,7 +99,9 @@ public:
     const Pose& capturedPose() const { return clip_.frames[frame_]; }
     bool isEdited(int frame) const { return edits_.count(frame) != 0; }
     const std::map<int, EditRecord>& edits() const { return edits_; }
-    void clearEdit(int frame);
+    void clearEdit(int frame);  // one undo step
+    // Replaces every edit at once (loading a session); clears the undo history.
+    void restoreEdits(std::map<int, EditRecord> edits);
     Eigen::Vector3d effectorPosition(Effector e) const;  // FK of the current pose (cm)
     bool hasEffector(Effector e) const { return hasClip() && clip_.skeleton.hasEffector(e); }
 
@@ -159,7 +164,49 @@ public:
     void endLatentDrag();
     bool latentDragging() const { return latentDrag_; }
 
-    // Blocks until background updates finish (tests and scripts only).
+    // ---- path editing (§10) -----------------------------------------------------------------
+    // Starts editing `e`'s path with the default keys around the current frame; "" or why not.
+    std::string beginPathEdit(Effector e);
+    // Installs a whole path edit (a loaded session); "" or why not.
+    std::string setPathEdit(PathEdit path);
+    void endPathEdit();
+    const std::optional<PathEdit>& pathEdit() const { return path_; }
+    // New key frames (0-based); keys at frames that were keys keep their offsets.
+    std::string setPathKeyFrames(std::vector<int> keyFrames);
+    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm);
+    // Moves a key to a world position (its offset becomes position − captured position).
+    std::string setPathKeyPosition(int key, const Eigen::Vector3d& positionCm);
+    void setPathMode(PathMode mode);
+    Eigen::Vector3d pathKeyPosition(int key) const;        // captured + offset (cm)
+    std::vector<Eigen::Vector3d> pathTargets() const;      // the edited path, frames first..last
+    std::vector<Eigen::Vector3d> pathCaptured() const;     // the captured path, frames first..last
+    // Solves the span between the first and last key on a background thread; "" or why not.
+    std::string startRegenerate(int maxIterations = 500);
+    bool regenerating() const { return regenerate_.running(); }
+    int regenerateDone() const { return regenerate_.framesDone(); }
+    int regenerateTotal() const { return regenerate_.framesTotal(); }
+    void cancelRegenerate() { regenerate_.cancel(); }
+    // Call once per UI frame: a finished regeneration becomes one undo step (and the moved keys'
+    // poses are posted to the adaptive worker). Returns a summary when it applied one, else "";
+    // `error` is set when the job failed or was cancelled.
+    std::string pollRegenerate(std::string* error = nullptr);
+
+    // ---- undo / redo -----------------------------------------------------------------------
+    bool canUndo() const { return history_.canUndo(); }
+    bool canRedo() const { return history_.canRedo(); }
+    std::string undoLabel() const;  // "" when there is nothing to undo
+    std::string redoLabel() const;
+    // Restore the frames and the model version a step changed. Undo first waits for adaptive
+    // updates still running (they are part of the step). "" or why not.
+    std::string undo();
+    std::string redo();
+    // The current frame's pose before the last undoable step that touched it (before/after ghost).
+    std::optional<Pose> beforeGhost() const;
+    // Grows with every change a session saves (edits, model versions, paths): compare two values
+    // to know whether there are unsaved changes.
+    long revision() const { return revision_.load(); }
+
+    // Blocks until background updates and a running regeneration finish (tests and scripts).
     void waitIdle();
 
 private:
@@ -169,6 +216,13 @@ private:
     void solveCompare();
     void updatePinPositions();
     Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
+    void pushStep(EditStep step);
+    void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
+    void resolveStepModels(EditStep& step);
+    void installVersion(const gp::ModelVersionPtr& version);
+    void installWorker(gp::ModelVersionPtr version);
+    const std::vector<Eigen::Vector3d>& capturedTrajectory(Effector e) const;
+    std::optional<EditRecord> editAt(int frame) const;
 
     Clip clip_;
     bool synthetic_ = false;
@@ -183,6 +237,14 @@ private:
     mutable std::mutex statusMutex_;
     std::string adaptiveStatus_;
     std::vector<AdaptiveHistoryEntry> adaptiveHistory_;
+    ModelVersionLog versionLog_;  // guarded by statusMutex_ (the worker's listener writes it)
+    EditHistory history_;
+    std::atomic<long> revision_{0};
+
+    std::optional<PathEdit> path_;
+    RegenerateJob regenerate_;
+    mutable int trajectoryEffector_ = -1;
+    mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
 
     CompareMode compare_ = CompareMode::kNone;
     std::optional<Pose> comparePose_;

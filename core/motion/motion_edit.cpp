@@ -34,12 +34,10 @@ std::vector<Eigen::Vector3d> MotionEditJob::capturedTrajectory() const {
     return out;
 }
 
-void MotionEditJob::run() {
-    if (const std::string problem = validate(); !problem.empty()) throw std::invalid_argument(problem);
-    const Clip& clip = version->model->clip;
-    const std::vector<Eigen::Vector3d> captured = capturedTrajectory();
+std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& captured,
+                                            const std::vector<int>& keyFrames,
+                                            const std::vector<Eigen::Vector3d>& keyOffsetsCm, PathMode mode) {
     const int first = keyFrames.front(), last = keyFrames.back();
-
     std::vector<HermiteKey> keys;
     for (std::size_t i = 0; i < keyFrames.size(); ++i) {
         const Eigen::Vector3d p = mode == PathMode::kDirect ? Eigen::Vector3d(captured[keyFrames[i]] + keyOffsetsCm[i])
@@ -49,14 +47,27 @@ void MotionEditJob::run() {
     const HermitePath path = mode == PathMode::kDirect
                                  ? HermitePath(keys, capturedVelocity(captured, first), capturedVelocity(captured, last))
                                  : HermitePath(keys, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    std::vector<Eigen::Vector3d> out;
+    for (int t = first; t <= last; ++t) {
+        const Eigen::Vector3d c = path.position(t);
+        out.push_back(mode == PathMode::kDirect ? c : Eigen::Vector3d(captured[t] + c));
+    }
+    return out;
+}
+
+void MotionEditJob::run() {
+    if (const std::string problem = validate(); !problem.empty()) throw std::invalid_argument(problem);
+    const Clip& clip = version->model->clip;
+    const std::vector<Eigen::Vector3d> target = editTargetPath(capturedTrajectory(), keyFrames, keyOffsetsCm, mode);
+    const int first = keyFrames.front(), last = keyFrames.back();
 
     frames = clip.frames;
+    cancelled = false;
     solvedFrames.clear();
     pathCm.clear();
     for (int t = first + 1; t < last; ++t) {
         solvedFrames.push_back(t);
-        const Eigen::Vector3d c = path.position(t);
-        pathCm.push_back(mode == PathMode::kDirect ? c : Eigen::Vector3d(captured[t] + c));
+        pathCm.push_back(target[t - first]);
     }
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
@@ -68,11 +79,13 @@ void MotionEditJob::run() {
         req.lambda = lambda;
         req.maxIterations = maxIterations;
         for (int i = worker; i < count; i += workers) {  // fixed assignment: deterministic
+            if (cancel && cancel->load()) return;
             const int t = solvedFrames[i];
             req.start = clip.frames[t];
             req.startX = latentStartForFrame(*version, t);
             req.constraints = {{effector, pathCm[i], false}};
             solver.solve(req, results[i]);
+            if (framesDone) ++*framesDone;
         }
     };
     std::vector<std::thread> pool;
@@ -80,6 +93,11 @@ void MotionEditJob::run() {
     work(0);
     for (auto& th : pool) th.join();
 
+    if (cancel && cancel->load()) {
+        cancelled = true;
+        frames = clip.frames;
+        return;
+    }
     maxResidualCm = 0.0;
     for (int i = 0; i < count; ++i) {
         frames[solvedFrames[i]] = results[i].pose;

@@ -10,6 +10,7 @@
 // frame's own (x_t, y_t) — never chained frame to frame. Frames t_0, t_n and everything outside
 // keep their captured poses bit for bit. Solves run in parallel (one solver per thread) and the
 // result does not depend on the thread count.
+#include <atomic>
 #include <vector>
 
 #include "ik/learned_ik.h"
@@ -18,6 +19,12 @@
 namespace mgp {
 
 enum class PathMode { kDirect, kDisplacement };
+
+// The effector's target at every frame first..last (= keyFrames.front()..back()) of the edited
+// path, from its captured trajectory (every clip frame) and the keys. Keys must be valid.
+std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& captured,
+                                            const std::vector<int>& keyFrames,
+                                            const std::vector<Eigen::Vector3d>& keyOffsetsCm, PathMode mode);
 
 struct MotionEditJob {
     // Inputs.
@@ -29,6 +36,8 @@ struct MotionEditJob {
     double lambda = 0.999;
     int maxIterations = 500;                     // per frame
     int threads = 0;                             // ≤ 0: hardware concurrency
+    std::atomic<int>* framesDone = nullptr;      // optional: counts solved frames (progress bars)
+    const std::atomic<bool>* cancel = nullptr;   // optional: stop early; run() then sets `cancelled`
 
     // Outputs.
     std::vector<Pose> frames;                    // the whole edited motion (every clip frame)
@@ -36,6 +45,7 @@ struct MotionEditJob {
     std::vector<LearnedIkResult> results;        // one per solved frame
     std::vector<Eigen::Vector3d> pathCm;         // the target path at each solved frame
     double maxResidualCm = 0.0;
+    bool cancelled = false;                      // `frames` is then the unedited clip
 
     std::string validate() const;  // "" or "expected …, found …"
     void run();                    // throws std::invalid_argument if validate() fails

@@ -1,0 +1,61 @@
+#pragma once
+// Undo/redo of editor steps. One step = one drag, one latent drag, one regeneration or one
+// cleared edit: the frames it touched (their edits before and after; none = captured pose) and
+// the adaptive samples it posted. Undo also restores the model version the step changed, so the
+// history also keeps a log of which version each adaptive sample left behind
+// (ModelVersionLog): the version before a step is the one published after the last sample
+// posted before it. Versions are immutable shared pointers, so "restores" means exactly.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "edit/edit_record.h"
+#include "gp/model_version.h"
+
+namespace mgp {
+
+struct EditStep {
+    std::string label;  // "drag rfoot on frame 101", shown as "Undo drag rfoot on frame 101"
+    std::map<int, std::optional<EditRecord>> before, after;  // per touched frame (0-based)
+    std::vector<long> samples;                               // adaptive sample sequence numbers
+    // Resolved on the first undo (the updates may still run when the step is recorded); both
+    // null when the step leaves the model alone (no samples, or a model installed since).
+    bool modelResolved = false;
+    gp::ModelVersionPtr modelBefore, modelAfter;
+};
+
+class EditHistory {
+public:
+    void push(EditStep step);  // drops the redo branch
+    bool canUndo() const { return !undo_.empty(); }
+    bool canRedo() const { return !redo_.empty(); }
+    EditStep* topUndo() { return undo_.empty() ? nullptr : &undo_.back(); }
+    EditStep* topRedo() { return redo_.empty() ? nullptr : &redo_.back(); }
+    const EditStep* topUndo() const { return undo_.empty() ? nullptr : &undo_.back(); }
+    const EditStep* topRedo() const { return redo_.empty() ? nullptr : &redo_.back(); }
+    void moveUndoToRedo();
+    void moveRedoToUndo();
+    void clear();
+    // A new model replaced the one the steps refer to: keep their poses, stop touching the model.
+    void forgetModels();
+    int undoCount() const { return static_cast<int>(undo_.size()); }
+
+private:
+    std::vector<EditStep> undo_, redo_;
+};
+
+// Which model version was current after each adaptive sample (by sequence number).
+class ModelVersionLog {
+public:
+    // Starts over: `initial` is current before any sample after `lastSequence`.
+    void reset(gp::ModelVersionPtr initial, long lastSequence = 0);
+    void record(long sequence, gp::ModelVersionPtr published);
+    // The version current once every sample before `sequence` was processed (null if unknown).
+    gp::ModelVersionPtr before(long sequence) const;
+
+private:
+    std::map<long, gp::ModelVersionPtr> after_;
+};
+
+}  // namespace mgp
