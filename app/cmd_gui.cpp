@@ -5,6 +5,7 @@
 // (no display); otherwise a GLFW window (a desktop or xvfb-run).
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <optional>
 #include <iostream>
@@ -37,10 +38,22 @@ int runGui(const GuiArgs& args) {
     else window = std::make_unique<ui::GlfwWindow>(args.width, args.height, "MotionGP");
 
     const auto mocap = findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
+    int total = args.frames;
+    if (player) total = std::max(total, player->lastFrame() + 3);
+    if (total == 0 && (args.offscreen || !args.screenshot.empty())) total = 3;
+    const bool scripted = total > 0;
+
     ui::EditorOptions eo;
     if (mocap) eo.mocapDir = *mocap;
+    // A scripted run neither asks about old autosaves nor changes the user's recent files.
+    eo.offerAutosaveRestore = !scripted;
+    eo.recentFiles = !scripted;
     ui::EditorApp app(eo);
-    if (!args.model.empty()) {
+    const bool session = !args.clip.empty() && std::filesystem::path(args.clip).extension() == ".mgsession";
+    if (session) {
+        const std::string err = app.openSession(args.clip);
+        if (!err.empty()) throw ParseError(err);
+    } else if (!args.model.empty()) {
         const std::string err = app.openModel(args.model);
         if (!err.empty()) throw ParseError(err);
     } else if (!args.clip.empty()) {
@@ -51,11 +64,6 @@ int runGui(const GuiArgs& args) {
     } else {
         app.openSyntheticClip("no mocap folder found: showing the synthetic demo clip");
     }
-
-    int total = args.frames;
-    if (player) total = std::max(total, player->lastFrame() + 3);
-    if (total == 0 && (args.offscreen || !args.screenshot.empty())) total = 3;
-    const bool scripted = total > 0;
 
     ui::InputState scriptInput;
     int settle = 2;
@@ -74,7 +82,10 @@ int runGui(const GuiArgs& args) {
             } else {
                 window->pollEvents();
             }
-            if (window->shouldClose()) break;
+            if (window->shouldClose()) {
+                window->cancelClose();  // the app asks about unsaved changes first
+                app.requestQuit();
+            }
             if (!scripted) input = &window->input();
             w = window->width();
             h = window->height();
@@ -106,7 +117,8 @@ const CommandRegistration reg("gui", "Open the interactive editor (or run it scr
                               [](CLI::App& sub) -> CommandRunner {
     auto a = std::make_shared<GuiArgs>();
     auto size = std::make_shared<std::string>("1280x800");
-    sub.add_option("file", a->clip, "ASF/AMC or BVH clip to open (default: the 10_02 kick, else a synthetic walk)");
+    sub.add_option("file", a->clip,
+                   "Session (.mgsession), ASF/AMC or BVH clip to open (default: the 10_02 kick, else a synthetic walk)");
     sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
     sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
     sub.add_option("--script", a->script, "Timed input events (format: ui/gui_script.h)");

@@ -8,11 +8,16 @@
 #include <cfloat>
 #include <cstdio>
 #include <filesystem>
+#include <chrono>
+#include <ctime>
 
+#include "edit/session_file.h"
 #include "gp/model_file.h"
+#include "io/bvh_writer.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
 #include "model_panel.h"
+#include "path_panel.h"
 #include "skeleton/synthetic_clip.h"
 
 namespace mgp::ui {
@@ -44,6 +49,25 @@ void applyStyle() {
 }
 
 std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+std::string absolute(const std::string& path) {
+    std::error_code ec;
+    const auto p = std::filesystem::absolute(path, ec);
+    return ec ? path : p.lexically_normal().string();
+}
+
+// Adds `extension` when the user typed a name without one.
+std::string withExtension(const std::string& path, const std::string& extension) {
+    return std::filesystem::path(path).has_extension() ? path : path + extension;
+}
+
+double secondsNow() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+const char* compareModeName(CompareMode m) {
+    return m == CompareMode::kPlainIk ? "plain" : m == CompareMode::kSecondModel ? "model" : "none";
+}
 }  // namespace
 
 EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
@@ -80,9 +104,18 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
     applyStyle();
     ImGui_ImplOpenGL3_Init("#version 330 core");
     viewport_ = std::make_unique<ViewportPanel>();
+    autosave_ = AutosaveTimer(options_.autosaveSeconds);
+    if (options_.recentFiles) {
+        recent_ = std::make_unique<RecentFiles>();
+        recent_->load();
+    }
+    if (options_.offerAutosaveRestore) restoreOffer_ = findOrphanedAutosaves();
 }
 
 EditorApp::~EditorApp() {
+    // Quitting normally (whatever the user chose about unsaved changes) leaves no autosave to
+    // offer; a crash or a kill leaves it for the next start.
+    if (!autosaveFile_.empty()) discardAutosave(autosaveFile_);
     viewport_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
@@ -101,6 +134,9 @@ std::string EditorApp::openClip(const std::string& path) {
         const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
         state_.setStatus("opened " + (ec ? path : shown) +
                          (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
+        sessionPath_.clear();
+        markSaved();
+        remember(path, RecentKind::kClip);
         return "";
     } catch (const std::exception& e) {
         state_.setStatus(e.what(), true);
@@ -114,6 +150,8 @@ void EditorApp::openSyntheticClip(const std::string& why) {
     state_.modelLabel.clear();
     state_.cameraNeedsFraming = true;
     state_.setStatus(why.empty() ? "synthetic demo clip" : why);
+    sessionPath_.clear();
+    markSaved();
 }
 
 std::string EditorApp::openModel(const std::string& path) {
@@ -124,6 +162,9 @@ std::string EditorApp::openModel(const std::string& path) {
         state_.modelLabel = baseName(path);
         state_.cameraNeedsFraming = true;
         state_.setStatus("opened model " + path);
+        sessionPath_.clear();
+        markSaved();
+        remember(path, RecentKind::kModel);
         return "";
     } catch (const std::exception& e) {
         state_.setStatus(e.what(), true);
@@ -141,6 +182,7 @@ std::string EditorApp::saveModel(const std::string& path) {
         gp::saveModel(path, *v->model);
         state_.modelLabel = baseName(path);
         state_.setStatus("saved model " + path);
+        remember(path, RecentKind::kModel);
         return "";
     } catch (const std::exception& e) {
         state_.setStatus(e.what(), true);
@@ -157,7 +199,194 @@ std::string EditorApp::startTraining() {
     return err;
 }
 
+void EditorApp::markSaved() { savedRevision_ = state_.doc.revision(); }
+
+void EditorApp::remember(const std::string& path, RecentKind kind) {
+    if (!recent_) return;
+    recent_->add(path, kind);
+    try {
+        recent_->save();
+    } catch (const std::exception&) {
+        // The list is a convenience: a read-only config folder must not turn an open into an error.
+    }
+}
+
+namespace {
+SessionData sessionOf(const EditorState& s) {
+    const EditorDocument& doc = s.doc;
+    SessionData d;
+    const Clip& c = doc.clip();
+    d.syntheticClip = doc.synthetic();
+    if (!d.syntheticClip) {
+        d.clipPath = c.sourcePath.empty() ? "" : absolute(c.sourcePath);
+        d.skeletonPath = c.skeletonPath.empty() ? "" : absolute(c.skeletonPath);
+    }
+    if (const gp::ModelVersionPtr v = doc.model()) {
+        d.model = *v->model;
+        d.modelVersion = v->number;
+    }
+    if (const gp::ModelVersionPtr v = doc.compareModel()) d.compareModel = *v->model;
+    d.edits = doc.edits();
+    d.frame = doc.frame();
+    for (int i = 0; i < kEffectorCount; ++i) d.pins[i] = doc.pinned(static_cast<Effector>(i));
+    d.selectedEffector = s.selected ? static_cast<int>(*s.selected) : -1;
+    d.compareMode = compareModeName(doc.compareMode());
+    d.adaptiveEnabled = doc.adaptiveEnabled();
+    d.camera.yawDeg = s.camera.yawDeg;
+    d.camera.pitchDeg = s.camera.pitchDeg;
+    d.camera.distanceCm = s.camera.distanceCm;
+    d.camera.fovYDeg = s.camera.fovYDeg;
+    d.camera.targetCm = {s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z};
+    d.camera.followCharacter = s.followCharacter;
+    if (const auto& p = doc.pathEdit()) {
+        d.path.present = true;
+        d.path.effector = p->effector;
+        d.path.keyFrames = p->keyFrames;
+        d.path.keyOffsetsCm = p->keyOffsetsCm;
+        d.path.mode = p->mode;
+    }
+    d.ui = {{"show_captured_path", s.showCapturedPath}, {"show_before_ghost", s.showBeforeGhost},
+            {"clip_label", s.clipLabel}, {"model_label", s.modelLabel}};
+    return d;
+}
+}  // namespace
+
+std::string EditorApp::saveSession(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".mgsession");
+    try {
+        mgp::saveSession(path, sessionOf(state_));
+        sessionPath_ = absolute(path);
+        markSaved();
+        remember(path, RecentKind::kSession);
+        state_.setStatus("saved session " + path);
+        return "";
+    } catch (const std::exception& e) {
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
+std::string EditorApp::autosaveNow() {
+    if (!state_.doc.hasClip()) return "nothing to autosave";
+    try {
+        if (autosaveFile_.empty()) autosaveFile_ = autosavePath();
+        mgp::saveSession(autosaveFile_, sessionOf(state_));
+        autosave_.markSaved(secondsNow());
+        return "";
+    } catch (const std::exception& e) {
+        // Never interrupt the user for a failed autosave; say it in the status line.
+        state_.setStatus(std::string("autosave failed: ") + e.what(), true);
+        return e.what();
+    }
+}
+
+void EditorApp::autosaveIfDue() {
+    const double now = secondsNow();
+    if (autosave_.due(now, dirty())) autosaveNow();
+}
+
+std::string EditorApp::openSession(const std::string& path) {
+    try {
+        SessionData d = mgp::loadSession(path);
+        EditorDocument& doc = state_.doc;
+        state_.training.cancel();
+        state_.compareTraining.cancel();
+        std::optional<Clip> clip = loadSessionClip(d, path);  // none: the model carries it (both validated)
+        if (d.model) doc.setModel(gp::ModelVersion::make(std::move(*d.model), d.modelVersion), true);
+        else doc.setClip(std::move(*clip), d.syntheticClip);
+        if (d.compareModel) doc.setCompareModel(gp::ModelVersion::make(std::move(*d.compareModel)));
+        doc.setAdaptiveEnabled(d.adaptiveEnabled);
+        doc.restoreEdits(std::move(d.edits));
+        doc.setFrame(d.frame);
+        for (int i = 0; i < kEffectorCount; ++i) doc.setPinned(static_cast<Effector>(i), d.pins[i]);
+        doc.setCompareMode(d.compareMode == "plain" ? CompareMode::kPlainIk
+                           : d.compareMode == "model" ? CompareMode::kSecondModel
+                                                      : CompareMode::kNone);
+        if (d.path.present) {
+            PathEdit p{d.path.effector, d.path.keyFrames, d.path.keyOffsetsCm, d.path.mode};
+            if (const std::string problem = doc.setPathEdit(std::move(p)); !problem.empty())
+                throw ParseError(path + ": path edit: " + problem);
+        }
+        state_.selected.reset();
+        if (d.selectedEffector >= 0 && d.selectedEffector < kEffectorCount)
+            state_.selected = static_cast<Effector>(d.selectedEffector);
+        state_.camera.yawDeg = float(d.camera.yawDeg);
+        state_.camera.pitchDeg = float(d.camera.pitchDeg);
+        state_.camera.distanceCm = float(d.camera.distanceCm);
+        state_.camera.fovYDeg = float(d.camera.fovYDeg);
+        state_.camera.targetCm = glm::vec3(d.camera.targetCm.x(), d.camera.targetCm.y(), d.camera.targetCm.z());
+        state_.followCharacter = d.camera.followCharacter;
+        state_.cameraNeedsFraming = false;
+        state_.playing = false;
+        state_.showCapturedPath = d.ui.value("show_captured_path", true);
+        state_.showBeforeGhost = d.ui.value("show_before_ghost", true);
+        state_.clipLabel = d.ui.value("clip_label", doc.clip().name);
+        state_.modelLabel = doc.hasModel() ? d.ui.value("model_label", std::string("from session")) : "";
+        sessionPath_ = absolute(path);
+        markSaved();
+        remember(path, RecentKind::kSession);
+        std::string status = "opened session " + path;
+        for (const std::string& w : d.warnings) status += "  (" + w + ")";
+        state_.setStatus(status, !d.warnings.empty());
+        return "";
+    } catch (const std::exception& e) {
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
+std::string EditorApp::restoreAutosave(const std::string& path) {
+    std::string file = path;
+    if (file.empty()) {
+        const std::vector<AutosaveCandidate> found = findOrphanedAutosaves();
+        if (found.empty()) return "no autosave to restore";
+        file = found.front().path;
+    }
+    const std::string err = openSession(file);
+    if (!err.empty()) return err;
+    // The restored work is unsaved: it has no session file of its own yet.
+    sessionPath_.clear();
+    savedRevision_ = -1;
+    discardAutosave(file);
+    restoreOffer_.clear();
+    state_.setStatus("restored the autosave from " + file + " (File > Save session to keep it)");
+    return "";
+}
+
+std::string EditorApp::exportBvh(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".bvh");
+    if (!state_.doc.hasClip()) return "no clip to export";
+    try {
+        Clip edited = state_.doc.clip();
+        for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
+        writeBvh(edited, path);
+        state_.setStatus("exported " + std::to_string(edited.frameCount()) + " frames (" +
+                         std::to_string(state_.doc.edits().size()) + " edited) to " + path);
+        return "";
+    } catch (const std::exception& e) {
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
+std::string EditorApp::exportPng(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".png");
+    if (!state_.doc.hasClip()) return "no clip to draw";
+    try {
+        render::writePng(viewport_->renderImage(state_), path);
+        state_.setStatus("exported the viewport to " + path);
+        return "";
+    } catch (const std::exception& e) {
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
 void EditorApp::pollJobs() {
+    std::string regenerateError;
+    const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
+    if (!regenerated.empty()) state_.setStatus(regenerated);
+    else if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
     if (gp::ModelVersionPtr v = state_.training.take()) {
         const Clip& c = v->model->clip;
         const bool same = state_.doc.hasClip() && c.name == state_.doc.clip().name &&
@@ -188,19 +417,22 @@ void EditorApp::waitIdle() {
     state_.compareTraining.join();
     pollJobs();
     state_.doc.waitIdle();
+    pollJobs();  // a finished regeneration posts its keys to the adaptive worker
+    state_.doc.waitIdle();
     latent_.prefetch(state_);  // the next frame uploads it
     latent_.waitIdle();
 }
 
 bool EditorApp::animating() const {
     const EditorDocument& d = state_.doc;
-    return state_.playing || d.dragging() || d.latentDragging() || state_.training.running() ||
+    return state_.playing || d.dragging() || d.latentDragging() || d.regenerating() || state_.training.running() ||
            state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
            (d.hasModel() && !latent_.upToDate(state_));
 }
 
 std::string EditorApp::title() const {
-    std::string t = "MotionGP - ";
+    std::string t = std::string(dirty() ? "* " : "") + "MotionGP - ";
+    if (!sessionPath_.empty()) t += baseName(sessionPath_) + " - ";
     if (!state_.doc.hasClip()) t += "no clip";
     else if (state_.doc.synthetic()) t += "synthetic demo clip (no mocap data found)";
     else t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH, view-only)" : "");
@@ -210,6 +442,10 @@ std::string EditorApp::title() const {
 
 bool EditorApp::handleScreenPosition(Effector e, float& x, float& y) const {
     return viewport_->handleScreenPosition(state_, e, x, y);
+}
+
+bool EditorApp::keyScreenPosition(int key, float& x, float& y) const {
+    return viewport_->keyScreenPosition(state_, key, x, y);
 }
 
 std::string EditorApp::runAction(const std::vector<std::string>& a) {
@@ -262,6 +498,43 @@ std::string EditorApp::runAction(const std::vector<std::string>& a) {
         state_.requestFrameCamera = true;
         return "";
     }
+    if (n == "undo") return state_.doc.undo();
+    if (n == "redo") return state_.doc.redo();
+    if (n == "path") {
+        Effector e;
+        if (!parseEffector(arg, e)) return "unknown effector '" + arg + "'";
+        return state_.doc.beginPathEdit(e);
+    }
+    if (n == "path-keys") {
+        std::vector<int> keys;
+        for (std::size_t i = 1; i < a.size(); ++i) keys.push_back(std::atoi(a[i].c_str()) - 1);
+        return state_.doc.setPathKeyFrames(std::move(keys));
+    }
+    if (n == "path-offset") {
+        if (a.size() != 5) return "expected path-offset KEY DX DY DZ";
+        return state_.doc.setPathKeyOffset(std::atoi(a[1].c_str()) - 1, Eigen::Vector3d(std::atof(a[2].c_str()),
+                                                                                        std::atof(a[3].c_str()),
+                                                                                        std::atof(a[4].c_str())));
+    }
+    if (n == "path-mode") {
+        state_.doc.setPathMode(arg == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
+        return "";
+    }
+    if (n == "regenerate") return state_.doc.startRegenerate(a.size() > 1 ? std::atoi(arg.c_str()) : 500);
+    if (n == "save-session") return saveSession(arg);
+    if (n == "open-session") return openSession(arg);
+    if (n == "export-bvh") return exportBvh(arg);
+    if (n == "export-png") return exportPng(arg);
+    if (n == "autosave") return autosaveNow();
+    if (n == "restore-autosave") return restoreAutosave(arg);
+    if (n == "quit") {
+        state_.requestQuit = true;
+        return "";
+    }
+    if (n == "discard-and-quit") {
+        quitConfirmed_ = true;
+        return "";
+    }
     return "unknown action '" + n + "'";
 }
 
@@ -270,10 +543,23 @@ void EditorApp::shortcuts() {
     if (io.WantTextInput || dialog_.isOpen()) return;
     EditorDocument& doc = state_.doc;
     if (io.KeyCtrl) {
+        auto report = [this](const std::string& err) {
+            if (!err.empty()) state_.setStatus(err, true);
+        };
+        if (ImGui::IsKeyPressed('Z', true)) {
+            if (io.KeyShift) report(doc.redo());
+            else report(doc.undo());
+        }
+        if (ImGui::IsKeyPressed('Y', true)) report(doc.redo());
         if (ImGui::IsKeyPressed('O', false)) state_.requestOpenClip = true;
         if (ImGui::IsKeyPressed('M', false)) state_.requestOpenModel = true;
-        if (ImGui::IsKeyPressed('S', false) && doc.hasModel()) state_.requestSaveModel = true;
+        if (ImGui::IsKeyPressed('S', false)) {
+            if (io.KeyShift || sessionPath_.empty()) request_ = DialogPurpose::kSaveSession;
+            else saveSession(sessionPath_);
+        }
+        if (ImGui::IsKeyPressed('E', false)) request_ = io.KeyShift ? DialogPurpose::kExportPng : DialogPurpose::kExportBvh;
         if (ImGui::IsKeyPressed('T', false) && doc.trainable() && !state_.training.running()) state_.requestTrain = true;
+        if (ImGui::IsKeyPressed('R', false) && doc.pathEdit() && !doc.regenerating()) report(doc.startRegenerate());
         if (ImGui::IsKeyPressed('Q', false)) state_.requestQuit = true;
         return;
     }
@@ -289,9 +575,27 @@ void EditorApp::menus() {
     EditorDocument& doc = state_.doc;
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open clip...", "Ctrl+O")) state_.requestOpenClip = true;
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) state_.requestOpenClip = true;
+        if (ImGui::BeginMenu("Open recent", recent_ && !recent_->entries().empty())) {
+            for (const RecentFile r : recent_->entries()) {  // a copy: opening reorders the list
+                const std::string label = baseName(r.path) + "  (" + recentKindName(r.kind) + ")";
+                if (ImGui::MenuItem(label.c_str())) openAny(r.path);
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.path.c_str());
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save session", "Ctrl+S", false, doc.hasClip())) {
+            if (sessionPath_.empty()) request_ = DialogPurpose::kSaveSession;
+            else saveSession(sessionPath_);
+        }
+        if (ImGui::MenuItem("Save session as...", "Ctrl+Shift+S", false, doc.hasClip())) request_ = DialogPurpose::kSaveSession;
+        ImGui::Separator();
         if (ImGui::MenuItem("Open model...", "Ctrl+M")) state_.requestOpenModel = true;
-        if (ImGui::MenuItem("Save model...", "Ctrl+S", false, doc.hasModel())) state_.requestSaveModel = true;
+        if (ImGui::MenuItem("Save model...", nullptr, false, doc.hasModel())) state_.requestSaveModel = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Export motion as BVH...", "Ctrl+E", false, doc.hasClip())) request_ = DialogPurpose::kExportBvh;
+        if (ImGui::MenuItem("Export viewport as PNG...", "Ctrl+Shift+E", false, doc.hasClip()))
+            request_ = DialogPurpose::kExportPng;
         ImGui::Separator();
         if (ImGui::MenuItem("Synthetic demo clip")) openSyntheticClip("");
         ImGui::Separator();
@@ -299,8 +603,13 @@ void EditorApp::menus() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        ImGui::MenuItem("Undo", "Ctrl+Z", false, false);
-        ImGui::MenuItem("Redo", "Ctrl+Y", false, false);
+        const std::string undo = doc.canUndo() ? "Undo " + doc.undoLabel() : "Undo";
+        const std::string redo = doc.canRedo() ? "Redo " + doc.redoLabel() : "Redo";
+        auto report = [this](const std::string& err) {
+            if (!err.empty()) state_.setStatus(err, true);
+        };
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, doc.canUndo())) report(doc.undo());
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc.canRedo())) report(doc.redo());
         ImGui::Separator();
         if (ImGui::MenuItem("Revert frame to capture", nullptr, false, doc.isEdited(doc.frame()))) doc.clearEdit(doc.frame());
         if (ImGui::BeginMenu("Pins")) {
@@ -311,6 +620,14 @@ void EditorApp::menus() {
             }
             ImGui::EndMenu();
         }
+        ImGui::Separator();
+        const Effector pathEffector = state_.selected.value_or(Effector::kRFoot);
+        const std::string begin = std::string("Edit path of ") + effectorName(pathEffector);
+        if (ImGui::MenuItem(begin.c_str(), nullptr, false, doc.hasEffector(pathEffector))) report(doc.beginPathEdit(pathEffector));
+        if (ImGui::MenuItem("Regenerate path span", "Ctrl+R", false, doc.pathEdit() && doc.hasModel() && !doc.regenerating()))
+            report(doc.startRegenerate());
+        if (ImGui::MenuItem("Cancel regeneration", nullptr, false, doc.regenerating())) doc.cancelRegenerate();
+        if (ImGui::MenuItem("Stop editing the path", nullptr, false, doc.pathEdit().has_value())) doc.endPathEdit();
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Model")) {
@@ -408,8 +725,21 @@ void EditorApp::layout(int w, int h) {
     ImGui::End();
 
     place(leftW, menuH + modelH + latentH, rightW, float(h) - menuH - modelH - latentH);
-    ImGui::Begin("IK readout", nullptr, fixed);
-    drawIkReadout(state_);
+    ImGui::Begin("Readout and path", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
+    if (ImGui::BeginTabBar("##bottomright")) {
+        // The Path tab comes forward while a path is edited.
+        const bool pathActive = state_.doc.pathEdit().has_value();
+        if (ImGui::BeginTabItem("IK readout")) {
+            drawIkReadout(state_);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Path", nullptr, pathActive && !pathTabShown_ ? ImGuiTabItemFlags_SetSelected : 0)) {
+            drawPathPanel(state_);
+            ImGui::EndTabItem();
+        }
+        pathTabShown_ = pathActive;
+        ImGui::EndTabBar();
+    }
     ImGui::End();
 
     if (showHelp_) {
@@ -417,15 +747,26 @@ void EditorApp::layout(int w, int h) {
         ImGui::Begin("Controls", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
         ImGui::Text("Viewport");
         ImGui::BulletText("Hover a hand/foot/head handle, left-drag: pose with learned IK (camera-facing plane)");
-        ImGui::BulletText("Shift while dragging a handle: move on the horizontal plane");
+        ImGui::BulletText("Shift while dragging a handle or a path key: move on the horizontal plane");
         ImGui::BulletText("Right-click or P on a handle: pin / unpin (keeps a foot planted)");
         ImGui::BulletText("Left-drag empty space: orbit   Middle-drag or Shift+left: pan   Wheel: zoom   F: frame");
         ImGui::BulletText("Esc during a drag: cancel");
+        ImGui::Text("Path editing (Edit menu or the Path tab)");
+        ImGui::BulletText("Drag a key point in the viewport, or type its offset in the Path tab");
+        ImGui::BulletText("Ctrl+R: regenerate the span between the first and last key");
         ImGui::Text("Timeline");
         ImGui::BulletText("Space: play/pause   Left/Right: step (Shift: 10)   Home/End: first/last");
         ImGui::Text("Latent map");
         ImGui::BulletText("Hover: nearest training frame   Click a point: go to its frame");
         ImGui::BulletText("Drag the red point: pose from the model mean f(x)");
+        ImGui::Text("Files and history");
+        ImGui::BulletText("Ctrl+Z: undo   Ctrl+Shift+Z or Ctrl+Y: redo (a drag or a regeneration is one step;");
+        ImGui::Text("      undo also restores the model version the step changed)");
+        ImGui::BulletText("Ctrl+O: open a session, clip or model   Ctrl+M: open model");
+        ImGui::BulletText("Ctrl+S: save session   Ctrl+Shift+S: save session as");
+        ImGui::BulletText("Ctrl+E: export BVH   Ctrl+Shift+E: export viewport PNG");
+        ImGui::BulletText("Ctrl+T: train   Ctrl+Q: quit   F1: this window");
+        ImGui::TextDisabled("Unsaved work is autosaved every %.0f s and offered back after a crash.", options_.autosaveSeconds);
         ImGui::End();
     }
 }
@@ -433,9 +774,24 @@ void EditorApp::layout(int w, int h) {
 void EditorApp::dialogs() {
     if (state_.requestOpenClip) {
         state_.requestOpenClip = false;
-        dialog_.open("Open clip (ASF/AMC or BVH)", FileDialog::Mode::kOpen, {".amc", ".bvh"},
-                     options_.mocapDir.empty() ? "" : options_.mocapDir + "/asf_amc");
+        dialog_.open("Open session, clip (ASF/AMC, BVH) or model", FileDialog::Mode::kOpen,
+                     {".mgsession", ".amc", ".bvh", ".json"}, options_.mocapDir.empty() ? "" : options_.mocapDir + "/asf_amc");
         purpose_ = DialogPurpose::kClip;
+    }
+    switch (std::exchange(request_, DialogPurpose::kNone)) {
+        case DialogPurpose::kSaveSession:
+            dialog_.open("Save session", FileDialog::Mode::kSave, {".mgsession"}, "");
+            purpose_ = DialogPurpose::kSaveSession;
+            break;
+        case DialogPurpose::kExportBvh:
+            dialog_.open("Export motion as BVH", FileDialog::Mode::kSave, {".bvh"}, "");
+            purpose_ = DialogPurpose::kExportBvh;
+            break;
+        case DialogPurpose::kExportPng:
+            dialog_.open("Export viewport as PNG", FileDialog::Mode::kSave, {".png"}, "");
+            purpose_ = DialogPurpose::kExportPng;
+            break;
+        default: break;
     }
     if (state_.requestOpenModel) {
         state_.requestOpenModel = false;
@@ -449,12 +805,90 @@ void EditorApp::dialogs() {
     }
     if (auto path = dialog_.draw()) {
         switch (purpose_) {
-            case DialogPurpose::kClip: openClip(*path); break;
+            case DialogPurpose::kClip: openAny(*path); break;
             case DialogPurpose::kModel: openModel(*path); break;
             case DialogPurpose::kSaveModel: saveModel(*path); break;
-            case DialogPurpose::kNone: break;
+            case DialogPurpose::kSaveSession:
+                if (saveSession(*path).empty() && quitAfterSave_) quitConfirmed_ = true;
+                break;
+            case DialogPurpose::kExportBvh: exportBvh(*path); break;
+            case DialogPurpose::kExportPng: exportPng(*path); break;
+            default: break;
         }
         purpose_ = DialogPurpose::kNone;
+    }
+    if (!dialog_.isOpen()) quitAfterSave_ = false;
+}
+
+std::string EditorApp::openAny(const std::string& path) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext == ".mgsession") return openSession(path);
+    if (ext == ".json") return openModel(path);
+    return openClip(path);
+}
+
+// Modal questions: unsaved changes on quit, and restoring an autosave after a crash.
+void EditorApp::prompts() {
+    if (state_.requestQuit) {
+        state_.requestQuit = false;
+        if (dirty()) quitPrompt_ = true;
+        else quitConfirmed_ = true;
+    }
+    if (quitPrompt_) {
+        ImGui::OpenPopup("Unsaved changes");
+        quitPrompt_ = false;
+    }
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("This session has changes that are not saved%s.",
+                    sessionPath_.empty() ? "" : (" to " + baseName(sessionPath_)).c_str());
+        ImGui::Text("Save them before quitting?");
+        if (ImGui::Button("Save", ImVec2(110, 0))) {
+            if (sessionPath_.empty()) {
+                request_ = DialogPurpose::kSaveSession;
+                quitAfterSave_ = true;
+            } else if (saveSession(sessionPath_).empty()) {
+                quitConfirmed_ = true;
+            }
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Don't save", ImVec2(110, 0))) {
+            quitConfirmed_ = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (!restoreOffer_.empty() && !ImGui::IsPopupOpen("Restore autosave")) ImGui::OpenPopup("Restore autosave");
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Restore autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const AutosaveCandidate& c = restoreOffer_.front();
+        ImGui::Text("MotionGP did not quit normally last time.");
+        ImGui::Text("An autosave of its work was left at\n%s", c.path.c_str());
+        const std::time_t when = static_cast<std::time_t>(c.mtimeSeconds);
+        char stamp[64];
+        std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&when));
+        ImGui::TextDisabled("written %s by editor process %d", stamp, c.pid);
+        if (ImGui::Button("Restore", ImVec2(110, 0))) {
+            const std::string path = c.path;
+            ImGui::CloseCurrentPopup();
+            restoreAutosave(path);
+            restoreOffer_.clear();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(110, 0))) {
+            discardAutosave(c.path);
+            restoreOffer_.erase(restoreOffer_.begin());
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Not now", ImVec2(110, 0))) {
+            restoreOffer_.clear();  // kept on disk: offered again next start
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
     }
 }
 
@@ -475,6 +909,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     in.chars.clear();
 
     pollJobs();
+    autosaveIfDue();
     TimelinePanel::advance(state_, io.DeltaTime);
 
     ImGui_ImplOpenGL3_NewFrame();
@@ -483,6 +918,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     menus();
     layout(width, height);
     dialogs();
+    prompts();
     ImGui::Render();
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -519,7 +955,10 @@ void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<
         } else if (e.verb == "hover") {
             Effector eff;
             float x, y;
-            if (parseEffector(a[0], eff) && app.handleScreenPosition(eff, x, y)) {
+            const bool onScreen = a[0].rfind("key:", 0) == 0
+                                      ? app.keyScreenPosition(std::atoi(a[0].c_str() + 4) - 1, x, y)
+                                      : parseEffector(a[0], eff) && app.handleScreenPosition(eff, x, y);
+            if (onScreen) {
                 in.mouseX = x;
                 in.mouseY = y;
             } else {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "edit/autosave.h"
+#include "edit/recent_files.h"
 #include "editor_state.h"
 #include "file_dialog.h"
 #include "gui_script.h"
@@ -24,6 +26,10 @@ namespace mgp::ui {
 struct EditorOptions {
     bool builtinFont = false;   // ImGui's built-in bitmap font (goldens) instead of DejaVu Sans
     std::string mocapDir;       // where File > Open starts ("" = current directory)
+    // After a crash: offer the autosave a dead editor left behind (the interactive editor).
+    bool offerAutosaveRestore = false;
+    double autosaveSeconds = 120.0;  // autosave interval while there are unsaved changes
+    bool recentFiles = false;        // read and update the user's recent-files list
 };
 
 class EditorApp {
@@ -39,6 +45,17 @@ public:
     std::string openModel(const std::string& path);
     std::string saveModel(const std::string& path);
     std::string startTraining();  // on the open clip with state().trainOptions
+    // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
+    std::string openSession(const std::string& path);
+    std::string saveSession(const std::string& path);  // becomes the current session file
+    std::string autosaveNow();                         // to this editor's autosave file
+    // Restores an autosave (the newest one a dead editor left behind when `path` is "").
+    std::string restoreAutosave(const std::string& path = "");
+    // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
+    std::string exportBvh(const std::string& path);
+    std::string exportPng(const std::string& path);
+    bool dirty() const { return state_.doc.revision() != savedRevision_; }
+    const std::string& sessionPath() const { return sessionPath_; }
 
     // One UI frame of width×height pixels; dt in seconds.
     void frame(InputState& input, double dt, int width, int height);
@@ -51,17 +68,25 @@ public:
     // Whether the next frames change on their own (playback, a drag being refined, background
     // work to pick up); when false the window may sleep until the next input event.
     bool animating() const;
-    bool quitRequested() const { return state_.requestQuit; }
+    // True once the user confirmed quitting (after the unsaved-changes prompt if needed).
+    bool quitRequested() const { return quitConfirmed_; }
+    void requestQuit() { state_.requestQuit = true; }
     EditorState& state() { return state_; }
     const EditorState& state() const { return state_; }
     bool latentMapUpToDate() const { return latent_.upToDate(state_); }
     // Window pixel of an effector handle (as last drawn).
     bool handleScreenPosition(Effector e, float& x, float& y) const;
+    bool keyScreenPosition(int key, float& x, float& y) const;  // path key (0-based), as last drawn
     // Runs a named UI action (the script's `action` verb); "" or the error.
     std::string runAction(const std::vector<std::string>& args);
 
 private:
     void pollJobs();
+    void autosaveIfDue();
+    void prompts();
+    void markSaved();
+    void remember(const std::string& path, RecentKind kind);
+    std::string openAny(const std::string& path);  // by extension: session, model or clip
     void shortcuts();
     void menus();
     void layout(int width, int height);
@@ -73,8 +98,19 @@ private:
     LatentMapPanel latent_;
     TimelinePanel timeline_;
     FileDialog dialog_;
-    enum class DialogPurpose { kNone, kClip, kModel, kSaveModel } purpose_ = DialogPurpose::kNone;
+    enum class DialogPurpose { kNone, kClip, kModel, kSaveModel, kOpenSession, kSaveSession, kExportBvh, kExportPng };
+    DialogPurpose purpose_ = DialogPurpose::kNone;
+    DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
     bool showHelp_ = false;
+    bool pathTabShown_ = false;
+
+    std::string sessionPath_;  // "" until saved or opened
+    long savedRevision_ = 0;   // doc.revision() when last saved or opened
+    std::unique_ptr<RecentFiles> recent_;  // null when the options turn the list off
+    AutosaveTimer autosave_;
+    std::string autosaveFile_;
+    bool quitConfirmed_ = false, quitPrompt_ = false, quitAfterSave_ = false;
+    std::vector<AutosaveCandidate> restoreOffer_;
 };
 
 // Plays a GuiScript into an InputState and the app's actions, frame by frame.

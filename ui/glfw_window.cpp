@@ -72,6 +72,8 @@ void GlfwWindow::pollEvents() { glfwPollEvents(); }
 void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
 
+void GlfwWindow::cancelClose() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+
 void GlfwWindow::setTitle(const std::string& title) {
     if (title == title_) return;
     title_ = title;

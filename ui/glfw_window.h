@@ -28,6 +28,7 @@ public:
     void pollEvents();
     void waitEvents(double timeoutSeconds);  // sleeps until input or the timeout
     bool shouldClose() const;
+    void cancelClose();  // the app asked about unsaved changes and the user stayed
     void setTitle(const std::string& title);
     InputState& input() { return input_; }
 

@@ -44,7 +44,10 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
                                                 "key", "keydown", "keyup", "action"};
     static const std::set<std::string> actions = {"open", "open-model", "save-model", "train", "train-compare", "cancel-train",
                                                   "wait", "play", "pause", "frame", "pin", "compare",
-                                                  "frame-camera", "screenshot"};
+                                                  "frame-camera", "screenshot", "undo", "redo", "path", "path-keys",
+                                                  "path-offset", "path-mode", "regenerate", "save-session",
+                                                  "open-session", "export-bvh", "export-png", "autosave",
+                                                  "restore-autosave", "quit", "discard-and-quit"};
     GuiScript script;
     std::istringstream in(text);
     std::string line;
@@ -72,9 +75,11 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             if (!isNumber(args[0]) || !isNumber(args[1]))
                 throwParseError(file, lineNo, "two numbers", "'" + args[0] + " " + args[1] + "'");
         } else if (verb == "hover") {
-            need(1, "an effector (lhand rhand lfoot rfoot head)");
+            need(1, "an effector (lhand rhand lfoot rfoot head) or key:N");
             Effector e;
-            if (!parseEffector(args[0], e)) throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot or head", "'" + args[0] + "'");
+            const bool key = args[0].rfind("key:", 0) == 0 && isNumber(args[0].substr(4)) && std::atoi(args[0].c_str() + 4) >= 1;
+            if (!key && !parseEffector(args[0], e))
+                throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head or key:N", "'" + args[0] + "'");
         } else if (verb == "down" || verb == "up") {
             need(1, "a button (left, right, middle)");
             if (args[0] != "left" && args[0] != "right" && args[0] != "middle")
@@ -87,15 +92,20 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             if (keyFromName(args[0]) < 0) throwParseError(file, lineNo, "a key name (A-Z, 0-9, SPACE, LEFT, ...)", "'" + args[0] + "'");
         } else if (verb == "action") {
             need(1, "an action name");
-            if (!actions.count(args[0]))
-                throwParseError(file, lineNo,
-                                "open, open-model, save-model, train, train-compare, cancel-train, wait, play, pause, frame, pin, "
-                                "compare, frame-camera or screenshot",
-                                "'" + args[0] + "'");
+            if (!actions.count(args[0])) {
+                std::string list;
+                for (const std::string& n : actions) list += (list.empty() ? "" : ", ") + n;
+                throwParseError(file, lineNo, "an action (" + list + ")", "'" + args[0] + "'");
+            }
+            static const std::set<std::string> needArgument = {
+                "open", "open-model", "save-model", "screenshot", "frame", "pin", "compare", "path", "path-keys",
+                "path-mode", "save-session", "open-session", "export-bvh", "export-png"};
             const std::string& a = args[0];
-            if ((a == "open" || a == "open-model" || a == "save-model" || a == "screenshot" || a == "frame" ||
-                 a == "pin" || a == "compare") && args.size() < 2)
+            if (needArgument.count(a) && args.size() < 2)
                 throwParseError(file, lineNo, "an argument after '" + a + "'", "none");
+            if (a == "path-offset" && (args.size() != 5 || !isNumber(args[1]) || !isNumber(args[2]) ||
+                                       !isNumber(args[3]) || !isNumber(args[4])))
+                throwParseError(file, lineNo, "path-offset KEY DX DY DZ (numbers)", std::to_string(args.size() - 1) + " arguments");
         }
         script.add(std::atoi(tok[0].c_str()), verb, std::move(args));
         script.events_.back().line = lineNo;

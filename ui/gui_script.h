@@ -9,6 +9,7 @@
 //   moveby DX DY           mouse by a pixel offset
 //   hover EFFECTOR         mouse onto an effector handle's current screen position
 //                          (lhand rhand lfoot rfoot head), resolved when the event runs
+//   hover key:N            mouse onto key N (1-based) of the path being edited
 //   down BUTTON            press a mouse button: left | right | middle
 //   up BUTTON              release it
 //   wheel DY               scroll (positive zooms in)
@@ -28,6 +29,19 @@
 //       pin EFFECTOR         toggle a pin
 //       compare none|plain|model   the compare ghost
 //       frame-camera         frame the character (same as F)
+//       undo | redo          one step of the edit history (Ctrl+Z / Ctrl+Shift+Z)
+//       path EFFECTOR        edit that effector's path (default keys around the current frame)
+//       path-keys F1 F2 ...  the path's key frames (1-based, increasing)
+//       path-offset K DX DY DZ   key K's (1-based) offset from the captured path, cm
+//       path-mode direct|displacement
+//       regenerate [ITERS]   solve the path span (background; `wait` waits for it)
+//       save-session PATH    save the session (becomes the current session file)
+//       open-session PATH    open a session
+//       export-bvh PATH      the edited motion as BVH
+//       export-png PATH      the 3-D viewport as PNG
+//       autosave             write this editor's autosave file now
+//       restore-autosave [PATH]   restore an autosave (default: newest left by a dead editor)
+//       quit                 quit (asks about unsaved changes)   discard-and-quit: without asking
 //       screenshot PATH      save a PNG of the whole window after this frame
 //
 // Key names: A-Z, 0-9, SPACE, LEFT, RIGHT, UP, DOWN, ESCAPE, ENTER, TAB, DELETE, BACKSPACE, HOME,

@@ -625,7 +625,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     if (regenerate_.running()) return "";
     std::optional<MotionEditJob> job = regenerate_.take();
     if (!job) {
-        if (error) *error = regenerate_.message();
+        if (error) *error = regenerate_.takeMessage();
         return "";
     }
     EditStep step;

@@ -1,5 +1,7 @@
 #include "edit/regenerate_job.h"
 
+#include <utility>
+
 namespace mgp {
 
 RegenerateJob::~RegenerateJob() {
@@ -52,9 +54,9 @@ std::optional<MotionEditJob> RegenerateJob::take() {
     return out;
 }
 
-std::string RegenerateJob::message() const {
+std::string RegenerateJob::takeMessage() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return message_;
+    return std::exchange(message_, std::string());
 }
 
 void RegenerateJob::join() {

@@ -27,7 +27,8 @@ public:
     int framesTotal() const { return total_.load(); }
     // The finished job, once (none while running, after a cancel or an error).
     std::optional<MotionEditJob> take();
-    std::string message() const;  // "" or the last job's outcome when it produced nothing
+    // "" or the last job's outcome when it produced nothing (cancelled, failed), once.
+    std::string takeMessage();
     void join();
 
 private:

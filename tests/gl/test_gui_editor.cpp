@@ -20,6 +20,7 @@
 #include <random>
 
 #include "editor_app.h"
+#include "editor_harness.h"
 #include "gl_context.h"
 #include "gui_script.h"
 #include "io/parse_error.h"
@@ -33,54 +34,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kMocap = MOTIONGP_TEST_MOCAP;
 const std::string kGoldenDir = MOTIONGP_GOLDEN_DIR;
 const std::string kOutDir = MOTIONGP_GL_OUT_DIR;
-constexpr int kW = 1280, kH = 800;
 
-struct Harness {
-    std::unique_ptr<render::OffscreenContext> ctx;
-    std::unique_ptr<ui::EditorApp> app;
-    ui::InputState input;
-    int frameNo = 0;
-
-    void frame(int n = 1) {
-        for (int i = 0; i < n; ++i, ++frameNo) app->frame(input, 1.0 / 60.0, kW, kH);
-    }
-};
-
-// Offscreen editor on 35_01 with a small trained model, or nullptr (test skipped with a reason).
-std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool train = true) {
-    if (!fs::exists(kMocap + "/asf_amc/35_01.amc")) {
-        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << kMocap);
-        return nullptr;
-    }
-    auto h = std::make_unique<Harness>();
-    try {
-        h->ctx = std::make_unique<render::OffscreenContext>(kW, kH);
-    } catch (const render::RenderError& e) {
-        MESSAGE("MOTIONGP_GL_SKIP: no offscreen GL context: " << e.what());
-        return nullptr;
-    }
-    if (llvmpipeOnly && !render::currentGlInfo().isLlvmpipe()) {
-        MESSAGE("MOTIONGP_GL_SKIP: goldens are made with Mesa llvmpipe");
-        return nullptr;
-    }
-    ui::EditorOptions o;
-    o.builtinFont = true;  // no dependence on system fonts
-    h->app = std::make_unique<ui::EditorApp>(o);
-    REQUIRE(h->app->openClip(kMocap + "/asf_amc/35_01.amc") == "");
-    h->frame(2);
-    if (train) {
-        REQUIRE(h->app->runAction({"train", "fas", "100", "3"}) == "");
-        h->app->waitIdle();
-        REQUIRE(h->app->state().doc.hasModel());
-        h->frame(2);
-        h->app->waitIdle();
-        h->frame(2);
-    }
-    return h;
-}
+using test::Harness;
+using test::makeHarness;
+constexpr int kW = test::kGuiWidth, kH = test::kGuiHeight;
 
 bool finite(const Pose& p) {
     if (!p.rootCm.allFinite()) return false;
@@ -278,8 +237,8 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
 }
 
 TEST_CASE("gui verb: --offscreen --script runs the frames, writes the screenshots and exits 0 with no display") {
-    if (!fs::exists(kMocap + "/asf_amc/35_01.amc")) {
-        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << kMocap);
+    if (!fs::exists(test::mocapDir() + "/asf_amc/35_01.amc")) {
+        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << test::mocapDir());
         return;
     }
     const std::string dir = kOutDir + "/gui_cli";
@@ -291,7 +250,7 @@ TEST_CASE("gui verb: --offscreen --script runs the frames, writes the screenshot
         s << "# scrub, play, pause, pin, shot\n2 key RIGHT\n4 key SPACE\n10 key SPACE\n12 action pin lfoot\n"
              "14 action screenshot " << dir << "/mid.png\n";
     }
-    const std::string cmd = std::string("DISPLAY= ") + MOTIONGP_TEST_BINARY + " gui '" + kMocap +
+    const std::string cmd = std::string("DISPLAY= ") + MOTIONGP_TEST_BINARY + " gui '" + test::mocapDir() +
                             "/asf_amc/35_01.amc' --offscreen --size 640x400 --script '" + dir + "/script.txt' --screenshot '" +
                             dir + "/end.png' > '" + dir + "/log.txt' 2>&1";
     const int rc = std::system(cmd.c_str());

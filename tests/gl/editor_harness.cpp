@@ -1,0 +1,68 @@
+#include "editor_harness.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+namespace mgp::test {
+
+namespace fs = std::filesystem;
+
+const std::string& mocapDir() {
+    static const std::string dir = MOTIONGP_TEST_MOCAP;
+    return dir;
+}
+
+void Harness::frame(int n) {
+    for (int i = 0; i < n; ++i, ++frameNo) app->frame(input, 1.0 / 60.0, kGuiWidth, kGuiHeight);
+}
+
+std::vector<std::string> Harness::play(const ui::GuiScript& script) {
+    ui::ScriptPlayer player(script);
+    std::vector<std::string> shots;
+    for (int i = 0; i <= script.lastFrame() + 2; ++i) {
+        player.apply(i, input, *app, shots);
+        frame();
+    }
+    return player.errors();
+}
+
+void Harness::restartApp() {
+    app.reset();
+    input = ui::InputState{};
+    ui::EditorOptions o;
+    o.builtinFont = true;
+    app = std::make_unique<ui::EditorApp>(o);
+}
+
+std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool train) {
+    if (!fs::exists(mocapDir() + "/asf_amc/35_01.amc")) {
+        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << mocapDir());
+        return nullptr;
+    }
+    auto h = std::make_unique<Harness>();
+    try {
+        h->ctx = std::make_unique<render::OffscreenContext>(kGuiWidth, kGuiHeight);
+    } catch (const render::RenderError& e) {
+        MESSAGE("MOTIONGP_GL_SKIP: no offscreen GL context: " << e.what());
+        return nullptr;
+    }
+    if (llvmpipeOnly && !render::currentGlInfo().isLlvmpipe()) {
+        MESSAGE("MOTIONGP_GL_SKIP: goldens are made with Mesa llvmpipe");
+        return nullptr;
+    }
+    h->restartApp();
+    REQUIRE(h->app->openClip(mocapDir() + "/asf_amc/35_01.amc") == "");
+    h->frame(2);
+    if (train) {
+        REQUIRE(h->app->runAction({"train", "fas", "100", "3"}) == "");
+        h->app->waitIdle();
+        REQUIRE(h->app->state().doc.hasModel());
+        h->frame(2);
+        h->app->waitIdle();
+        h->frame(2);
+    }
+    return h;
+}
+
+}  // namespace mgp::test
