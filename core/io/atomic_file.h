@@ -2,6 +2,13 @@
 // Atomic file replacement: the content goes to a temporary file in the same folder, is flushed
 // to disk (fsync), then renamed over the target. A crash or a full disk never leaves a
 // half-written file; the previous file stays intact until the rename.
+//
+// Fault injection (for the "nothing is lost" tests), read from $MOTIONGP_FAULT on every call:
+//   slow-write:<ms>  after the first half of the content is in the temporary file, sleep <ms>
+//                    milliseconds, then continue (a test can kill the process mid-save);
+//   enospc           after the first half, fail as a full disk would (ENOSPC): the temporary file
+//                    is removed and the error reads "... found No space left on device".
+// Anything else in the variable is ignored.
 #include <string>
 
 namespace mgp {
