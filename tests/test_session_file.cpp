@@ -264,7 +264,7 @@ TEST_CASE("every damaged session file gives one exact error") {
                                               " (the clip's frames), found " + std::to_string(clip.frameCount()));
 }
 
-TEST_CASE("with a model, the edits are checked against its clip and latent dimension on reading") {
+TEST_CASE("with a model, a session's edits are checked against its clip and latent dimension on reading") {
     const auto version = test::walkModel35();
     const gp::GpModel& model = *version->model;
     SessionData s;
