@@ -41,7 +41,7 @@ TEST_CASE("conventions, rest frames, units and unmapped joints of every BVH in t
     }
 }
 
-TEST_CASE("per-joint channel orders are kept (Daz Z X Y; 3dsMax legs Z Y X, arms Z X Y)") {
+TEST_CASE("per-joint channel orders are kept (Daz Z X Y, 3dsMax legs Z Y X, arms Z X Y)") {
     const Clip daz = loadClip(test::mocap("bvh/02_03.bvh"));
     CHECK(daz.skeleton.joints[daz.skeleton.findJoint("rThigh")].order == RotationOrder{kAxisZ, kAxisX, kAxisY});
     CHECK(daz.skeleton.joints[0].order == RotationOrder{kAxisZ, kAxisY, kAxisX});

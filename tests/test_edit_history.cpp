@@ -28,7 +28,7 @@ bool samePose(const Pose& a, const Pose& b) {
 std::string modelText(const gp::ModelVersionPtr& v) { return gp::modelToJsonText(*v->model); }
 }  // namespace
 
-TEST_CASE("undo restores the previous pose and the exact model version; redo re-applies both") {
+TEST_CASE("undo restores the previous pose and the exact model version, redo re-applies both") {
     EditorDocument doc;
     const gp::ModelVersionPtr v0 = test::walkModel35();
     doc.setModel(v0, true);
@@ -88,7 +88,7 @@ TEST_CASE("undo restores the previous pose and the exact model version; redo re-
     }
 }
 
-TEST_CASE("clearing an edit and a latent drag are undo steps; a new model keeps the poses' history") {
+TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps the poses' history") {
     EditorDocument doc;
     doc.setAdaptiveEnabled(false);
     doc.setModel(test::walkModel35(), true);

@@ -37,7 +37,7 @@ TEST_CASE("kernel: exp(cos) Gram of 60 random points is PSD and K ⪰ (1/β) I")
     CHECK(esS.eigenvalues().minCoeff() >= 1.0 / ks.beta() - 1e-9);
 }
 
-TEST_CASE("kernel: gram, cross and diag agree; angular term is η at the origin") {
+TEST_CASE("kernel: gram, cross and diag agree, angular term is η at the origin") {
     const Eigen::MatrixXd X = randomPoints(8, 3, 3);
     const Kernel k(KernelKind::kFas, fasParams());
     const Eigen::MatrixXd K = k.gram(X);

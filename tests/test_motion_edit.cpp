@@ -44,7 +44,7 @@ TEST_CASE("regenerating 89..131 with the middle keys raised 20 cm") {
     }
 }
 
-TEST_CASE("regeneration gives identical bits with 1 and 2 threads; displacement mode also meets its path") {
+TEST_CASE("regeneration gives identical bits with 1 and 2 threads, displacement mode also meets its path") {
     MotionEditJob a = paperEdit(PathMode::kDisplacement, 1), b = paperEdit(PathMode::kDisplacement, 2);
     a.run();
     b.run();

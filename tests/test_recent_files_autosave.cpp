@@ -116,7 +116,7 @@ TEST_CASE("configDir and stateDir follow MOTIONGP_*, then XDG, then HOME, and ar
     }
 }
 
-TEST_CASE("autosaves are per process; only those of dead editors are offered, newest first") {
+TEST_CASE("autosaves are per process, only those of dead editors are offered, newest first") {
     const std::string dir = test::scratchDir("autosave");
     ScopedEnv env("MOTIONGP_STATE_DIR", dir.c_str());
     const std::string ours = autosavePath();

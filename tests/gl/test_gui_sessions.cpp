@@ -113,7 +113,7 @@ void killAndReap(pid_t pid) {
 
 }  // namespace
 
-TEST_CASE("gui: set path keys, move one with the mouse, regenerate; keys met, other frames bit-identical; undo/redo exact") {
+TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, other frames bit-identical, undo/redo exact") {
     auto h = test::makeHarness(false);
     if (!h) return;
     EditorDocument& doc = h->app->state().doc;
