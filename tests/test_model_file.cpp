@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
@@ -84,9 +85,10 @@ TEST_CASE("model_file: nlohmann-json round-trips awkward doubles bit-exactly") {
 
 TEST_CASE("model_file: save/load is self-contained and bit-exact; writes are atomic") {
     const GpModel m = smallModel();
-    const std::string path = tmpDir() + "/m.json";
+    const std::string dir = tmpDir();  // each call empties the folder: call it once
+    const std::string path = dir + "/m.json";
     saveModel(path, m);
-    for (const auto& e : std::filesystem::directory_iterator(tmpDir()))
+    for (const auto& e : std::filesystem::directory_iterator(dir))
         CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
     const GpModel b = loadModel(path);
     CHECK(b.kind == m.kind);
@@ -100,6 +102,9 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact; writes are ato
     CHECK(b.keptColumns == m.keptColumns);
     CHECK(b.constantColumns == m.constantColumns);
     CHECK(b.trainingFrames == m.trainingFrames);
+    REQUIRE(b.objectiveHistory.size() == m.objectiveHistory.size());
+    CHECK(std::memcmp(b.objectiveHistory.data(), m.objectiveHistory.data(),
+                      sizeof(double) * m.objectiveHistory.size()) == 0);
     CHECK(b.sourceSha256 == m.sourceSha256);
     CHECK(b.clip.frameCount() == m.clip.frameCount());
     CHECK(bitsEqual(mgp::poseMatrix(b.clip), mgp::poseMatrix(m.clip)));
@@ -140,4 +145,43 @@ TEST_CASE("model_file: newer versions, other formats, truncated and empty files 
     noX.replace(noX.find("\"X\""), 3, "\"Z\"");
     expectError(noX, "'X'");
     CHECK_THROWS_AS(loadModel(tmpDir() + "/does-not-exist.json"), mgp::ParseError);
+}
+
+TEST_CASE("model_file: the objective history is optional, bit-exact and validated") {
+    GpModel m = smallModel();
+    REQUIRE(m.objectiveHistory.size() == static_cast<std::size_t>(m.iterations) + 1);
+    m.objectiveHistory.push_back(0.1);
+    m.objectiveHistory.push_back(-1.2345678901234567e-300);
+    const GpModel back = modelFromJsonText(modelToJsonText(m), "mem");
+    REQUIRE(back.objectiveHistory.size() == m.objectiveHistory.size());
+    CHECK(std::memcmp(back.objectiveHistory.data(), m.objectiveHistory.data(),
+                      sizeof(double) * m.objectiveHistory.size()) == 0);
+
+    nlohmann::json j = nlohmann::json::parse(modelToJsonText(m));
+    SUBCASE("a file written before the field existed loads with an empty history") {
+        j["training"].erase("objective_history");
+        const GpModel old = modelFromJsonText(j.dump(1), "old.json");
+        CHECK(old.objectiveHistory.empty());
+        CHECK(bitsEqual(old.logParams, m.logParams));
+    }
+    auto message = [](const nlohmann::json& doc) -> std::string {
+        try {
+            modelFromJsonText(doc.dump(1), "x.json");
+        } catch (const mgp::ParseError& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    SUBCASE("a null entry is rejected") {
+        j["training"]["objective_history"][1] = nullptr;
+        CHECK(message(j) == "x.json: expected numbers in training.objective_history, found null");
+    }
+    SUBCASE("a string entry is rejected") {
+        j["training"]["objective_history"][0] = "12.5";
+        CHECK(message(j) == "x.json: expected numbers in training.objective_history, found \"12.5\"");
+    }
+    SUBCASE("a non-array is rejected") {
+        j["training"]["objective_history"] = 3.0;
+        CHECK(message(j) == "x.json: expected training.objective_history as an array of numbers, found number");
+    }
 }

@@ -142,3 +142,15 @@ TEST_CASE("trainer: the raw Step-9 test stops the loop once max |Δ| < C") {
     CHECK(r.converged);
     CHECK(r.log.size() == 1);
 }
+
+TEST_CASE("trainer: the objective history is L_init then L_GP after each iteration's Step 6") {
+    const mgp::Clip clip = mgp::loadClip(kClip);
+    const TrainResult r = train(smallData(clip, 4), smallOptions(KernelKind::kFas, 1));
+    const std::vector<double>& h = r.model.objectiveHistory;
+    REQUIRE(h.size() == static_cast<std::size_t>(r.model.iterations) + 1);
+    REQUIRE(r.model.iterations == static_cast<int>(r.log.size()));
+    CHECK(h.front() == r.lInit);
+    for (std::size_t t = 0; t < r.log.size(); ++t) CHECK(h[t + 1] == r.log[t].L);
+    CHECK(h.back() == r.log.back().L);
+    CHECK(h.back() < h.front());
+}

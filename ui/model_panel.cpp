@@ -3,7 +3,16 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "skeleton/pose_layout.h"
 
 namespace mgp::ui {
 
@@ -32,6 +41,194 @@ void progressRow(TrainingJob& job, const char* id) {
     if (ImGui::Button("Cancel", ImVec2(-1, 0))) job.cancel();
     ImGui::PopID();
 }
+
+// 4 significant digits, without the trailing "." that %#g leaves on e.g. "1991.".
+std::string sig4(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%#.4g", v);
+    std::string out = buf;
+    if (!out.empty() && out.back() == '.') out.pop_back();
+    return out;
+}
+
+// "lfemur x": the pose DOF behind weight index k (keptColumns maps it into the 47-vector).
+std::string dofName(const gp::GpModel& m, int k) {
+    static const char* const kAxis[] = {"x", "y", "z"};
+    const PoseDof& d = poseDofTable()[m.keptColumns[k]];
+    return std::string(d.bone) + " " + kAxis[d.axis];
+}
+
+// The value index under the mouse for the plot item just drawn, or -1 (ImGui's own rule, so
+// our tooltip names the sample ImGui highlights; a line plot has count − 1 segments).
+int hoveredPlotIndex(int count, bool lines) {
+    if (!ImGui::IsItemHovered() || count < (lines ? 2 : 1)) return -1;
+    const float pad = ImGui::GetStyle().FramePadding.x;
+    const float x0 = ImGui::GetItemRectMin().x + pad, x1 = ImGui::GetItemRectMax().x - pad;
+    const float t = std::clamp((ImGui::GetIO().MousePos.x - x0) / std::max(x1 - x0, 1.0f), 0.0f, 0.9999f);
+    return static_cast<int>(t * float(lines ? count - 1 : count));
+}
+
+// α, γ, η, β (ALGORITHM.md §3) and the noise they imply.
+void drawParameters(const gp::GpModel& m) {
+    const gp::Kernel k = m.kernel();
+    if (ImGui::BeginTable("params", 3, ImGuiTableFlags_SizingFixedFit)) {
+        auto row = [](const char* name, double value, const char* meaning) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(sig4(value).c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", meaning);
+        };
+        row("alpha", k.alpha(), "RBF variance");
+        row("gamma", k.gamma(), "RBF inverse width");
+        if (k.hasEta()) row("eta", k.eta(), "angular variance");
+        row("beta", k.beta(), "noise precision");
+        ImGui::EndTable();
+    }
+    // W scales each column, so DOF k's own noise is σ/w_k; Σ ln w = 0 makes σ the noise of a DOF
+    // with the geometric-mean weight.
+    const double sigma = 1.0 / std::sqrt(k.beta());
+    ImGui::Text("noise sigma = 1/sqrt(beta) = %s deg", sig4(sigma).c_str());
+    if (ImGui::IsItemHovered() && m.D() > 0)
+        ImGui::SetTooltip("Noise std of a DOF with w = 1 (the geometric mean of W).\n"
+                          "DOF k has sigma / w_k: %s .. %s deg here.",
+                          sig4(sigma / m.w.maxCoeff()).c_str(), sig4(sigma / m.w.minCoeff()).c_str());
+}
+
+// min/max of w, the 3 most and least weighted DOFs by name, and w per DOF as bars.
+void drawWeights(const gp::GpModel& m) {
+    const int D = m.D();
+    if (D == 0) return;
+    std::vector<int> order(D);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return m.w[a] > m.w[b]; });
+    ImGui::Text("w  min %s  max %s", sig4(m.w.minCoeff()).c_str(), sig4(m.w.maxCoeff()).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%d DOFs)", D);
+    if (ImGui::BeginTable("wextremes", 2, ImGuiTableFlags_SizingStretchSame)) {
+        ImGui::TableSetupColumn("most weighted");
+        ImGui::TableSetupColumn("least weighted");
+        ImGui::TableHeadersRow();
+        for (int i = 0; i < std::min(3, D); ++i) {
+            ImGui::TableNextRow();
+            for (const int k : {order[i], order[D - 1 - i]}) {
+                ImGui::TableNextColumn();
+                ImGui::Text("%-11s %s", dofName(m, k).c_str(), sig4(m.w[k]).c_str());
+            }
+        }
+        ImGui::EndTable();
+    }
+    std::vector<float> wf(D);
+    for (int k = 0; k < D; ++k) wf[k] = float(m.w[k]);
+    // PlotEx treats only 0 (not −1) as "default width": give the full width explicitly.
+    ImGui::PlotHistogram("##w", wf.data(), D, 0, nullptr, 0.0f, float(m.w.maxCoeff()),
+                         ImVec2(ImGui::GetContentRegionAvail().x, 44));
+    const int h = hoveredPlotIndex(D, false);
+    if (h >= 0) ImGui::SetTooltip("%s  w = %s", dofName(m, h).c_str(), sig4(m.w[h]).c_str());
+    ImGui::TextDisabled("w per DOF, pose order (hover for names)");
+}
+
+// L_GP per outer iteration (GpModel::objectiveHistory); log10 when all positive and > 2 decades.
+void drawConvergence(const gp::GpModel& m) {
+    const std::vector<double>& hist = m.objectiveHistory;
+    if (hist.empty()) {
+        ImGui::TextDisabled("no history (model file from an older version)");
+        return;
+    }
+    const auto [lo, hi] = std::minmax_element(hist.begin(), hist.end());
+    const bool logScale = *lo > 0.0 && *hi / *lo > 100.0;
+    const int n = static_cast<int>(hist.size());
+    std::vector<float> v(n);
+    for (int i = 0; i < n; ++i) v[i] = float(logScale ? std::log10(hist[i]) : hist[i]);
+    ImGui::Text("L_GP %s -> %s", sig4(hist.front()).c_str(), sig4(hist.back()).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s%s", m.converged ? "converged" : "not converged", logScale ? ", log" : "");
+    // y axis: the max and min values in a column left of the plot (inside they hide the line).
+    const std::string top = sig4(*hi), bottom = sig4(*lo);
+    const float axisW = std::max(ImGui::CalcTextSize(top.c_str()).x, ImGui::CalcTextSize(bottom.c_str()).x) + 6;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + axisW);
+    ImGui::PlotLines("##conv", v.data(), n, 0, nullptr, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 64));
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImU32 grey = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    dl->AddText(ImVec2(origin.x, ImGui::GetItemRectMin().y), grey, top.c_str());
+    dl->AddText(ImVec2(origin.x, ImGui::GetItemRectMax().y - ImGui::GetTextLineHeight()), grey, bottom.c_str());
+    const int h = hoveredPlotIndex(n, true);
+    if (h == 0) ImGui::SetTooltip("L_init = %.6g (before training)", hist[0]);
+    else if (h > 0) ImGui::SetTooltip("iteration %d: L_GP = %.6g", h, hist[h]);
+    ImGui::TextDisabled("x: iteration 0 (L_init) .. %d, L_GP after Step 6", n - 1);
+}
+
+// "HH:MM:SS" local time.
+std::string timeOfDay(std::chrono::system_clock::time_point when) {
+    const std::time_t t = std::chrono::system_clock::to_time_t(when);
+    std::tm tm{};
+    localtime_r(&t, &tm);
+    char buf[16];
+    std::strftime(buf, sizeof buf, "%H:%M:%S", &tm);
+    return buf;
+}
+
+// The adaptive updates of this session, newest first.
+void drawAdaptiveHistory(const std::vector<AdaptiveHistoryEntry>& history) {
+    if (history.empty()) {
+        ImGui::TextDisabled("none yet: drag a handle with a model loaded");
+        return;
+    }
+    struct Column {
+        const char* name;
+        const char* tip;
+    };
+    static const Column kColumns[] = {
+        {"time", "when the update finished (local time)"},
+        {"frame", "the edited frame (as the timeline shows it)"},
+        {"s", "how long the update took, seconds"},
+        {"+act", "points that entered the active set"},
+        {"pose", "whether the edited pose itself entered the active set"},
+        {"version", "model version before -> after"},
+        {"result", "accepted or rejected (hover a row for the diagnostic)"},
+    };
+    constexpr int kCols = static_cast<int>(sizeof kColumns / sizeof kColumns[0]);
+    const float rowH = ImGui::GetTextLineHeightWithSpacing();
+    const float height = rowH * float(std::min<std::size_t>(history.size(), 6) + 1) + 4;
+    const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_BordersInnerV;
+    if (!ImGui::BeginTable("adaptive", kCols, flags, ImVec2(0, height))) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    for (const Column& c : kColumns) ImGui::TableSetupColumn(c.name);
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int c = 0; c < kCols; ++c) {
+        ImGui::TableSetColumnIndex(c);
+        ImGui::TableHeader(kColumns[c].name);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kColumns[c].tip);
+    }
+    for (auto it = history.rbegin(); it != history.rend(); ++it) {
+        const AdaptiveHistoryEntry& e = *it;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(timeOfDay(e.when).c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", e.frame + 1);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", e.seconds);
+        ImGui::TableNextColumn();
+        ImGui::Text("+%d", e.activeChanged);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(e.newPointActive ? "in" : "-");
+        ImGui::TableNextColumn();
+        ImGui::Text("%d->%d", e.versionBefore, e.versionAfter);
+        ImGui::TableNextColumn();
+        if (e.accepted) ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "ok");
+        else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "rejected");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s\nN = %d, M = %d after the update\nL_GP %.6g -> %.6g", e.diagnostic.c_str(),
+                              e.rowsAfter, e.activeSize, e.objectiveBefore, e.objectiveAfter);
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
 void drawModelPanel(EditorState& s) {
@@ -52,14 +249,23 @@ void drawModelPanel(EditorState& s) {
     if (v) {
         const gp::GpModel& m = *v->model;
         ImGui::Text("Model %s", s.modelLabel.c_str());
-        ImGui::TextDisabled("%s  N = %d  M = %zu  D = %d  version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM",
-                            m.N(), m.active.size(), m.D(), v->number);
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s, version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", v->number);
+        ImGui::TextDisabled("N = %d  active M = %zu  D = %d  latent d = %d", m.N(), m.active.size(), m.D(),
+                            m.latentDim());
         bool adaptive = doc.adaptiveEnabled();
         if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
         const int pending = doc.adaptivePending();
         const std::string st = doc.adaptiveStatus();
         if (pending > 0) ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
         else if (!st.empty()) ImGui::TextDisabled("last %s", st.c_str());
+        if (ImGui::CollapsingHeader("Parameters")) drawParameters(m);
+        if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
+        if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
+        const std::vector<AdaptiveHistoryEntry> history = doc.adaptiveHistory();
+        char label[64];
+        std::snprintf(label, sizeof label, "Adaptive updates (%zu)###adaptive", history.size());
+        if (ImGui::CollapsingHeader(label)) drawAdaptiveHistory(history);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("No model: drags use plain IK until one is trained or opened");

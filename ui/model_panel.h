@@ -1,6 +1,7 @@
 #pragma once
 // The Model panel (clip facts, model facts, training with progress/ETA/Cancel, open/save, the
-// adaptive update switch, the compare ghost) and the IK readout (per-target residual in cm,
+// adaptive update switch, the compare ghost; collapsed sections for α, γ, η, β and the noise σ,
+// the W summary, the training convergence plot and the history of adaptive updates) and the IK readout (per-target residual in cm,
 // reached or not, σ²(x), L_IK).
 #include "editor_state.h"
 

@@ -47,6 +47,11 @@ struct GpModel {
     TrainingSettings settings;
     int iterations = 0;         // outer iterations run
     bool converged = false;     // the Step-9 test triggered
+    // Training convergence: entry 0 is L_init (L_GP at θ = 1 and the PCA latent points, on the
+    // first active set), entry t (1..iterations) is L_GP after Step 6 of outer iteration t. Either
+    // empty (a model file from before this field, or a non-finite objective) or iterations + 1
+    // entries. Adaptive updates do not append to it.
+    std::vector<double> objectiveHistory;
 
     int N() const { return static_cast<int>(X.rows()); }
     int D() const { return static_cast<int>(mu.size()); }

@@ -41,7 +41,7 @@ const json& need(const json& j, const char* key, const std::string& file) {
 
 Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
     if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
-        throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) : "") + " numbers",
+        throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) + " " : "") + "numbers",
                         j.is_array() ? std::to_string(j.size()) + " entries" : j.type_name());
     Eigen::VectorXd v(j.size());
     for (std::size_t i = 0; i < j.size(); ++i) {
@@ -88,7 +88,8 @@ std::string modelToJsonText(const GpModel& m) {
     j["training"] = {{"active_size", s.activeSize}, {"outer_iterations", s.outerIterations},
                      {"scg_iterations", s.scgIterations}, {"point_iterations", s.pointIterations},
                      {"tolerance", s.tolerance}, {"frame_first", s.frameFirst}, {"frame_last", s.frameLast},
-                     {"frame_step", s.frameStep}, {"iterations", m.iterations}, {"converged", m.converged}};
+                     {"frame_step", s.frameStep}, {"iterations", m.iterations}, {"converged", m.converged},
+                     {"objective_history", m.objectiveHistory}};
     j["source"] = {{"file", m.sourceFile}, {"sha256", m.sourceSha256}};
     j["clip"] = clipToJson(m.clip);
     return j.dump(1) + "\n";
@@ -160,6 +161,10 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.settings.frameStep = need(t, "frame_step", file).get<int>();
         m.iterations = need(t, "iterations", file).get<int>();
         m.converged = need(t, "converged", file).get<bool>();
+        if (t.contains("objective_history")) {  // absent in files written before it existed
+            const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");
+            m.objectiveHistory.assign(h.data(), h.data() + h.size());
+        }
         const json& src = need(j, "source", file);
         m.sourceFile = need(src, "file", file).get<std::string>();
         m.sourceSha256 = need(src, "sha256", file).get<std::string>();

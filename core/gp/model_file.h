@@ -13,7 +13,9 @@
 //     "kept_columns": [D], "constant_columns": [..], "constant_values": [..]   (indices into the 47-vector)
 //     "training_frames": [N],                       clip frame index (0-based) of each training row
 //     "training": {"active_size", "outer_iterations", "scg_iterations", "point_iterations",
-//                  "tolerance", "frame_first", "frame_last", "frame_step", "iterations", "converged"},
+//                  "tolerance", "frame_first", "frame_last", "frame_step", "iterations", "converged",
+//                  "objective_history": [L_init, L_1, …, L_T]},   optional (older files: absent,
+//                                                  read as empty); finite numbers; see GpModel
 //     "source": {"file": name without directory, "sha256": hex},   provenance only
 //     "clip": { see io/clip_json.h: skeleton bones, 47-DOF poses of every frame, root translations }
 //   }

@@ -158,6 +158,14 @@ void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic
     optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads, cancel);
 }
 
+std::vector<double> Trainer::objectiveHistory() const {
+    std::vector<double> out{lInit_};
+    for (const IterationLog& e : log_) out.push_back(e.L);
+    for (double v : out)
+        if (!std::isfinite(v)) return {};
+    return out;
+}
+
 Eigen::VectorXd Trainer::currentWeights() const {
     const GpEvaluation ev =
         evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_), objective(), false);
@@ -258,6 +266,7 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.settings.tolerance = options.tolerance;
     m.iterations = static_cast<int>(res.log.size());
     m.converged = res.converged;
+    m.objectiveHistory = trainer.objectiveHistory();
     return res;
 }
 

@@ -91,6 +91,9 @@ public:
     void freezeActiveSet(bool freeze) { frozen_ = freeze; }
 
     const std::vector<IterationLog>& log() const { return log_; }
+    // L_init followed by L_GP after each logged iteration's Step 6 (GpModel::objectiveHistory);
+    // empty if any of them is non-finite, so a saved model always reloads.
+    std::vector<double> objectiveHistory() const;
     const Eigen::VectorXd& logParams() const { return psi_; }
     const Eigen::MatrixXd& latent() const { return X_; }
     const std::vector<int>& activeSet() const { return active_; }
