@@ -83,7 +83,7 @@ TEST_CASE("model_file: nlohmann-json round-trips awkward doubles bit-exactly") {
     CHECK(bitsEqual(m.mu, back.mu));
 }
 
-TEST_CASE("model_file: save/load is self-contained and bit-exact; writes are atomic") {
+TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are atomic") {
     const GpModel m = smallModel();
     const std::string dir = tmpDir();  // each call empties the folder: call it once
     const std::string path = dir + "/m.json";
