@@ -67,6 +67,10 @@ struct Path {
     glm::vec3 colour{0.20f, 0.55f, 0.95f};
     int currentPoint = -1;  // index into pointsCm, -1 for none
     float radiusCm = 0.6f;
+    int hoveredKey = -1;   // index into keysCm drawn in the handle hover colour, -1 for none
+    int selectedKey = -1;  // index into keysCm drawn in the handle selected colour, -1 for none
+    // Key balls are this big (the editor picks keys with the same radius).
+    float keyRadiusCm() const { return radiusCm * 3.2f; }
 };
 
 struct Scene {

@@ -464,8 +464,13 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
             d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
         for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
-        d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
-        for (const glm::vec3& k : p.keysCm) d.ball(k, p.radiusCm * 3.2f);
+        for (std::size_t k = 0; k < p.keysCm.size(); ++k) {
+            const int i = static_cast<int>(k);
+            if (i == p.selectedKey) d.colour(s.handleSelected, 1.0f, 0.45f);
+            else if (i == p.hoveredKey) d.colour(s.handleHover, 1.0f, 0.45f);
+            else d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
+            d.ball(p.keysCm[k], p.keyRadiusCm() * (i == p.hoveredKey || i == p.selectedKey ? 1.3f : 1.0f));
+        }
         if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
             d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
             d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);

@@ -32,6 +32,17 @@ struct EditorState {
     std::optional<Effector> selected;
     int hoveredTrainingRow = -1;  // latent map hover
 
+    // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
+    int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none
+    int selectedKey = -1;           // path key last dragged or picked, -1 none
+    bool showCapturedPath = true;   // the captured path beside the edited one
+    bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
+
+    // Where the viewport's image was last drawn (window pixels), so points can be projected to
+    // the window outside the viewport's draw (scripts, tests).
+    float viewportX = 0.0f, viewportY = 0.0f;
+    int viewportWidth = 0, viewportHeight = 0;
+
     // Requests the panels raise for EditorApp (file dialogs, training).
     bool requestOpenClip = false, requestOpenModel = false, requestSaveModel = false;
     bool requestTrain = false, requestTrainCompare = false, requestFrameCamera = false;

@@ -1,6 +1,7 @@
 #pragma once
 // The timeline: scrub (click or drag on the track), play/pause (Space), step (Left/Right),
-// first/last (Home/End), the current frame number and time; edited frames are marked.
+// first/last (Home/End), the current frame number and time; edited frames are marked, and so
+// are an edited path's span (tinted) and keys (diamonds).
 #include "editor_state.h"
 
 namespace mgp::ui {

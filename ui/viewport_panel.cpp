@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 #include "picking.h"
 #include "scene_builder.h"
@@ -26,7 +28,64 @@ bool intersectPlane(const render::Ray& ray, const glm::vec3& point, const glm::v
     hit = ray.origin + ray.direction * t;
     return true;
 }
+
+// The point under pixel (mx, my) on the drag plane through `anchor`: camera-facing, or
+// horizontal (Shift). Shared by effector handle and path key drags.
+bool dragPlanePoint(const render::OrbitCamera& camera, float mx, float my, int width, int height,
+                    const Eigen::Vector3d& anchor, bool horizontal, Eigen::Vector3d& out) {
+    const render::Ray ray = camera.rayFromPixel(mx, my, width, height);
+    const glm::vec3 normal = horizontal ? glm::vec3(0, 1, 0) : glm::normalize(camera.eye() - camera.targetCm);
+    glm::vec3 hit;
+    if (!intersectPlane(ray, toGlm(anchor), normal, hit)) return false;
+    out = toEigen(hit);
+    return true;
+}
+
+// The edited path with its keys (what the viewport draws and where keys are picked), or
+// nullopt when no path is being edited.
+std::optional<render::Path> editedPath(const EditorState& s) {
+    const auto& path = s.doc.pathEdit();
+    if (!path) return std::nullopt;
+    render::Path p;
+    for (const Eigen::Vector3d& v : s.doc.pathTargets()) p.pointsCm.push_back(toGlm(v));
+    const int keys = static_cast<int>(path->keyFrames.size());
+    for (int k = 0; k < keys; ++k) p.keysCm.push_back(toGlm(s.doc.pathKeyPosition(k)));
+    p.colour = {0.20f, 0.55f, 0.95f};
+    p.radiusCm = 0.7f;
+    const int first = path->keyFrames.front(), last = path->keyFrames.back();
+    if (s.doc.frame() >= first && s.doc.frame() <= last) p.currentPoint = s.doc.frame() - first;
+    p.hoveredKey = s.hoveredKey < keys ? s.hoveredKey : -1;
+    p.selectedKey = s.selectedKey < keys ? s.selectedKey : -1;
+    return p;
+}
+
+// Path keys as pickable spheres (id = key index), the size they are drawn.
+std::vector<render::Handle> keyHandles(const EditorState& s) {
+    std::vector<render::Handle> out;
+    if (const auto p = editedPath(s)) {
+        for (std::size_t k = 0; k < p->keysCm.size(); ++k)
+            out.push_back({static_cast<int>(k), p->keysCm[k], p->keyRadiusCm(), render::HandleState::kIdle});
+    }
+    return out;
+}
 }  // namespace
+
+bool viewportWindowPosition(const EditorState& s, const Eigen::Vector3d& pointCm, float& x, float& y) {
+    const int w = s.viewportWidth, h = s.viewportHeight;
+    if (w <= 0 || h <= 0) return false;
+    glm::vec3 p;
+    if (!s.camera.project(toGlm(pointCm), w, h, p)) return false;
+    if (p.x < 0 || p.y < 0 || p.x >= w || p.y >= h) return false;
+    x = s.viewportX + p.x;
+    y = s.viewportY + p.y;
+    return true;
+}
+
+bool pathKeyWindowPosition(const EditorState& s, int key, float& x, float& y) {
+    const auto& path = s.doc.pathEdit();
+    if (!path || key < 0 || key >= static_cast<int>(path->keyFrames.size())) return false;
+    return viewportWindowPosition(s, s.doc.pathKeyPosition(key), x, y);
+}
 
 ViewportPanel::ViewportPanel() : renderer_(std::make_unique<render::SceneRenderer>(1)) {}
 
@@ -76,13 +135,11 @@ void ViewportPanel::frameCharacter(EditorState& s) const {
 }
 
 bool ViewportPanel::handleScreenPosition(const EditorState& s, Effector e, float& x, float& y) const {
-    if (!s.doc.hasEffector(e) || width_ <= 0) return false;
-    glm::vec3 p;
-    if (!s.camera.project(toGlm(s.doc.effectorPosition(e)), width_, height_, p)) return false;
-    if (p.x < 0 || p.y < 0 || p.x >= width_ || p.y >= height_) return false;
-    x = originX_ + p.x;
-    y = originY_ + p.y;
-    return true;
+    return s.doc.hasEffector(e) && viewportWindowPosition(s, s.doc.effectorPosition(e), x, y);
+}
+
+bool ViewportPanel::keyScreenPosition(const EditorState& s, int key, float& x, float& y) const {
+    return pathKeyWindowPosition(s, key, x, y);
 }
 
 void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
@@ -100,11 +157,16 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
         forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
         handles = render::effectorHandles(doc.clip().skeleton, fk);
     }
+    const std::vector<render::Handle> keys = keyHandles(s);
     if (mode_ == Mode::kNone) {
         s.hoveredHandle = -1;
+        s.hoveredKey = -1;
         if (hovered) {
+            // Effector handles first: a key lying on a handle must not hide it.
             const int i = render::pickHandleAtPixel(handles, s.camera, mx, my, width_, height_, 2.5f);
             if (i >= 0) s.hoveredHandle = handles[i].id;
+            const int k = i >= 0 ? -1 : render::pickHandleAtPixel(keys, s.camera, mx, my, width_, height_, 2.5f);
+            if (k >= 0) s.hoveredKey = keys[k].id;
         }
     }
 
@@ -120,6 +182,12 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 } else {
                     s.setStatus(err, true);
                 }
+            } else if (s.hoveredKey >= 0) {
+                mode_ = Mode::kDragKey;
+                dragKey_ = s.hoveredKey;
+                dragKeyStartOffset_ = doc.pathEdit()->keyOffsetsCm[dragKey_];
+                s.selectedKey = dragKey_;
+                s.playing = false;
             } else {
                 mode_ = shift ? Mode::kPan : Mode::kOrbit;
             }
@@ -151,13 +219,28 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 s.setStatus(std::string("accepted pose for frame ") + std::to_string(doc.frame() + 1) +
                             (doc.hasModel() && doc.adaptiveEnabled() ? " (adaptive update queued)" : ""));
             } else if (movedThisFrame_) {
-                const render::Ray ray = s.camera.rayFromPixel(mx, my, width_, height_);
-                const glm::vec3 anchor = toGlm(doc.dragTarget());
-                const glm::vec3 normal = shift ? glm::vec3(0, 1, 0) : glm::normalize(s.camera.eye() - s.camera.targetCm);
-                glm::vec3 hit;
-                if (intersectPlane(ray, anchor, normal, hit)) doc.dragTo(toEigen(hit), 50);
+                Eigen::Vector3d hit;
+                if (dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit)) doc.dragTo(hit, 50);
             } else {
                 doc.refine(50);  // the user holds still: keep converging
+            }
+            break;
+        case Mode::kDragKey:
+            // The key applies live (the path is only targets; Regenerate solves poses later).
+            if (!doc.pathEdit() || dragKey_ >= static_cast<int>(doc.pathEdit()->keyFrames.size())) {
+                mode_ = Mode::kNone;
+            } else if (!io.MouseDown[0]) {
+                mode_ = Mode::kNone;
+                const Eigen::Vector3d o = doc.pathEdit()->keyOffsetsCm[dragKey_];
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(), o.y(), o.z());
+                s.setStatus(buf);
+            } else if (movedThisFrame_) {
+                Eigen::Vector3d hit;
+                if (dragPlanePoint(s.camera, mx, my, width_, height_, doc.pathKeyPosition(dragKey_), shift, hit)) {
+                    const std::string err = doc.setPathKeyPosition(dragKey_, hit);
+                    if (!err.empty()) s.setStatus(err, true);
+                }
             }
             break;
         case Mode::kNone: break;
@@ -193,6 +276,26 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
         ghost.castsShadow = false;
         scene.figures.push_back(std::move(ghost));
     }
+    if (s.showBeforeGhost) {
+        if (const std::optional<Pose> before = doc.beforeGhost()) {
+            FkState fk;
+            forwardKinematics(doc.clip().skeleton, *before, fk);
+            render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
+            ghost.ghost = true;
+            ghost.ghostTint = {1.0f, 0.55f, 0.20f};  // warm, unlike the blue compare ghost
+            ghost.castsShadow = false;
+            scene.figures.push_back(std::move(ghost));
+        }
+    }
+    if (doc.pathEdit() && s.showCapturedPath) {
+        // Fainter and thinner than the edited path, which covers it where the two agree.
+        render::Path captured;
+        for (const Eigen::Vector3d& v : doc.pathCaptured()) captured.pointsCm.push_back(toGlm(v));
+        captured.colour = {0.62f, 0.64f, 0.70f};
+        captured.radiusCm = 0.35f;
+        scene.paths.push_back(std::move(captured));
+    }
+    if (auto p = editedPath(s)) scene.paths.push_back(std::move(*p));
     if (doc.dragging()) {
         render::Target t;
         t.positionCm = toGlm(doc.dragTarget());
@@ -210,8 +313,10 @@ void ViewportPanel::draw(EditorState& s) {
     ImVec2 avail = ImGui::GetContentRegionAvail();
     const int w = std::max(16, int(avail.x)), h = std::max(16, int(avail.y));
     ensureTarget(w, h);
-    originX_ = origin.x;
-    originY_ = origin.y;
+    s.viewportX = origin.x;
+    s.viewportY = origin.y;
+    s.viewportWidth = w;
+    s.viewportHeight = h;
     if (s.cameraNeedsFraming || s.requestFrameCamera) {
         frameCharacter(s);
         s.requestFrameCamera = false;
@@ -253,6 +358,11 @@ void ViewportPanel::draw(EditorState& s) {
             mode_ = Mode::kNone;
             s.setStatus("drag cancelled");
         }
+        if (ImGui::IsKeyPressed(256 /*Escape*/, false) && mode_ == Mode::kDragKey) {
+            s.doc.setPathKeyOffset(dragKey_, dragKeyStartOffset_);
+            mode_ = Mode::kNone;
+            s.setStatus("key drag cancelled");
+        }
     }
 
     if (s.doc.hasClip()) {
@@ -271,11 +381,18 @@ void ViewportPanel::draw(EditorState& s) {
         auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
         for (const render::Figure& f : scene.figures) {
             sig.push_back(f.ghost ? 1.0f : 0.0f);
+            addVec(f.ghostTint);
             for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
         }
         for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
         for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
         for (const render::Pin& p : scene.pins) addVec(p.positionCm);
+        for (const render::Path& p : scene.paths) {
+            sig.insert(sig.end(), {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
+                                   p.radiusCm});
+            for (const glm::vec3& v : p.pointsCm) addVec(v);
+            for (const glm::vec3& v : p.keysCm) addVec(v);
+        }
         sig.push_back(scene.groundHeightCm);
         if (sig != lastSignature_) {
             renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
@@ -288,14 +405,22 @@ void ViewportPanel::draw(EditorState& s) {
     dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(colour_)), origin,
                  ImVec2(origin.x + w, origin.y + h), ImVec2(0, float(rh_) / float(h)), ImVec2(float(rw_) / float(w), 0));
     // Overlay: what the mouse does.
-    const char* hint = mode_ == Mode::kDragHandle
-                           ? "Dragging: release to accept  |  Shift: ground plane  |  Esc: cancel"
+    const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  Shift: ground plane  |  Esc: cancel"
+                       : mode_ == Mode::kDragKey  ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
+                       : s.doc.pathEdit()
+                           ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
                            : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
     dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(230, 232, 236, 200), hint);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
                           s.doc.pinned(e) ? "unpin" : "pin");
+    }
+    const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
+    if (key >= 0 && s.doc.pathEdit() && key < static_cast<int>(s.doc.pathEdit()->keyFrames.size())) {
+        const Eigen::Vector3d& o = s.doc.pathEdit()->keyOffsetsCm[key];
+        ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1, s.doc.pathEdit()->keyFrames[key] + 1,
+                          o.x(), o.y(), o.z());
     }
 }
 

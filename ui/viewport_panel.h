@@ -3,6 +3,8 @@
 // the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
 // zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left
 // drag moves it on a camera-facing plane, Shift on a horizontal plane; right-click or P pins).
+// While an effector path is edited it also shows the edited path, its keys (dragged like handles;
+// handles win where they overlap), the captured path and the before ghost (EditorState flags).
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -23,6 +25,8 @@ public:
     void draw(EditorState& state);
     // Screen (window) pixel of an effector's handle; false if not visible or not drawn yet.
     bool handleScreenPosition(const EditorState& state, Effector e, float& x, float& y) const;
+    // Screen (window) pixel of path key `key` (0-based); false without a path edit or off screen.
+    bool keyScreenPosition(const EditorState& state, int key, float& x, float& y) const;
     void frameCharacter(EditorState& state) const;
     long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
 
@@ -36,8 +40,9 @@ private:
     int width_ = 0, height_ = 0;
     int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
     static constexpr float kMovingScale = 0.7f;
-    float originX_ = 0, originY_ = 0;
-    enum class Mode { kNone, kOrbit, kPan, kDragHandle } mode_ = Mode::kNone;
+    enum class Mode { kNone, kOrbit, kPan, kDragHandle, kDragKey } mode_ = Mode::kNone;
+    int dragKey_ = -1;                                        // the key of a kDragKey drag
+    Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
     float lastX_ = 0, lastY_ = 0;
     bool movedThisFrame_ = false;
     bool followValid_ = false;
@@ -48,5 +53,11 @@ private:
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;
 };
+
+// Window pixel of a world point (cm) in the viewport as last drawn (EditorState::viewport*);
+// false when behind the camera or outside the viewport. Usable without the panel (scripts, tests).
+bool viewportWindowPosition(const EditorState& state, const Eigen::Vector3d& pointCm, float& x, float& y);
+// Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
+bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
 
 }  // namespace mgp::ui

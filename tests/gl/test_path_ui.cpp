@@ -1,0 +1,262 @@
+// Path editing UI tests (label `gl`): the offscreen editor on 35_01 with a small trained model, a
+// right-foot path edit around frame 110 started through the document, then
+//  - mouse: hover key 2 (frame 103), press, move up 40 px over several frames, release: the key's
+//    offset rises (y > 5 cm), the edited path follows, the key ends under the mouse, no effector
+//    drag or camera orbit happened; a second drag cancelled with Esc restores the offset;
+//  - look: after a regeneration, the window shows the edited path (blue), its keys, the captured
+//    path (grey) and the before ghost (orange); the screenshot is written to
+//    build/tests/gl/out/path_ui.png and the test counts pixels of each colour in the viewport;
+//  - panel: the Path panel drawn on its own (380×180, build/tests/gl/out/path_panel.png), its
+//    buttons clicked with the mouse: Edit path, Displacement, Before ghost, Add key, Done.
+#include <doctest/doctest.h>
+
+#include <GL/gl.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "gui_harness.h"
+#include "path_panel.h"
+#include "png_capture.h"
+#include "viewport_panel.h"
+
+using namespace mgp;
+using namespace mgp::test;
+
+namespace {
+
+constexpr int kFrame = 109;  // frame 110, 1-based: default keys 89, 103, 117, 131
+constexpr int kKey = 1;      // the key at frame 103
+
+// Starts the right-foot path edit at frame 110 and draws a few frames so the viewport knows it.
+void beginFootPath(Harness& h) {
+    EditorDocument& doc = h.app->state().doc;
+    doc.setFrame(kFrame);
+    REQUIRE(doc.beginPathEdit(Effector::kRFoot) == "");
+    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{88, 102, 116, 130});
+    h.frame(3);
+}
+
+// Moves the mouse onto key `key` and checks the viewport reports it hovered (no handle).
+void hoverKey(Harness& h, int key) {
+    float x = 0, y = 0;
+    REQUIRE(ui::pathKeyWindowPosition(h.app->state(), key, x, y));
+    h.input.mouseX = x;
+    h.input.mouseY = y;
+    h.frame(2);
+    REQUIRE(h.app->state().hoveredHandle == -1);
+    REQUIRE(h.app->state().hoveredKey == key);
+}
+
+// Pixels of the viewport (left of the right column, above the timeline) near a colour.
+long countNear(const render::Image& img, int r, int g, int b, int tolerance) {
+    long n = 0;
+    for (int y = 20; y < img.height - 110; ++y)
+        for (int x = 0; x < img.width - 380; ++x) {
+            const unsigned char* p = &img.rgba[(std::size_t(y) * img.width + x) * 4];
+            n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+        }
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("gui path: dragging a path key up with the mouse raises its offset and moves the edited path") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    beginFootPath(*h);
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    const std::vector<Eigen::Vector3d> before = doc.pathTargets();
+    const Eigen::Vector3d offsetBefore = doc.pathEdit()->keyOffsetsCm[kKey];
+    const float yaw = s.camera.yawDeg, pitch = s.camera.pitchDeg;
+
+    hoverKey(*h, kKey);
+    h->input.mouseDown[0] = true;
+    h->frame(2);
+    for (int i = 0; i < 5; ++i) {
+        h->input.mouseY -= 8.0f;
+        h->frame();
+    }
+    h->input.mouseDown[0] = false;
+    h->frame(2);
+
+    const Eigen::Vector3d offset = doc.pathEdit()->keyOffsetsCm[kKey];
+    INFO("offset before " << offsetBefore.transpose() << "  after " << offset.transpose());
+    CHECK(offset.y() - offsetBefore.y() > 5.0);
+    CHECK((offset - offsetBefore).norm() < 60.0);  // 40 px is not a metre
+    CHECK(s.selectedKey == kKey);
+    // The key followed the mouse (camera-facing plane: it projects back under the cursor).
+    float kx = 0, ky = 0;
+    REQUIRE(ui::pathKeyWindowPosition(s, kKey, kx, ky));
+    CHECK(std::abs(kx - h->input.mouseX) < 2.0f);
+    CHECK(std::abs(ky - h->input.mouseY) < 2.0f);
+    // The edited path moved at the key's frame and not at the fixed first key.
+    const std::vector<Eigen::Vector3d> after = doc.pathTargets();
+    REQUIRE(after.size() == before.size());
+    const std::size_t at = std::size_t(102 - 88);
+    CHECK(after[at].y() - before[at].y() > 5.0);
+    CHECK((after.front() - before.front()).norm() < 1e-9);
+    // A key drag is neither an effector drag nor a camera orbit.
+    CHECK_FALSE(doc.dragging());
+    CHECK(doc.edits().empty());
+    CHECK(s.camera.yawDeg == yaw);
+    CHECK(s.camera.pitchDeg == pitch);
+
+    // A second drag cancelled with Esc puts the key back.
+    hoverKey(*h, kKey);
+    h->input.mouseDown[0] = true;
+    h->frame(2);
+    h->input.mouseX += 30.0f;
+    h->frame();
+    CHECK((doc.pathEdit()->keyOffsetsCm[kKey] - offset).norm() > 1.0);
+    h->input.keys[ui::key::kEscape] = true;
+    h->frame();
+    h->input.keys[ui::key::kEscape] = false;
+    h->input.mouseDown[0] = false;
+    h->frame(2);
+    CHECK((doc.pathEdit()->keyOffsetsCm[kKey] - offset).norm() < 1e-9);
+    doc.waitIdle();
+}
+
+TEST_CASE("gui path: the viewport shows the edited path, its keys, the captured path and the before ghost") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    beginFootPath(*h);
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    REQUIRE(doc.setPathKeyOffset(1, Eigen::Vector3d(0, 20, 0)) == "");
+    REQUIRE(doc.setPathKeyOffset(2, Eigen::Vector3d(0, 20, 0)) == "");
+    REQUIRE(doc.startRegenerate() == "");
+    doc.waitIdle();
+    std::string err;
+    doc.pollRegenerate(&err);
+    REQUIRE(err == "");
+    REQUIRE(doc.isEdited(kFrame));
+    REQUIRE(doc.beforeGhost().has_value());
+    s.showCapturedPath = true;
+    s.showBeforeGhost = true;
+    s.selectedKey = 1;
+    s.setStatus("path ui");
+    h->frame(3);
+    const render::Image img = h->app->capture(kW, kH);
+    std::filesystem::create_directories(kOutDir);
+    render::writePng(img, kOutDir + "/path_ui.png");
+
+    // Each element must be on screen in its own colour (lit, so counted with a tolerance).
+    const long ghost = countNear(img, 230, 140, 80, 45);
+    const long edited = countNear(img, 51, 140, 242, 40);
+    const long captured = countNear(img, 158, 163, 178, 25);
+    const long selected = countNear(img, 255, 77, 56, 40);
+    MESSAGE("pixels: before ghost " << ghost << ", edited path " << edited << ", captured path " << captured
+                                    << ", selected key " << selected);
+    CHECK(ghost > 200);
+    CHECK(edited > 50);
+    CHECK(captured > 20);
+    CHECK(selected > 10);
+
+    // Without the ghost and the captured path, those colours (mostly) go away.
+    s.showCapturedPath = false;
+    s.showBeforeGhost = false;
+    h->frame(3);
+    const render::Image plain = h->app->capture(kW, kH);
+    render::writePng(plain, kOutDir + "/path_ui_plain.png");
+    CHECK(countNear(plain, 230, 140, 80, 45) < ghost / 4);
+    doc.waitIdle();
+}
+
+namespace {
+
+// The Path panel alone, drawn with the editor's ImGui context (fonts, style, GL backend) in frames
+// of our own: the app lays out its fixed windows, and the panel is meant for a ~380×180 tab.
+struct PanelDriver {
+    Harness& h;
+    static constexpr float kPanelW = 380.0f, kPanelH = 180.0f;
+
+    // One frame at mouse (mx, my) (window pixels); returns the item the mouse was over (0: none).
+    ImGuiID frame(float mx, float my, bool down) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(kPanelW, kPanelH);
+        io.DeltaTime = 1.0f / 60.0f;
+        io.MousePos = ImVec2(mx, my);
+        io.MouseDown[0] = down;
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(kPanelW, kPanelH));
+        ImGui::Begin("Path", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+        ui::drawPathPanel(h.app->state());
+        ImGui::End();
+        ImGui::Render();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, int(kPanelW), int(kPanelH));
+        glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        return ImGui::GetCurrentContext()->HoveredId;
+    }
+    // The ID a top-level panel item gets from its label.
+    ImGuiID idOf(const char* label) {
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui::NewFrame();
+        ImGui::Begin("Path");
+        const ImGuiID id = ImGui::GetID(label);
+        ImGui::End();
+        ImGui::EndFrame();
+        return id;
+    }
+    // Clicks the top-level item labelled `label`, found by sweeping the mouse over the panel;
+    // false if no pixel hovers it (absent or disabled).
+    bool click(const char* label) {
+        const ImGuiID id = idOf(label);
+        for (float y = 4; y < kPanelH; y += 5)
+            for (float x = 4; x < kPanelW; x += 6)
+                if (frame(x, y, false) == id) {
+                    frame(x, y, true);
+                    frame(x, y, true);
+                    frame(x, y, false);
+                    frame(-1, -1, false);
+                    return true;
+                }
+        return false;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the document") {
+    auto h = makeHarness(false, false);  // no model: Regenerate is disabled
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(kFrame);
+    s.selected = Effector::kLHand;
+    PanelDriver p{*h};
+    p.frame(-1, -1, false);
+    CHECK_FALSE(p.click("Done"));  // no path yet
+    REQUIRE(p.click("Edit path"));
+    REQUIRE(doc.pathEdit().has_value());
+    CHECK(doc.pathEdit()->effector == Effector::kLHand);
+    CHECK(doc.pathEdit()->keyFrames == std::vector<int>{88, 102, 116, 130});
+    REQUIRE(p.click("Displacement"));
+    CHECK(doc.pathEdit()->mode == PathMode::kDisplacement);
+    CHECK_FALSE(s.showBeforeGhost);
+    REQUIRE(p.click("Before ghost"));
+    CHECK(s.showBeforeGhost);
+    CHECK_FALSE(p.click("Regenerate"));  // disabled without a model
+    CHECK_FALSE(doc.regenerating());
+    doc.setFrame(95);
+    REQUIRE(p.click("Add key at current frame"));
+    CHECK(doc.pathEdit()->keyFrames == std::vector<int>{88, 95, 102, 116, 130});
+    REQUIRE(doc.setPathKeyOffset(2, Eigen::Vector3d(1.5, 12.0, -3.0)) == "");
+    s.selectedKey = 2;
+    p.frame(-1, -1, false);
+    p.frame(-1, -1, false);
+    std::filesystem::create_directories(kOutDir);
+    render::writePng(render::readFramebuffer(int(p.kPanelW), int(p.kPanelH)), kOutDir + "/path_panel.png");
+    REQUIRE(p.click("Done"));
+    CHECK_FALSE(doc.pathEdit().has_value());
+}
