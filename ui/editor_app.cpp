@@ -577,7 +577,8 @@ void EditorApp::menus() {
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("Open...", "Ctrl+O")) state_.requestOpenClip = true;
         if (ImGui::BeginMenu("Open recent", recent_ && !recent_->entries().empty())) {
-            for (const RecentFile r : recent_->entries()) {  // a copy: opening reorders the list
+            const std::vector<RecentFile> entries = recent_->entries();  // a copy: opening reorders the list
+            for (const RecentFile& r : entries) {
                 const std::string label = baseName(r.path) + "  (" + recentKindName(r.kind) + ")";
                 if (ImGui::MenuItem(label.c_str())) openAny(r.path);
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.path.c_str());

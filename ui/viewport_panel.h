@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "editor_state.h"
+#include "png_capture.h"
 #include "skeleton_renderer.h"
 
 namespace mgp::ui {
@@ -28,6 +29,9 @@ public:
     // Screen (window) pixel of path key `key` (0-based); false without a path edit or off screen.
     bool keyScreenPosition(const EditorState& state, int key, float& x, float& y) const;
     void frameCharacter(EditorState& state) const;
+    // The 3-D view at the viewport's size with 4× MSAA and no overlay text (File > Export PNG;
+    // ui/viewport_export.cpp). Throws render::RenderError before the first draw.
+    render::Image renderImage(const EditorState& state);
     long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
 
 private:
@@ -36,6 +40,7 @@ private:
     render::Scene buildScene(const EditorState& state) const;
 
     std::unique_ptr<render::SceneRenderer> renderer_;
+    std::unique_ptr<render::SceneRenderer> exportRenderer_;  // created on the first export
     unsigned fbo_ = 0, colour_ = 0, depth_ = 0;
     int width_ = 0, height_ = 0;
     int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
