@@ -47,7 +47,7 @@ void keyTable(EditorState& s) {
         ImGui::PushID(k);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        char label[8];
+        char label[16];
         std::snprintf(label, sizeof label, "%d", k + 1);
         if (ImGui::Selectable(label, s.selectedKey == k)) s.selectedKey = k;
         ImGui::TableNextColumn();
@@ -174,7 +174,7 @@ void drawPathPanel(EditorState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the captured path (grey) beside the edited one (blue)");
 
     ImGui::Checkbox("Before ghost", &s.showBeforeGhost);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("This frame's pose before the last undoable step, in orange");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("This frame's pose before the last undoable step, in violet");
     ImGui::SameLine();
     if (ImGui::Button("Add key at current frame")) {
         std::vector<int> frames = doc.pathEdit()->keyFrames;

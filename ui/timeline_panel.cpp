@@ -71,21 +71,23 @@ void TimelinePanel::draw(EditorState& s) {
             dl->AddText(ImVec2(x + 2, t0.y + 2), IM_COL32(150, 154, 162, 255), buf);
         }
     }
-    if (const auto& path = doc.pathEdit()) {
-        // The edited span, tinted, with a diamond per key (the selected key in the handle colour).
-        const float yc = t0.y + h * 0.62f, r = 5.0f;
+    const auto& path = doc.pathEdit();
+    if (path)  // the edited span, tinted under the edited-frame marks
         dl->AddRectFilled(ImVec2(xOf(path->keyFrames.front()), t0.y + h * 0.4f), ImVec2(xOf(path->keyFrames.back()), t1.y - 2.0f),
                           IM_COL32(51, 140, 242, 60));
+    for (const auto& [f, rec] : doc.edits()) {
+        (void)rec;
+        const float x = xOf(f);
+        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
+    }
+    if (path) {
+        // A diamond per key above the edited-frame marks (the selected key in the handle colour).
+        const float yc = t0.y + h * 0.4f, r = 5.0f;
         for (std::size_t k = 0; k < path->keyFrames.size(); ++k) {
             const float x = xOf(path->keyFrames[k]);
             const ImU32 c = int(k) == s.selectedKey ? IM_COL32(255, 77, 56, 255) : IM_COL32(150, 200, 255, 255);
             dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), c);
         }
-    }
-    for (const auto& [f, rec] : doc.edits()) {
-        (void)rec;
-        const float x = xOf(f);
-        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
     }
     const float xc = xOf(doc.frame());
     dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);

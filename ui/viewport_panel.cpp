@@ -59,12 +59,18 @@ std::optional<render::Path> editedPath(const EditorState& s) {
     return p;
 }
 
-// Path keys as pickable spheres (id = key index), the size they are drawn.
+// Path keys as pickable spheres (id = key index), the size they are drawn, nearest in time to
+// the current frame first: keys of a planted foot coincide, and picking takes the first of
+// equally near hits, so scrubbing to a key's frame makes that key the one grabbed.
 std::vector<render::Handle> keyHandles(const EditorState& s) {
     std::vector<render::Handle> out;
     if (const auto p = editedPath(s)) {
         for (std::size_t k = 0; k < p->keysCm.size(); ++k)
             out.push_back({static_cast<int>(k), p->keysCm[k], p->keyRadiusCm(), render::HandleState::kIdle});
+        const std::vector<int>& frames = s.doc.pathEdit()->keyFrames;
+        std::stable_sort(out.begin(), out.end(), [&](const render::Handle& a, const render::Handle& b) {
+            return std::abs(frames[a.id] - s.doc.frame()) < std::abs(frames[b.id] - s.doc.frame());
+        });
     }
     return out;
 }
@@ -282,7 +288,8 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
             forwardKinematics(doc.clip().skeleton, *before, fk);
             render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
             ghost.ghost = true;
-            ghost.ghostTint = {1.0f, 0.55f, 0.20f};  // warm, unlike the blue compare ghost
+            // Violet: distinct from the blue compare ghost and from the warm right-side bones.
+            ghost.ghostTint = {0.78f, 0.38f, 1.0f};
             ghost.castsShadow = false;
             scene.figures.push_back(std::move(ghost));
         }
