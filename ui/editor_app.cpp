@@ -199,7 +199,11 @@ std::string EditorApp::startTraining() {
     return err;
 }
 
-void EditorApp::markSaved() { savedRevision_ = state_.doc.revision(); }
+// Also called whenever a clip, model or session replaced the document: forget per-document UI.
+void EditorApp::markSaved() {
+    savedRevision_ = state_.doc.revision();
+    state_.selectedKey = state_.hoveredKey = -1;
+}
 
 void EditorApp::remember(const std::string& path, RecentKind kind) {
     if (!recent_) return;

@@ -123,7 +123,7 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     ui::GuiScript s;
     s.add(0, "action", {"export-bvh", dir + "/before.bvh"});
     s.add(1, "action", {"frame", "110"});
-    s.add(2, "action", {"path", "rfoot"});
+    s.add(2, "action", {"path", "lfoot"});  // the left foot swings over 89–131 (the right one is planted)
     s.add(3, "action", {"path-keys", "89", "103", "117", "131"});
     s.add(4, "action", {"path-offset", "2", "0", "10", "4"});  // a numeric nudge of key 2
     s.add(6, "hover", {"key:3"});                               // key 3 dragged up with the mouse
@@ -134,6 +134,7 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     s.add(25, "action", {"wait"});
     s.add(27, "action", {"export-bvh", dir + "/after.bvh"});
     CHECK(h->play(s).empty());
+    CHECK(doc.undoLabel() == "regenerate lfoot, frames 90–130");  // the key drag was no effector drag
 
     REQUIRE(doc.pathEdit().has_value());
     const PathEdit& path = *doc.pathEdit();
@@ -144,7 +145,7 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     for (int k : {1, 2}) {
         const int t = path.keyFrames[k];
         REQUIRE(doc.isEdited(t));
-        const Eigen::Vector3d foot = effectorCm(doc.clip().skeleton, doc.edits().at(t).pose, Effector::kRFoot);
+        const Eigen::Vector3d foot = effectorCm(doc.clip().skeleton, doc.edits().at(t).pose, Effector::kLFoot);
         INFO("key " << k + 1 << " frame " << t + 1 << " residual " << (foot - doc.pathKeyPosition(k)).norm() << " cm");
         CHECK((foot - doc.pathKeyPosition(k)).norm() <= 0.5);
     }
