@@ -159,7 +159,7 @@ TEST_CASE("regenerating an edited path meets the moved keys, leaves other frames
     CHECK(doc.regenerateDone() == 41);
     const std::string summary = doc.pollRegenerate();
     CHECK(summary.rfind("regenerated 41 frames", 0) == 0);
-    CHECK(doc.undoLabel() == "regenerate rfoot, frames 90–130");
+    CHECK(doc.undoLabel() == "regenerate rfoot, frames 90-130");
     for (int t = 0; t < doc.frameCount(); ++t) CHECK(doc.isEdited(t) == (t > 88 && t < 130));
     for (int k : {1, 2}) {
         doc.setFrame(doc.pathEdit()->keyFrames[k]);

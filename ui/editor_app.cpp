@@ -99,8 +99,12 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
     io.KeyMap[ImGuiKey_Y] = 'Y';
     io.KeyMap[ImGuiKey_Z] = 'Z';
     std::error_code ec;
+    // Latin-1 plus what messages and panels print: Greek (α β γ η σ), dashes and ellipsis,
+    // arrows, and maths (≥ ≤ √ ²); DejaVu Sans has them all.
+    static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
+                                      0x2190, 0x21FF, 0x2200, 0x22FF, 0};
     if (!options_.builtinFont && std::filesystem::exists(kFontPath, ec))
-        io.Fonts->AddFontFromFileTTF(kFontPath, 15.0f);
+        io.Fonts->AddFontFromFileTTF(kFontPath, 15.0f, nullptr, kGlyphs);
     applyStyle();
     ImGui_ImplOpenGL3_Init("#version 330 core");
     viewport_ = std::make_unique<ViewportPanel>();

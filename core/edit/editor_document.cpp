@@ -630,7 +630,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     }
     EditStep step;
     char label[96];
-    std::snprintf(label, sizeof label, "regenerate %s, frames %d–%d", effectorName(job->effector),
+    std::snprintf(label, sizeof label, "regenerate %s, frames %d-%d", effectorName(job->effector),
                   job->keyFrames.front() + 2, job->keyFrames.back());
     step.label = label;
     for (std::size_t i = 0; i < job->solvedFrames.size(); ++i) {

@@ -134,7 +134,7 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     s.add(25, "action", {"wait"});
     s.add(27, "action", {"export-bvh", dir + "/after.bvh"});
     CHECK(h->play(s).empty());
-    CHECK(doc.undoLabel() == "regenerate lfoot, frames 90–130");  // the key drag was no effector drag
+    CHECK(doc.undoLabel() == "regenerate lfoot, frames 90-130");  // the key drag was no effector drag
 
     REQUIRE(doc.pathEdit().has_value());
     const PathEdit& path = *doc.pathEdit();
