@@ -5,26 +5,14 @@
 #include "edit/editor_document.h"
 #include "gp/model_file.h"
 #include "skeleton/forward_kinematics.h"
+#include "document_helpers.h"
 #include "trained_model_fixture.h"
 
 using namespace mgp;
+using test::dragBy;
+using test::samePose;
 
 namespace {
-void dragBy(EditorDocument& doc, Effector e, const Eigen::Vector3d& delta) {
-    REQUIRE(doc.beginDrag(e) == "");
-    const Eigen::Vector3d start = doc.effectorPosition(e);
-    const int steps = int(std::ceil(delta.norm()));
-    for (int k = 1; k <= steps; ++k) doc.dragTo(start + delta * (double(k) / steps), 50);
-    REQUIRE(doc.endDrag().has_value());
-}
-
-bool samePose(const Pose& a, const Pose& b) {
-    if (a.rootCm != b.rootCm || a.anglesDeg.size() != b.anglesDeg.size()) return false;
-    for (std::size_t j = 0; j < a.anglesDeg.size(); ++j)
-        if (a.anglesDeg[j] != b.anglesDeg[j]) return false;
-    return true;
-}
-
 std::string modelText(const gp::ModelVersionPtr& v) { return gp::modelToJsonText(*v->model); }
 }  // namespace
 

@@ -11,9 +11,11 @@
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/synthetic_clip.h"
+#include "document_helpers.h"
 #include "trained_model_fixture.h"
 
 using namespace mgp;
+using test::dragBy;
 
 namespace {
 Eigen::Vector3d footOf(const EditorDocument& doc, Effector e) {
@@ -22,15 +24,6 @@ Eigen::Vector3d footOf(const EditorDocument& doc, Effector e) {
     return effectorCm(doc.clip().skeleton, fk, e);
 }
 
-// A drag made of 1 cm steps (as mouse moves would be), then idle refinement and release.
-void dragBy(EditorDocument& doc, Effector e, const Eigen::Vector3d& delta) {
-    REQUIRE(doc.beginDrag(e) == "");
-    const Eigen::Vector3d start = doc.effectorPosition(e);
-    const int steps = int(std::ceil(delta.norm()));
-    for (int k = 1; k <= steps; ++k) doc.dragTo(start + delta * (double(k) / steps), 50);
-    for (int k = 0; k < 5; ++k) doc.refine(50);
-    REQUIRE(doc.endDrag().has_value());
-}
 }  // namespace
 
 TEST_CASE("editor document: a learned drag reaches the target and becomes the frame's edit") {

@@ -48,12 +48,6 @@ bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
            std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 }  // namespace
 
@@ -111,7 +105,7 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are ato
     CHECK(bitsEqual(mgp::rootTranslations(b.clip), mgp::rootTranslations(m.clip)));
     CHECK(b.clip.skeleton.jointCount() == m.clip.skeleton.jointCount());
     // Saving the loaded model reproduces the file byte for byte.
-    CHECK(modelToJsonText(b) == readAll(path));
+    CHECK(modelToJsonText(b) == mgp::test::readText(path));
     // The loaded model predicts like the original.
     Eigen::VectorXd f1, f2;
     double v1 = 0, v2 = 0;

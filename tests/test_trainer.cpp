@@ -38,12 +38,6 @@ TrainOptions smallOptions(KernelKind kind, int threads) {
     return o;
 }
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 std::string trainAndSave(const mgp::Clip& clip, const TrainingData& data, KernelKind kind, int threads,
                          const std::string& path, TrainResult* out = nullptr) {
@@ -52,7 +46,7 @@ std::string trainAndSave(const mgp::Clip& clip, const TrainingData& data, Kernel
     r.model.sourceFile = "16_35.amc";
     saveModel(path, r.model);
     if (out) *out = r;
-    return readAll(path);
+    return mgp::test::readText(path);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 
 #include "edit/autosave.h"
 #include "edit/session_file.h"
+#include "document_helpers.h"
 #include "editor_harness.h"
 #include "gp/model_file.h"
 #include "skeleton/forward_kinematics.h"
@@ -41,17 +42,10 @@ std::string readFile(const std::string& path) {
     return ss.str();
 }
 
-bool samePose(const Pose& a, const Pose& b) {
-    if (a.rootCm != b.rootCm || a.anglesDeg.size() != b.anglesDeg.size()) return false;
-    for (std::size_t j = 0; j < a.anglesDeg.size(); ++j)
-        if (a.anglesDeg[j] != b.anglesDeg[j]) return false;
-    return true;
-}
-
 bool sameEdits(const std::map<int, EditRecord>& a, const std::map<int, EditRecord>& b) {
     if (a.size() != b.size()) return false;
     for (auto ia = a.begin(), ib = b.begin(); ia != a.end(); ++ia, ++ib)
-        if (ia->first != ib->first || !samePose(ia->second.pose, ib->second.pose) || ia->second.x != ib->second.x)
+        if (ia->first != ib->first || !test::samePose(ia->second.pose, ib->second.pose) || ia->second.x != ib->second.x)
             return false;
     return true;
 }
