@@ -242,7 +242,7 @@ void drawModelPanel(EditorState& s) {
         if (c.format == ClipFormat::kBvh)
             ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "BVH is view-only: training on BVH is not supported yet");
     } else {
-        ImGui::TextDisabled("No clip open (File > Open clip, Ctrl+O)");
+        ImGui::TextDisabled("No clip open (File > Open, Ctrl+O)");
     }
     ImGui::Separator();
     const gp::ModelVersionPtr v = doc.model();

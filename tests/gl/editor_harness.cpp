@@ -27,12 +27,11 @@ std::vector<std::string> Harness::play(const ui::GuiScript& script) {
     return player.errors();
 }
 
-void Harness::restartApp() {
+void Harness::restartApp(ui::EditorOptions options) {
     app.reset();
     input = ui::InputState{};
-    ui::EditorOptions o;
-    o.builtinFont = true;
-    app = std::make_unique<ui::EditorApp>(o);
+    options.builtinFont = true;  // no dependence on system fonts
+    app = std::make_unique<ui::EditorApp>(options);
 }
 
 std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool train) {

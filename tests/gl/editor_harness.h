@@ -24,7 +24,7 @@ struct Harness {
     // script's errors.
     std::vector<std::string> play(const ui::GuiScript& script);
     // A second editor on the same context (e.g. "after a restart"); the first one is destroyed.
-    void restartApp();
+    void restartApp(ui::EditorOptions options = {});
 };
 
 // nullptr (the test is then reported skipped, with the reason) when the mocap folder or an

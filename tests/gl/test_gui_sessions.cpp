@@ -19,6 +19,7 @@
 #include "document_helpers.h"
 #include "editor_harness.h"
 #include "gp/model_file.h"
+#include "png_capture.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;
@@ -282,9 +283,16 @@ TEST_CASE("gui: an editor killed after an autosave leaves it behind, and the nex
 
     REQUIRE(findOrphanedAutosaves(dir).size() == 1);
     setenv("MOTIONGP_STATE_DIR", dir.c_str(), 1);
+    // The next interactive editor offers it in a modal dialog (the picture is kept for a look).
+    ui::EditorOptions offer;
+    offer.offerAutosaveRestore = true;
+    h->restartApp(offer);
+    h->frame(3);
+    render::writePng(h->app->capture(test::kGuiWidth, test::kGuiHeight), dir + "/restore_offer.png");
     const std::string err = h->app->restoreAutosave();
     unsetenv("MOTIONGP_STATE_DIR");
     REQUIRE(err == "");
+    h->frame(2);
     EditorDocument& doc = h->app->state().doc;
     CHECK(doc.isEdited(49));
     CHECK(doc.frame() == 49);
