@@ -78,12 +78,12 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
 
 TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps the poses' history") {
     EditorDocument doc;
-    doc.setAdaptiveEnabled(false);
     doc.setModel(test::walkModel35(), true);
     doc.setFrame(50);
     const Pose captured = doc.currentPose();
     dragBy(doc, Effector::kHead, {5, 0, 0});
     const Pose edited = doc.currentPose();
+    doc.waitIdle();
     doc.clearEdit(50);
     CHECK_FALSE(doc.isEdited(50));
     CHECK(doc.undoLabel() == "reset frame 51 to the captured pose");
@@ -99,11 +99,14 @@ TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps 
     REQUIRE(doc.undo() == "");
     CHECK(samePose(doc.currentPose(), edited));
 
-    // Installing another model (e.g. a retrained one) keeps the undo steps for the poses.
-    doc.setModel(test::walkModel35(), false);
+    // Installing another model (e.g. a retrained one) keeps the undo steps for the poses, but
+    // undoing the drag must not bring back the old model's versions.
+    const gp::ModelVersionPtr retrained = gp::ModelVersion::make(*test::walkModel35()->model, 7);
+    doc.setModel(retrained, false);
     REQUIRE(doc.canUndo());
     REQUIRE(doc.undo() == "");
     CHECK(samePose(doc.currentPose(), captured));
+    CHECK(doc.model() == retrained);
 }
 
 TEST_CASE("default path keys follow the paper's pattern and fit the clip") {

@@ -13,6 +13,7 @@
 
 #include "edit/session_file.h"
 #include "gp/model_file.h"
+#include "gp/sha256.h"
 #include "io/bvh_writer.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
@@ -228,6 +229,9 @@ SessionData sessionOf(const EditorState& s) {
     if (!d.syntheticClip) {
         d.clipPath = c.sourcePath.empty() ? "" : absolute(c.sourcePath);
         d.skeletonPath = c.skeletonPath.empty() ? "" : absolute(c.skeletonPath);
+        std::error_code ec;
+        if (!c.sourcePath.empty() && std::filesystem::is_regular_file(c.sourcePath, ec))
+            d.clipSha256 = gp::sha256OfFile(c.sourcePath);  // warns on open if the clip changed since
     }
     if (const gp::ModelVersionPtr v = doc.model()) {
         d.model = *v->model;
@@ -265,6 +269,7 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
         mgp::saveSession(path, sessionOf(state_));
         sessionPath_ = absolute(path);
         markSaved();
+        forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
         state_.setStatus("saved session " + path);
         return "";
@@ -280,6 +285,7 @@ std::string EditorApp::autosaveNow() {
         if (autosaveFile_.empty()) autosaveFile_ = autosavePath();
         mgp::saveSession(autosaveFile_, sessionOf(state_));
         autosave_.markSaved(secondsNow());
+        autosavedRevision_ = state_.doc.revision();
         return "";
     } catch (const std::exception& e) {
         // Never interrupt the user for a failed autosave; say it in the status line.
@@ -288,21 +294,50 @@ std::string EditorApp::autosaveNow() {
     }
 }
 
-void EditorApp::autosaveIfDue() {
-    const double now = secondsNow();
-    if (autosave_.due(now, dirty())) autosaveNow();
+void EditorApp::forgetAutosave() {
+    if (!autosaveFile_.empty()) discardAutosave(autosaveFile_);
+    autosave_.markSaved(secondsNow());
+    autosavedRevision_ = state_.doc.revision();
 }
 
-std::string EditorApp::openSession(const std::string& path) {
+void EditorApp::autosaveIfDue() {
+    // Only what changed since the last autosave (and is not saved in the session) is worth writing.
+    const bool changed = dirty() && state_.doc.revision() != autosavedRevision_;
+    if (autosave_.due(secondsNow(), changed)) autosaveNow();
+}
+
+std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
+    bool replaced = false;  // whether the document was already changed when something failed
     try {
         SessionData d = mgp::loadSession(path);
         EditorDocument& doc = state_.doc;
+        // Everything that can still fail is checked before the document changes.
+        std::optional<Clip> clip = loadSessionClip(d, path);  // none: the model carries it (both validated)
+        const Clip& target = clip ? *clip : d.model->clip;
+        if (d.path.present) {
+            std::string problem = validatePathKeys(d.path.keyFrames, target.frameCount());
+            if (problem.empty() && !target.skeleton.hasEffector(d.path.effector))
+                problem = std::string("expected an effector of the clip's skeleton, found ") + effectorName(d.path.effector);
+            if (problem.empty() && d.path.keyOffsetsCm.size() != d.path.keyFrames.size())
+                problem = "expected one offset per key";
+            if (!problem.empty()) throw ParseError(path + ": path: " + problem);
+        }
+        gp::ModelVersionPtr model = d.model ? gp::ModelVersion::make(std::move(*d.model), d.modelVersion) : nullptr;
+        gp::ModelVersionPtr compare = d.compareModel ? gp::ModelVersion::make(std::move(*d.compareModel)) : nullptr;
+        auto text = [&](const char* key, const std::string& fallback) {
+            const auto it = d.ui.find(key);
+            return it != d.ui.end() && it->is_string() ? it->get<std::string>() : fallback;
+        };
+        auto flag = [&](const char* key, bool fallback) {
+            const auto it = d.ui.find(key);
+            return it != d.ui.end() && it->is_boolean() ? it->get<bool>() : fallback;
+        };
+        replaced = true;
         state_.training.cancel();
         state_.compareTraining.cancel();
-        std::optional<Clip> clip = loadSessionClip(d, path);  // none: the model carries it (both validated)
-        if (d.model) doc.setModel(gp::ModelVersion::make(std::move(*d.model), d.modelVersion), true);
+        if (model) doc.setModel(model, true);
         else doc.setClip(std::move(*clip), d.syntheticClip);
-        if (d.compareModel) doc.setCompareModel(gp::ModelVersion::make(std::move(*d.compareModel)));
+        if (compare) doc.setCompareModel(compare);
         doc.setAdaptiveEnabled(d.adaptiveEnabled);
         doc.restoreEdits(std::move(d.edits));
         doc.setFrame(d.frame);
@@ -326,18 +361,24 @@ std::string EditorApp::openSession(const std::string& path) {
         state_.followCharacter = d.camera.followCharacter;
         state_.cameraNeedsFraming = false;
         state_.playing = false;
-        state_.showCapturedPath = d.ui.value("show_captured_path", true);
-        state_.showBeforeGhost = d.ui.value("show_before_ghost", true);
-        state_.clipLabel = d.ui.value("clip_label", doc.clip().name);
-        state_.modelLabel = doc.hasModel() ? d.ui.value("model_label", std::string("from session")) : "";
+        state_.showCapturedPath = flag("show_captured_path", true);
+        state_.showBeforeGhost = flag("show_before_ghost", false);
+        state_.clipLabel = text("clip_label", doc.clip().name);
+        state_.modelLabel = doc.hasModel() ? text("model_label", "from session") : "";
         sessionPath_ = absolute(path);
         markSaved();
-        remember(path, RecentKind::kSession);
+        forgetAutosave();
+        if (addToRecent) remember(path, RecentKind::kSession);
         std::string status = "opened session " + path;
         for (const std::string& w : d.warnings) status += "  (" + w + ")";
         state_.setStatus(status, !d.warnings.empty());
         return "";
     } catch (const std::exception& e) {
+        if (replaced) {
+            // Half-loaded: never let Ctrl+S write it over the previous session's file.
+            sessionPath_.clear();
+            savedRevision_ = -1;
+        }
         state_.setStatus(e.what(), true);
         return e.what();
     }
@@ -350,11 +391,13 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
         if (found.empty()) return "no autosave to restore";
         file = found.front().path;
     }
-    const std::string err = openSession(file);
+    const std::string err = openSession(file, false);
     if (!err.empty()) return err;
-    // The restored work is unsaved: it has no session file of its own yet.
+    // The restored work is unsaved: it has no session file of its own yet. It becomes this
+    // editor's autosave before the old file goes, so a second crash loses nothing either.
     sessionPath_.clear();
     savedRevision_ = -1;
+    if (!autosaveNow().empty()) return "could not keep the restored autosave: " + state_.status;
     discardAutosave(file);
     restoreOffer_.clear();
     state_.setStatus("restored the autosave from " + file + " (File > Save session to keep it)");
@@ -548,7 +591,7 @@ std::string EditorApp::runAction(const std::vector<std::string>& a) {
 
 void EditorApp::shortcuts() {
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || dialog_.isOpen()) return;
+    if (io.WantTextInput || dialog_.isOpen() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
     EditorDocument& doc = state_.doc;
     if (io.KeyCtrl) {
         auto report = [this](const std::string& err) {
@@ -588,7 +631,8 @@ void EditorApp::menus() {
             const std::vector<RecentFile> entries = recent_->entries();  // a copy: opening reorders the list
             for (const RecentFile& r : entries) {
                 const std::string label = baseName(r.path) + "  (" + recentKindName(r.kind) + ")";
-                if (ImGui::MenuItem(label.c_str())) openAny(r.path);
+                if (ImGui::MenuItem(label.c_str()))
+                    guardUnsaved([this, path = r.path] { openAny(path); }, "opening another file");
                 if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.path.c_str());
             }
             ImGui::EndMenu();
@@ -606,7 +650,8 @@ void EditorApp::menus() {
         if (ImGui::MenuItem("Export viewport as PNG...", "Ctrl+Shift+E", false, doc.hasClip()))
             request_ = DialogPurpose::kExportPng;
         ImGui::Separator();
-        if (ImGui::MenuItem("Synthetic demo clip")) openSyntheticClip("");
+        if (ImGui::MenuItem("Synthetic demo clip"))
+            guardUnsaved([this] { openSyntheticClip(""); }, "opening the demo clip");
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) state_.requestQuit = true;
         ImGui::EndMenu();
@@ -617,8 +662,9 @@ void EditorApp::menus() {
         auto report = [this](const std::string& err) {
             if (!err.empty()) state_.setStatus(err, true);
         };
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, doc.canUndo())) report(doc.undo());
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc.canRedo())) report(doc.redo());
+        const bool idle = !doc.regenerating();
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, doc.canUndo() && idle)) report(doc.undo());
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc.canRedo() && idle)) report(doc.redo());
         ImGui::Separator();
         if (ImGui::MenuItem("Revert frame to capture", nullptr, false, doc.isEdited(doc.frame()))) doc.clearEdit(doc.frame());
         if (ImGui::BeginMenu("Pins")) {
@@ -781,44 +827,20 @@ void EditorApp::layout(int w, int h) {
 }
 
 void EditorApp::dialogs() {
-    if (state_.requestOpenClip) {
-        state_.requestOpenClip = false;
-        dialog_.open("Open session, clip (ASF/AMC, BVH) or model", FileDialog::Mode::kOpen,
-                     {".mgsession", ".amc", ".bvh", ".json"}, options_.mocapDir.empty() ? "" : options_.mocapDir + "/asf_amc");
-        purpose_ = DialogPurpose::kClip;
-    }
-    switch (std::exchange(request_, DialogPurpose::kNone)) {
-        case DialogPurpose::kSaveSession:
-            dialog_.open("Save session", FileDialog::Mode::kSave, {".mgsession"}, "");
-            purpose_ = DialogPurpose::kSaveSession;
-            break;
-        case DialogPurpose::kExportBvh:
-            dialog_.open("Export motion as BVH", FileDialog::Mode::kSave, {".bvh"}, "");
-            purpose_ = DialogPurpose::kExportBvh;
-            break;
-        case DialogPurpose::kExportPng:
-            dialog_.open("Export viewport as PNG", FileDialog::Mode::kSave, {".png"}, "");
-            purpose_ = DialogPurpose::kExportPng;
-            break;
-        default: break;
-    }
-    if (state_.requestOpenModel) {
-        state_.requestOpenModel = false;
-        dialog_.open("Open model", FileDialog::Mode::kOpen, {".json"}, "");
-        purpose_ = DialogPurpose::kModel;
-    }
-    if (state_.requestSaveModel) {
-        state_.requestSaveModel = false;
-        dialog_.open("Save model", FileDialog::Mode::kSave, {".json"}, "");
-        purpose_ = DialogPurpose::kSaveModel;
-    }
+    // Opening something else replaces the document: ask about unsaved changes first.
+    if (std::exchange(state_.requestOpenClip, false))
+        guardUnsaved([this] { openDialog(DialogPurpose::kClip); }, "opening another file");
+    if (std::exchange(state_.requestOpenModel, false))
+        guardUnsaved([this] { openDialog(DialogPurpose::kModel); }, "opening a model");
+    if (std::exchange(state_.requestSaveModel, false)) openDialog(DialogPurpose::kSaveModel);
+    if (const DialogPurpose p = std::exchange(request_, DialogPurpose::kNone); p != DialogPurpose::kNone) openDialog(p);
     if (auto path = dialog_.draw()) {
         switch (purpose_) {
             case DialogPurpose::kClip: openAny(*path); break;
             case DialogPurpose::kModel: openModel(*path); break;
             case DialogPurpose::kSaveModel: saveModel(*path); break;
             case DialogPurpose::kSaveSession:
-                if (saveSession(*path).empty() && quitAfterSave_) quitConfirmed_ = true;
+                if (saveSession(*path).empty() && afterSave_) std::exchange(afterSave_, nullptr)();
                 break;
             case DialogPurpose::kExportBvh: exportBvh(*path); break;
             case DialogPurpose::kExportPng: exportPng(*path); break;
@@ -826,7 +848,33 @@ void EditorApp::dialogs() {
         }
         purpose_ = DialogPurpose::kNone;
     }
-    if (!dialog_.isOpen()) quitAfterSave_ = false;
+    if (!dialog_.isOpen()) afterSave_ = nullptr;  // the save dialog was cancelled: so is the action
+}
+
+void EditorApp::openDialog(DialogPurpose purpose) {
+    const std::string mocap = options_.mocapDir.empty() ? "" : options_.mocapDir + "/asf_amc";
+    switch (purpose) {
+        case DialogPurpose::kClip:
+            dialog_.open("Open session, clip (ASF/AMC, BVH) or model", FileDialog::Mode::kOpen,
+                         {".mgsession", ".amc", ".bvh", ".json"}, mocap);
+            break;
+        case DialogPurpose::kModel: dialog_.open("Open model", FileDialog::Mode::kOpen, {".json"}, ""); break;
+        case DialogPurpose::kSaveModel: dialog_.open("Save model", FileDialog::Mode::kSave, {".json"}, ""); break;
+        case DialogPurpose::kSaveSession: dialog_.open("Save session", FileDialog::Mode::kSave, {".mgsession"}, ""); break;
+        case DialogPurpose::kExportBvh: dialog_.open("Export motion as BVH", FileDialog::Mode::kSave, {".bvh"}, ""); break;
+        case DialogPurpose::kExportPng: dialog_.open("Export viewport as PNG", FileDialog::Mode::kSave, {".png"}, ""); break;
+        case DialogPurpose::kNone: return;
+    }
+    purpose_ = purpose;
+}
+
+void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
+    if (!dirty()) {
+        action();
+        return;
+    }
+    pending_ = std::move(action);
+    pendingWhat_ = std::move(what);
 }
 
 std::string EditorApp::openAny(const std::string& path) {
@@ -836,44 +884,50 @@ std::string EditorApp::openAny(const std::string& path) {
     return openClip(path);
 }
 
-// Modal questions: unsaved changes on quit, and restoring an autosave after a crash.
+// Modal questions: unsaved changes before quitting or replacing the document, and restoring an
+// autosave after a crash. One modal at a time: a question waits while another popup is open.
 void EditorApp::prompts() {
-    if (state_.requestQuit) {
-        state_.requestQuit = false;
-        if (dirty()) quitPrompt_ = true;
-        else quitConfirmed_ = true;
-    }
-    if (quitPrompt_) {
-        ImGui::OpenPopup("Unsaved changes");
-        quitPrompt_ = false;
-    }
+    if (std::exchange(state_.requestQuit, false)) guardUnsaved([this] { quitConfirmed_ = true; }, "quitting");
+    const bool otherPopup = dialog_.isOpen() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    if (pending_ && !otherPopup) ImGui::OpenPopup("Unsaved changes");
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    askingUnsaved_ = ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    if (askingUnsaved_) {
         ImGui::Text("This session has changes that are not saved%s.",
                     sessionPath_.empty() ? "" : (" to " + baseName(sessionPath_)).c_str());
-        ImGui::Text("Save them before quitting?");
+        ImGui::Text("Save them before %s?", pendingWhat_.c_str());
         if (ImGui::Button("Save", ImVec2(110, 0))) {
+            std::function<void()> action = std::exchange(pending_, nullptr);
             if (sessionPath_.empty()) {
-                request_ = DialogPurpose::kSaveSession;
-                quitAfterSave_ = true;
+                request_ = DialogPurpose::kSaveSession;  // the action runs once the file is saved
+                afterSave_ = std::move(action);
             } else if (saveSession(sessionPath_).empty()) {
-                quitConfirmed_ = true;
+                action();
             }
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
         if (ImGui::Button("Don't save", ImVec2(110, 0))) {
-            quitConfirmed_ = true;
+            std::exchange(pending_, nullptr)();
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) ImGui::CloseCurrentPopup();
+        if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) {
+            pending_ = nullptr;
+            ImGui::CloseCurrentPopup();
+        }
         ImGui::EndPopup();
     }
-    if (!restoreOffer_.empty() && !ImGui::IsPopupOpen("Restore autosave")) ImGui::OpenPopup("Restore autosave");
+    if (!restoreOffer_.empty() && !dialog_.isOpen() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+        ImGui::OpenPopup("Restore autosave");
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Restore autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const AutosaveCandidate& c = restoreOffer_.front();
+        if (restoreOffer_.empty()) {  // answered elsewhere (a script, File menu)
+            ImGui::CloseCurrentPopup();
+            ImGui::EndPopup();
+            return;
+        }
+        const AutosaveCandidate c = restoreOffer_.front();
         ImGui::Text("MotionGP did not quit normally last time.");
         ImGui::Text("An autosave of its work was left at\n%s", c.path.c_str());
         const std::time_t when = static_cast<std::time_t>(c.mtimeSeconds);

@@ -6,6 +6,7 @@
 //
 // Default layout (1280×800): menu bar; viewport in the centre; Model panel, latent map and IK
 // readout on the right; timeline and status line at the bottom.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,7 +47,7 @@ public:
     std::string saveModel(const std::string& path);
     std::string startTraining();  // on the open clip with state().trainOptions
     // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
-    std::string openSession(const std::string& path);
+    std::string openSession(const std::string& path, bool addToRecent = true);
     std::string saveSession(const std::string& path);  // becomes the current session file
     std::string autosaveNow();                         // to this editor's autosave file
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
@@ -55,6 +56,8 @@ public:
     std::string exportBvh(const std::string& path);
     std::string exportPng(const std::string& path);
     bool dirty() const { return state_.doc.revision() != savedRevision_; }
+    bool askingAboutUnsavedChanges() const { return askingUnsaved_; }  // the modal is up
+    bool offeringAutosave() const { return !restoreOffer_.empty(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
     // One UI frame of width×height pixels; dt in seconds.
@@ -81,12 +84,17 @@ public:
     std::string runAction(const std::vector<std::string>& args);
 
 private:
+    enum class DialogPurpose { kNone, kClip, kModel, kSaveModel, kSaveSession, kExportBvh, kExportPng };
     void pollJobs();
     void autosaveIfDue();
+    void forgetAutosave();  // after a save or an open: this editor's autosave is stale
     void prompts();
     void markSaved();
     void remember(const std::string& path, RecentKind kind);
     std::string openAny(const std::string& path);  // by extension: session, model or clip
+    void openDialog(DialogPurpose purpose);
+    // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
+    void guardUnsaved(std::function<void()> action, std::string what);
     void shortcuts();
     void menus();
     void layout(int width, int height);
@@ -98,7 +106,6 @@ private:
     LatentMapPanel latent_;
     TimelinePanel timeline_;
     FileDialog dialog_;
-    enum class DialogPurpose { kNone, kClip, kModel, kSaveModel, kOpenSession, kSaveSession, kExportBvh, kExportPng };
     DialogPurpose purpose_ = DialogPurpose::kNone;
     DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
     bool showHelp_ = false;
@@ -109,7 +116,13 @@ private:
     std::unique_ptr<RecentFiles> recent_;  // null when the options turn the list off
     AutosaveTimer autosave_;
     std::string autosaveFile_;
-    bool quitConfirmed_ = false, quitPrompt_ = false, quitAfterSave_ = false;
+    bool quitConfirmed_ = false;
+    // The unsaved-changes question: what waits for the answer, and what runs after "Save" when
+    // the session still needs a file name.
+    std::function<void()> pending_, afterSave_;
+    std::string pendingWhat_;
+    bool askingUnsaved_ = false;
+    long autosavedRevision_ = 0;
     std::vector<AutosaveCandidate> restoreOffer_;
 };
 

@@ -106,6 +106,8 @@ std::optional<std::string> FileDialog::draw() {
             ImGui::CloseCurrentPopup();
         }
         ImGui::EndPopup();
+    } else {
+        open_ = false;  // closed from outside (another modal replaced it): never stay "open"
     }
     if (!keep) open_ = false;
     return chosen;

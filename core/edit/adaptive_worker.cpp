@@ -93,10 +93,11 @@ void AdaptiveWorker::run() {
         report.modelRows = current_->model->N();
         report.published = current_;
         const auto listener = listener_;
-        busy_ = false;
         lock.unlock();
         if (listener) listener(report);
         lock.lock();
+        // Idle only once the listener has seen the update: waitIdle() callers rely on it.
+        busy_ = false;
         idle_.notify_all();
     }
 }

@@ -1,10 +1,21 @@
 #include "edit/edit_history.h"
 
+#include <algorithm>
+
 namespace mgp {
 
 void EditHistory::push(EditStep step) {
     undo_.push_back(std::move(step));
     redo_.clear();
+    if (undo_.size() > kMaxSteps) undo_.erase(undo_.begin());
+}
+
+long EditHistory::oldestUnresolvedSample() const {
+    long oldest = LONG_MAX;
+    for (const auto* stack : {&undo_, &redo_})
+        for (const EditStep& s : *stack)
+            if (!s.modelResolved && !s.samples.empty()) oldest = std::min(oldest, s.samples.front());
+    return oldest;
 }
 
 void EditHistory::moveUndoToRedo() {
@@ -37,6 +48,12 @@ void ModelVersionLog::reset(gp::ModelVersionPtr initial, long lastSequence) {
 }
 
 void ModelVersionLog::record(long sequence, gp::ModelVersionPtr published) { after_[sequence] = std::move(published); }
+
+void ModelVersionLog::pruneBefore(long sequence) {
+    auto keep = after_.lower_bound(sequence);
+    if (keep == after_.begin()) return;
+    after_.erase(after_.begin(), std::prev(keep));  // the entry just below answers before(sequence)
+}
 
 gp::ModelVersionPtr ModelVersionLog::before(long sequence) const {
     auto it = after_.lower_bound(sequence);  // first entry ≥ sequence: the one before it is ours

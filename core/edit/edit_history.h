@@ -5,6 +5,7 @@
 // history also keeps a log of which version each adaptive sample left behind
 // (ModelVersionLog): the version before a step is the one published after the last sample
 // posted before it. Versions are immutable shared pointers, so "restores" means exactly.
+#include <climits>
 #include <map>
 #include <optional>
 #include <string>
@@ -27,7 +28,9 @@ struct EditStep {
 
 class EditHistory {
 public:
-    void push(EditStep step);  // drops the redo branch
+    // Each step keeps model versions alive (~1 MB each at N ≈ 350): the oldest steps go first.
+    static constexpr std::size_t kMaxSteps = 100;
+    void push(EditStep step);  // drops the redo branch (and the oldest step beyond kMaxSteps)
     bool canUndo() const { return !undo_.empty(); }
     bool canRedo() const { return !redo_.empty(); }
     EditStep* topUndo() { return undo_.empty() ? nullptr : &undo_.back(); }
@@ -40,6 +43,9 @@ public:
     // A new model replaced the one the steps refer to: keep their poses, stop touching the model.
     void forgetModels();
     int undoCount() const { return static_cast<int>(undo_.size()); }
+    // The first sample of the oldest step whose model versions are not resolved yet (what the
+    // version log must still answer for); LONG_MAX when there is none.
+    long oldestUnresolvedSample() const;
 
 private:
     std::vector<EditStep> undo_, redo_;
@@ -53,6 +59,8 @@ public:
     void record(long sequence, gp::ModelVersionPtr published);
     // The version current once every sample before `sequence` was processed (null if unknown).
     gp::ModelVersionPtr before(long sequence) const;
+    // Forgets what no before(s ≥ sequence) query can need (frees old versions).
+    void pruneBefore(long sequence);
 
 private:
     std::map<long, gp::ModelVersionPtr> after_;

@@ -21,10 +21,17 @@ bool finitePose(const Pose& p) {
 }  // namespace
 
 EditorDocument::EditorDocument() = default;
-EditorDocument::~EditorDocument() = default;
+EditorDocument::~EditorDocument() {
+    // The jobs call back into members declared after them: stop them first.
+    regenerate_.cancel();
+    regenerate_.join();
+    worker_.reset();
+}
 
 void EditorDocument::setClip(Clip clip, bool synthetic) {
     cancelDrag();
+    latentDrag_ = false;
+    latentBefore_.reset();
     regenerate_.cancel();
     regenerate_.join();
     regenerate_.take();
@@ -72,6 +79,8 @@ void EditorDocument::clearEdit(int frame) {
 
 void EditorDocument::restoreEdits(std::map<int, EditRecord> edits) {
     cancelDrag();
+    latentDrag_ = false;
+    latentBefore_.reset();
     edits_ = std::move(edits);
     history_.clear();
     updatePinPositions();
@@ -100,6 +109,10 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
         clip_.name = version->model->clip.name;
     }
     cancelDrag();
+    latentDrag_ = false;
+    regenerate_.cancel();  // a running regeneration solves on the old model: its result is dropped
+    regenerate_.join();
+    regenerate_.take();
     if (!adoptClip) history_.forgetModels();  // the steps' versions belong to the old model
     installWorker(std::move(version));
     ++revision_;
@@ -118,7 +131,7 @@ void EditorDocument::installWorker(gp::ModelVersionPtr version) {
     worker_->setListener([this](const AdaptiveReport& r) {
         std::lock_guard<std::mutex> lock(statusMutex_);
         versionLog_.record(r.sequence, r.published);
-        ++revision_;
+        if (r.result.accepted) ++revision_;
         AdaptiveHistoryEntry h;
         h.when = std::chrono::system_clock::now();
         h.frame = r.frame;
@@ -147,6 +160,9 @@ void EditorDocument::installWorker(gp::ModelVersionPtr version) {
 
 void EditorDocument::clearModel() {
     cancelDrag();
+    latentDrag_ = false;
+    latentBefore_.reset();
+    regenerate_.cancel();  // its result would belong to the old model
     history_.forgetModels();
     worker_.reset();
     solver_.reset();
@@ -156,6 +172,7 @@ void EditorDocument::clearModel() {
 gp::ModelVersionPtr EditorDocument::model() const { return worker_ ? worker_->current() : nullptr; }
 
 void EditorDocument::setAdaptiveEnabled(bool on) {
+    if (adaptive_ != on) ++revision_;
     adaptive_ = on;
     if (worker_) worker_->setEnabled(on);
 }
@@ -176,6 +193,7 @@ std::vector<AdaptiveHistoryEntry> EditorDocument::adaptiveHistory() const {
 }
 
 void EditorDocument::setCompareMode(CompareMode mode) {
+    if (compare_ != mode) ++revision_;
     compare_ = mode;
     comparePose_.reset();
     if (drag_.active) solveCompare();
@@ -202,6 +220,7 @@ void EditorDocument::togglePin(Effector e) { setPinned(e, !pinned(e)); }
 
 void EditorDocument::setPinned(Effector e, bool on) {
     if (!hasEffector(e)) return;
+    if (pins_[static_cast<int>(e)] != on) ++revision_;
     pins_[static_cast<int>(e)] = on;
     if (on) pinPositions_[static_cast<int>(e)] = effectorPosition(e);
 }
@@ -435,6 +454,11 @@ void EditorDocument::endLatentDrag() {
 void EditorDocument::pushStep(EditStep step) {
     history_.push(std::move(step));
     ++revision_;
+    // Versions no remaining step can ask for are freed. Samples still queued have higher
+    // sequence numbers than any entry pruned here, so the log keeps what they will need.
+    const long oldest = std::min(history_.oldestUnresolvedSample(), worker_ ? worker_->lastSequence() + 1 : LONG_MAX);
+    std::lock_guard<std::mutex> lock(statusMutex_);
+    versionLog_.pruneBefore(oldest);
 }
 
 void EditorDocument::applyFrames(const std::map<int, std::optional<EditRecord>>& frames) {
@@ -479,6 +503,7 @@ std::string EditorDocument::redoLabel() const {
 }
 
 std::string EditorDocument::undo() {
+    pollRegenerate();  // a regeneration that just finished is the latest step
     cancelDrag();
     if (latentDrag_) endLatentDrag();
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
@@ -493,6 +518,7 @@ std::string EditorDocument::undo() {
 }
 
 std::string EditorDocument::redo() {
+    pollRegenerate();
     cancelDrag();
     if (latentDrag_) endLatentDrag();
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
@@ -610,6 +636,7 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     const Clip& mc = v->model->clip;
     if (mc.frameCount() != clip_.frameCount() || mc.skeleton.jointCount() != clip_.skeleton.jointCount())
         return "expected a model trained on this clip, found one trained on " + mc.name;
+    pollRegenerate();  // never drop a finished result nobody took yet
     cancelDrag();
     MotionEditJob job;
     job.version = v;

@@ -120,7 +120,10 @@ public:
     // Every update since the model was installed, oldest first.
     std::vector<AdaptiveHistoryEntry> adaptiveHistory() const;
     // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
-    void setCompareModel(gp::ModelVersionPtr version) { compareModel_ = std::move(version); }
+    void setCompareModel(gp::ModelVersionPtr version) {
+        compareModel_ = std::move(version);
+        ++revision_;
+    }
     gp::ModelVersionPtr compareModel() const { return compareModel_; }
     void setCompareMode(CompareMode mode);
     CompareMode compareMode() const { return compare_; }

@@ -235,6 +235,7 @@ TEST_CASE("gui: save session → quit → open it again gives the same poses, mo
         h->app->requestQuit();
         h->frame(2);
         CHECK_FALSE(h->app->quitRequested());  // the prompt is up, waiting for the user
+        CHECK(h->app->askingAboutUnsavedChanges());
     }
 }
 
@@ -288,11 +289,15 @@ TEST_CASE("gui: an editor killed after an autosave leaves it behind, and the nex
     offer.offerAutosaveRestore = true;
     h->restartApp(offer);
     h->frame(3);
+    CHECK(h->app->offeringAutosave());
     render::writePng(h->app->capture(test::kGuiWidth, test::kGuiHeight), dir + "/restore_offer.png");
     const std::string err = h->app->restoreAutosave();
-    unsetenv("MOTIONGP_STATE_DIR");
     REQUIRE(err == "");
     h->frame(2);
+    CHECK_FALSE(h->app->offeringAutosave());
+    // The restored work is this editor's autosave now (a second crash would not lose it).
+    CHECK(fs::exists(autosavePath()));
+    unsetenv("MOTIONGP_STATE_DIR");
     EditorDocument& doc = h->app->state().doc;
     CHECK(doc.isEdited(49));
     CHECK(doc.frame() == 49);
