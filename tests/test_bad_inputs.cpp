@@ -115,6 +115,11 @@ TEST_CASE("bad AMC files") {
         {"data before a frame number", replaced(kAmc, "\n1\n", "\n"), "t.amc:4: expected a frame number (a line holding one integer), found 'root 1 2 3 4 5 6'"},
         {"truncated last frame", std::string(kAmc).substr(0, std::string(kAmc).size() - 9),
          "t.amc:8: expected a line for bone 'ltibia' in frame 2, found none"},
+        // Regressions (UBSan: signed overflow in parseInt, and in frame number + 1).
+        {"frame number beyond long long", replaced(kAmc, "\n1\n", "\n9999999999999999999\n"),
+         "t.amc:4: expected a frame number (a line holding one integer), found '9999999999999999999'"},
+        {"frame number LLONG_MAX", replaced(kAmc, "\n1\n", "\n9223372036854775807\n"),
+         "t.amc:4: expected a frame number below 9223372036854775807, found '9223372036854775807'"},
     };
     checkCases(cases, [&](const std::string& text) { parseAmc("t.amc", text, asf); });
 }
@@ -136,6 +141,8 @@ TEST_CASE("bad BVH files") {
         {"frames declared 10^7", replaced(kBvh, "Frames: 2", "Frames: 10000000"),
          "t.bvh:20: expected 10000000 frame rows (Frames:), found at most 2 lines left"},
         {"negative frames", replaced(kBvh, "Frames: 2", "Frames: -5"), "t.bvh:17: expected a frame count of at least 1, found '-5'"},
+        {"frames beyond long long", replaced(kBvh, "Frames: 2", "Frames: 9999999999999999999"),  // UBSan regression
+         "t.bvh:17: expected a frame count of at least 1, found '9999999999999999999'"},
         {"zero frame time", replaced(kBvh, ".0083333", "0"), "t.bvh:18: expected a frame time in (0, 10) seconds, found '0'"},
         {"short row", replaced(kBvh, "0 17 0 0 0 0 5 0 0", "0 17 0 0 0 0 5 0"), "t.bvh:20: expected 9 values per frame row, found 8"},
         {"too few rows", replaced(kBvh, "Frames: 2", "Frames: 3"), "t.bvh:20: expected 3 frame rows (Frames:), found at most 2 lines left"},

@@ -138,6 +138,26 @@ TEST_CASE("model_file: newer versions, other formats, truncated and empty files 
     std::string noX = text;
     noX.replace(noX.find("\"X\""), 3, "\"Z\"");
     expectError(noX, "'X'");
+    // Regressions (UBSan float-cast-overflow): huge or fractional numbers where integers belong.
+    const nlohmann::json doc = nlohmann::json::parse(text);
+    nlohmann::json bad = doc;
+    bad["N"] = 1e300;
+    expectError(bad.dump(1), "field 'N' as an integer");
+    bad = doc;
+    bad["training"]["iterations"] = -1e300;
+    expectError(bad.dump(1), "field 'iterations' as an integer");
+    bad = doc;
+    bad["active"][0] = 4294967296LL;  // would truncate to 0, a valid index
+    expectError(bad.dump(1), "integers in active");
+    bad = doc;
+    bad["clip"]["joints"][1]["parent"] = 1e300;
+    expectError(bad.dump(1), "an integer parent");
+    bad = doc;
+    bad["clip"]["joints"][1]["order"][0] = 1e300;
+    expectError(bad.dump(1), "an axis 0..2");
+    bad = doc;
+    bad["clip"]["first_frame_label"] = 1e300;
+    expectError(bad.dump(1), "an integer first_frame_label");
     CHECK_THROWS_AS(loadModel(tmpDir() + "/does-not-exist.json"), mgp::ParseError);
 }
 

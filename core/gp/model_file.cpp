@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -39,6 +40,21 @@ const json& need(const json& j, const char* key, const std::string& file) {
     return j.at(key);
 }
 
+// An integer. nlohmann's get<int>() static_casts a float such as 1e300 (UB: float-cast-overflow)
+// and truncates integers beyond int, so check the type and the range first.
+int toInt(const json& v, const std::string& file, const std::string& expected) {
+    const bool fits = v.is_number_unsigned()
+                          ? v.get<unsigned long long>() <= static_cast<unsigned long long>(std::numeric_limits<int>::max())
+                          : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
+                                v.get<long long>() <= std::numeric_limits<int>::max();
+    if (!fits) throwParseError(file, 0, expected, v.dump());
+    return static_cast<int>(v.get<long long>());
+}
+
+int needInt(const json& j, const char* key, const std::string& file) {
+    return toInt(need(j, key, file), file, "field '" + std::string(key) + "' as an integer");
+}
+
 Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
     if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
         throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) + " " : "") + "numbers",
@@ -56,8 +72,7 @@ std::vector<int> readInts(const json& j, const std::string& file, const char* wh
     if (!j.is_array()) throwParseError(file, 0, std::string(what) + " as an array of integers", j.type_name());
     std::vector<int> out;
     for (const auto& e : j) {
-        if (!e.is_number_integer()) throwParseError(file, 0, std::string("integers in ") + what, e.dump());
-        out.push_back(e.get<int>());
+        out.push_back(toInt(e, file, std::string("integers in ") + what));
     }
     return out;
 }
@@ -116,8 +131,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const std::string kind = need(j, "kernel", file).get<std::string>();
         if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
         m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
-        const int n = need(j, "N", file).get<int>(), D = need(j, "D", file).get<int>();
-        const int d = need(j, "latent_dim", file).get<int>();
+        const int n = needInt(j, "N", file), D = needInt(j, "D", file);
+        const int d = needInt(j, "latent_dim", file);
         if (n < 1 || D < 1 || D > kPoseDofs || d < 1) throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim", "N=" + std::to_string(n) + " D=" + std::to_string(D));
         m.w = readVec(need(j, "w", file), file, "w", D);
         m.mu = readVec(need(j, "mu", file), file, "mu", D);
@@ -151,15 +166,15 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         if (static_cast<int>(m.trainingFrames.size()) != n)
             throwParseError(file, 0, std::to_string(n) + " training frames", std::to_string(m.trainingFrames.size()));
         const json& t = need(j, "training", file);
-        m.settings.activeSize = need(t, "active_size", file).get<int>();
-        m.settings.outerIterations = need(t, "outer_iterations", file).get<int>();
-        m.settings.scgIterations = need(t, "scg_iterations", file).get<int>();
-        m.settings.pointIterations = need(t, "point_iterations", file).get<int>();
+        m.settings.activeSize = needInt(t, "active_size", file);
+        m.settings.outerIterations = needInt(t, "outer_iterations", file);
+        m.settings.scgIterations = needInt(t, "scg_iterations", file);
+        m.settings.pointIterations = needInt(t, "point_iterations", file);
         m.settings.tolerance = need(t, "tolerance", file).get<double>();
-        m.settings.frameFirst = need(t, "frame_first", file).get<int>();
-        m.settings.frameLast = need(t, "frame_last", file).get<int>();
-        m.settings.frameStep = need(t, "frame_step", file).get<int>();
-        m.iterations = need(t, "iterations", file).get<int>();
+        m.settings.frameFirst = needInt(t, "frame_first", file);
+        m.settings.frameLast = needInt(t, "frame_last", file);
+        m.settings.frameStep = needInt(t, "frame_step", file);
+        m.iterations = needInt(t, "iterations", file);
         m.converged = need(t, "converged", file).get<bool>();
         if (t.contains("objective_history")) {  // absent in files written before it existed
             const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");

@@ -82,6 +82,8 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
         clip.convention = field(j, "convention", file, "clip").get<std::string>();
         clip.fps = field(j, "fps", file, "clip").get<double>();
         clip.cmPerFileUnit = field(j, "cm_per_file_unit", file, "clip").get<double>();
+        if (!field(j, "first_frame_label", file, "clip").is_number_integer())  // no float cast (UB)
+            throwParseError(file, 0, "an integer first_frame_label", j["first_frame_label"].dump());
         clip.firstFrameLabel = field(j, "first_frame_label", file, "clip").get<long long>();
         clip.restFrame = field(j, "rest_frame", file, "clip").get<bool>();
         clip.sourcePath = "";
@@ -91,6 +93,9 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             Joint jt;
             jt.name = field(jj, "name", file, "joint").get<std::string>();
             jt.bone = field(jj, "bone", file, "joint").get<std::string>();
+            // Integers only: get<int>() would static_cast a float such as 1e300 (UB).
+            if (!field(jj, "parent", file, "joint").is_number_integer())
+                throwParseError(file, 0, "an integer parent", jj["parent"].dump());
             jt.parent = field(jj, "parent", file, "joint").get<int>();
             jt.offsetCm = readVec3(field(jj, "offset_cm", file, "joint"), file, "offset_cm");
             jt.tailCm = readVec3(field(jj, "tail_cm", file, "joint"), file, "tail_cm");
@@ -101,6 +106,7 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             const auto& o = field(jj, "order", file, "joint");
             if (!o.is_array() || o.size() != 3) throwParseError(file, 0, "3 axes for order", o.dump());
             for (int i = 0; i < 3; ++i) {
+                if (!o[i].is_number_integer()) throwParseError(file, 0, "an axis 0..2", o[i].dump());  // no float cast (UB)
                 const int ax = o[i].get<int>();
                 if (ax < 0 || ax > 2) throwParseError(file, 0, "an axis 0..2", std::to_string(ax));
                 jt.order[i] = ax;

@@ -1,0 +1,30 @@
+# Test environment for the MOTIONGP_SANITIZE=ON build (README, "Sanitizers"), so that a plain
+# `ctest --test-dir build-asan` runs with the right sanitizer options. Included by
+# tests/CMakeLists.txt; the lists are empty when the option is off.
+#   MOTIONGP_SANITIZER_ENV     every test: leaks detected, UB fatal with a stack trace.
+#   MOTIONGP_SANITIZER_GL_ENV  the `gl` tests: the same plus LeakSanitizer suppressions for leaks
+#                              inside Mesa/EGL/llvmpipe only (tests/sanitizer/lsan_gl.supp).
+set(MOTIONGP_SANITIZER_ENV "")
+set(MOTIONGP_SANITIZER_GL_ENV "")
+if(MOTIONGP_SANITIZE)
+  set(MOTIONGP_SANITIZER_ENV
+    "ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
+    "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+  set(MOTIONGP_SANITIZER_GL_ENV ${MOTIONGP_SANITIZER_ENV}
+    "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/sanitizer/lsan_gl.supp:print_suppressions=0")
+endif()
+
+# motiongp_discovered_tests_environment(LIST_VAR ENV...): sets ENVIRONMENT (the whole list) on every
+# test that doctest_discover_tests named in LIST_VAR (its TEST_LIST, `<target>_TESTS` by default).
+# Those tests only exist at ctest time, and doctest_discover_tests' PROPERTIES flattens lists (an
+# ENVIRONMENT of several entries cannot pass through it), so this adds a ctest include file that
+# runs after the discovered tests' own. Call it after doctest_discover_tests in the same directory.
+function(motiongp_discovered_tests_environment list_var)
+  set(env "${ARGN}")
+  set(file "${CMAKE_CURRENT_BINARY_DIR}/${list_var}_environment.cmake")
+  file(WRITE "${file}"
+    "if(NOT \"\${${list_var}}\" STREQUAL \"\")\n"
+    "  set_tests_properties(\${${list_var}} PROPERTIES ENVIRONMENT [==[${env}]==])\n"
+    "endif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${file}")
+endfunction()
