@@ -23,9 +23,10 @@ start=$(date +%s)
 command -v clang++ >/dev/null || { echo "run_fuzz.sh: expected clang++ (apt-get install clang libclang-rt-14-dev), found none" >&2; exit 2; }
 
 mkdir -p "$BUILD"
-# 1. Build (RelWithDebInfo at -O1 without NDEBUG: asserts stay on, stack traces stay readable).
+# 1. Build (-O1 without NDEBUG: asserts stay on; line tables only, for readable stack traces
+#    and a faster build).
 CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -G Ninja -DMOTIONGP_FUZZ=ON \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g" >"$BUILD/configure.log" 2>&1 \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1" >"$BUILD/configure.log" 2>&1 \
   || { cat "$BUILD/configure.log" >&2; exit 2; }
 cmake --build "$BUILD" -j2 --target motiongp_fuzzers
 
