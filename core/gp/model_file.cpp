@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -39,6 +40,20 @@ const json& need(const json& j, const char* key, const std::string& file) {
     return j.at(key);
 }
 
+// An integer that fits in an int. nlohmann's get<int>() converts a float (1e300) or a 64-bit
+// value with a plain cast (undefined behaviour for 1e300, issue 8): check first.
+int intOf(const json& v, const std::string& file, const std::string& what) {
+    const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= std::numeric_limits<int>::max()
+                      : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
+                            v.get<long long>() <= std::numeric_limits<int>::max();
+    if (!fits) throwParseError(file, 0, "an integer for " + what, v.dump());
+    return static_cast<int>(v.get<long long>());
+}
+
+int needInt(const json& j, const char* key, const std::string& file) {
+    return intOf(need(j, key, file), file, "'" + std::string(key) + "'");
+}
+
 Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
     if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
         throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) + " " : "") + "numbers",
@@ -56,8 +71,7 @@ std::vector<int> readInts(const json& j, const std::string& file, const char* wh
     if (!j.is_array()) throwParseError(file, 0, std::string(what) + " as an array of integers", j.type_name());
     std::vector<int> out;
     for (const auto& e : j) {
-        if (!e.is_number_integer()) throwParseError(file, 0, std::string("integers in ") + what, e.dump());
-        out.push_back(e.get<int>());
+        out.push_back(intOf(e, file, std::string("integers in ") + what));
     }
     return out;
 }
@@ -107,7 +121,7 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         throwParseError(file, 0, std::string("\"format\": \"") + kModelFileFormat + "\"",
                         j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
     const json& ver = need(j, "version", file);
-    if (!ver.is_number_integer() || ver.get<int>() < 1 || ver.get<int>() > kModelFileVersion)
+    if (!ver.is_number_integer() || ver.get<long long>() < 1 || ver.get<long long>() > kModelFileVersion)
         throwParseError(file, 0, "model file version ≤ " + std::to_string(kModelFileVersion) +
                                      " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
                         "version " + ver.dump());
@@ -116,9 +130,13 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const std::string kind = need(j, "kernel", file).get<std::string>();
         if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
         m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
-        const int n = need(j, "N", file).get<int>(), D = need(j, "D", file).get<int>();
-        const int d = need(j, "latent_dim", file).get<int>();
-        if (n < 1 || D < 1 || D > kPoseDofs || d < 1) throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim", "N=" + std::to_string(n) + " D=" + std::to_string(D));
+        const int n = needInt(j, "N", file), D = needInt(j, "D", file);
+        const int d = needInt(j, "latent_dim", file);
+        // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
+        // the 47 pose DOFs), else a declared 2^31 − 1 allocated gigabytes (issue 8).
+        if (n < 1 || D < 1 || D > kPoseDofs || d < 1 || d > kPoseDofs)
+            throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim ≤ 47",
+                            "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));
         m.w = readVec(need(j, "w", file), file, "w", D);
         m.mu = readVec(need(j, "mu", file), file, "mu", D);
         const json& xj = need(j, "X", file);
@@ -151,15 +169,15 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         if (static_cast<int>(m.trainingFrames.size()) != n)
             throwParseError(file, 0, std::to_string(n) + " training frames", std::to_string(m.trainingFrames.size()));
         const json& t = need(j, "training", file);
-        m.settings.activeSize = need(t, "active_size", file).get<int>();
-        m.settings.outerIterations = need(t, "outer_iterations", file).get<int>();
-        m.settings.scgIterations = need(t, "scg_iterations", file).get<int>();
-        m.settings.pointIterations = need(t, "point_iterations", file).get<int>();
+        m.settings.activeSize = needInt(t, "active_size", file);
+        m.settings.outerIterations = needInt(t, "outer_iterations", file);
+        m.settings.scgIterations = needInt(t, "scg_iterations", file);
+        m.settings.pointIterations = needInt(t, "point_iterations", file);
         m.settings.tolerance = need(t, "tolerance", file).get<double>();
-        m.settings.frameFirst = need(t, "frame_first", file).get<int>();
-        m.settings.frameLast = need(t, "frame_last", file).get<int>();
-        m.settings.frameStep = need(t, "frame_step", file).get<int>();
-        m.iterations = need(t, "iterations", file).get<int>();
+        m.settings.frameFirst = needInt(t, "frame_first", file);
+        m.settings.frameLast = needInt(t, "frame_last", file);
+        m.settings.frameStep = needInt(t, "frame_step", file);
+        m.iterations = needInt(t, "iterations", file);
         m.converged = need(t, "converged", file).get<bool>();
         if (t.contains("objective_history")) {  // absent in files written before it existed
             const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");
