@@ -22,6 +22,7 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 const char* const kCompareModes[] = {"none", "plain", "model"};
+constexpr int kMaxSyntheticFrames = 1000000;  // ~2.3 h at 120 fps; the editor uses 240
 
 // ---- writing -----------------------------------------------------------------------------------
 
@@ -133,7 +134,10 @@ EditRecord readEdit(const Reader& r, const json& e, const std::string& what) {
 void readClipReference(const Reader& r, const json& c, SessionData& s) {
     s.syntheticClip = r.boolean(r.field(c, "synthetic", "clip"), "clip.synthetic");
     s.syntheticFrames = r.integer(r.field(c, "synthetic_frames", "clip"), "clip.synthetic_frames");
-    if (s.syntheticFrames < 1) r.fail("clip.synthetic_frames ≥ 1", std::to_string(s.syntheticFrames));
+    // loadSessionClip builds the walk with this many frames: bound it, else a declared 2^31 − 1
+    // allocates without limit when the session is opened (issue 8).
+    if (s.syntheticFrames < 1 || s.syntheticFrames > kMaxSyntheticFrames)
+        r.fail("clip.synthetic_frames in 1.." + std::to_string(kMaxSyntheticFrames), std::to_string(s.syntheticFrames));
     s.clipPath = r.string(r.field(c, "path", "clip"), "clip.path");
     s.clipRelativePath = r.string(r.field(c, "relative_path", "clip"), "clip.relative_path");
     s.skeletonPath = r.string(r.field(c, "skeleton_path", "clip"), "clip.skeleton_path");

@@ -40,19 +40,18 @@ const json& need(const json& j, const char* key, const std::string& file) {
     return j.at(key);
 }
 
-// An integer. nlohmann's get<int>() static_casts a float such as 1e300 (UB: float-cast-overflow)
-// and truncates integers beyond int, so check the type and the range first.
-int toInt(const json& v, const std::string& file, const std::string& expected) {
-    const bool fits = v.is_number_unsigned()
-                          ? v.get<unsigned long long>() <= static_cast<unsigned long long>(std::numeric_limits<int>::max())
-                          : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
-                                v.get<long long>() <= std::numeric_limits<int>::max();
-    if (!fits) throwParseError(file, 0, expected, v.dump());
+// An integer that fits in an int. nlohmann's get<int>() converts a float (1e300) or a 64-bit
+// value with a plain cast (undefined behaviour for 1e300, issue 8): check first.
+int intOf(const json& v, const std::string& file, const std::string& what) {
+    const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= std::numeric_limits<int>::max()
+                      : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
+                            v.get<long long>() <= std::numeric_limits<int>::max();
+    if (!fits) throwParseError(file, 0, "an integer for " + what, v.dump());
     return static_cast<int>(v.get<long long>());
 }
 
 int needInt(const json& j, const char* key, const std::string& file) {
-    return toInt(need(j, key, file), file, "field '" + std::string(key) + "' as an integer");
+    return intOf(need(j, key, file), file, "'" + std::string(key) + "'");
 }
 
 Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
@@ -72,7 +71,7 @@ std::vector<int> readInts(const json& j, const std::string& file, const char* wh
     if (!j.is_array()) throwParseError(file, 0, std::string(what) + " as an array of integers", j.type_name());
     std::vector<int> out;
     for (const auto& e : j) {
-        out.push_back(toInt(e, file, std::string("integers in ") + what));
+        out.push_back(intOf(e, file, std::string("integers in ") + what));
     }
     return out;
 }
@@ -122,7 +121,7 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         throwParseError(file, 0, std::string("\"format\": \"") + kModelFileFormat + "\"",
                         j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
     const json& ver = need(j, "version", file);
-    if (!ver.is_number_integer() || ver.get<int>() < 1 || ver.get<int>() > kModelFileVersion)
+    if (!ver.is_number_integer() || ver.get<long long>() < 1 || ver.get<long long>() > kModelFileVersion)
         throwParseError(file, 0, "model file version ≤ " + std::to_string(kModelFileVersion) +
                                      " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
                         "version " + ver.dump());
@@ -133,7 +132,11 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
         const int n = needInt(j, "N", file), D = needInt(j, "D", file);
         const int d = needInt(j, "latent_dim", file);
-        if (n < 1 || D < 1 || D > kPoseDofs || d < 1) throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim", "N=" + std::to_string(n) + " D=" + std::to_string(D));
+        // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
+        // the 47 pose DOFs), else a declared 2^31 − 1 allocated gigabytes (issue 8).
+        if (n < 1 || D < 1 || D > kPoseDofs || d < 1 || d > kPoseDofs)
+            throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim ≤ 47",
+                            "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));
         m.w = readVec(need(j, "w", file), file, "w", D);
         m.mu = readVec(need(j, "mu", file), file, "mu", D);
         const json& xj = need(j, "X", file);

@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kMaxAbsAngleDeg = 1e6;   // beyond this a value is corrupt, not a pose
 constexpr double kMaxAbsTranslation = 1e7;
+constexpr long long kMaxAbsFrameNumber = 1'000'000'000'000;
 
 bool isFrameNumberLine(const std::vector<std::string_view>& tok, long long& number) {
     return tok.size() == 1 && parseInt(tok[0], number);
@@ -78,6 +79,10 @@ Clip parse(TextReader& r, const AsfSkeleton& asf) {
         long long number = 0;
         if (isFrameNumberLine(tok, number)) {
             finishFrame();
+            // Bounded so that number + 1 (and label + frame index later) cannot overflow: a
+            // label of 2^63 − 1 was undefined behaviour (issue 8).
+            if (number < -kMaxAbsFrameNumber || number > kMaxAbsFrameNumber)
+                r.failAt(line, "a frame number within ±1e12", quoteToken(tok[0]));
             if (!clip.frames.empty() && number != expectedNumber)
                 r.failAt(line, "frame number " + std::to_string(expectedNumber),
                          quoteToken(tok[0]));

@@ -1,5 +1,6 @@
 #include "io/clip_json.h"
 
+#include <limits>
 #include <stdexcept>
 
 #include "io/parse_error.h"
@@ -26,6 +27,19 @@ Eigen::Vector3d readVec3(const nlohmann::json& j, const std::string& file, const
         v[i] = j[i].get<double>();
     }
     return v;
+}
+
+// An integer in [lo, hi]: nlohmann's get<int>() casts a float such as 1e300 with undefined
+// behaviour (issue 8), so check the type and range first.
+long long integerOf(const nlohmann::json& v, long long lo, long long hi, const std::string& file,
+                    const std::string& what) {
+    bool ok = false;
+    if (v.is_number_unsigned())  // every non-negative integer; may exceed long long
+        ok = v.get<unsigned long long>() <= static_cast<unsigned long long>(hi) && v.get<long long>() >= lo;
+    else if (v.is_number_integer())
+        ok = v.get<long long>() >= lo && v.get<long long>() <= hi;
+    if (!ok) throwParseError(file, 0, "an integer for " + what, v.dump());
+    return v.get<long long>();
 }
 
 ClipFormat formatFromName(const std::string& s, const std::string& file) {
@@ -82,9 +96,8 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
         clip.convention = field(j, "convention", file, "clip").get<std::string>();
         clip.fps = field(j, "fps", file, "clip").get<double>();
         clip.cmPerFileUnit = field(j, "cm_per_file_unit", file, "clip").get<double>();
-        if (!field(j, "first_frame_label", file, "clip").is_number_integer())  // no float cast (UB)
-            throwParseError(file, 0, "an integer first_frame_label", j["first_frame_label"].dump());
-        clip.firstFrameLabel = field(j, "first_frame_label", file, "clip").get<long long>();
+        clip.firstFrameLabel = integerOf(field(j, "first_frame_label", file, "clip"), std::numeric_limits<long long>::min(),
+                                         std::numeric_limits<long long>::max(), file, "first_frame_label");
         clip.restFrame = field(j, "rest_frame", file, "clip").get<bool>();
         clip.sourcePath = "";
         const auto& joints = field(j, "joints", file, "clip");
@@ -93,10 +106,8 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             Joint jt;
             jt.name = field(jj, "name", file, "joint").get<std::string>();
             jt.bone = field(jj, "bone", file, "joint").get<std::string>();
-            // Integers only: get<int>() would static_cast a float such as 1e300 (UB).
-            if (!field(jj, "parent", file, "joint").is_number_integer())
-                throwParseError(file, 0, "an integer parent", jj["parent"].dump());
-            jt.parent = field(jj, "parent", file, "joint").get<int>();
+            jt.parent = static_cast<int>(integerOf(field(jj, "parent", file, "joint"), std::numeric_limits<int>::min(),
+                                                  std::numeric_limits<int>::max(), file, "parent"));
             jt.offsetCm = readVec3(field(jj, "offset_cm", file, "joint"), file, "offset_cm");
             jt.tailCm = readVec3(field(jj, "tail_cm", file, "joint"), file, "tail_cm");
             const auto& a = field(jj, "axis", file, "joint");
@@ -106,8 +117,7 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             const auto& o = field(jj, "order", file, "joint");
             if (!o.is_array() || o.size() != 3) throwParseError(file, 0, "3 axes for order", o.dump());
             for (int i = 0; i < 3; ++i) {
-                if (!o[i].is_number_integer()) throwParseError(file, 0, "an axis 0..2", o[i].dump());  // no float cast (UB)
-                const int ax = o[i].get<int>();
+                const int ax = static_cast<int>(integerOf(o[i], 0, 2, file, "an axis 0..2 in order"));
                 if (ax < 0 || ax > 2) throwParseError(file, 0, "an axis 0..2", std::to_string(ax));
                 jt.order[i] = ax;
             }
