@@ -142,22 +142,22 @@ TEST_CASE("model_file: newer versions, other formats, truncated and empty files 
     const nlohmann::json doc = nlohmann::json::parse(text);
     nlohmann::json bad = doc;
     bad["N"] = 1e300;
-    expectError(bad.dump(1), "field 'N' as an integer");
+    expectError(bad.dump(1), "an integer for 'N', found 1e+300");
     bad = doc;
     bad["training"]["iterations"] = -1e300;
-    expectError(bad.dump(1), "field 'iterations' as an integer");
+    expectError(bad.dump(1), "an integer for 'iterations', found -1e+300");
     bad = doc;
     bad["active"][0] = 4294967296LL;  // would truncate to 0, a valid index
     expectError(bad.dump(1), "integers in active");
     bad = doc;
     bad["clip"]["joints"][1]["parent"] = 1e300;
-    expectError(bad.dump(1), "an integer parent");
+    expectError(bad.dump(1), "an integer for parent, found 1e+300");
     bad = doc;
     bad["clip"]["joints"][1]["order"][0] = 1e300;
     expectError(bad.dump(1), "an axis 0..2");
     bad = doc;
     bad["clip"]["first_frame_label"] = 1e300;
-    expectError(bad.dump(1), "an integer first_frame_label");
+    expectError(bad.dump(1), "an integer for first_frame_label, found 1e+300");
     CHECK_THROWS_AS(loadModel(tmpDir() + "/does-not-exist.json"), mgp::ParseError);
 }
 
