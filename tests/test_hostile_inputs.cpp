@@ -433,7 +433,7 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     modelCase("future version", "version.json", mutated([&](nlohmann::json& j) { j["version"] = 99; }),
               P("version.json") + ": expected model file version ≤ 1 (this build reads up to version 1), found version 99");
     modelCase("1e308 angle in the clip", "pose.json", mutated([&](nlohmann::json& j) { j["clip"]["poses_deg"][0][3] = 1e308; }),
-              P("pose.json") + ": expected angles within ±1e6 degrees in clip frame 1, found 1e+308");
+              P("pose.json") + ": expected angles within ±1e10 degrees in clip frame 1, found 1e+308");
     modelCase("a BVH passed as the model", "notjson.json", kBvh, "",
               "motiongp: error: " + regexEscape(P("notjson.json")) +
                   R"(: expected a JSON model file \(format motiongp-model\), found damaged JSON \([^\n]*\)\n)");

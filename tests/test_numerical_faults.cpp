@@ -296,11 +296,14 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
         }
         REQUIRE(solver.validate(req) == "");
         const LearnedIkResult r = solver.solve(req);
-        INFO("diagnostic: " << r.diagnostic << ", residual " << r.constraints[0].residualCm);
+        INFO("diagnostic: " << r.diagnostic);
+        REQUIRE(r.constraints.size() == 2);  // every target and pin is reported, whatever happened
+        INFO("residual " << r.constraints[0].residualCm);
         CHECK(finitePose(r.pose));
         CHECK(r.x.allFinite());
         CHECK(r.y.allFinite());
-        CHECK(std::isfinite(r.objective));
+        if (t.offset.norm() < 1e154) CHECK(std::isfinite(r.objective));
+        else CHECK(r.diagnostic.find("no finite objective") != std::string::npos);  // F = residual² overflows: said so
         CHECK(std::isfinite(r.sigma2));
         CHECK(std::isfinite(r.constraints[0].residualCm));
         CHECK(r.reached == t.reachable);

@@ -10,7 +10,9 @@ namespace mgp {
 
 namespace {
 
-constexpr double kMaxAbsPoseDeg = 1e6;
+// Above the readers' 1e6 per value: unwrapping over time (skeleton/clip.h) can carry an angle
+// past 1e6 in a saved clip (a model's clip is unwrapped). FK stays finite far beyond this.
+constexpr double kMaxAbsPoseDeg = 1e10;
 constexpr double kMaxAbsRootCm = 1e9;
 
 nlohmann::json vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
@@ -131,10 +133,9 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
                 throwParseError(file, 0, "47 pose DOFs in frame " + std::to_string(t + 1), poses[t].dump());
             for (int k = 0; k < kPoseDofs; ++k) {
                 y[k] = poses[t][k].get<double>();
-                // The clip readers' bound (io/amc_reader.cpp): beyond it a value is corruption,
-                // and FK of 1e308 degrees is NaN.
+                // Beyond this a value is corruption (FK of 1e308 degrees is NaN).
                 if (!(std::abs(y[k]) <= kMaxAbsPoseDeg))
-                    throwParseError(file, 0, "angles within ±1e6 degrees in clip frame " + std::to_string(t + 1),
+                    throwParseError(file, 0, "angles within ±1e10 degrees in clip frame " + std::to_string(t + 1),
                                     poses[t][k].dump());
             }
             Pose p;
