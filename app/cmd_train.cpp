@@ -18,6 +18,7 @@
 #include "gp/sha256.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
+#include "io/parse_error.h"
 
 namespace mgp::app {
 
@@ -111,7 +112,12 @@ const CommandRegistration reg(
             if (frames.size() < 3)
                 throw UsageError("expected at least 3 training frames after --frames/--step, found " +
                                  std::to_string(frames.size()));
-            const gp::TrainingData data = gp::trainingDataFromClip(clip, frames);
+            gp::TrainingData data;
+            try {
+                data = gp::trainingDataFromClip(clip, frames);
+            } catch (const std::invalid_argument& e) {  // degenerate data (NaN, nothing varies): bad input
+                throw ParseError(o->clip + ": " + e.what());
+            }
 
             gp::TrainOptions opt;
             opt.kind = kind;

@@ -4,6 +4,7 @@
 
 #include "cli_common.h"
 #include "gp/model_file.h"
+#include "io/parse_error.h"
 #include "io/text_reader.h"
 
 namespace mgp::app {
@@ -48,7 +49,14 @@ std::vector<int> parseFrameList(const std::string& text, const std::string& opti
     return out;
 }
 
-gp::ModelVersionPtr loadModelVersion(const std::string& path) { return gp::ModelVersion::make(gp::loadModel(path)); }
+gp::ModelVersionPtr loadModelVersion(const std::string& path) {
+    gp::GpModel model = gp::loadModel(path);
+    try {
+        return gp::ModelVersion::make(std::move(model));
+    } catch (const std::runtime_error&) {  // K could not be factored: a bad file, said as one
+        throwParseError(path, 0, "a model whose kernel matrix K is positive definite", "a K that cannot be factored");
+    }
+}
 
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins) {
     nlohmann::json out = nlohmann::json::array();

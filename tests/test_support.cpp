@@ -1,8 +1,16 @@
 #include "test_support.h"
 
+#include <fcntl.h>
+#include <grp.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <thread>
 
 #include <cstdio>
 #include <cstdlib>
@@ -43,21 +51,113 @@ std::string readText(const std::string& path) {
     return ss.str();
 }
 
-CliResult runCli(const std::string& args) {
-    const std::string dir = scratchDir("cli_capture");
-    const std::string errPath = dir + "/stderr.txt";
-    // No display: `motiongp` with no verb would open the editor window where DISPLAY is set.
-    const std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + MOTIONGP_TEST_BINARY + "' " + args + " 2>'" + errPath + "'";
+CliLimits hostileLimits() {
+    CliLimits l;
+    l.timeoutSeconds = 20.0;
+    l.addressSpaceBytes = std::size_t(2) << 30;
+    return l;
+}
+
+namespace {
+double steadySeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+int captureCounter = 0;
+}  // namespace
+
+Child spawnBounded(const std::vector<std::string>& argv, const CliLimits& limits) {
+    REQUIRE(!argv.empty());
+    // One capture folder per child, so children can overlap.
+    const std::string dir = scratchDir("cli_capture_" + std::to_string(captureCounter++));
+    Child c;
+    c.outPath = dir + "/stdout.txt";
+    c.errPath = dir + "/stderr.txt";
+    // Everything the child needs is prepared before fork (no allocation between fork and exec).
+    std::vector<char*> cargv;
+    for (const std::string& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
+    cargv.push_back(nullptr);
+    std::vector<std::string> envStrings;
+    for (const auto& [k, v] : limits.env) envStrings.push_back(k + "=" + v);
+    c.startSeconds = steadySeconds();
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        ::setpgid(0, 0);  // its own process group: a timeout kills whatever it started too
+        const int out = ::open(c.outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = ::open(c.errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int in = ::open("/dev/null", O_RDONLY);
+        if (out < 0 || err < 0 || in < 0) ::_exit(126);
+        ::dup2(in, 0);
+        ::dup2(out, 1);
+        ::dup2(err, 2);
+        // No display: `motiongp` with no verb would open the editor window where DISPLAY is set.
+        ::unsetenv("DISPLAY");
+        ::unsetenv("WAYLAND_DISPLAY");
+        for (std::string& kv : envStrings) ::putenv(kv.data());
+        if (limits.addressSpaceBytes > 0) {
+            const rlimit rl{limits.addressSpaceBytes, limits.addressSpaceBytes};
+            if (::setrlimit(RLIMIT_AS, &rl) != 0) ::_exit(126);
+        }
+        if (limits.dropRoot && ::geteuid() == 0) {
+            if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(126);
+        }
+        ::execv(cargv[0], cargv.data());
+        ::_exit(127);
+    }
+    ::setpgid(child, child);  // (also from here, so a kill right after spawn reaches the group)
+    c.pid = child;
+    return c;
+}
+
+CliResult waitBounded(const Child& c, const CliLimits& limits) {
     CliResult r;
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    char buf[4096];
-    std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-    const int status = ::pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.err = readText(errPath);
+    int status = 0;
+    while (true) {
+        const pid_t w = ::waitpid(c.pid, &status, WNOHANG);
+        REQUIRE(w >= 0);
+        if (w == c.pid) break;
+        if (limits.timeoutSeconds > 0 && steadySeconds() - c.startSeconds > limits.timeoutSeconds) {
+            r.timedOut = true;
+            ::kill(-c.pid, SIGKILL);
+            ::kill(c.pid, SIGKILL);
+            REQUIRE(::waitpid(c.pid, &status, 0) == c.pid);
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    r.seconds = steadySeconds() - c.startSeconds;
+    if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+    r.out = readText(c.outPath);
+    r.err = readText(c.errPath);
     return r;
+}
+
+CliResult runBounded(const std::vector<std::string>& argv, const CliLimits& limits) {
+    return waitBounded(spawnBounded(argv, limits), limits);
+}
+
+Child spawnCli(const std::vector<std::string>& args, const CliLimits& limits) {
+    std::vector<std::string> argv{MOTIONGP_TEST_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return spawnBounded(argv, limits);
+}
+
+CliResult runCliArgs(const std::vector<std::string>& args, const CliLimits& limits) {
+    std::vector<std::string> argv{MOTIONGP_TEST_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return runBounded(argv, limits);
+}
+
+CliResult runCli(const std::string& args, const CliLimits& limits) {
+    // `exec` so that the shell is replaced by motiongp (the limits and a timeout's kill reach it).
+    return runBounded({"/bin/sh", "-c", std::string("exec '") + MOTIONGP_TEST_BINARY + "' " + args}, limits);
+}
+
+std::string describe(const CliResult& r) {
+    if (r.timedOut) return "timed out after " + std::to_string(r.seconds) + " s";
+    if (r.signal != 0) return "killed by signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")";
+    return "exit " + std::to_string(r.exitCode) + " after " + std::to_string(r.seconds) + " s";
 }
 
 }  // namespace mgp::test

@@ -2,7 +2,10 @@
 // Shared helpers for the unit tests: where the mocap folder is, scratch files, running the CLI.
 #include <doctest/doctest.h>
 
+#include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mgp::test {
 
@@ -15,11 +18,43 @@ void writeText(const std::string& path, const std::string& text);
 std::string readText(const std::string& path);
 
 struct CliResult {
-    int exitCode = -1;
-    std::string out;  // stdout
-    std::string err;  // stderr
+    int exitCode = -1;      // -1 unless the process exited normally
+    int signal = 0;         // the signal that ended it (0: it exited)
+    bool timedOut = false;  // killed (SIGKILL) after CliLimits::timeoutSeconds
+    double seconds = 0.0;   // wall time
+    std::string out;        // stdout
+    std::string err;        // stderr
 };
+
+// Bounds for one child process, applied in the forked child before exec (so a bad input cannot
+// hang the test run, eat the machine's memory or, as root, read a chmod-000 file).
+struct CliLimits {
+    double timeoutSeconds = 0.0;       // > 0: SIGKILL the child's process group after this long
+    std::size_t addressSpaceBytes = 0; // > 0: setrlimit(RLIMIT_AS): a huge allocation fails
+    bool dropRoot = false;             // as root: setgid/setuid(65534) (nobody) before exec
+    std::vector<std::pair<std::string, std::string>> env;  // extra environment variables
+};
+// The bounds of the hostile-input table: 20 s wall clock, 2 GiB address space.
+CliLimits hostileLimits();
+
 // Runs the motiongp binary with the given argument string (shell-quoted by the caller).
-CliResult runCli(const std::string& args);
+CliResult runCli(const std::string& args, const CliLimits& limits = {});
+// Runs the motiongp binary with these arguments, no shell involved.
+CliResult runCliArgs(const std::vector<std::string>& args, const CliLimits& limits = {});
+// Runs any program (argv[0] is its path) under the limits; stdout and stderr are captured.
+CliResult runBounded(const std::vector<std::string>& argv, const CliLimits& limits);
+
+// The same in two halves, for a test that acts on the child while it runs (e.g. SIGKILL mid-save).
+struct Child {
+    int pid = -1;  // also the child's process group
+    std::string outPath, errPath;
+    double startSeconds = 0.0;  // steady clock
+};
+Child spawnBounded(const std::vector<std::string>& argv, const CliLimits& limits);
+Child spawnCli(const std::vector<std::string>& args, const CliLimits& limits);
+// Waits for the child (killing it after limits.timeoutSeconds from its start) and collects it.
+CliResult waitBounded(const Child& child, const CliLimits& limits);
+// "exit 2", "signal 11", "timed out after 20 s": for failure messages.
+std::string describe(const CliResult& r);
 
 }  // namespace mgp::test

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/clip_json.h"
 #include "io/parse_error.h"
+#include "io/text_reader.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp::gp {
@@ -22,6 +24,8 @@ namespace mgp::gp {
 namespace {
 
 using nlohmann::json;
+
+constexpr double kMaxAbsLogParam = 100.0;
 
 json vecJson(const Eigen::VectorXd& v) {
     json a = json::array();
@@ -130,6 +134,12 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const std::string kind = need(j, "kernel", file).get<std::string>();
         if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
         m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
+        // exp(ln θ) must stay finite with room for products (α·e^(η), 1/β): a damaged value such
+        // as 1e308 would otherwise give an infinite K and NaN poses downstream.
+        for (Eigen::Index i = 0; i < m.logParams.size(); ++i)
+            if (std::abs(m.logParams[i]) > kMaxAbsLogParam)
+                throwParseError(file, 0, "log_params within ±100 (kernel parameters exp(±100))",
+                                json(m.logParams[i]).dump());
         const int n = needInt(j, "N", file), D = needInt(j, "D", file);
         const int d = needInt(j, "latent_dim", file);
         // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
@@ -142,12 +152,26 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const json& xj = need(j, "X", file);
         if (!xj.is_array() || static_cast<int>(xj.size()) != n)
             throwParseError(file, 0, std::to_string(n) + " rows of X", xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
+        // Check every row's length before allocating N×d: a damaged latent_dim (say 10^9) must
+        // be an error, not a multi-GB allocation.
+        for (int r = 0; r < n; ++r)
+            if (!xj[r].is_array() || static_cast<long long>(xj[r].size()) != d)
+                throwParseError(file, 0, "X as an array of " + std::to_string(d) + " numbers",
+                                xj[r].is_array() ? std::to_string(xj[r].size()) + " entries" : xj[r].type_name());
         m.X.resize(n, d);
         for (int r = 0; r < n; ++r) m.X.row(r) = readVec(xj[r], file, "X", d).transpose();
         m.active = readInts(need(j, "active", file), file, "active");
         for (int i : m.active)
             if (i < 0 || i >= n) throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
         if (m.active.empty()) throwParseError(file, 0, "a non-empty active set", "[]");
+        // A repeated active row makes K singular (not positive definite without noise); the
+        // active set is a set.
+        {
+            std::vector<char> inActive(static_cast<std::size_t>(n), 0);
+            for (int i : m.active)
+                if (inActive[static_cast<std::size_t>(i)]++)
+                    throwParseError(file, 0, "distinct active indices (a positive definite K)", std::to_string(i) + " twice");
+        }
         m.keptColumns = readInts(need(j, "kept_columns", file), file, "kept_columns");
         m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
         m.constantValues = readVec(need(j, "constant_values", file), file, "constant_values",
@@ -206,11 +230,16 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
 void saveModel(const std::string& path, const GpModel& model) { writeFileAtomically(path, modelToJsonText(model)); }
 
 GpModel loadModel(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throwParseError(path, 0, "a readable model file", "a file that cannot be opened");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return modelFromJsonText(ss.str(), path);
+    // TextReader gives the file checks (missing, directory, special, binary, UTF-16, oversized)
+    // their usual words; an ifstream would read a directory as an "empty file" and /dev/zero
+    // forever. An empty file keeps the model file's own words.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == 0)
+        throwParseError(path, 0, "a JSON model file (format motiongp-model)", "an empty file");
+    TextReader reader = TextReader::fromFile(path);
+    std::string text;
+    while (!reader.atEnd()) text.append(reader.nextLine()).push_back('\n');
+    return modelFromJsonText(text, path);
 }
 
 }  // namespace mgp::gp

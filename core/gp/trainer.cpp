@@ -20,13 +20,27 @@ TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vect
     if (poses47.cols() != kPoseDofs) throw std::invalid_argument("prepareTrainingData: expected 47 columns");
     if (static_cast<Eigen::Index>(frames.size()) != poses47.rows())
         throw std::invalid_argument("prepareTrainingData: one frame number per row");
-    if (poses47.rows() < 3) throw std::invalid_argument("prepareTrainingData: need at least 3 frames");
+    if (poses47.rows() < 3)
+        throw std::invalid_argument("expected at least 3 training frames, found " + std::to_string(poses47.rows()));
+    // A NaN or Inf angle would make every kernel value, and so the saved model, NaN.
+    for (Eigen::Index t = 0; t < poses47.rows(); ++t)
+        for (Eigen::Index k = 0; k < poses47.cols(); ++k)
+            if (!std::isfinite(poses47(t, k)))
+                throw std::invalid_argument("expected finite training poses, found " +
+                                            std::string(std::isnan(poses47(t, k)) ? "NaN" : "Inf") + " at clip frame " +
+                                            std::to_string(frames[static_cast<std::size_t>(t)] + 1) + ", pose DOF " +
+                                            std::to_string(k));
     TrainingData out;
     out.frames = frames;
     out.constantColumns = constantColumns(poses47, 1e-6);
     for (int k = 0; k < kPoseDofs; ++k)
         if (!std::binary_search(out.constantColumns.begin(), out.constantColumns.end(), k))
             out.keptColumns.push_back(k);
+    // Nothing varies: there is nothing to learn (and D = 0 would divide by zero in the gauge).
+    if (out.keptColumns.empty())
+        throw std::invalid_argument(
+            "expected at least one pose DOF that varies over the training frames, found every pose DOF constant (the "
+            "same pose in every frame)");
     out.constantValues.resize(out.constantColumns.size());
     for (std::size_t k = 0; k < out.constantColumns.size(); ++k)
         out.constantValues[k] = poses47.col(out.constantColumns[k]).mean();

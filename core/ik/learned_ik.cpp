@@ -161,9 +161,34 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
         result.iterations = request.maxIterations;  // unknown; LBFGS++ does not report it
     }
     result.evaluations = evaluations_;
-    if (!std::isfinite(bestF_)) {  // nothing finite was ever seen: keep the start
+    // Residuals with stableNorm: a target ~1e200 cm away must give a finite (huge) residual, not
+    // Inf from squaring.
+    auto fillConstraints = [&](bool& tight) {
+        result.reached = true;
+        tight = true;
+        for (const IkConstraint& c : request.constraints) {
+            IkConstraintResult cr;
+            cr.effector = c.effector;
+            cr.pin = c.pin;
+            cr.residualCm = (effectorCm(m.clip.skeleton, fk_, c.effector) - c.targetCm).stableNorm();
+            cr.reached = cr.residualCm <= kReachedToleranceCm;
+            result.reached = result.reached && cr.reached;
+            tight = tight && cr.residualCm < request.convergedResidualCm;
+            result.constraints.push_back(cr);
+        }
+    };
+    if (!std::isfinite(bestF_)) {  // nothing finite was ever seen (F overflowed): keep the start
         result.diagnostic += "; no finite objective";
         result.objective = std::numeric_limits<double>::quiet_NaN();
+        // Still report the start's residuals (not reached) and prior terms: before, the
+        // constraint list came back empty and `pose` printed no target at all.
+        const Eigen::VectorXd y0 = z_.tail(D_);
+        result.y = y0;
+        result.lik = version_->point->evaluate(request.startX, y0, pointWs_, nullptr, nullptr);
+        result.sigma2 = pointWs_.variance;
+        forwardKinematics(m.clip.skeleton, request.start, fk_);
+        bool tight = false;
+        fillConstraints(tight);
         return;
     }
     // Re-evaluate at the best point so every output matches it exactly.
@@ -174,18 +199,8 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     result.pose = pose_;
     result.sigma2 = pointWs_.variance;
     result.lik = version_->point->evaluate(x_, y_, pointWs_, nullptr, nullptr);
-    result.reached = true;
     bool tight = true;
-    for (const IkConstraint& c : request.constraints) {
-        IkConstraintResult cr;
-        cr.effector = c.effector;
-        cr.pin = c.pin;
-        cr.residualCm = (effectorCm(m.clip.skeleton, fk_, c.effector) - c.targetCm).norm();
-        cr.reached = cr.residualCm <= kReachedToleranceCm;
-        result.reached = result.reached && cr.reached;
-        tight = tight && cr.residualCm < request.convergedResidualCm;
-        result.constraints.push_back(cr);
-    }
+    fillConstraints(tight);
     result.converged = tight && result.diagnostic == "stalled";
     if (result.converged) result.diagnostic = "converged";
 }

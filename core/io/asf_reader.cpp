@@ -273,10 +273,19 @@ AsfSkeleton parse(TextReader& r) {
         for (auto it = childrenOf[node].rbegin(); it != childrenOf[node].rend(); ++it)
             stack.push_back(*it);
     }
-    for (std::size_t i = 0; i < bones.size(); ++i)
-        if (jointOfNode[i + 1] < 0)
-            r.failAt(bones[i].line, "bone '" + bones[i].name + "' to appear in :hierarchy",
-                     "a bone with no parent");
+    for (std::size_t i = 0; i < bones.size(); ++i) {
+        if (jointOfNode[i + 1] >= 0) continue;
+        // Not reached from root: either it (or an ancestor) has no parent, or its parents form
+        // a cycle (a ↔ b, or a bone listed as its own child), which "no parent" would misname.
+        std::size_t b = i;
+        for (std::size_t steps = 0; steps <= bones.size() && parentOf[b] >= 0; ++steps)
+            b = static_cast<std::size_t>(parentOf[b]);
+        if (parentOf[b] >= 0)
+            r.failAt(bones[i].line, "bone '" + bones[i].name + "' to hang from root in :hierarchy",
+                     "a cycle through '" + bones[i].name + "'");
+        r.failAt(bones[b].line, "bone '" + bones[b].name + "' to appear in :hierarchy",
+                 "a bone with no parent");
+    }
     sk.resolveEffectors();
     return out;
 }

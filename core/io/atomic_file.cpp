@@ -1,6 +1,8 @@
 #include "io/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,6 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace mgp {
 
@@ -49,6 +52,29 @@ int writeAll(int fd, const char* data, std::size_t size) {
     return 0;
 }
 
+// After a successful save: removes "<target>.tmp.<pid>" files that a killed save of the SAME
+// target left behind, but only those whose process no longer exists (kill(pid, 0) says ESRCH),
+// so a save in progress in another live process is never touched. Best effort: errors ignored.
+void removeStaleTemporaries(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    const std::string prefix = (slash == std::string::npos ? path : path.substr(slash + 1)) + ".tmp.";
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) return;
+    std::vector<std::string> stale;
+    while (const dirent* e = ::readdir(d)) {
+        const std::string name = e->d_name;
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const long pid = std::atol(digits.c_str());
+        if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+        if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) stale.push_back(name);
+    }
+    ::closedir(d);
+    for (const std::string& name : stale) ::unlink((dir + "/" + name).c_str());
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
@@ -68,6 +94,7 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     }
     if (::close(fd) != 0) fail(path, tmp, errno);
     if (::rename(tmp.c_str(), path.c_str()) != 0) fail(path, tmp, errno);
+    removeStaleTemporaries(path);
 }
 
 }  // namespace mgp

@@ -9,6 +9,9 @@
 //   enospc           after the first half, fail as a full disk would (ENOSPC): the temporary file
 //                    is removed and the error reads "... found No space left on device".
 // Anything else in the variable is ignored.
+//
+// A save killed mid-write leaves "<path>.tmp.<pid>" behind (the target itself is untouched). The
+// next successful save of the same target removes such leftovers whose process is gone.
 #include <string>
 
 namespace mgp {

@@ -53,7 +53,7 @@ public:
     }
 
     std::vector<RawJoint> parse() {
-        if (tokens_.empty()) r_.failAt(1, "HIERARCHY", "no text");
+        if (tokens_.empty()) r_.failAt(1, "'HIERARCHY'", "no text");  // quoted as expect() quotes it
         expect("HIERARCHY");
         expect("ROOT");
         parseJoint(-1, 0);
@@ -195,6 +195,8 @@ Clip parse(TextReader& r) {
 
     // MOTION header.
     r.skipBlankAndComments("");
+    // A file cut right after MOTION (or after Frames:) says which header line is missing.
+    if (r.atEnd()) r.failAt(r.lastLineNumber(), "'Frames: N'", "the end of the file");
     const int framesLine = r.lineNumber();
     auto framesTok = splitTokens(r.nextLine());
     long long frames = -1;
@@ -204,6 +206,7 @@ Clip parse(TextReader& r) {
     else r.failAt(framesLine, "'Frames: N'", quoteToken(framesTok.empty() ? "" : framesTok[0]));
     if (frames < 1) r.failAt(framesLine, "a frame count of at least 1", quoteToken(framesTok.back()));
     r.skipBlankAndComments("");
+    if (r.atEnd()) r.failAt(r.lastLineNumber(), "'Frame Time: SECONDS'", "the end of the file");
     const int timeLine = r.lineNumber();
     auto timeTok = splitTokens(r.nextLine());
     double frameTime = 0.0;

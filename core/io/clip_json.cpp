@@ -1,5 +1,6 @@
 #include "io/clip_json.h"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -9,6 +10,11 @@
 namespace mgp {
 
 namespace {
+
+// Above the readers' 1e6 per value: unwrapping over time (skeleton/clip.h) can carry an angle
+// past 1e6 in a saved clip (a model's clip is unwrapped). FK stays finite far beyond this.
+constexpr double kMaxAbsPoseDeg = 1e10;
+constexpr double kMaxAbsRootCm = 1e9;
 
 nlohmann::json vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
@@ -141,9 +147,18 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
         for (std::size_t t = 0; t < poses.size(); ++t) {
             if (!poses[t].is_array() || poses[t].size() != kPoseDofs)
                 throwParseError(file, 0, "47 pose DOFs in frame " + std::to_string(t + 1), poses[t].dump());
-            for (int k = 0; k < kPoseDofs; ++k) y[k] = poses[t][k].get<double>();
+            for (int k = 0; k < kPoseDofs; ++k) {
+                y[k] = poses[t][k].get<double>();
+                // Beyond this a value is corruption (FK of 1e308 degrees is NaN).
+                if (!(std::abs(y[k]) <= kMaxAbsPoseDeg))
+                    throwParseError(file, 0, "angles within ±1e10 degrees in clip frame " + std::to_string(t + 1),
+                                    poses[t][k].dump());
+            }
             Pose p;
             p.rootCm = readVec3(roots[t], file, "root_cm");
+            if (!(p.rootCm.cwiseAbs().maxCoeff() <= kMaxAbsRootCm))
+                throwParseError(file, 0, "root translations within ±1e9 cm in clip frame " + std::to_string(t + 1),
+                                roots[t].dump());
             p.anglesDeg.assign(clip.skeleton.joints.size(), Eigen::Vector3d::Zero());
             layout.apply(y.data(), p);
             clip.frames.push_back(std::move(p));

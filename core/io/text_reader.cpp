@@ -40,11 +40,17 @@ TextReader TextReader::fromFile(const std::string& path, std::size_t maxBytes) {
         throwParseError(path, 0, "a file of at most " + std::to_string(maxBytes >> 20) + " MB",
                         std::to_string(st.st_size) + " bytes");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throwParseError(path, 0, "a readable file", "a file that cannot be opened");
+    // Say why (a chmod-000 file, EACCES, is the usual case).
+    if (!in) throwParseError(path, 0, "a readable file", std::string("a file that cannot be opened (") + std::strerror(errno) + ")");
     std::string text(static_cast<std::size_t>(st.st_size), '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<std::size_t>(in.gcount()));
     if (text.empty()) throwParseError(path, 0, "mocap text", "an empty file");
+    // A UTF-16 file (Windows "Unicode" save) is all NUL bytes to us: name it instead of reporting
+    // "binary data".
+    if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
+        throwParseError(path, 0, "UTF-8 or ASCII text",
+                        text[0] == '\xFF' ? "UTF-16 (byte-order mark FF FE)" : "UTF-16 (byte-order mark FE FF)");
     if (const auto nul = text.find('\0'); nul != std::string::npos) {
         const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + nul, '\n'));
         throwParseError(path, line, "text", "binary data (a NUL byte)");
@@ -56,6 +62,8 @@ TextReader TextReader::fromString(std::string name, std::string text) {
     TextReader r;
     r.name_ = std::move(name);
     r.text_ = std::move(text);
+    // A UTF-8 byte-order mark (some Windows editors write one) is not part of the first keyword.
+    if (r.text_.compare(0, 3, "\xEF\xBB\xBF") == 0) r.text_.erase(0, 3);
     std::string_view all(r.text_);
     std::size_t start = 0;
     while (start < all.size()) {
