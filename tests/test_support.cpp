@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -95,8 +96,20 @@ Child spawnBounded(const std::vector<std::string>& argv, const CliLimits& limits
         ::unsetenv("WAYLAND_DISPLAY");
         for (std::string& kv : envStrings) ::putenv(kv.data());
         if (limits.addressSpaceBytes > 0) {
+#if defined(__SANITIZE_ADDRESS__)
+            // ASan reserves terabytes of shadow address space, so RLIMIT_AS would stop every run:
+            // its allocator enforces the same bound instead (a larger single allocation fails,
+            // and the process dies once its resident memory exceeds it).
+            static std::string asan;
+            const char* base = std::getenv("ASAN_OPTIONS");
+            const std::size_t mb = limits.addressSpaceBytes >> 20;
+            asan = std::string("ASAN_OPTIONS=") + (base ? std::string(base) + ":" : "") +
+                   "max_allocation_size_mb=" + std::to_string(mb) + ":hard_rss_limit_mb=" + std::to_string(mb);
+            ::putenv(asan.data());
+#else
             const rlimit rl{limits.addressSpaceBytes, limits.addressSpaceBytes};
             if (::setrlimit(RLIMIT_AS, &rl) != 0) ::_exit(126);
+#endif
         }
         if (limits.dropRoot && ::geteuid() == 0) {
             if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(126);

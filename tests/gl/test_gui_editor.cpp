@@ -160,6 +160,12 @@ TEST_CASE("gui: dragging the right foot up by 15+ cm leaves it within 0.5 cm of 
 }
 
 TEST_CASE("gui golden: latent map and timeline panels") {
+#if defined(__SANITIZE_ADDRESS__)
+    // The model behind the latent map is trained at test time and its last bits follow the
+    // build's floating point (see compareGolden): a -O1 sanitizer build trains another one.
+    MESSAGE("MOTIONGP_GL_SKIP: the latent-map golden follows the default build's floating point");
+    return;
+#endif
     auto h = makeHarness(true);
     if (!h) return;
     h->app->state().doc.setFrame(59);
