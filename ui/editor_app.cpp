@@ -126,8 +126,18 @@ EditorApp::~EditorApp() {
     ImGui::DestroyContext();
 }
 
-std::string EditorApp::openClip(const std::string& path) {
+std::string EditorApp::reportingErrors(const std::function<void()>& work) {
     try {
+        work();
+        return "";
+    } catch (const std::exception& e) {
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
+std::string EditorApp::openClip(const std::string& path) {
+    return reportingErrors([&] {
         Clip clip = loadClip(path);
         state_.training.cancel();
         state_.doc.setClip(std::move(clip), false);
@@ -142,11 +152,7 @@ std::string EditorApp::openClip(const std::string& path) {
         sessionPath_.clear();
         markSaved();
         remember(path, RecentKind::kClip);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 void EditorApp::openSyntheticClip(const std::string& why) {
@@ -160,7 +166,7 @@ void EditorApp::openSyntheticClip(const std::string& why) {
 }
 
 std::string EditorApp::openModel(const std::string& path) {
-    try {
+    return reportingErrors([&] {
         gp::ModelVersionPtr v = gp::ModelVersion::make(gp::loadModel(path));
         state_.doc.setModel(v, true);
         state_.clipLabel = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
@@ -170,11 +176,7 @@ std::string EditorApp::openModel(const std::string& path) {
         sessionPath_.clear();
         markSaved();
         remember(path, RecentKind::kModel);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 std::string EditorApp::saveModel(const std::string& path) {
@@ -183,16 +185,12 @@ std::string EditorApp::saveModel(const std::string& path) {
         state_.setStatus("no model to save", true);
         return "no model to save";
     }
-    try {
+    return reportingErrors([&] {
         gp::saveModel(path, *v->model);
         state_.modelLabel = baseName(path);
         state_.setStatus("saved model " + path);
         remember(path, RecentKind::kModel);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 std::string EditorApp::startTraining() {
@@ -265,18 +263,14 @@ SessionData sessionOf(const EditorState& s) {
 
 std::string EditorApp::saveSession(const std::string& pathIn) {
     const std::string path = withExtension(pathIn, ".mgsession");
-    try {
+    return reportingErrors([&] {
         mgp::saveSession(path, sessionOf(state_));
         sessionPath_ = absolute(path);
         markSaved();
         forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
         state_.setStatus("saved session " + path);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 std::string EditorApp::autosaveNow() {
@@ -407,30 +401,22 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
 std::string EditorApp::exportBvh(const std::string& pathIn) {
     const std::string path = withExtension(pathIn, ".bvh");
     if (!state_.doc.hasClip()) return "no clip to export";
-    try {
+    return reportingErrors([&] {
         Clip edited = state_.doc.clip();
         for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
         writeBvh(edited, path);
         state_.setStatus("exported " + std::to_string(edited.frameCount()) + " frames (" +
                          std::to_string(state_.doc.edits().size()) + " edited) to " + path);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 std::string EditorApp::exportPng(const std::string& pathIn) {
     const std::string path = withExtension(pathIn, ".png");
     if (!state_.doc.hasClip()) return "no clip to draw";
-    try {
+    return reportingErrors([&] {
         render::writePng(viewport_->renderImage(state_), path);
         state_.setStatus("exported the viewport to " + path);
-        return "";
-    } catch (const std::exception& e) {
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
+    });
 }
 
 void EditorApp::pollJobs() {

@@ -86,6 +86,8 @@ public:
 private:
     enum class DialogPurpose { kNone, kClip, kModel, kSaveModel, kSaveSession, kExportBvh, kExportPng };
     void pollJobs();
+    // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
+    std::string reportingErrors(const std::function<void()>& work);
     void autosaveIfDue();
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
     void prompts();
