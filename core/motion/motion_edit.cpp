@@ -142,7 +142,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& held) 
             targets.push_back({solvedFrames[i], c.effector, c.targetCm, SpanTarget::Kind::kContact});
     }
     span.setTargets(targets);
-    const SpanResult r = span.solve(maxIterations, 1e-9, cancel);
+    const SpanResult r = span.solve(maxIterations, spanTolerance, cancel, spanMethod);
     spanStop = r.stop;
     spanIterations = r.iterations;
     if (r.stop == SpanStop::kCancelled) {

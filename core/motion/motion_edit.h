@@ -52,6 +52,8 @@ struct MotionEditJob {
     std::vector<ContactInterval> heldContacts;
     double lambda = 0.999;
     SpanWeights spanWeights;                     // kSpan only (lambda above overrides its λ)
+    SpanMethod spanMethod = SpanMethod::kLevenbergMarquardt;
+    double spanTolerance = 1e-6;                 // stop when a step lowers F by less (relative)
     int maxIterations = 500;                     // per frame (kPerFrame) or in all (kSpan)
     int threads = 0;                             // ≤ 0: hardware concurrency
     std::atomic<int>* framesDone = nullptr;      // optional: counts solved frames (progress bars)

@@ -1,8 +1,11 @@
 #include "motion/span_solver.h"
 
+#include <Eigen/Eigenvalues>
 #include <LBFGS.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -68,6 +71,9 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     }
     targetsOf_.assign(n_, {});
     scale_ = Eigen::VectorXd::Ones(variableCount());
+    priorGx_.assign(n_, Eigen::VectorXd::Zero(d_));
+    priorGy_.assign(n_, Eigen::VectorXd::Zero(D_));
+    priorVar_.assign(n_, 1.0);
 }
 
 std::string SpanSolver::validate(const std::vector<SpanTarget>& targets) const {
@@ -87,6 +93,8 @@ void SpanSolver::setTargets(std::vector<SpanTarget> targets) {
     targets_ = std::move(targets);
     targetsOf_.assign(n_, {});
     for (std::size_t k = 0; k < targets_.size(); ++k) targetsOf_[targets_[k].frame - first_ - 1].push_back(static_cast<int>(k));
+    targetJac_.assign(targets_.size(), Eigen::MatrixXd::Zero(3, D_));
+    lastZ_.resize(0);
     computeScaling();
 }
 
@@ -112,6 +120,9 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         xt_ = z.segment(i * b, d_);
         yt_ = z.segment(i * b + d_, D_) - resid_[i];
         F += kappa_ * version_->point->evaluate(xt_, yt_, pointWs_, &gx_, &gy_);
+        priorGx_[i] = gx_;
+        priorGy_[i] = gy_;
+        priorVar_[i] = pointWs_.variance;
         grad.segment(i * b, d_) += kappa_ * gx_;
         grad.segment(i * b + d_, D_) += kappa_ * gy_;
         // Stay near the capture: every DOF a little, the root orientation more.
@@ -129,9 +140,10 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         for (int k : targetsOf_[i]) {
             const SpanTarget& tg = targets_[k];
             const Eigen::Vector3d res = effectorCm(sk, fk_, tg.effector) - tg.targetCm;
-            F += res.squaredNorm();
+            F += w_.target * res.squaredNorm();
             effectorJacobian(sk, layout_, fk_, pose_, tg.effector, jac_);
-            gradFull_.noalias() += 2.0 * jac_.transpose() * res;
+            gradFull_.noalias() += 2.0 * w_.target * jac_.transpose() * res;
+            for (int c = 0; c < D_; ++c) targetJac_[k].col(c) = jac_.col(m.keptColumns[c]);
         }
         for (int k = 0; k < D_; ++k) grad[i * b + d_ + k] += gradFull_[m.keptColumns[k]];
     }
@@ -170,8 +182,10 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
     }
     if (!std::isfinite(F) || !grad.allFinite()) {
         grad.setZero();
+        lastZ_.resize(0);
         return std::numeric_limits<double>::infinity();
     }
+    lastZ_ = z;
     return F;
 }
 
@@ -195,7 +209,7 @@ void SpanSolver::computeScaling() {
             forwardKinematics(sk, pose_, fk_);
             for (int k : targetsOf_[i]) {
                 effectorJacobian(sk, layout_, fk_, pose_, targets_[k].effector, jac_);
-                gradFull_.noalias() += jac_.colwise().squaredNorm().transpose();
+                gradFull_.noalias() += w_.target * jac_.colwise().squaredNorm().transpose();
             }
         }
         for (int k = 0; k < D_; ++k) {
@@ -218,7 +232,7 @@ void SpanSolver::computeScaling() {
     if (!scale_.allFinite()) scale_.setOnes();
 }
 
-SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
+SpanResult SpanSolver::solveLbfgs(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
     SpanResult r;
     const int b = d_ + D_;
     LBFGSpp::LBFGSParam<double> param;
@@ -268,6 +282,12 @@ SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const 
         r.diagnostic = "no finite objective";
         best = z0_;
     }
+    return finish(std::move(r), best);
+}
+
+SpanResult SpanSolver::finish(SpanResult r, const Eigen::VectorXd& best) {
+    const int b = d_ + D_;
+    Eigen::VectorXd gs;
     r.objective = objective(best, gs);
     const gp::GpModel& m = *version_->model;
     const Skeleton& sk = m.clip.skeleton;
@@ -287,6 +307,143 @@ SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const 
         r.targetResidualCm[k] = (effectorCm(sk, r.poses[t.frame - first_ - 1], t.effector) - t.targetCm).norm();
     }
     return r;
+}
+
+
+void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
+    const gp::GpModel& m = *version_->model;
+    const int b = d_ + D_;
+    // The caches must describe z (objective() ran there last).
+    if (lastZ_.size() != z.size() || lastZ_ != z) {
+        Eigen::VectorXd g;
+        objective(z, g);
+    }
+    h.setZero();
+    Eigen::VectorXd gxp(d_), gyp(D_), xp(d_);
+    for (int i = 0; i < n_; ++i) {
+        Eigen::Ref<Eigen::MatrixXd> hii = h.block(i, i);
+        xt_ = z.segment(i * b, d_);
+        yt_ = z.segment(i * b + d_, D_) - resid_[i];
+        // Prior y–y block, exact: ∂²L_IK/∂y² = W²/σ²(x).
+        for (int k = 0; k < D_; ++k) hii(d_ + k, d_ + k) += kappa_ * m.w[k] * m.w[k] / priorVar_[i];
+        // Prior x–x and y–x blocks: forward differences of the analytic gradient in x.
+        for (int j = 0; j < d_; ++j) {
+            const double step = 1e-6 * std::max(1.0, std::abs(xt_[j]));
+            xp = xt_;
+            xp[j] += step;
+            version_->point->evaluate(xp, yt_, pointWs_, &gxp, &gyp);
+            hii.col(j).head(d_) += kappa_ * (gxp - priorGx_[i]) / step;
+            hii.col(j).tail(D_) += kappa_ * (gyp - priorGy_[i]) / step;
+        }
+        // Symmetrise the x–x block, mirror x–y, and make the prior's block positive semidefinite:
+        // its y–y part is positive, so it is PSD iff the Schur complement S = Hxx − Hxy Hyy⁻¹ Hyx
+        // is; S's negative eigenvalues (ln σ² is not convex) are raised to a small positive
+        // floor. Otherwise Cholesky would need a large damping on every variable.
+        Eigen::MatrixXd hxx = hii.topLeftCorner(d_, d_);
+        hxx = 0.5 * (hxx + hxx.transpose());
+        const Eigen::MatrixXd hyx = hii.bottomLeftCorner(D_, d_);
+        const Eigen::VectorXd hyyInv = hii.diagonal().tail(D_).cwiseInverse();
+        const Eigen::MatrixXd coupling = hyx.transpose() * hyyInv.asDiagonal() * hyx;
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(hxx - coupling);
+        const Eigen::VectorXd lam = eig.eigenvalues().cwiseMax(kappa_ * 1e-3);
+        hii.topLeftCorner(d_, d_) = eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose() + coupling;
+        hii.topRightCorner(d_, D_) = hyx.transpose();
+        for (int k = 0; k < D_; ++k) hii(d_ + k, d_ + k) += 2.0 * w_.stay;
+        for (int k : rootKept_) hii(d_ + k, d_ + k) += 2.0 * w_.root;
+        for (int k : targetsOf_[i])
+            hii.bottomRightCorner(D_, D_).noalias() += 2.0 * w_.target * targetJac_[k].transpose() * targetJac_[k];
+    }
+    // Smoothness: Σ_s ‖Σ_j c_j u_{s−1+j}‖² adds 2·s·c_a·c_b·I to block (a, b).
+    const int frames = m.clip.frameCount();
+    const double c[3] = {1.0, -2.0, 1.0};
+    for (int s = first_; s <= last_; ++s) {
+        if (s - 1 < 0 || s + 1 >= frames) continue;
+        for (int p = 0; p < 3; ++p)
+            for (int q = 0; q <= p; ++q) {
+                const int ta = s - 1 + p, tb = s - 1 + q;  // ta ≥ tb
+                if (ta <= first_ || ta >= last_ || tb <= first_ || tb >= last_) continue;
+                Eigen::Ref<Eigen::MatrixXd> blk = h.block(ta - first_ - 1, tb - first_ - 1);
+                for (int k = 0; k < d_; ++k) blk(k, k) += 2.0 * w_.smoothLatent * c[p] * c[q];
+                for (int k = 0; k < D_; ++k) blk(d_ + k, d_ + k) += 2.0 * w_.smoothPose * c[p] * c[q];
+            }
+    }
+}
+
+namespace {
+constexpr double kMaxStepDeg = 20.0;
+}  // namespace
+
+SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
+    SpanResult r;
+    const int N = variableCount();
+    Eigen::VectorXd z = z0_, g(N), zTrial(N), gTrial(N), step(N);
+    double F = objective(z, g);
+    int evaluations = 1;
+    if (!std::isfinite(F)) {
+        r.stop = SpanStop::kInvalid;
+        r.diagnostic = "no finite objective at the captured span";
+        r.evaluations = evaluations;
+        return finish(std::move(r), z0_);
+    }
+    BlockBandedMatrix h(n_, d_ + D_, 2), chol;
+    double mu = 1e-6;
+    r.stop = SpanStop::kIterationCap;
+    int it = 0;
+    for (; it < maxIterations; ++it) {
+        if (cancel && cancel->load()) {
+            r.stop = SpanStop::kCancelled;
+            break;
+        }
+        assemble(z, h);
+        bool accepted = false;
+        double decrease = 0.0;
+        for (int tries = 0; tries < 14 && !accepted; ++tries) {
+            if (!chol.factor(h, mu, 1e-9)) {
+                mu = std::max(mu * 10.0, 1e-6);
+                continue;
+            }
+            step = chol.solve(g);
+            // Trust region in joint space: no DOF turns more than kMaxStepDeg in one iteration.
+            double largest = 0.0;
+            for (int i = 0; i < n_; ++i) largest = std::max(largest, step.segment(i * (d_ + D_) + d_, D_).cwiseAbs().maxCoeff());
+            if (largest > kMaxStepDeg) step *= kMaxStepDeg / largest;
+            // Backtrack along the step before damping more: far from the solution the FK's
+            // rotations make the full Gauss–Newton step overshoot, yet its direction is good.
+            for (double alpha = 1.0; alpha > 0.05 && !accepted; alpha *= 0.5) {
+                zTrial = z - alpha * step;
+                const double Ft = objective(zTrial, gTrial);
+                ++evaluations;
+                if (std::isfinite(Ft) && Ft < F) {
+                    decrease = F - Ft;
+                    z.swap(zTrial);
+                    g.swap(gTrial);
+                    F = Ft;
+                    accepted = true;
+                    mu = alpha == 1.0 ? std::max(mu / 10.0, 1e-9) : mu;
+                }
+            }
+            if (!accepted) mu = std::max(mu * 10.0, 1e-6);
+        }
+        if (std::getenv("MGP_SPAN_DEBUG")) std::fprintf(stderr, "it %d F %.9g mu %.3g dec %.3g\n", it, F, mu, decrease);
+        if (!accepted) {  // no decrease at any damping: F's noise floor
+            r.stop = SpanStop::kConverged;
+            r.diagnostic = "no decrease";
+            break;
+        }
+        if (decrease <= relativeTolerance * std::max(1.0, std::abs(F))) {
+            r.stop = SpanStop::kConverged;
+            ++it;
+            break;
+        }
+    }
+    r.iterations = it;
+    r.evaluations = evaluations;
+    return finish(std::move(r), z);
+}
+
+SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel, SpanMethod method) {
+    return method == SpanMethod::kLbfgs ? solveLbfgs(maxIterations, relativeTolerance, cancel)
+                                        : solveLm(maxIterations, relativeTolerance, cancel);
 }
 
 }  // namespace mgp

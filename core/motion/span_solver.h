@@ -7,7 +7,7 @@
 // span), the objective is
 //
 //   F = Σ_t [ κ·L_IK(x_t, y_t − r_t)                      learned prior (gp/point_objective.h)
-//           + Σ_c ‖FK_c(y_t) − p_c,t‖²                     targets: the edited path, held feet, pins
+//           + w_c Σ_c ‖FK_c(y_t) − p_c,t‖²                 targets: the edited path, held feet, pins
 //           + ρ_root ‖u_t,root‖² + ρ ‖u_t‖² ]              root orientation (and everything) near capture
 //     + s_y Σ_s ‖u_{s−1} − 2u_s + u_{s+1}‖² + s_x Σ_s ‖v_{s−1} − 2v_s + v_{s+1}‖²
 //
@@ -25,15 +25,21 @@
 // orientation is a pose DOF like the others but carries an extra stiffness ρ_root, so it turns
 // only when the targets need it.
 //
-// Solver: L-BFGS (LBFGS++) on the stacked z, diagonally preconditioned by the start point's
-// curvature (analytic for y, the smoothness band's diagonal included; central differences of the
-// prior for x), initialised from the captured span.
+// Solver (default): Levenberg–Marquardt on the stacked z from the captured span. Its matrix is
+// the exact Hessian of the quadratic terms (smoothness, stay, root), Gauss–Newton 2JᵀJ for the
+// targets, the prior's exact y–y block κW²/σ²(x) and its x–x and x–y blocks by central
+// differences of the analytic gradient in x. One block per frame; second differences couple
+// frames up to two apart, so the matrix is block-banded and its Cholesky factor costs O(n) in
+// the frame count (motion/block_banded.h). Steps are accepted only when F decreases.
+// Option: L-BFGS (LBFGS++) on z, diagonally preconditioned by the start point's curvature; it
+// needs hundreds of iterations on this stiff, coupled problem and is kept for comparison.
 #include <Eigen/Core>
 #include <atomic>
 #include <string>
 #include <vector>
 
 #include "gp/model_version.h"
+#include "motion/block_banded.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 #include "skeleton/skeleton.h"
@@ -50,12 +56,15 @@ struct SpanTarget {
 
 struct SpanWeights {
     double lambda = 0.999;       // κ = (1 − λ)/λ on L_IK
-    double smoothPose = 1.0;     // s_y, per deg² of second difference of u
+    double target = 100.0;        // weight of every target, per cm² (scales the targets' term)
+    double smoothPose = 0.1;     // s_y, per deg² of second difference of u
     double smoothLatent = 10.0;  // s_x, per (latent unit)² of second difference of v
     double root = 0.1;           // ρ_root, per deg² of root orientation change
     double stay = 1e-4;          // ρ, per deg² of any change
     bool keepResidual = true;    // prior on y − r_t (see above); false: the paper's L_IK(x, y)
 };
+
+enum class SpanMethod { kLevenbergMarquardt, kLbfgs };
 
 enum class SpanStop { kConverged, kIterationCap, kLineSearch, kCancelled, kInvalid };
 const char* spanStopName(SpanStop s);
@@ -89,12 +98,17 @@ public:
     // F and its gradient (exposed for the gradient test).
     double objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad);
     // Minimises F from the captured span. Never throws.
-    SpanResult solve(int maxIterations = 300, double relativeTolerance = 1e-9,
-                     const std::atomic<bool>* cancel = nullptr);
+    // Stops when an accepted step lowers F by less than relativeTolerance·max(1, |F|).
+    SpanResult solve(int maxIterations = 100, double relativeTolerance = 1e-9,
+                     const std::atomic<bool>* cancel = nullptr, SpanMethod method = SpanMethod::kLevenbergMarquardt);
 
 private:
     void poseOf(int i, const Eigen::VectorXd& z, Pose& pose);
     void computeScaling();
+    void assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h);
+    SpanResult solveLbfgs(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
+    SpanResult solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
+    SpanResult finish(SpanResult r, const Eigen::VectorXd& best);
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     SpanWeights w_;
@@ -113,6 +127,12 @@ private:
     Pose pose_;
     Eigen::VectorXd full_, gradFull_, xt_, yt_, gx_, gy_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
+    // What objective() last computed, reused by assemble() at the same z: each target's
+    // Jacobian (kept columns, 3×D) and each frame's prior gradient (x, y) and σ².
+    Eigen::VectorXd lastZ_;
+    std::vector<Eigen::MatrixXd> targetJac_;
+    std::vector<Eigen::VectorXd> priorGx_, priorGy_;
+    std::vector<double> priorVar_;
 };
 
 }  // namespace mgp
