@@ -22,7 +22,7 @@ namespace {
 struct EditOptions {
     std::string model, effector, keys, offset, mode = "direct", solver = "span", out, outModel;
     std::vector<std::string> pins;
-    bool adaptive = false, json = false;
+    bool adaptive = false, json = false, noContacts = false;
     int iterations = 500;
 };
 
@@ -45,6 +45,7 @@ int runEdit(const EditOptions& o) {
     job.maxIterations = o.iterations;
     job.solver = o.solver == "span" ? EditSolver::kSpan : EditSolver::kPerFrame;
     for (const std::string& p : o.pins) job.pins.push_back(parseEffectorOption(p, "--pin"));
+    job.holdContacts = !o.noContacts;
     if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
     job.run();
     Clip edited = job.version->model->clip;
@@ -91,6 +92,7 @@ const CommandRegistration reg("edit", "Edit an effector path (Hermite keys) and 
     sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
     sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
     sub.add_option("--pin", o->pins, "Hold this effector at its captured position on every frame of the span (repeatable)");
+    sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
     sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");

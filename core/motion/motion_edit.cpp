@@ -83,9 +83,17 @@ void MotionEditJob::run() {
     }
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
+    held.clear();
+    if (holdContacts) {
+        const ContactSet set = contacts ? *contacts : detectFootContacts(clip);
+        for (const FootContact& c : set.contacts)
+            if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
+    }
+    for (const ContactInterval& c : heldContacts)
+        if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
     // Held effectors per inner frame: user pins on every frame, contacts on their frames; the
     // edited effector is never held. Targets are the captured positions of that frame.
-    std::vector<std::vector<IkConstraint>> held(count);
+    std::vector<std::vector<IkConstraint>> holds(count);
     {
         FkState fk;
         for (int i = 0; i < count; ++i) {
@@ -93,19 +101,19 @@ void MotionEditJob::run() {
             std::vector<Effector> hold;
             for (Effector e : pins)
                 if (e != effector) hold.push_back(e);
-            for (const ContactInterval& c : heldContacts)
-                if (c.foot != effector && t >= c.first && t <= c.last) hold.push_back(c.foot);
+            for (const ContactInterval& c : held)
+                if (t >= c.first && t <= c.last) hold.push_back(c.foot);
             std::sort(hold.begin(), hold.end());
             hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
             if (hold.empty()) continue;
             forwardKinematics(clip.skeleton, clip.frames[t], fk);
-            for (Effector e : hold) held[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
+            for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
         }
     }
     if (solver == EditSolver::kSpan) {
-        runSpan(held);
+        runSpan(holds);
     } else {
-        runPerFrame(held);
+        runPerFrame(holds);
     }
     if (cancelled) {
         frames = clip.frames;
@@ -123,13 +131,10 @@ void MotionEditJob::run() {
             maxHeldResidualCm = std::max(maxHeldResidualCm, results[i].constraints[k].residualCm);
     }
     std::vector<Eigen::Vector3d> path(target.begin(), target.end());
-    std::vector<ContactInterval> report;
-    for (const ContactInterval& c : heldContacts)
-        if (c.foot != effector && c.last > first && c.first < last) report.push_back(c);
-    quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, report);
+    quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, held);
 }
 
-void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& held) {
+void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds) {
     const int first = keyFrames.front(), last = keyFrames.back();
     if (solvedFrames.empty()) return;  // adjacent end keys: nothing inside
     SpanWeights w = spanWeights;
@@ -138,7 +143,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& held) 
     std::vector<SpanTarget> targets;
     for (std::size_t i = 0; i < solvedFrames.size(); ++i) {
         targets.push_back({solvedFrames[i], effector, pathCm[i], SpanTarget::Kind::kPath});
-        for (const IkConstraint& c : held[i])
+        for (const IkConstraint& c : holds[i])
             targets.push_back({solvedFrames[i], c.effector, c.targetCm, SpanTarget::Kind::kContact});
     }
     span.setTargets(targets);
@@ -160,7 +165,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& held) 
         out.diagnostic = spanStopName(r.stop);
         out.reached = true;
         out.constraints.clear();
-        for (int j = 0; j < 1 + static_cast<int>(held[i].size()); ++j, ++k) {
+        for (int j = 0; j < 1 + static_cast<int>(holds[i].size()); ++j, ++k) {
             IkConstraintResult c;
             c.effector = targets[k].effector;
             c.pin = j > 0;
@@ -174,7 +179,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& held) 
     }
 }
 
-void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& held) {
+void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& holds) {
     const Clip& clip = version->model->clip;
     const int count = static_cast<int>(solvedFrames.size());
     int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -190,7 +195,7 @@ void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& he
             req.start = clip.frames[t];
             req.startX = latentStartForFrame(*version, t);
             req.constraints = {{effector, pathCm[i], false}};
-            req.constraints.insert(req.constraints.end(), held[i].begin(), held[i].end());
+            req.constraints.insert(req.constraints.end(), holds[i].begin(), holds[i].end());
             solver.solve(req, results[i]);
             if (framesDone) ++*framesDone;
         }

@@ -18,10 +18,12 @@
 //     solves run in parallel and the result does not depend on the thread count. Held contacts
 //     and pins become per-frame pins of that frame's solve.
 #include <atomic>
+#include <memory>
 #include <vector>
 
 #include "eval/motion_quality.h"
 #include "ik/learned_ik.h"
+#include "motion/foot_contacts.h"
 #include "motion/hermite_path.h"
 #include "motion/span_solver.h"
 
@@ -47,8 +49,12 @@ struct MotionEditJob {
     EditSolver solver = EditSolver::kSpan;
     // Effectors held at their captured position on every inner frame (user pins, whole span).
     std::vector<Effector> pins;
-    // Intervals over which a foot is held at its captured position (foot contacts); the edited
-    // effector is never held. Frames outside the span are ignored.
+    // Foot contacts (motion/foot_contacts.h) held at their captured position, frame by frame:
+    // every enabled contact of `contacts` (detected on the model's clip with the default rule
+    // when not given) whose foot is not the edited effector.
+    bool holdContacts = true;
+    std::shared_ptr<const ContactSet> contacts;
+    // Further intervals held the same way (frames outside the span are ignored).
     std::vector<ContactInterval> heldContacts;
     double lambda = 0.999;
     SpanWeights spanWeights;                     // kSpan only (lambda above overrides its λ)
@@ -69,6 +75,7 @@ struct MotionEditJob {
     SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
     int spanIterations = 0;                      // kSpan only (−1: unknown, line search ended it)
     SpanQuality quality;                         // the span's report (motion_quality.h)
+    std::vector<ContactInterval> held;           // the contact intervals that were held
     bool cancelled = false;                      // `frames` is then the unedited clip
 
     std::string validate() const;  // "" or "expected …, found …"
@@ -77,8 +84,8 @@ struct MotionEditJob {
     std::vector<Eigen::Vector3d> capturedTrajectory() const;
 
 private:
-    void runSpan(const std::vector<std::vector<IkConstraint>>& held);
-    void runPerFrame(const std::vector<std::vector<IkConstraint>>& held);
+    void runSpan(const std::vector<std::vector<IkConstraint>>& holds);
+    void runPerFrame(const std::vector<std::vector<IkConstraint>>& holds);
 };
 
 }  // namespace mgp

@@ -129,6 +129,9 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         const auto u = z.segment(i * b + d_, D_) - yCap_[c];
         F += w_.stay * u.squaredNorm();
         grad.segment(i * b + d_, D_) += 2.0 * w_.stay * u;
+        const auto v = z.segment(i * b, d_) - xCap_[c];
+        F += w_.stayLatent * v.squaredNorm();
+        grad.segment(i * b, d_) += 2.0 * w_.stayLatent * v;
         for (int k : rootKept_) {
             F += w_.root * u[k] * u[k];
             grad[i * b + d_ + k] += 2.0 * w_.root * u[k];
@@ -224,7 +227,7 @@ void SpanSolver::computeScaling() {
             version_->point->evaluate(xp, yt_, pointWs_, &g1, nullptr);
             xp[j] -= 2.0 * h;
             version_->point->evaluate(xp, yt_, pointWs_, &g2, nullptr);
-            const double curv = kappa_ * std::abs(g1[j] - g2[j]) / (2.0 * h) + 12.0 * w_.smoothLatent;
+            const double curv = kappa_ * std::abs(g1[j] - g2[j]) / (2.0 * h) + 12.0 * w_.smoothLatent + 2.0 * w_.stayLatent;
             scale_[i * b + j] = 1.0 / std::sqrt(std::max(curv, 1e-9));
         }
         (void)c;
@@ -349,6 +352,7 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
         hii.topLeftCorner(d_, d_) = eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose() + coupling;
         hii.topRightCorner(d_, D_) = hyx.transpose();
         for (int k = 0; k < D_; ++k) hii(d_ + k, d_ + k) += 2.0 * w_.stay;
+        for (int k = 0; k < d_; ++k) hii(k, k) += 2.0 * w_.stayLatent;
         for (int k : rootKept_) hii(d_ + k, d_ + k) += 2.0 * w_.root;
         for (int k : targetsOf_[i])
             hii.bottomRightCorner(D_, D_).noalias() += 2.0 * w_.target * targetJac_[k].transpose() * targetJac_[k];

@@ -8,7 +8,7 @@
 //
 //   F = Σ_t [ κ·L_IK(x_t, y_t − r_t)                      learned prior (gp/point_objective.h)
 //           + w_c Σ_c ‖FK_c(y_t) − p_c,t‖²                 targets: the edited path, held feet, pins
-//           + ρ_root ‖u_t,root‖² + ρ ‖u_t‖² ]              root orientation (and everything) near capture
+//           + ρ_root ‖u_t,root‖² + ρ ‖u_t‖² + ρ_x ‖v_t‖² ]  root orientation (and everything) near capture
 //     + s_y Σ_s ‖u_{s−1} − 2u_s + u_{s+1}‖² + s_x Σ_s ‖v_{s−1} − 2v_s + v_{s+1}‖²
 //
 // with s over first..last, so the two captured frames on each side enter the differences and the
@@ -61,6 +61,7 @@ struct SpanWeights {
     double smoothLatent = 10.0;  // s_x, per (latent unit)² of second difference of v
     double root = 0.1;           // ρ_root, per deg² of root orientation change
     double stay = 1e-4;          // ρ, per deg² of any change
+    double stayLatent = 10.0;    // ρ_x, per (latent unit)² of change of x
     bool keepResidual = true;    // prior on y − r_t (see above); false: the paper's L_IK(x, y)
 };
 
