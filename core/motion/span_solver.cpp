@@ -237,7 +237,6 @@ void SpanSolver::computeScaling() {
 
 SpanResult SpanSolver::solveLbfgs(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
     SpanResult r;
-    const int b = d_ + D_;
     LBFGSpp::LBFGSParam<double> param;
     param.m = 10;
     param.epsilon = 1e-10;
