@@ -645,6 +645,7 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     job.keyOffsetsCm = path_->keyOffsetsCm;
     job.mode = path_->mode;
     job.maxIterations = maxIterations;
+    job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
     return regenerate_.start(std::move(job));
 }
 
@@ -678,9 +679,14 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     }
     applyFrames(step.after);
     pushStep(std::move(step));
-    char summary[160];
-    std::snprintf(summary, sizeof summary, "regenerated %zu frames, max residual %.3f cm%s", job->solvedFrames.size(),
-                  job->maxResidualCm, worker_ && adaptive_ ? " (adaptive update queued)" : "");
+    lastRegenerateQuality_ = job->quality;
+    const SpanQuality& q = job->quality;
+    char summary[320];
+    std::snprintf(summary, sizeof summary,
+                  "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
+                  "(captured %.1f°); %zu contact(s) held%s",
+                  job->solvedFrames.size(), job->maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
+                  q.captured.maxDeg, job->held.size(), worker_ && adaptive_ ? " (adaptive update queued)" : "");
     return summary;
 }
 

@@ -193,6 +193,8 @@ public:
     // poses are posted to the adaptive worker). Returns a summary when it applied one, else "";
     // `error` is set when the job failed or was cancelled.
     std::string pollRegenerate(std::string* error = nullptr);
+    // The last finished regeneration's span report (eval/motion_quality.h), if any.
+    const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
 
     // ---- undo / redo -----------------------------------------------------------------------
     bool canUndo() const { return history_.canUndo(); }
@@ -246,6 +248,7 @@ private:
 
     std::optional<PathEdit> path_;
     RegenerateJob regenerate_;
+    std::optional<SpanQuality> lastRegenerateQuality_;
     mutable int trajectoryEffector_ = -1;
     mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
 
