@@ -53,3 +53,34 @@ TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     CHECK(problem.empty());
     CHECK(j.keyFrames == std::vector<int>{0, 5, 35});
 }
+
+#include "edit/editor_document.h"
+
+TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is one undo step") {
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+    doc.setFrame(109);
+    REQUIRE(doc.beginDrag(Effector::kLFoot).empty());
+    const Clip& clip = version->model->clip;
+    const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[109], Effector::kLFoot) + Eigen::Vector3d(0, 10, 0);
+    doc.dragTo(target, 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    const std::string summary = doc.pollRegenerate();
+    CHECK(summary.rfind("drag spread over frames 91-129", 0) == 0);
+    auto poseAt = [&](int t) {
+        doc.setFrame(t);
+        return doc.currentPose();
+    };
+    // Frames 90..128 (0-based) changed, 109 meets the target, and one undo restores all of them.
+    CHECK((effectorCm(clip.skeleton, poseAt(109), Effector::kLFoot) - target).norm() < 0.5);
+    CHECK(largestAngleChangeDeg(poseAt(100), clip.frames[100], clip.skeleton) > 0.1);
+    CHECK(doc.edits().size() == 39);
+    CHECK(doc.undo().empty());
+    CHECK(doc.edits().empty());
+    for (int t : {90, 100, 109, 120, 128}) CHECK(largestAngleChangeDeg(poseAt(t), clip.frames[t], clip.skeleton) == 0.0);
+    CHECK_FALSE(doc.undo().empty());  // nothing else was pushed
+}

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <utility>
 
+#include "motion/drag_falloff.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp {
@@ -393,8 +395,22 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         if (const long seq = worker_->post(std::move(s)); seq > 0) step.samples.push_back(seq);
     }
     applyFrames(step.after);
+    const std::string label = step.label;
     pushStep(std::move(step));
+    startDragFalloff(rec, label);
     return rec;
+}
+
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel) {
+    const gp::ModelVersionPtr v = model();
+    if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
+    const Clip& mc = v->model->clip;
+    if (mc.frameCount() != clip_.frameCount() || mc.skeleton.jointCount() != clip_.skeleton.jointCount()) return;
+    std::string problem;
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, effectorCm(clip_.skeleton, rec.after.pose, rec.effector),
+                                       falloffRadius_, pinnedEffectors(), &problem);
+    if (!problem.empty()) return;  // the drag stays a one-frame edit
+    if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }
 
 void EditorDocument::cancelDrag() {
@@ -656,6 +672,23 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         if (error) *error = regenerate_.takeMessage();
         return "";
     }
+    lastRegenerateQuality_ = job->quality;
+    // A drag's falloff joins the drag's own undo step when that step is still the latest.
+    if (const std::string dragLabel = std::exchange(falloffStepLabel_, std::string()); !dragLabel.empty()) {
+        EditStep* top = history_.topUndo();
+        if (!top || top->label != dragLabel) return "";  // undone or superseded: drop the falloff
+        for (std::size_t i = 0; i < job->solvedFrames.size(); ++i) {
+            const int t = job->solvedFrames[i];
+            if (!top->before.count(t)) top->before[t] = editAt(t);
+            top->after[t] = EditRecord{job->frames[t], job->results[i].x};
+        }
+        applyFrames(top->after);
+        ++revision_;
+        char summary[160];
+        std::snprintf(summary, sizeof summary, "drag spread over frames %d-%d (falloff %d frames)", job->keyFrames.front() + 2,
+                      job->keyFrames.back(), falloffRadius_);
+        return summary;
+    }
     EditStep step;
     char label[96];
     std::snprintf(label, sizeof label, "regenerate %s, frames %d-%d", effectorName(job->effector),
@@ -679,7 +712,6 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     }
     applyFrames(step.after);
     pushStep(std::move(step));
-    lastRegenerateQuality_ = job->quality;
     const SpanQuality& q = job->quality;
     char summary[320];
     std::snprintf(summary, sizeof summary,

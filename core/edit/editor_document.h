@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -155,6 +156,11 @@ public:
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
     // the adaptive worker. Returns what changed.
     std::optional<DragRecord> endDrag();
+    // Drag falloff radius r in frames (motion/drag_falloff.h): with r > 0 and a model, a drag on
+    // frame t is re-solved over t−r..t+r in the background on release and merged into the drag's
+    // own undo step. 0 (the default here) edits the dragged frame only.
+    void setDragFalloff(int frames) { falloffRadius_ = std::max(0, frames); }
+    int dragFalloff() const { return falloffRadius_; }
     void cancelDrag();  // restores the pose before the drag
     bool dragging() const { return drag_.active; }
     Effector dragEffector() const { return drag_.effector; }
@@ -222,6 +228,7 @@ private:
     void updatePinPositions();
     Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
     void pushStep(EditStep step);
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);
     void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
     void resolveStepModels(EditStep& step);
     void installVersion(const gp::ModelVersionPtr& version);
@@ -249,6 +256,8 @@ private:
     std::optional<PathEdit> path_;
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
+    int falloffRadius_ = 0;
+    std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
     mutable int trajectoryEffector_ = -1;
     mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
 
