@@ -107,3 +107,32 @@ TEST_CASE("a user pin holds the left hand on every frame of the span; cancel lea
     CHECK(c.cancelled);
     CHECK(c.frames[110].anglesDeg[3] == c.version->model->clip.frames[110].anglesDeg[3]);
 }
+
+#include "edit/editor_document.h"
+
+TEST_CASE("editor: Regenerate holds the clip's contacts unless the user switches one off") {
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setAdaptiveEnabled(false);
+    const ContactSet& contacts = doc.contacts();
+    std::size_t rightStance = contacts.contacts.size();
+    for (std::size_t i = 0; i < contacts.contacts.size(); ++i)
+        if (contacts.contacts[i].foot == Effector::kRFoot && contacts.contacts[i].contains(110)) rightStance = i;
+    REQUIRE(rightStance < contacts.contacts.size());
+    for (bool on : {true, false}) {
+        CAPTURE(on);
+        doc.setContactEnabled(rightStance, on);
+        doc.setFrame(109);
+        REQUIRE(doc.beginPathEdit(Effector::kLFoot) == "");
+        REQUIRE(doc.setPathKeyOffset(1, {0, 20, 0}) == "");
+        REQUIRE(doc.setPathKeyOffset(2, {0, 20, 0}) == "");
+        REQUIRE(doc.startRegenerate() == "");
+        doc.waitIdle();
+        CHECK(doc.pollRegenerate().find(on ? "1 contact(s) held" : "0 contact(s) held") != std::string::npos);
+        REQUIRE(doc.lastRegenerateQuality());
+        CHECK(doc.lastRegenerateQuality()->contacts.size() == (on ? 1u : 0u));
+        CHECK(doc.lastRegenerateQuality()->worstKeyErrorCm < 0.5);
+        CHECK(doc.undo().empty());
+        doc.endPathEdit();
+    }
+}

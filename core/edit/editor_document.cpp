@@ -43,6 +43,13 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     unwrapClip(clip);
     clip_ = std::move(clip);
+    falloffStepLabel_.clear();
+    lastRegenerateQuality_.reset();
+    try {
+        contacts_ = detectFootContacts(clip_);
+    } catch (const std::exception&) {
+        contacts_ = {};  // no feet to hold: regeneration holds pins only
+    }
     synthetic_ = synthetic;
     frame_ = 0;
     edits_.clear();
@@ -401,6 +408,12 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     return rec;
 }
 
+void EditorDocument::setContactEnabled(std::size_t index, bool on) {
+    if (index >= contacts_.contacts.size() || contacts_.contacts[index].enabled == on) return;
+    contacts_.contacts[index].enabled = on;
+    ++revision_;
+}
+
 void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
@@ -410,6 +423,7 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, effectorCm(clip_.skeleton, rec.after.pose, rec.effector),
                                        falloffRadius_, pinnedEffectors(), &problem);
     if (!problem.empty()) return;  // the drag stays a one-frame edit
+    job.contacts = std::make_shared<const ContactSet>(contacts_);
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }
 
@@ -662,6 +676,7 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     job.mode = path_->mode;
     job.maxIterations = maxIterations;
     job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
+    job.contacts = std::make_shared<const ContactSet>(contacts_);  // the user may have switched some off
     return regenerate_.start(std::move(job));
 }
 

@@ -199,6 +199,10 @@ public:
     // poses are posted to the adaptive worker). Returns a summary when it applied one, else "";
     // `error` is set when the job failed or was cancelled.
     std::string pollRegenerate(std::string* error = nullptr);
+    // Foot contacts of the clip (motion/foot_contacts.h), held by Regenerate and drag falloff;
+    // the user can switch one off.
+    const ContactSet& contacts() const { return contacts_; }
+    void setContactEnabled(std::size_t index, bool on);
     // The last finished regeneration's span report (eval/motion_quality.h), if any.
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
 
@@ -257,6 +261,7 @@ private:
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
     int falloffRadius_ = 0;
+    ContactSet contacts_;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
     mutable int trajectoryEffector_ = -1;
     mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
