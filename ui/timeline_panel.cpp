@@ -90,8 +90,10 @@ void TimelinePanel::draw(EditorState& s) {
         }
     }
     // Foot contacts: a thin lane per foot (left above right) at the bottom of the track, green
-    // when held by regeneration, grey when switched off; right-click one to switch it.
-    const ContactSet& contacts = doc.contacts();
+    // when held by regeneration, grey when switched off; right-click one to switch it. Shown
+    // while they matter: a path is edited or drags spread over a span.
+    static const ContactSet kNone;
+    const ContactSet& contacts = path || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
     const float laneH = 4.0f;
     auto laneY = [&](Effector foot) { return t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * laneH + 1.0f : laneH); };
     int hoveredContact = -1;
