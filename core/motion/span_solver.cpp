@@ -4,8 +4,6 @@
 #include <LBFGS.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -427,7 +425,6 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
             }
             if (!accepted) mu = std::max(mu * 10.0, 1e-6);
         }
-        if (std::getenv("MGP_SPAN_DEBUG")) std::fprintf(stderr, "it %d F %.9g mu %.3g dec %.3g\n", it, F, mu, decrease);
         if (!accepted) {  // no decrease at any damping: F's noise floor
             r.stop = SpanStop::kConverged;
             r.diagnostic = "no decrease";
