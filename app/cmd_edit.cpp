@@ -1,7 +1,9 @@
 // `motiongp edit MODEL --effector EFF --keys 89,103,117,131 --offset dx,dy,dz
-//  [--mode direct|displacement] [--adaptive --out-model MODEL2] --out OUT.bvh [--json]`:
-// moves the middle keys by the offset, regenerates the span with per-frame learned IK and writes
-// the whole clip as BVH (edited frames replaced).
+//  [--mode direct|displacement] [--solver span|per-frame] [--pin EFF]... [--adaptive --out-model MODEL2]
+//  --out OUT.bvh [--json]`:
+// moves the middle keys by the offset, regenerates the span and writes the whole clip as BVH
+// (edited frames replaced). `span` (default) solves the span as one problem with smoothness and
+// held contacts (motion/span_solver.h); `per-frame` is the paper's independent per-frame IK.
 #include <chrono>
 #include <iostream>
 
@@ -12,19 +14,23 @@
 #include "ik_cli.h"
 #include "io/bvh_writer.h"
 #include "motion/motion_edit.h"
+#include "motion_quality_json.h"
 
 namespace mgp::app {
 namespace {
 
 struct EditOptions {
-    std::string model, effector, keys, offset, mode = "direct", out, outModel;
-    bool adaptive = false, json = false;
+    std::string model, effector, keys, offset, mode = "direct", solver = "span", out, outModel;
+    std::vector<std::string> pins;
+    bool adaptive = false, json = false, noContacts = false;
     int iterations = 500;
 };
 
 int runEdit(const EditOptions& o) {
     if (o.mode != "direct" && o.mode != "displacement")
         throw UsageError("expected --mode direct or displacement, found '" + o.mode + "'");
+    if (o.solver != "span" && o.solver != "per-frame")
+        throw UsageError("expected --solver span or per-frame, found '" + o.solver + "'");
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     const auto t0 = std::chrono::steady_clock::now();
     MotionEditJob job;
@@ -37,12 +43,18 @@ int runEdit(const EditOptions& o) {
     for (std::size_t i = 1; i + 1 < job.keyFrames.size(); ++i) job.keyOffsetsCm[i] = offset;
     job.mode = o.mode == "direct" ? PathMode::kDirect : PathMode::kDisplacement;
     job.maxIterations = o.iterations;
+    job.solver = o.solver == "span" ? EditSolver::kSpan : EditSolver::kPerFrame;
+    for (const std::string& p : o.pins) job.pins.push_back(parseEffectorOption(p, "--pin"));
+    job.holdContacts = !o.noContacts;
     if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
     job.run();
     Clip edited = job.version->model->clip;
     edited.frames = job.frames;
     writeBvh(edited, o.out);
-    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm}};
+    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm},
+                     {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
+                     {"quality", spanQualityJson(job.quality)}};
+    if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
     if (o.adaptive) {
         // The solved poses of the moved keys join the model's samples (not the in-betweens).
         gp::ModelVersionPtr version = job.version;
@@ -61,8 +73,12 @@ int runEdit(const EditOptions& o) {
     }
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o.json) printJson(j);
-    else std::cout << "solved " << job.solvedFrames.size() << " frames, max residual " << job.maxResidualCm
-                   << " cm; wrote " << o.out << "\n";
+    else {
+        const SpanQuality& q = job.quality;
+        std::cout << "solved " << job.solvedFrames.size() << " frames (" << editSolverName(job.solver) << "), max residual "
+                  << job.maxResidualCm << " cm; second difference p95 " << q.edited.p95Deg << "° (captured " << q.captured.p95Deg
+                  << "°), max " << q.edited.maxDeg << "° (captured " << q.captured.maxDeg << "°); wrote " << o.out << "\n";
+    }
     return 0;
 }
 
@@ -74,7 +90,10 @@ const CommandRegistration reg("edit", "Edit an effector path (Hermite keys) and 
     sub.add_option("--keys", o->keys, "Key frames counted from 1, e.g. 89,103,117,131")->required();
     sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
     sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
-    sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap per frame")->check(CLI::Range(1, 100000));
+    sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
+    sub.add_option("--pin", o->pins, "Hold this effector at its captured position on every frame of the span (repeatable)");
+    sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
+    sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_option("--out", o->out, "Output BVH (every clip frame, edited ones replaced)")->required();

@@ -340,6 +340,13 @@ void drawModelPanel(EditorState& s) {
 }
 
 void drawIkReadout(EditorState& s) {
+    // Drag falloff radius (core/motion/drag_falloff.h): 0 edits the dragged frame only.
+    int radius = s.doc.dragFalloff();
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::SliderInt("drag falloff (frames)", &radius, 0, 120)) s.doc.setDragFalloff(radius);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
+                          "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -86,6 +86,36 @@ void keyTable(EditorState& s) {
     }
 }
 
+// The last regeneration's span report (core/eval/motion_quality.h): edited next to captured.
+void regenerateReport(const EditorDocument& doc) {
+    const auto& q = doc.lastRegenerateQuality();
+    if (!q) return;
+    if (!ImGui::BeginTable("regen_report", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) return;
+    ImGui::TableSetupColumn("last regeneration");
+    ImGui::TableSetupColumn("edited");
+    ImGui::TableSetupColumn("captured");
+    ImGui::TableHeadersRow();
+    auto row = [](const char* label, const char* fmt, double edited, double captured, bool hasCaptured) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(label);
+        ImGui::TableNextColumn();
+        ImGui::Text(fmt, edited);
+        ImGui::TableNextColumn();
+        if (hasCaptured) ImGui::Text(fmt, captured);
+    };
+    row("2nd difference p95", "%.1f°", q->edited.p95Deg, q->captured.p95Deg, true);
+    row("2nd difference max", "%.1f°", q->edited.maxDeg, q->captured.maxDeg, true);
+    row("worst key error", "%.3f cm", q->worstKeyErrorCm, 0.0, false);
+    row("worst pose change", "%.1f°", q->worstPoseChangeDeg, 0.0, false);
+    for (const ContactTravel& c : q->contacts) {
+        char label[64];
+        std::snprintf(label, sizeof label, "%s contact %d-%d travel", effectorName(c.foot), c.first + 1, c.last + 1);
+        row(label, "%.1f cm", c.editedCm, c.capturedCm, true);
+    }
+    ImGui::EndTable();
+}
+
 void regenerateRow(EditorState& s) {
     EditorDocument& doc = s.doc;
     if (doc.regenerating()) {
@@ -105,8 +135,10 @@ void regenerateRow(EditorState& s) {
     }
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(doc.hasModel() ? "Solve every frame between the first and last key with the learned IK (one undo step)"
+        ImGui::SetTooltip(doc.hasModel() ? "Solve every frame between the first and last key as one problem: learned IK, "
+                                           "smoothness, planted feet and pins held (one undo step)"
                                          : "Regeneration needs a model: train one or open one first");
+    regenerateReport(doc);
 }
 
 }  // namespace

@@ -89,13 +89,38 @@ void TimelinePanel::draw(EditorState& s) {
             dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), c);
         }
     }
+    // Foot contacts: a thin lane per foot (left above right) at the bottom of the track, green
+    // when held by regeneration, grey when switched off; right-click one to switch it. Shown
+    // while they matter: a path is edited or drags spread over a span.
+    static const ContactSet kNone;
+    const ContactSet& contacts = path || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
+    const float laneH = 4.0f;
+    auto laneY = [&](Effector foot) { return t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * laneH + 1.0f : laneH); };
+    int hoveredContact = -1;
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    for (std::size_t i = 0; i < contacts.contacts.size(); ++i) {
+        const FootContact& c = contacts.contacts[i];
+        const float y = laneY(c.foot), x0 = xOf(c.first), x1 = std::max(xOf(c.last), x0 + 2.0f);
+        dl->AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH), c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
+        if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + laneH + 2.0f) hoveredContact = static_cast<int>(i);
+    }
+    if (hoveredContact >= 0 && ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
+        const FootContact& c = contacts.contacts[hoveredContact];
+        doc.setContactEnabled(static_cast<std::size_t>(hoveredContact), !c.enabled);
+    }
     const float xc = xOf(doc.frame());
     dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);
     dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8), IM_COL32(90, 170, 255, 255));
     if (ImGui::IsItemHovered() && !active) {
         const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
         const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
-        ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
+        if (hoveredContact >= 0) {
+            const FootContact& c = contacts.contacts[hoveredContact];
+            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1, c.last + 1,
+                              c.enabled ? "held when regenerating" : "off");
+        } else {
+            ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
+        }
     }
     if (active) {
         const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);

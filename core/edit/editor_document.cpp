@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <utility>
 
+#include "motion/drag_falloff.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp {
@@ -41,6 +43,13 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     unwrapClip(clip);
     clip_ = std::move(clip);
+    falloffStepLabel_.clear();
+    lastRegenerateQuality_.reset();
+    try {
+        contacts_ = detectFootContacts(clip_);
+    } catch (const std::exception&) {
+        contacts_ = {};  // no feet to hold: regeneration holds pins only
+    }
     synthetic_ = synthetic;
     frame_ = 0;
     edits_.clear();
@@ -393,8 +402,29 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         if (const long seq = worker_->post(std::move(s)); seq > 0) step.samples.push_back(seq);
     }
     applyFrames(step.after);
+    const std::string label = step.label;
     pushStep(std::move(step));
+    startDragFalloff(rec, label);
     return rec;
+}
+
+void EditorDocument::setContactEnabled(std::size_t index, bool on) {
+    if (index >= contacts_.contacts.size() || contacts_.contacts[index].enabled == on) return;
+    contacts_.contacts[index].enabled = on;
+    ++revision_;
+}
+
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel) {
+    const gp::ModelVersionPtr v = model();
+    if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
+    const Clip& mc = v->model->clip;
+    if (mc.frameCount() != clip_.frameCount() || mc.skeleton.jointCount() != clip_.skeleton.jointCount()) return;
+    std::string problem;
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, effectorCm(clip_.skeleton, rec.after.pose, rec.effector),
+                                       falloffRadius_, pinnedEffectors(), &problem);
+    if (!problem.empty()) return;  // the drag stays a one-frame edit
+    job.contacts = std::make_shared<const ContactSet>(contacts_);
+    if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }
 
 void EditorDocument::cancelDrag() {
@@ -645,6 +675,8 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     job.keyOffsetsCm = path_->keyOffsetsCm;
     job.mode = path_->mode;
     job.maxIterations = maxIterations;
+    job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
+    job.contacts = std::make_shared<const ContactSet>(contacts_);  // the user may have switched some off
     return regenerate_.start(std::move(job));
 }
 
@@ -654,6 +686,23 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     if (!job) {
         if (error) *error = regenerate_.takeMessage();
         return "";
+    }
+    lastRegenerateQuality_ = job->quality;
+    // A drag's falloff joins the drag's own undo step when that step is still the latest.
+    if (const std::string dragLabel = std::exchange(falloffStepLabel_, std::string()); !dragLabel.empty()) {
+        EditStep* top = history_.topUndo();
+        if (!top || top->label != dragLabel) return "";  // undone or superseded: drop the falloff
+        for (std::size_t i = 0; i < job->solvedFrames.size(); ++i) {
+            const int t = job->solvedFrames[i];
+            if (!top->before.count(t)) top->before[t] = editAt(t);
+            top->after[t] = EditRecord{job->frames[t], job->results[i].x};
+        }
+        applyFrames(top->after);
+        ++revision_;
+        char summary[160];
+        std::snprintf(summary, sizeof summary, "drag spread over frames %d-%d (falloff %d frames)", job->keyFrames.front() + 2,
+                      job->keyFrames.back(), falloffRadius_);
+        return summary;
     }
     EditStep step;
     char label[96];
@@ -678,9 +727,13 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     }
     applyFrames(step.after);
     pushStep(std::move(step));
-    char summary[160];
-    std::snprintf(summary, sizeof summary, "regenerated %zu frames, max residual %.3f cm%s", job->solvedFrames.size(),
-                  job->maxResidualCm, worker_ && adaptive_ ? " (adaptive update queued)" : "");
+    const SpanQuality& q = job->quality;
+    char summary[320];
+    std::snprintf(summary, sizeof summary,
+                  "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
+                  "(captured %.1f°); %zu contact(s) held%s",
+                  job->solvedFrames.size(), job->maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
+                  q.captured.maxDeg, job->held.size(), worker_ && adaptive_ ? " (adaptive update queued)" : "");
     return summary;
 }
 

@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -155,6 +156,11 @@ public:
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
     // the adaptive worker. Returns what changed.
     std::optional<DragRecord> endDrag();
+    // Drag falloff radius r in frames (motion/drag_falloff.h): with r > 0 and a model, a drag on
+    // frame t is re-solved over t−r..t+r in the background on release and merged into the drag's
+    // own undo step. 0 (the default here) edits the dragged frame only.
+    void setDragFalloff(int frames) { falloffRadius_ = std::max(0, frames); }
+    int dragFalloff() const { return falloffRadius_; }
     void cancelDrag();  // restores the pose before the drag
     bool dragging() const { return drag_.active; }
     Effector dragEffector() const { return drag_.effector; }
@@ -193,6 +199,12 @@ public:
     // poses are posted to the adaptive worker). Returns a summary when it applied one, else "";
     // `error` is set when the job failed or was cancelled.
     std::string pollRegenerate(std::string* error = nullptr);
+    // Foot contacts of the clip (motion/foot_contacts.h), held by Regenerate and drag falloff;
+    // the user can switch one off.
+    const ContactSet& contacts() const { return contacts_; }
+    void setContactEnabled(std::size_t index, bool on);
+    // The last finished regeneration's span report (eval/motion_quality.h), if any.
+    const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
 
     // ---- undo / redo -----------------------------------------------------------------------
     bool canUndo() const { return history_.canUndo(); }
@@ -220,6 +232,7 @@ private:
     void updatePinPositions();
     Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
     void pushStep(EditStep step);
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);
     void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
     void resolveStepModels(EditStep& step);
     void installVersion(const gp::ModelVersionPtr& version);
@@ -246,6 +259,10 @@ private:
 
     std::optional<PathEdit> path_;
     RegenerateJob regenerate_;
+    std::optional<SpanQuality> lastRegenerateQuality_;
+    int falloffRadius_ = 0;
+    ContactSet contacts_;
+    std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
     mutable int trajectoryEffector_ = -1;
     mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
 

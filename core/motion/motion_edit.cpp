@@ -1,6 +1,7 @@
 #include "motion/motion_edit.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 
@@ -20,6 +21,15 @@ std::string MotionEditJob::validate() const {
     }
     if (!version->model->clip.skeleton.hasEffector(effector))
         return std::string("expected an effector of this skeleton, found ") + effectorName(effector);
+    for (Effector e : pins)
+        if (!version->model->clip.skeleton.hasEffector(e))
+            return std::string("expected pins on effectors of this skeleton, found ") + effectorName(e);
+    for (const ContactInterval& c : heldContacts) {
+        if (!version->model->clip.skeleton.hasEffector(c.foot))
+            return std::string("expected contacts on effectors of this skeleton, found ") + effectorName(c.foot);
+        if (c.first > c.last) return "expected contact intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
+    }
+    if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
     return "";
 }
 
@@ -55,6 +65,8 @@ std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& 
     return out;
 }
 
+const char* editSolverName(EditSolver s) { return s == EditSolver::kSpan ? "span" : "per-frame"; }
+
 void MotionEditJob::run() {
     if (const std::string problem = validate(); !problem.empty()) throw std::invalid_argument(problem);
     const Clip& clip = version->model->clip;
@@ -71,6 +83,105 @@ void MotionEditJob::run() {
     }
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
+    held.clear();
+    if (holdContacts) {
+        const ContactSet set = contacts ? *contacts : detectFootContacts(clip);
+        for (const FootContact& c : set.contacts)
+            if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
+    }
+    for (const ContactInterval& c : heldContacts)
+        if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
+    // Held effectors per inner frame: user pins on every frame, contacts on their frames; the
+    // edited effector is never held. Targets are the captured positions of that frame.
+    std::vector<std::vector<IkConstraint>> holds(count);
+    {
+        FkState fk;
+        for (int i = 0; i < count; ++i) {
+            const int t = solvedFrames[i];
+            std::vector<Effector> hold;
+            for (Effector e : pins)
+                if (e != effector) hold.push_back(e);
+            for (const ContactInterval& c : held)
+                if (t >= c.first && t <= c.last) hold.push_back(c.foot);
+            std::sort(hold.begin(), hold.end());
+            hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
+            if (hold.empty()) continue;
+            forwardKinematics(clip.skeleton, clip.frames[t], fk);
+            for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
+        }
+    }
+    if (solver == EditSolver::kSpan) {
+        runSpan(holds);
+    } else {
+        runPerFrame(holds);
+    }
+    if (cancelled) {
+        frames = clip.frames;
+        return;
+    }
+    maxResidualCm = maxHeldResidualCm = 0.0;
+    for (int i = 0; i < count; ++i) {
+        frames[solvedFrames[i]] = results[i].pose;
+        if (results[i].constraints.empty()) {
+            maxResidualCm = std::numeric_limits<double>::infinity();
+            continue;
+        }
+        maxResidualCm = std::max(maxResidualCm, results[i].constraints[0].residualCm);
+        for (std::size_t k = 1; k < results[i].constraints.size(); ++k)
+            maxHeldResidualCm = std::max(maxHeldResidualCm, results[i].constraints[k].residualCm);
+    }
+    std::vector<Eigen::Vector3d> path(target.begin(), target.end());
+    quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, held);
+}
+
+void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds) {
+    const int first = keyFrames.front(), last = keyFrames.back();
+    if (solvedFrames.empty()) return;  // adjacent end keys: nothing inside
+    SpanWeights w = spanWeights;
+    w.lambda = lambda;
+    SpanSolver span(version, first, last, w);
+    std::vector<SpanTarget> targets;
+    for (std::size_t i = 0; i < solvedFrames.size(); ++i) {
+        targets.push_back({solvedFrames[i], effector, pathCm[i], SpanTarget::Kind::kPath});
+        for (const IkConstraint& c : holds[i])
+            targets.push_back({solvedFrames[i], c.effector, c.targetCm, SpanTarget::Kind::kContact});
+    }
+    span.setTargets(targets);
+    const SpanResult r = span.solve(maxIterations, spanTolerance, cancel, spanMethod);
+    spanStop = r.stop;
+    spanIterations = r.iterations;
+    if (r.stop == SpanStop::kCancelled) {
+        cancelled = true;
+        return;
+    }
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < solvedFrames.size(); ++i) {
+        LearnedIkResult& out = results[i];
+        out.pose = r.poses[i];
+        out.x = r.x[i];
+        out.y = r.y[i];
+        out.lik = r.lik[i];
+        out.iterations = r.iterations;
+        out.diagnostic = spanStopName(r.stop);
+        out.reached = true;
+        out.constraints.clear();
+        for (int j = 0; j < 1 + static_cast<int>(holds[i].size()); ++j, ++k) {
+            IkConstraintResult c;
+            c.effector = targets[k].effector;
+            c.pin = j > 0;
+            c.residualCm = r.targetResidualCm[k];
+            c.reached = c.residualCm <= kReachedToleranceCm;
+            out.reached = out.reached && c.reached;
+            out.constraints.push_back(c);
+        }
+        out.converged = out.reached && r.stop == SpanStop::kConverged;
+        if (framesDone) ++*framesDone;
+    }
+}
+
+void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& holds) {
+    const Clip& clip = version->model->clip;
+    const int count = static_cast<int>(solvedFrames.size());
     int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     workers = std::max(1, std::min(workers, count));
     auto work = [&](int worker) {
@@ -84,6 +195,7 @@ void MotionEditJob::run() {
             req.start = clip.frames[t];
             req.startX = latentStartForFrame(*version, t);
             req.constraints = {{effector, pathCm[i], false}};
+            req.constraints.insert(req.constraints.end(), holds[i].begin(), holds[i].end());
             solver.solve(req, results[i]);
             if (framesDone) ++*framesDone;
         }
@@ -92,19 +204,7 @@ void MotionEditJob::run() {
     for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
     work(0);
     for (auto& th : pool) th.join();
-
-    if (cancel && cancel->load()) {
-        cancelled = true;
-        frames = clip.frames;
-        return;
-    }
-    maxResidualCm = 0.0;
-    for (int i = 0; i < count; ++i) {
-        frames[solvedFrames[i]] = results[i].pose;
-        const double r = results[i].constraints.empty() ? std::numeric_limits<double>::infinity()
-                                                        : results[i].constraints[0].residualCm;
-        maxResidualCm = std::max(maxResidualCm, r);
-    }
+    if (cancel && cancel->load()) cancelled = true;
 }
 
 }  // namespace mgp

@@ -1,0 +1,35 @@
+#include "motion/drag_falloff.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mgp {
+
+int defaultFalloffRadius(double fps) { return std::max(1, static_cast<int>(std::lround(0.25 * fps))); }
+
+MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int frame, const Eigen::Vector3d& targetCm,
+                             int radius, std::vector<Effector> pins, std::string* problem) {
+    MotionEditJob job;
+    job.version = std::move(version);
+    job.effector = effector;
+    job.mode = PathMode::kDisplacement;
+    job.pins = std::move(pins);
+    auto fail = [&](const std::string& why) {
+        if (problem) *problem = why;
+        return job;
+    };
+    if (!job.version) return fail("expected a model, found none");
+    const int n = job.version->model->clip.frameCount();
+    if (radius < 1) return fail("expected a falloff radius of at least 1 frame, found " + std::to_string(radius));
+    if (frame < 1 || frame > n - 2)
+        return fail("expected a frame with a captured frame on each side (2.." + std::to_string(n - 1) + "), found " + std::to_string(frame + 1));
+    if (!targetCm.allFinite()) return fail("expected a finite drag target, found NaN or Inf");
+    const int first = std::max(0, frame - radius), last = std::min(n - 1, frame + radius);
+    const Eigen::Vector3d captured = job.capturedTrajectory()[frame];
+    job.keyFrames = {first, frame, last};
+    job.keyOffsetsCm = {Eigen::Vector3d::Zero(), targetCm - captured, Eigen::Vector3d::Zero()};
+    if (problem) *problem = job.validate();
+    return job;
+}
+
+}  // namespace mgp

@@ -1,0 +1,139 @@
+#pragma once
+// Span regeneration as one problem: every frame strictly inside (first, last) is solved together.
+//
+// Unknowns: z_t = (x_t, y_t) for each inner frame t (latent point, kept pose columns in degrees).
+// The root translation of every frame stays at its captured value. With u_t = y_t − ŷ_t and
+// v_t = x_t − x̂_t the changes from the capture (ŷ, x̂; zero on the captured frames outside the
+// span), the objective is
+//
+//   F = Σ_t [ κ·L_IK(x_t, y_t − r_t)                      learned prior (gp/point_objective.h)
+//           + w_c Σ_c ‖FK_c(y_t) − p_c,t‖²                 targets: the edited path, held feet, pins
+//           + ρ_root ‖u_t,root‖² + ρ ‖u_t‖² + ρ_x ‖v_t‖² ]  root orientation (and everything) near capture
+//     + s_y Σ_s ‖u_{s−1} − 2u_s + u_{s+1}‖² + s_x Σ_s ‖v_{s−1} − 2v_s + v_{s+1}‖²
+//
+// with s over first..last, so the two captured frames on each side enter the differences and the
+// span joins the capture with continuous value and velocity (C¹). κ = (1 − λ)/λ is the per-frame
+// learned IK's weighting (ik/learned_ik.h) with every target equally stiff.
+//
+// Why this objective and not the per-frame one: per-frame solves start from each frame's own
+// latent point, and neighbouring frames' latent points lie on different branches, so neighbouring
+// solutions pop. Here the smoothness terms act on the CHANGE from the capture, so the captured
+// motion costs nothing and only what the edit adds is smoothed; the captured detail stays.
+// r_t = ŷ_t − f(x̂_t) is the captured frame's residual from the model mean (the detail the model
+// does not explain): with `keepResidual` the prior judges y_t − r_t, so at zero edit the captured
+// span is a stationary point of the prior's pose term instead of being pulled toward f(x). Root
+// orientation is a pose DOF like the others but carries an extra stiffness ρ_root, so it turns
+// only when the targets need it.
+//
+// Solver (default): Levenberg–Marquardt on the stacked z from the captured span. Its matrix is
+// the exact Hessian of the quadratic terms (smoothness, stay, root), Gauss–Newton 2JᵀJ for the
+// targets, the prior's exact y–y block κW²/σ²(x) and its x–x and x–y blocks by central
+// differences of the analytic gradient in x. One block per frame; second differences couple
+// frames up to two apart, so the matrix is block-banded and its Cholesky factor costs O(n) in
+// the frame count (motion/block_banded.h). Steps are accepted only when F decreases.
+// Option: L-BFGS (LBFGS++) on z, diagonally preconditioned by the start point's curvature; it
+// needs hundreds of iterations on this stiff, coupled problem and is kept for comparison.
+#include <Eigen/Core>
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "gp/model_version.h"
+#include "motion/block_banded.h"
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_layout.h"
+#include "skeleton/skeleton.h"
+
+namespace mgp {
+
+// One effector held at a world position on one frame (cm).
+struct SpanTarget {
+    int frame = 0;  // clip frame (0-based), strictly inside the span
+    Effector effector = Effector::kRFoot;
+    Eigen::Vector3d targetCm = Eigen::Vector3d::Zero();
+    enum class Kind { kPath, kContact, kPin } kind = Kind::kPath;
+};
+
+struct SpanWeights {
+    double lambda = 0.999;       // κ = (1 − λ)/λ on L_IK
+    double target = 100.0;        // weight of every target, per cm² (scales the targets' term)
+    double smoothPose = 0.1;     // s_y, per deg² of second difference of u
+    double smoothLatent = 10.0;  // s_x, per (latent unit)² of second difference of v
+    double root = 0.1;           // ρ_root, per deg² of root orientation change
+    double stay = 1e-4;          // ρ, per deg² of any change
+    double stayLatent = 10.0;    // ρ_x, per (latent unit)² of change of x
+    bool keepResidual = true;    // prior on y − r_t (see above); false: the paper's L_IK(x, y)
+};
+
+enum class SpanMethod { kLevenbergMarquardt, kLbfgs };
+
+enum class SpanStop { kConverged, kIterationCap, kLineSearch, kCancelled, kInvalid };
+const char* spanStopName(SpanStop s);
+
+struct SpanResult {
+    std::vector<Pose> poses;          // one per inner frame, first+1..last−1
+    std::vector<Eigen::VectorXd> x;   // latent points
+    std::vector<Eigen::VectorXd> y;   // kept pose columns
+    std::vector<double> lik;          // L_IK(x_t, y_t − r_t)
+    std::vector<double> targetResidualCm;  // one per SpanTarget, in request order
+    double objective = 0.0;
+    int iterations = 0;
+    int evaluations = 0;
+    SpanStop stop = SpanStop::kInvalid;
+    std::string diagnostic;
+};
+
+class SpanSolver {
+public:
+    // first, last: the span's captured end frames (first + 1 < last). Throws
+    // std::invalid_argument when the span does not fit the model's clip.
+    SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {});
+
+    int innerCount() const { return n_; }
+    int variableCount() const { return n_ * (d_ + D_); }
+    // "" or what is wrong with the targets (frame outside the span, NaN, effector absent).
+    std::string validate(const std::vector<SpanTarget>& targets) const;
+    void setTargets(std::vector<SpanTarget> targets);  // must validate
+    // The captured span's stacked z (the start point).
+    const Eigen::VectorXd& capturedZ() const { return z0_; }
+    // F and its gradient (exposed for the gradient test).
+    double objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad);
+    // Minimises F from the captured span. Never throws.
+    // Stops when an accepted step lowers F by less than relativeTolerance·max(1, |F|).
+    SpanResult solve(int maxIterations = 100, double relativeTolerance = 1e-9,
+                     const std::atomic<bool>* cancel = nullptr, SpanMethod method = SpanMethod::kLevenbergMarquardt);
+
+private:
+    void poseOf(int i, const Eigen::VectorXd& z, Pose& pose);
+    void computeScaling();
+    void assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h);
+    SpanResult solveLbfgs(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
+    SpanResult solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
+    SpanResult finish(SpanResult r, const Eigen::VectorXd& best);
+    gp::ModelVersionPtr version_;
+    PoseLayout layout_;
+    SpanWeights w_;
+    int first_, last_, n_, d_, D_;
+    double kappa_;
+    std::vector<Eigen::VectorXd> xCap_;    // x̂ of frames first−1..last+1 (index t − first + 1)
+    std::vector<Eigen::VectorXd> yCap_;    // ŷ likewise
+    std::vector<Eigen::VectorXd> resid_;   // r_t of inner frames
+    std::vector<std::vector<int>> targetsOf_;  // inner frame → indices into targets_
+    std::vector<SpanTarget> targets_;
+    std::vector<int> rootKept_;            // kept-column indices of the root orientation
+    Eigen::VectorXd z0_, scale_;
+    // Workspace.
+    gp::PointWorkspace pointWs_;
+    FkState fk_;
+    Pose pose_;
+    Eigen::VectorXd full_, gradFull_, xt_, yt_, gx_, gy_;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
+    // What objective() last computed, reused by assemble() at the same z: each target's
+    // Jacobian (kept columns, 3×D) and each frame's prior gradient (x, y) and σ².
+    Eigen::VectorXd lastZ_;
+    std::vector<Eigen::MatrixXd> targetJac_;
+    std::vector<Eigen::VectorXd> priorGx_, priorGy_;
+    std::vector<double> priorVar_;
+};
+
+}  // namespace mgp

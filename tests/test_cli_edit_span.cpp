@@ -1,0 +1,60 @@
+// `motiongp edit` with the span solver (default) and the paper's per-frame solver: the --json span
+// report, and one clear error line for bad --solver / --pin values.
+#include <nlohmann/json.hpp>
+
+#include "gp/model_file.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using nlohmann::json;
+using namespace mgp;
+
+namespace {
+std::string savedWalk() {
+    static const std::string path = [] {
+        const std::string dir = test::scratchDir("cli_edit_span_model");
+        gp::saveModel(dir + "/walk.model", *test::walkModel35()->model);
+        return dir + "/walk.model";
+    }();
+    return path;
+}
+}  // namespace
+
+TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on request") {
+    const std::string dir = test::scratchDir("cli_edit_span");
+    const std::string base = "edit '" + savedWalk() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir + "/e.bvh' --json";
+    auto r = test::runCli(base);
+    REQUIRE(r.exitCode == 0);
+    json j = json::parse(r.out);
+    CHECK(j["solver"] == "span");
+    CHECK(j["span"]["stop"] == "converged");
+    const json& q = j["quality"];
+    CHECK(q["first"] == 89);
+    CHECK(q["last"] == 131);
+    CHECK(q["worst_key_error_cm"].get<double>() < 0.5);
+    CHECK(q["second_difference_deg"]["p95"].get<double>() <= 1.5 * q["captured_second_difference_deg"]["p95"].get<double>() + 2.0);
+    REQUIRE(q["contacts"].size() == 1);
+    CHECK(q["contacts"][0]["foot"] == "rfoot");
+    CHECK(std::abs(q["contacts"][0]["travel_cm"].get<double>() - q["contacts"][0]["captured_travel_cm"].get<double>()) <= 1.0);
+    CHECK(j["max_held_residual_cm"].get<double>() < 0.1);
+
+    r = test::runCli(base + " --solver per-frame --no-contacts");
+    REQUIRE(r.exitCode == 0);
+    j = json::parse(r.out);
+    CHECK(j["solver"] == "per-frame");
+    CHECK(j["quality"]["contacts"].empty());  // nothing held
+    CHECK_FALSE(j.contains("span"));
+}
+
+TEST_CASE("motiongp edit: bad --solver and --pin values are one error line") {
+    const std::string base = "edit '" + savedWalk() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
+                             test::scratchDir("cli_edit_span_bad") + "/e.bvh'";
+    auto r = test::runCli(base + " --solver newton");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find("expected --solver span or per-frame, found 'newton'") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    r = test::runCli(base + " --pin nose");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find("--pin") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}

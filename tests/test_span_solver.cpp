@@ -1,0 +1,92 @@
+// Span regeneration as one problem (motion/span_solver.h): exact gradient, and what an edit keeps.
+#include <random>
+
+#include "motion/span_solver.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+// The span 89..101 of 35_01 (1-based) with the right foot's path raised and the left foot held.
+std::vector<SpanTarget> someTargets(const Clip& clip, int first, int last) {
+    std::vector<SpanTarget> t;
+    for (int f = first + 1; f < last; ++f) {
+        const double s = std::sin(3.14159 * (f - first) / (last - first));
+        t.push_back({f, Effector::kRFoot, effectorCm(clip.skeleton, clip.frames[f], Effector::kRFoot) + Eigen::Vector3d(3 * s, 10 * s, 0),
+                     SpanTarget::Kind::kPath});
+        if (f % 2 == 0) t.push_back({f, Effector::kLFoot, effectorCm(clip.skeleton, clip.frames[f], Effector::kLFoot), SpanTarget::Kind::kContact});
+    }
+    return t;
+}
+}  // namespace
+
+TEST_CASE("span objective gradient matches central differences, with and without the captured residual") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    for (bool residual : {true, false}) {
+        CAPTURE(residual);
+        SpanWeights w;
+        w.keepResidual = residual;
+        w.stay = 0.01;  // every term non-negligible
+        SpanSolver solver(version, 88, 100, w);
+        solver.setTargets(someTargets(clip, 88, 100));
+        std::mt19937 rng(7);
+        std::normal_distribution<double> g(0.0, 1.0);
+        Eigen::VectorXd z = solver.capturedZ();
+        // Off the captured point, so no term sits at its stationary point.
+        for (Eigen::Index i = 0; i < z.size(); ++i) z[i] += 0.05 * g(rng) * (std::abs(z[i]) > 1.0 ? 5.0 : 1.0);
+        Eigen::VectorXd grad, gp, gm;
+        const double F = solver.objective(z, grad);
+        REQUIRE(std::isfinite(F));
+        const int b = version->model->latentDim() + version->model->D();
+        // Every x and a spread of y entries across frames, including the root's columns.
+        std::vector<int> idx;
+        for (int i = 0; i < solver.innerCount(); ++i) {
+            idx.push_back(i * b);
+            idx.push_back(i * b + 1);
+            idx.push_back(i * b + 2 + (i * 7) % version->model->D());
+            idx.push_back(i * b + 2);
+        }
+        double worst = 0.0;
+        for (int k : idx) {
+            const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
+            Eigen::VectorXd zp = z, zm = z;
+            zp[k] += h;
+            zm[k] -= h;
+            const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
+            const double rel = std::abs(num - grad[k]) / std::max(1.0, std::abs(num));
+            worst = std::max(worst, rel);
+            CAPTURE(k);
+            CHECK(rel < 1e-5);
+        }
+        MESSAGE("worst relative gradient error: " << worst);
+    }
+}
+
+TEST_CASE("a span with no edit and no targets stays the captured span") {
+    const auto version = test::walkModel35();
+    SpanSolver solver(version, 88, 130);
+    solver.setTargets({});
+    Eigen::VectorXd g;
+    solver.objective(solver.capturedZ(), g);
+    const SpanResult r = solver.solve(200);
+    const Clip& clip = version->model->clip;
+    double worst = 0.0;
+    for (int i = 0; i < solver.innerCount(); ++i)
+        for (std::size_t j = 0; j < r.poses[i].anglesDeg.size(); ++j)
+            worst = std::max(worst, (r.poses[i].anglesDeg[j] - clip.frames[89 + i].anglesDeg[j]).cwiseAbs().maxCoeff());
+    MESSAGE("largest angle change with no edit: " << worst << "°, stop " << std::string(spanStopName(r.stop)));
+    // The prior's x terms (ln σ², ½‖x‖²) still move latent points a little and the pose with them.
+    CHECK(worst < 2.0);
+}
+
+TEST_CASE("span solver refuses targets outside the span and bad spans") {
+    const auto version = test::walkModel35();
+    CHECK_THROWS_AS(SpanSolver(version, 10, 11), std::invalid_argument);
+    CHECK_THROWS_AS(SpanSolver(version, -1, 20), std::invalid_argument);
+    SpanSolver solver(version, 10, 20);
+    CHECK(solver.validate({{10, Effector::kRFoot, Eigen::Vector3d::Zero(), SpanTarget::Kind::kPath}}) == "expected target frames in 12..20, found 11");
+    CHECK(solver.validate({{12, Effector::kRFoot, Eigen::Vector3d::Constant(NAN), SpanTarget::Kind::kPath}}) ==
+          "expected finite targets, found NaN or Inf");
+}
