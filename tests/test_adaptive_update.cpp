@@ -117,7 +117,7 @@ TEST_CASE("a disabled worker keeps the static model") {
     CHECK(worker.current() == v0);
 }
 
-TEST_CASE("an adaptively added row keeps its accepted pose through save and load; a trained model's file is unchanged") {
+TEST_CASE("an adaptively added row keeps its accepted pose through save and load, and a trained model's file is unchanged") {
     const auto v0 = test::walkModel35();
     const gp::GpModel& m0 = *v0->model;
     // The committed fixture re-saved is byte-identical: no edited rows are written for it.

@@ -11,18 +11,6 @@
 using namespace mgp;
 
 namespace {
-gp::ModelVersionPtr kickModel103() {  // a clip the solver's weights were not tuned on
-    static std::once_flag once;
-    static gp::ModelVersionPtr model;
-    std::call_once(once, [] {
-        gp::TrainOptions options;
-        options.activeSize = 100;
-        options.outerIterations = 3;
-        model = gp::ModelVersion::make(gp::trainOnClip(loadClip(test::mocap("asf_amc/10_03.amc")), options).model);
-    });
-    return model;
-}
-
 MotionEditJob edit(gp::ModelVersionPtr v, Effector e, int firstKey1Based, const Eigen::Vector3d& offset) {
     MotionEditJob job;
     job.version = std::move(v);
@@ -71,7 +59,7 @@ TEST_CASE("span regeneration on 35_01: left foot raised 20 cm over 89..131, the 
 TEST_CASE("span regeneration on a held-out kick (10_03, 189..231): raise and sideways, 10 and 40 cm") {
     for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(0, 40, 0), Eigen::Vector3d(20, 0, 0)}) {
         CAPTURE(offset.transpose());
-        MotionEditJob job = edit(kickModel103(), Effector::kRFoot, 189, offset);
+        MotionEditJob job = edit(test::kickModel1003(), Effector::kRFoot, 189, offset);
         job.run();
         CHECK_FALSE(job.held.empty());  // the left foot is planted from frame 224
         checkKeepable(job);
@@ -79,11 +67,11 @@ TEST_CASE("span regeneration on a held-out kick (10_03, 189..231): raise and sid
 }
 
 TEST_CASE("per-frame regeneration (the paper's) pops where the span solver does not") {
-    MotionEditJob perFrame = edit(kickModel103(), Effector::kRFoot, 189, Eigen::Vector3d(0, 20, 0));
+    MotionEditJob perFrame = edit(test::kickModel1003(), Effector::kRFoot, 189, Eigen::Vector3d(0, 20, 0));
     perFrame.solver = EditSolver::kPerFrame;
     perFrame.holdContacts = false;
     perFrame.run();
-    MotionEditJob span = edit(kickModel103(), Effector::kRFoot, 189, Eigen::Vector3d(0, 20, 0));
+    MotionEditJob span = edit(test::kickModel1003(), Effector::kRFoot, 189, Eigen::Vector3d(0, 20, 0));
     span.run();
     MESSAGE("per-frame p95 " << perFrame.quality.edited.p95Deg << "°, span p95 " << span.quality.edited.p95Deg << "°, captured "
                              << span.quality.captured.p95Deg << "°");
@@ -91,7 +79,7 @@ TEST_CASE("per-frame regeneration (the paper's) pops where the span solver does 
     CHECK(perFrame.quality.worstKeyErrorCm <= 0.5);  // both meet the keys
 }
 
-TEST_CASE("a user pin holds the left hand on every frame of the span; cancel leaves the clip unedited") {
+TEST_CASE("a user pin holds the left hand on every frame of the span, and cancel leaves the clip unedited") {
     MotionEditJob job = edit(test::walkModel35(), Effector::kLFoot, 89, Eigen::Vector3d(0, 20, 0));
     job.pins = {Effector::kLHand, Effector::kLFoot};  // a pin on the edited effector is ignored
     job.run();

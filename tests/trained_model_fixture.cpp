@@ -15,6 +15,15 @@ gp::ModelVersionPtr walkModel35() {
     return model;
 }
 
+gp::ModelVersionPtr kickModel1003() {
+    static std::once_flag once;
+    static gp::ModelVersionPtr model;
+    std::call_once(once, [] {
+        model = gp::ModelVersion::make(gp::loadModel(std::string(MOTIONGP_TEST_FIXTURES) + "/kick10_03_fas_m100_t3.model"));
+    });
+    return model;
+}
+
 LearnedIkRequest requestAtFrame(const gp::ModelVersion& version, int frame, int maxIterations) {
     LearnedIkRequest req;
     req.start = version.model->clip.frames[frame];

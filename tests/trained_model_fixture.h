@@ -11,6 +11,9 @@ namespace mgp::test {
 
 std::string walkModelPath();
 gp::ModelVersionPtr walkModel35();
+// The same settings on the held-out kick 10_03 (tests/fixtures/kick10_03_fas_m100_t3.model): a clip
+// the editing solvers' weights were not tuned on.
+gp::ModelVersionPtr kickModel1003();
 // A learned-IK request starting at clip frame `frame` (captured pose, the frame's latent point).
 LearnedIkRequest requestAtFrame(const gp::ModelVersion& version, int frame, int maxIterations = 500);
 
