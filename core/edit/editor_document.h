@@ -32,6 +32,7 @@
 #include "edit/edit_record.h"
 #include "edit/path_edit.h"
 #include "edit/regenerate_job.h"
+#include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
 #include "skeleton/clip.h"
@@ -73,6 +74,8 @@ struct SolveReadout {
     bool reached = false;
     double sigma2 = 0.0, lik = 0.0;
     int iterations = 0;  // total over the drag's last target (live solve + refinements)
+    bool converged = false;
+    IkStop stop = IkStop::kInvalidRequest;  // of the last solve (learned only)
     std::string diagnostic;
 };
 
@@ -153,7 +156,9 @@ public:
     // (converged, no drag, or the refinement budget is spent).
     bool refine(int maxIterations = 50);
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
-    // the adaptive worker. Returns what changed.
+    // the adaptive worker if gp::admitPose admits it (every constraint reached, σ² and L_IK
+    // within the training frames' range); a refused pose stays an edit, and the update table
+    // and status say why. Returns what changed.
     std::optional<DragRecord> endDrag();
     void cancelDrag();  // restores the pose before the drag
     bool dragging() const { return drag_.active; }
@@ -252,9 +257,9 @@ private:
     CompareMode compare_ = CompareMode::kNone;
     std::optional<Pose> comparePose_;
 
-    std::unique_ptr<LearnedIkSolver> solver_, compareSolver_;
-    LearnedIkRequest request_;
-    LearnedIkResult result_;
+    std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;
+    ConstrainedIkRequest request_;
+    ConstrainedIkResult result_;
     SolveReadout readout_;
 
     struct Drag {
