@@ -1,7 +1,8 @@
 // Derivatives the constrained learned IK relies on, each against central differences: the GP
 // mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (PointModel::meanVarianceJacobians), the
 // gradient of the solver's objective F over (x, y) (targets of several strengths and the root
-// stiffness), and its Hessian model's exact blocks (y–y, x–y, x–x).
+// stiffness), the prior's part of its Hessian model (exact), and the contracted second
+// derivative of FK (core/skeleton/forward_kinematics.h).
 #include <cmath>
 
 #include "ik/constrained_ik.h"
@@ -58,7 +59,7 @@ TEST_CASE("∂f/∂x and ∂σ²/∂x match central differences (training point,
     }
 }
 
-TEST_CASE("constrained IK: ∇F and the Hessian model's exact blocks match central differences") {
+TEST_CASE("constrained IK: ∇F and the prior's Hessian match central differences") {
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     const Skeleton& sk = m.clip.skeleton;
@@ -87,26 +88,64 @@ TEST_CASE("constrained IK: ∇F and the Hessian model's exact blocks match centr
     }
     MESSAGE("∇F: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());
     CHECK(worst < 1e-6 * g.cwiseAbs().maxCoeff());
-    // Hessian blocks that are exact: the prior's (targets are Gauss–Newton), so check them on a
-    // request without targets (a pin does not enter F).
-    ConstrainedIkRequest prior = req;
-    prior.constraints = {req.constraints[2]};
-    prior.rootStiffness = 0.0;
-    solver.objective(prior, z, &g);
-    const Eigen::MatrixXd Hp = solver.hessianModel();
-    double worstH = 0.0, scaleH = Hp.cwiseAbs().maxCoeff();
+    // The prior's part of H is its exact Hessian (analytic y–y and x–y blocks, the x–x difference
+    // quotient); targets enter as Gauss–Newton, so check H on a request with none (the root
+    // stiffness is exact too).
+    ConstrainedIkRequest free = req;
+    free.constraints.clear();
+    solver.objective(free, z, &g);
+    const Eigen::MatrixXd Hf = solver.hessianModel();
+    double worstH = 0.0, scaleH = Hf.cwiseAbs().maxCoeff();
     for (int i = 0; i < z.size(); ++i) {
         const double h = 1e-5;
         Eigen::VectorXd zp = z, zm = z, gp_, gm;
         zp[i] += h;
         zm[i] -= h;
-        solver.objective(prior, zp, &gp_);
-        solver.objective(prior, zm, &gm);
+        solver.objective(free, zp, &gp_);
+        solver.objective(free, zm, &gm);
         const Eigen::VectorXd col = (gp_ - gm) / (2 * h);
-        worstH = std::max(worstH, (col - Hp.col(i)).cwiseAbs().maxCoeff());
+        worstH = std::max(worstH, (col - Hf.col(i)).cwiseAbs().maxCoeff());
     }
-    MESSAGE("∇²L_IK model: max abs error " << worstH << " against max |H| " << scaleH);
-    CHECK(worstH < 1e-5 * scaleH);
-    CHECK((Hp - Hp.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    MESSAGE("∇²(L_IK + root): max abs error " << worstH << " against max |H| " << scaleH);
+    CHECK(worstH < 1e-6 * scaleH);
+    CHECK((Hf - Hf.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * scaleH);
     (void)H;
+}
+
+TEST_CASE("λ·∂²FK/∂y² matches central differences of λᵀ J for every effector") {
+    const auto version = test::walkModel35();
+    const Skeleton& sk = version->model->clip.skeleton;
+    const PoseLayout layout(sk);
+    Pose pose = version->model->clip.frames[77];
+    const Eigen::VectorXd y0 = layout.extract(pose);
+    const Eigen::Vector3d lambda(0.7, -1.3, 2.1);
+    FkState fk;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, kPoseDofs), Jp(3, kPoseDofs), Jm(3, kPoseDofs);
+    Eigen::MatrixXd Hc(kPoseDofs, kPoseDofs);
+    for (int e = 0; e < kEffectorCount; ++e) {
+        const auto eff = static_cast<Effector>(e);
+        CAPTURE(std::string(effectorName(eff)));
+        forwardKinematics(sk, pose, fk);
+        effectorHessianContracted(sk, layout, fk, pose, eff, lambda, Hc);
+        double worst = 0.0;
+        for (int i = 0; i < kPoseDofs; ++i) {
+            const double h = 1e-4;  // degrees
+            Eigen::VectorXd yp = y0, ym = y0;
+            yp[i] += h;
+            ym[i] -= h;
+            Pose pp = pose, pm = pose;
+            layout.apply(yp.data(), pp);
+            layout.apply(ym.data(), pm);
+            forwardKinematics(sk, pp, fk);
+            effectorJacobian(sk, layout, fk, pp, eff, Jp);
+            forwardKinematics(sk, pm, fk);
+            effectorJacobian(sk, layout, fk, pm, eff, Jm);
+            const Eigen::VectorXd col = ((Jp - Jm).transpose() * lambda) / (2 * h);
+            worst = std::max(worst, (col - Hc.col(i)).cwiseAbs().maxCoeff());
+        }
+        MESSAGE(effectorName(eff) << ": max abs error " << worst << " against max |H| " << Hc.cwiseAbs().maxCoeff());
+        CHECK(Hc.cwiseAbs().maxCoeff() > 0.0);
+        CHECK(worst < 1e-6 * Hc.cwiseAbs().maxCoeff());
+        CHECK((Hc - Hc.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    }
 }

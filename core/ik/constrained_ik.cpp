@@ -10,7 +10,7 @@ namespace {
 constexpr double kFdStepX = 1e-5;          // central differences of ∂L_IK/∂x for the x–x block
 constexpr double kMaxDamping = 1e12;
 constexpr double kConvergedDamping = 1e-2;  // above this the decrement is not a Newton decrement
-constexpr int kProjections = 3;             // second-order corrections onto the pins per trial
+constexpr int kProjections = 5;             // second-order corrections onto the pins per trial
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -314,7 +314,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         double trialPinNorm = 0.0;
         if (p > 0) {
             for (int k = 0; k < kProjections; ++k) {
-                if (pinResidual(zTrial_, cTrial_) <= 0.1 * request.pinToleranceCm) break;
+                if (pinResidual(zTrial_, cTrial_) <= 0.01 * request.pinToleranceCm) break;
                 nu_ = sLdlt_.solve(cTrial_);
                 zTrial_.noalias() -= HinvAt_ * nu_;
             }
@@ -322,9 +322,17 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             trialPinNorm = cTrial_.lpNorm<1>();
         }
         const double Ft = evaluate(zTrial_, false);
-        const double actual = (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
-        const double gain = pred > 0.0 ? actual / pred : (actual > 0.0 ? 1.0 : -1.0);
-        if (std::isfinite(Ft) && gain > 1e-4) {
+        // Both points on the pins (to a tenth of the tolerance): compare F itself, so round-off in
+        // c times a large ν cannot mask progress. Otherwise the ℓ1 merit.
+        const bool feasible = p == 0 || (pinWorst <= 0.1 * request.pinToleranceCm &&
+                                         cTrial_.cwiseAbs().maxCoeff() <= 0.1 * request.pinToleranceCm);
+        const double actual = feasible ? F - Ft : (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
+        const double predicted = feasible ? modelDecrease : pred;
+        const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
+        // Pins never get worse than the tolerance or where they are: a trial that leaves them (a
+        // projection that could not return, e.g. at a straight leg) is rejected, so μ shrinks the step.
+        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max(request.pinToleranceCm, pinWorst);
+        if (std::isfinite(Ft) && pinsHeld && gain > 1e-4) {
             z_ = zTrial_;
             F = evaluate(z_, true);
             if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {

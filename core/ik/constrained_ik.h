@@ -22,11 +22,14 @@
 // Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
 //   H = ∇²L_IK (y–y and x–y blocks analytic from ∂f/∂x and ∂σ²/∂x; x–x block by central differences
 //       of the analytic x-gradient, so the ln σ² term is handled exactly)
-//     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal,
+//     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal.
+// (The full Newton model, adding κe_t·∇²FK_t and the pins' ν·∇²FK_p, was measured and lost:
+// it is indefinite away from the solution and needed 2–3× the iterations; docs/maths-ik.md.)
 // Marquardt damping μ·diag(H). Each step solves the KKT system of the pins' linearisation
 // (range-space form, A (H + μ diag H)⁻¹ Aᵀ), then a second-order correction projects the trial
-// point back onto the pins (up to 3 Gauss–Newton projections in the same metric). Steps are
-// accepted on the ℓ1 merit F + ν‖c‖₁ by the gain ratio (Nielsen's μ update).
+// point back onto the pins (up to 5 Gauss–Newton projections in the same metric). Steps are
+// accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
+// tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁.
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
