@@ -19,6 +19,7 @@
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
 #include "ik_cli.h"
+#include "motion/foot_contacts.h"
 
 namespace mgp::app {
 namespace {
@@ -37,6 +38,7 @@ nlohmann::json verdictJson(const gp::AdmissionVerdict& v) {
             {"reached", v.reached},
             {"sigma2", v.sigma2},
             {"sigma2_limit", v.range.sigma2Limit},
+            {"sigma2_percentile", v.range.sigma2Percentile},
             {"L_IK", v.lik},
             {"L_IK_limit", v.range.likLimit},
             {"percentile", v.range.percentile},
@@ -65,8 +67,26 @@ int runPose(const PoseOptions& o) {
         const Effector eff = parseEffectorOption(p, "--pin");
         constraints.push_back({eff, effectorCm(clip.skeleton, fk, eff), true});
     }
-    for (const std::string& r : o.releases) parseEffectorOption(r, "--release");
+    // Feet in ground contact on this frame are held like pins unless released (or already
+    // constrained): the contact rule of core/motion/foot_contacts.h.
+    bool released[kEffectorCount] = {};
+    for (const std::string& r : o.releases) {
+        const Effector eff = parseEffectorOption(r, "--release");
+        if (eff != Effector::kLFoot && eff != Effector::kRFoot)
+            throw UsageError("expected --release lfoot or rfoot, found '" + r + "'");
+        released[static_cast<int>(eff)] = true;
+    }
     nlohmann::json j;
+    j["contact_pins"] = nlohmann::json::array();
+    const ContactSet contacts = detectFootContacts(clip);
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+        if (!clip.skeleton.hasEffector(foot) || released[static_cast<int>(foot)] || !contacts.at(foot, frame)) continue;
+        bool constrained = false;
+        for (const IkConstraint& c : constraints) constrained |= c.effector == foot;
+        if (constrained) continue;
+        constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+        j["contact_pins"].push_back(effectorName(foot));
+    }
     Pose pose;
     std::vector<IkConstraintResult> results;
     bool reached = false;
@@ -194,8 +214,8 @@ const CommandRegistration reg("pose", "Solve IK on one frame of a model's clip (
     sub.add_option("--solver", o->solver, "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
     sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive,
-                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and σ², L_IK lie "
-                 "within the training frames' 99th percentile");
+                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached, L_IK is within the training "
+                 "frames' 99th percentile and σ² within twice its own");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_flag("--json", o->json, "Print one JSON object");
     return [o]() { return runPose(*o); };

@@ -41,6 +41,8 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     unwrapClip(clip);
     clip_ = std::move(clip);
+    contacts_.reset();
+    contactReleased_.fill(false);
     synthetic_ = synthetic;
     frame_ = 0;
     edits_.clear();
@@ -249,7 +251,26 @@ std::vector<IkConstraint> EditorDocument::constraintsFor(const Eigen::Vector3d& 
         const auto e = static_cast<Effector>(i);
         if (pins_[i] && e != drag_.effector) cs.push_back({e, pinPositions_[i], true});
     }
+    for (const IkConstraint& c : drag_.contactPins)
+        if (!pins_[static_cast<int>(c.effector)] && c.effector != drag_.effector) cs.push_back(c);
     return cs;
+}
+
+bool EditorDocument::inContact(Effector foot) const {
+    if (!hasClip() || (foot != Effector::kLFoot && foot != Effector::kRFoot)) return false;
+    if (!contacts_) {
+        try {
+            contacts_ = detectFootContacts(clip_);
+        } catch (const std::exception&) {
+            contacts_ = ContactSet{};  // a clip the rule cannot read has no contacts
+        }
+    }
+    return contacts_->at(foot, frame_) != nullptr;
+}
+
+void EditorDocument::setContactReleased(Effector foot, bool released) {
+    if (contactReleased_[static_cast<int>(foot)] != released) ++revision_;
+    contactReleased_[static_cast<int>(foot)] = released;
 }
 
 std::string EditorDocument::beginDrag(Effector e) {
@@ -272,6 +293,9 @@ std::string EditorDocument::beginDrag(Effector e) {
         if (!solver_ || solver_->version() != v) solver_ = std::make_unique<ConstrainedIkSolver>(v);
     }
     updatePinPositions();
+    for (Effector f : {Effector::kLFoot, Effector::kRFoot})
+        if (f != e && hasEffector(f) && !contactReleased(f) && inContact(f))
+            drag_.contactPins.push_back({f, effectorCm(clip_.skeleton, drag_.startPose, f), true});
     latentPath_.clear();
     if (drag_.x.size() > 0) latentPath_.push_back(drag_.x);
     drag_.active = true;

@@ -35,6 +35,7 @@
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
+#include "motion/foot_contacts.h"
 #include "skeleton/clip.h"
 
 namespace mgp {
@@ -146,6 +147,12 @@ public:
     void setPinned(Effector e, bool on);
     bool pinned(Effector e) const { return pins_[static_cast<int>(e)]; }
     std::vector<Effector> pinnedEffectors() const;
+    // A foot in ground contact on the current frame (core/motion/foot_contacts.h) is held like a
+    // pin during a drag of another effector, unless released here (released feet stay released
+    // until set back, on every frame).
+    bool inContact(Effector foot) const;
+    void setContactReleased(Effector foot, bool released);
+    bool contactReleased(Effector foot) const { return contactReleased_[static_cast<int>(foot)]; }
 
     // ---- drag ------------------------------------------------------------------------------
     // Returns "" when the drag started, else why not (no clip, effector absent).
@@ -238,6 +245,8 @@ private:
     std::map<int, EditRecord> edits_;
     std::array<bool, kEffectorCount> pins_{};
     std::array<Eigen::Vector3d, kEffectorCount> pinPositions_{};
+    std::array<bool, kEffectorCount> contactReleased_{};
+    mutable std::optional<ContactSet> contacts_;  // of clip_, detected on first use
 
     std::unique_ptr<AdaptiveWorker> worker_;
     gp::ModelVersionPtr compareModel_;
@@ -272,6 +281,7 @@ private:
         int versionBefore = 0;
         int refineBudget = 0;
         bool converged = false;
+        std::vector<IkConstraint> contactPins;  // feet in contact, where they were when the drag began
     } drag_;
     bool latentDrag_ = false;
     std::optional<EditRecord> latentBefore_;

@@ -36,7 +36,21 @@ TrainingRange computeTrainingRange(const GpModel& model, const PointModel& point
         lik.push_back(l);
         s2.push_back(ws.variance);
     }
-    out.sigma2Limit = percentileOf(s2, percentile);
+    // σ² is near 1/β at a training row itself, so the rows alone would refuse nearly every new
+    // pose: the reference also holds σ² halfway between consecutive training frames (in clip
+    // order), i.e. along the captured motion's own latent path.
+    std::vector<int> order(static_cast<std::size_t>(model.N()));
+    for (int i = 0; i < model.N(); ++i) order[static_cast<std::size_t>(i)] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return model.trainingFrames[a] < model.trainingFrames[b]; });
+    Eigen::VectorXd mean;
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        x = 0.5 * (model.X.row(order[k - 1]) + model.X.row(order[k])).transpose();
+        double v = 0.0;
+        point.predict(x, mean, v);
+        if (std::isfinite(v)) s2.push_back(v);
+    }
+    out.sigma2Percentile = percentileOf(s2, percentile);
+    out.sigma2Limit = kSigma2Margin * out.sigma2Percentile;
     out.likLimit = percentileOf(lik, percentile);
     out.sigma2Median = percentileOf(s2, 50.0);
     out.likMedian = percentileOf(lik, 50.0);
@@ -60,8 +74,8 @@ AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigm
                       range.likLimit);
         v.reason = buf;
     } else if (!v.sigma2InRange) {
-        std::snprintf(buf, sizeof buf, "σ² %.4g is above the training frames' %gth percentile %.4g", sigma2, range.percentile,
-                      range.sigma2Limit);
+        std::snprintf(buf, sizeof buf, "σ² %.4g is above %g × the training frames' %gth percentile %.4g", sigma2,
+                      kSigma2Margin, range.percentile, range.sigma2Percentile);
         v.reason = buf;
     }
     return v;
