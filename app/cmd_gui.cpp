@@ -37,7 +37,7 @@ int runGui(const GuiArgs& args) {
     if (args.offscreen) offscreen = std::make_unique<render::OffscreenContext>(args.width, args.height);
     else window = std::make_unique<ui::GlfwWindow>(args.width, args.height, "MotionGP");
 
-    const auto mocap = findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
+    const auto mocap = findEditorMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
     int total = args.frames;
     if (player) total = std::max(total, player->lastFrame() + 3);
     if (total == 0 && (args.offscreen || !args.screenshot.empty())) total = 3;

@@ -69,7 +69,7 @@ const CommandRegistration reg("info", "Summarise a clip (frames, fps, DOFs, cons
 int runDefault() {
     // `motiongp` with no verb opens the editor on the default clip (the 10_02 kick, else the
     // synthetic demo clip) when a display is available; otherwise it says how to run it.
-    const auto dir = findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
+    const auto dir = findEditorMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
     if (!globalOptions().dataDir.empty() && !dir)
         throw UsageError("expected --data to name a folder holding asf_amc/ or bvh/, found '" +
                          globalOptions().dataDir + "'");

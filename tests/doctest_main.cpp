@@ -1,11 +1,16 @@
 // The doctest runner for every test binary. ctest runs each case alone as
 // `--test-case=NAME`; a name ctest cannot pass through (one with ';', which CMake splits on)
 // would match no case and "pass" without running anything. This main fails such a run instead.
+// It also turns a skipped case (skip.h) into ctest's Skipped: exit code 77 when the case ran alone.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <vector>
+
+#include "skip.h"
 
 namespace {
 
@@ -27,7 +32,17 @@ struct RunCounter : doctest::IReporter {
     static inline int selected = -1;
 };
 
+std::mutex skipMutex;
+std::vector<std::string> skipReasons;
+
 }  // namespace
+
+void mgp::test::markSkipped(const std::string& reason) {
+    std::printf("SKIPPED: %s\n", reason.c_str());
+    std::fflush(stdout);
+    const std::lock_guard<std::mutex> lock(skipMutex);
+    skipReasons.push_back(reason);
+}
 
 REGISTER_LISTENER("run-counter", 1, RunCounter);
 
@@ -43,6 +58,11 @@ int main(int argc, char** argv) {
     if (rc == 0 && filtered && RunCounter::selected == 0) {
         std::fprintf(stderr, "no test case matched the --test-case filter (is there a ';' in a test name?)\n");
         return 1;
+    }
+    if (rc == 0 && !skipReasons.empty()) {
+        std::printf("%zu skip(s): %s\n", skipReasons.size(), skipReasons.front().c_str());
+        // One case run alone (ctest's way) is reported as Skipped; a whole-binary run stays 0.
+        if (filtered && RunCounter::selected == 1) return mgp::test::kSkipExitCode;
     }
     return rc;
 }

@@ -6,6 +6,7 @@
 #include "edit/adaptive_worker.h"
 #include "gp/adaptive_update.h"
 #include "gp/ivm.h"
+#include "gp/model_file.h"
 #include "ik/learned_ik.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -114,4 +115,33 @@ TEST_CASE("a disabled worker keeps the static model") {
     worker.post({v0->model->X.row(0).transpose(), v0->model->Y.row(0).transpose(), 0});
     worker.waitIdle();
     CHECK(worker.current() == v0);
+}
+
+TEST_CASE("an adaptively added row keeps its accepted pose through save and load; a trained model's file is unchanged") {
+    const auto v0 = test::walkModel35();
+    const gp::GpModel& m0 = *v0->model;
+    // The committed fixture re-saved is byte-identical: no edited rows are written for it.
+    CHECK(gp::modelToJsonText(m0) == test::readText(test::walkModelPath()));
+    // An accepted pose that differs from the captured pose of its frame (as every drag does).
+    Eigen::VectorXd y = m0.Y.row(40).transpose();
+    y[0] += 12.5;
+    y[3] -= 7.25;
+    const gp::AdaptiveUpdateResult r = gp::adaptiveUpdate(*v0, m0.X.row(40).transpose(), y, 40);
+    REQUIRE(r.accepted);
+    const gp::GpModel& m1 = *r.version->model;
+    const std::string dir = test::scratchDir("adaptive_save");
+    gp::saveModel(dir + "/m.model", m1);
+    const gp::GpModel back = gp::loadModel(dir + "/m.model");
+    REQUIRE(back.N() == m1.N());
+    CHECK(back.Y == m1.Y);  // bit for bit, the edited row included
+    CHECK(back.Y.row(m0.N()) == y.transpose());
+    CHECK(back.Y.row(m0.N()) != back.Y.row(40));  // not the captured pose of frame 40
+    CHECK(gp::modelToJsonText(back) == gp::modelToJsonText(m1));
+    // A damaged edited row is a clear error.
+    std::string text = test::readText(dir + "/m.model");
+    const std::size_t at = text.find("\"row\": " + std::to_string(m0.N()));
+    REQUIRE(at != std::string::npos);
+    text.replace(at, 7 + std::to_string(m0.N()).size(), "\"row\": 99999");
+    const std::string expected = "expected edited_rows row in 0.." + std::to_string(m0.N());
+    CHECK_THROWS_WITH(gp::modelFromJsonText(text, "bad.model"), doctest::Contains(expected.c_str()));
 }

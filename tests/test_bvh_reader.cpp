@@ -1,30 +1,32 @@
 // BVH: the three cgspeed conventions, ACCAD's Swagger, cross-format checks against the AMC.
+#include "io/asf_reader.h"
 #include "io/bvh_reader.h"
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
+#include "skip.h"
 #include "test_support.h"
 
 using namespace mgp;
 
-TEST_CASE("conventions, rest frames, units and unmapped joints of every BVH in the folder") {
-    struct Expect {
-        const char* file;
-        const char* convention;
-        int frames;
-        bool rest;
-        int modelBones;
-        std::size_t unmapped;
-    };
-    const Expect cases[] = {
-        {"02_03", "cgspeed-daz", 174, true, 20, 22},       {"10_01", "cgspeed-daz", 802, true, 20, 22},
-        {"49_04", "cgspeed-motionbuilder", 252, true, 22, 0}, {"131_01", "cgspeed-3dsmax", 994, false, 22, 0},
-        {"131_02", "cgspeed-3dsmax", 1247, false, 22, 0},  {"131_03", "cgspeed-3dsmax", 1102, false, 22, 0},
-        {"Swagger", "asf-names", 581, false, 17, 0},
-    };
+namespace {
+
+struct Expect {
+    const char* file;
+    const char* convention;
+    int frames;
+    bool rest;
+    int modelBones;
+    std::size_t unmapped;
+};
+
+void checkConventions(const std::vector<Expect>& cases, bool shipped) {
     for (const Expect& e : cases) {
         const std::string file = e.file;
         CAPTURE(file);
-        const Clip clip = loadClip(test::mocap(std::string("bvh/") + e.file + ".bvh"));
+        const std::string relative = std::string("bvh/") + e.file + ".bvh";
+        const auto path = shipped ? std::optional<std::string>(test::mocap(relative)) : test::sharedMocap(relative);
+        REQUIRE_MESSAGE(path, "the full CMU set lacks " << relative);
+        const Clip clip = loadClip(*path);
         CHECK(clip.convention == e.convention);
         CHECK(clip.frameCount() == e.frames);
         CHECK(clip.restFrame == e.rest);
@@ -41,6 +43,24 @@ TEST_CASE("conventions, rest frames, units and unmapped joints of every BVH in t
     }
 }
 
+}  // namespace
+
+TEST_CASE("conventions, rest frames, units and unmapped joints of the shipped BVH files (one per cgspeed release)") {
+    checkConventions({{"02_03", "cgspeed-daz", 174, true, 20, 22},
+                      {"49_04", "cgspeed-motionbuilder", 252, true, 22, 0},
+                      {"131_01", "cgspeed-3dsmax", 994, false, 22, 0}},
+                     true);
+}
+
+TEST_CASE("conventions of the other BVH files of the full CMU set, and ACCAD's Swagger") {
+    if (test::sharedMocapDir().empty()) MGP_SKIP("the full CMU set (../shared/mocap) is absent here");
+    checkConventions({{"10_01", "cgspeed-daz", 802, true, 20, 22},
+                      {"131_02", "cgspeed-3dsmax", 1247, false, 22, 0},
+                      {"131_03", "cgspeed-3dsmax", 1102, false, 22, 0},
+                      {"Swagger", "asf-names", 581, false, 17, 0}},
+                     false);
+}
+
 TEST_CASE("per-joint channel orders are kept (Daz Z X Y, 3dsMax legs Z Y X, arms Z X Y)") {
     const Clip daz = loadClip(test::mocap("bvh/02_03.bvh"));
     CHECK(daz.skeleton.joints[daz.skeleton.findJoint("rThigh")].order == RotationOrder{kAxisZ, kAxisX, kAxisY});
@@ -50,11 +70,17 @@ TEST_CASE("per-joint channel orders are kept (Daz Z X Y, 3dsMax legs Z Y X, arms
     CHECK(max.skeleton.joints[max.skeleton.findJoint("LeftElbow")].order == RotationOrder{kAxisZ, kAxisX, kAxisY});
 }
 
-TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03, 10_01)") {
-    for (const std::string trial : {"02_03", "10_01"}) {
+TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03 shipped, 10_01 of the full set when present)") {
+    std::vector<std::pair<std::string, std::string>> pairs = {
+        {test::mocap("asf_amc/02_03.amc"), test::mocap("bvh/02_03.bvh")}};
+    if (const auto a = test::sharedMocap("asf_amc/10_01.amc"), b = test::sharedMocap("bvh/10_01.bvh"); a && b)
+        pairs.emplace_back(*a, *b);
+    else MESSAGE("10_01 is not shipped; checking 02_03 only");
+    for (const auto& [amcPath, bvhPath] : pairs) {
+        const std::string trial = amcPath;
         CAPTURE(trial);
-        const Clip amc = loadClip(test::mocap(std::string("asf_amc/") + trial + ".amc"));
-        const Clip bvh = loadClip(test::mocap(std::string("bvh/") + trial + ".bvh"));
+        const Clip amc = loadClip(amcPath);
+        const Clip bvh = loadClip(bvhPath);
         REQUIRE(bvh.frameCount() == amc.frameCount() + 1);
         double worstRoot = 0.0;
         for (int k = 0; k < amc.frameCount(); ++k)
@@ -80,12 +106,12 @@ TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03, 10_01)") {
 
 TEST_CASE("MotionBuilder BVH offsets equal subject 49's ASF bone vectors") {
     const Clip bvh = loadClip(test::mocap("bvh/49_04.bvh"));
-    const Clip amc = loadClip(test::mocap("asf_amc/49_18.amc"));
+    const Skeleton asf = readAsf(test::mocap("asf_amc/49.asf")).skeleton;
     // LeftUpLeg's offset is the lhipjoint vector; LeftLeg's offset is the lfemur vector.
     const auto& b = bvh.skeleton.joints;
-    const auto& a = amc.skeleton.joints;
-    CHECK((b[bvh.skeleton.findJoint("LeftUpLeg")].offsetCm - a[amc.skeleton.findBone("lhipjoint")].tailCm).norm() < 0.01);
-    CHECK((b[bvh.skeleton.findJoint("LeftLeg")].offsetCm - a[amc.skeleton.findBone("lfemur")].tailCm).norm() < 0.01);
+    const auto& a = asf.joints;
+    CHECK((b[bvh.skeleton.findJoint("LeftUpLeg")].offsetCm - a[asf.findBone("lhipjoint")].tailCm).norm() < 0.01);
+    CHECK((b[bvh.skeleton.findJoint("LeftLeg")].offsetCm - a[asf.findBone("lfemur")].tailCm).norm() < 0.01);
 }
 
 TEST_CASE("BVH: mixed CRLF/LF, 'Frames:' with a tab, End Sites, and a minimal file") {

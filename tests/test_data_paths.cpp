@@ -7,7 +7,7 @@
 using namespace mgp;
 
 TEST_CASE("mocap folder search order: --data, then $MOTIONGP_DATA, then the compiled-in path") {
-    const std::string shared = MOTIONGP_TEST_MOCAP;
+    const std::string shared = test::sharedMocapDir();
     const std::string other = test::scratchDir("fake_mocap");
     REQUIRE(std::system(("mkdir -p '" + other + "/bvh'").c_str()) == 0);
     CHECK(isMocapFolder(other));
@@ -19,7 +19,18 @@ TEST_CASE("mocap folder search order: --data, then $MOTIONGP_DATA, then the comp
     ::setenv("MOTIONGP_DATA", other.c_str(), 1);
     CHECK(findMocapFolder("", "").value() == other);
     ::unsetenv("MOTIONGP_DATA");
-    if (test::haveMocap()) CHECK(findMocapFolder("", "").value() == shared);
+    if (!shared.empty()) CHECK(findMocapFolder("", "").value() == shared);
+    else CHECK_FALSE(findMocapFolder("", "").has_value());
     CHECK(defaultClipIn(test::mocap("")).value().find("10_02.amc") != std::string::npos);
     CHECK_FALSE(defaultClipIn(other).has_value());
+}
+
+TEST_CASE("the shipped clips: found without ../shared, the editor's fallback, never replacing an explicit --data") {
+    ::unsetenv("MOTIONGP_DATA");
+    const auto shipped = findShippedMocapFolder("");
+    REQUIRE(shipped.has_value());
+    CHECK(defaultClipIn(*shipped).has_value());  // the editor opens the 10_02 kick on a fresh clone
+    const std::string shared = test::sharedMocapDir();
+    CHECK(findEditorMocapFolder("", "").value() == (shared.empty() ? *shipped : shared));
+    CHECK_FALSE(findEditorMocapFolder("/does/not/exist", "").has_value());
 }

@@ -12,6 +12,7 @@
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/synthetic_clip.h"
 #include "document_helpers.h"
+#include "test_support.h"
 #include "trained_model_fixture.h"
 
 using namespace mgp;
@@ -96,8 +97,7 @@ TEST_CASE("editor document: cancel restores, latent drag poses from the model me
 }
 
 TEST_CASE("training job: trains in the background, can be cancelled, refuses BVH") {
-    const std::string amc = std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc/35_01.amc";
-    if (!std::filesystem::exists(amc)) return;
+    const std::string amc = test::mocap("asf_amc/35_01.amc");
     const Clip clip = loadClip(amc);
     gp::TrainOptions o;
     o.activeSize = 100;

@@ -38,7 +38,7 @@ std::vector<std::pair<double, double>> join(const Parts&... parts) {
 
 }  // namespace
 
-TEST_CASE("foot contacts: low and still is planted; hysteresis keeps a 3 cm foot planted") {
+TEST_CASE("foot contacts: low and still is planted, hysteresis keeps a 3 cm foot planted") {
     ContactRule rule;
     rule.groundPercentile = 0.0;  // ground = the lowest point, 0 here
     // Frames 0-9 in the air, 10-29 planted, 30-49 a slow wobble up to 3 cm (between the enter
@@ -57,7 +57,7 @@ TEST_CASE("foot contacts: low and still is planted; hysteresis keeps a 3 cm foot
     CHECK(set.at(Effector::kRFoot, 30) == nullptr);
 }
 
-TEST_CASE("foot contacts: lift above the exit height ends a contact; short contacts and gaps") {
+TEST_CASE("foot contacts: lift above the exit height ends a contact, short contacts and gaps") {
     ContactRule rule;
     rule.groundPercentile = 0.0;
     SUBCASE("a lift to 5 cm for 10 frames splits the contact") {
@@ -98,7 +98,7 @@ TEST_CASE("foot contacts: speed thresholds are per frame at 120 fps, scaled for 
     CHECK(detectFootContacts(foot, {}, 240.0, rule).contacts.empty());
 }
 
-TEST_CASE("foot contacts: the ground is the lower foot's height percentile; disabled contacts are skipped") {
+TEST_CASE("foot contacts: the ground is the lower foot's height percentile, disabled contacts are skipped") {
     std::vector<Eigen::Vector3d> left, right;
     for (int t = 0; t < 100; ++t) {
         left.emplace_back(0.0, 10.0 + (t % 10 == 0 ? 30.0 : 0.0), 0.0);  // 10 cm, sometimes 40

@@ -18,6 +18,7 @@
 #include "io/asf_reader.h"
 #include "io/bvh_reader.h"
 #include "io/parse_error.h"
+#include "skip.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::vector<fs::path> regressionInputs(const std::string& target) {
-    const fs::path dir = fs::path(__FILE__).parent_path() / "fuzz" / "regressions" / target;
+    const fs::path dir = fs::path(MOTIONGP_TEST_SOURCE_DIR) / "fuzz" / "regressions" / target;
     std::vector<fs::path> files;
     std::error_code ec;
     if (fs::is_directory(dir, ec))
@@ -42,9 +43,10 @@ std::string bytesOf(const fs::path& p) {
     return s.str();
 }
 
-// Loads every regression input of `target`; a load or a ParseError is fine.
-void checkAll(const std::string& target, const std::function<void(const std::string&)>& load) {
-    for (const fs::path& p : regressionInputs(target)) {
+// Loads every regression input of `target`; a load or a ParseError is fine. Returns how many.
+std::size_t checkAll(const std::string& target, const std::function<void(const std::string&)>& load) {
+    const std::vector<fs::path> inputs = regressionInputs(target);
+    for (const fs::path& p : inputs) {
         INFO("regression input ", p.string());
         const std::string text = bytesOf(p);
         try {
@@ -54,32 +56,36 @@ void checkAll(const std::string& target, const std::function<void(const std::str
             CHECK(std::string(e.what()).find("expected") != std::string::npos);
         }
     }
+    return inputs.size();
 }
+
+#define MGP_NONE_YET(target) MGP_SKIP("no " target " inputs in tests/fuzz/regressions/" target " yet (the fuzzer has not broken that loader)")
 
 }  // namespace
 
 TEST_CASE("fuzz regressions: ASF inputs load or give a ParseError") {
-    checkAll("asf", [](const std::string& t) { mgp::parseAsf("fuzz.asf", t); });
+    if (checkAll("asf", [](const std::string& t) { mgp::parseAsf("fuzz.asf", t); }) == 0) MGP_NONE_YET("asf");
 }
 
 TEST_CASE("fuzz regressions: AMC inputs (against 35.asf) load or give a ParseError") {
-    if (regressionInputs("amc").empty()) return;
     const mgp::AsfSkeleton asf = mgp::readAsf(mgp::test::mocap("asf_amc/35.asf"));
-    checkAll("amc", [&](const std::string& t) { mgp::parseAmc("fuzz.amc", t, asf); });
+    if (checkAll("amc", [&](const std::string& t) { mgp::parseAmc("fuzz.amc", t, asf); }) == 0) MGP_NONE_YET("amc");
 }
 
 TEST_CASE("fuzz regressions: BVH inputs load or give a ParseError") {
-    checkAll("bvh", [](const std::string& t) { mgp::parseBvh("fuzz.bvh", t); });
+    if (checkAll("bvh", [](const std::string& t) { mgp::parseBvh("fuzz.bvh", t); }) == 0) MGP_NONE_YET("bvh");
 }
 
 TEST_CASE("fuzz regressions: model files load or give a ParseError") {
-    checkAll("model", [](const std::string& t) { mgp::gp::modelFromJsonText(t, "fuzz.json"); });
+    if (checkAll("model", [](const std::string& t) { mgp::gp::modelFromJsonText(t, "fuzz.json"); }) == 0)
+        MGP_NONE_YET("model");
 }
 
 TEST_CASE("fuzz regressions: session files load or give a ParseError") {
     // As tests/fuzz/fuzz_session.cpp: a synthetic-walk session's clip is built too.
-    checkAll("session", [](const std::string& t) {
+    const std::size_t n = checkAll("session", [](const std::string& t) {
         const mgp::SessionData s = mgp::sessionFromJsonText(t, "fuzz.mgsession");
         if (s.syntheticClip && !s.model) mgp::loadSessionClip(s, "fuzz.mgsession");
     });
+    if (n == 0) MGP_NONE_YET("session");
 }

@@ -22,6 +22,7 @@
 #include "gp/trainer.h"
 #include "io/parse_error.h"
 #include "skeleton/synthetic_clip.h"
+#include "skip.h"
 #include "test_support.h"
 #include "tiny_inputs.h"
 
@@ -479,10 +480,8 @@ struct SessionCase {
     std::string name, file, text, expected, pattern;
 };
 
-}  // namespace
-
-TEST_CASE("hostile session files: one clear error (library, and `gui --offscreen` where EGL works)") {
-    const std::string dir = test::scratchDir("hostile_sessions");
+// Writes the good session and every hostile one into a fresh folder; returns the cases.
+std::vector<SessionCase> writeHostileSessions(const std::string& dir) {
     const std::string clip = dir + "/ok.bvh";
     test::writeText(clip, kBvh);
     SessionData good;
@@ -527,23 +526,31 @@ TEST_CASE("hostile session files: one clear error (library, and `gui --offscreen
     ::mkdir(P("folder.mgsession").c_str(), 0755);
     std::vector<SessionCase> all = cases;
     all.push_back({"directory instead of a session", "folder.mgsession", "", P("folder.mgsession") + ": expected a file, found a directory", ""});
+    return all;
+}
 
+}  // namespace
+
+TEST_CASE("hostile session files through the library: one clear error each") {
+    const std::string dir = test::scratchDir("hostile_sessions");
+    const std::vector<SessionCase> all = writeHostileSessions(dir);
     for (const auto& c : all) {
         CAPTURE(c.name);
-        const std::string e = sessionError(P(c.file));
+        const std::string e = sessionError(dir + "/" + c.file);
         if (c.pattern.empty()) CHECK(e == c.expected);
         else CHECK(std::regex_match(e, std::regex(c.pattern)));
     }
+}
 
-    // Through the editor itself, when an offscreen EGL context can be made (as tests/gl skip,
-    // this is reported and skipped where it cannot).
+TEST_CASE("hostile session files through `motiongp gui --offscreen`: exit 2 and the same one line") {
+    const std::string dir = test::scratchDir("hostile_sessions_gui");
+    const std::vector<SessionCase> all = writeHostileSessions(dir);
+    auto P = [&](const std::string& f) { return dir + "/" + f; };
+    // Skipped, with the reason, where no offscreen EGL context can be made (as the gl tests are).
     const test::CliResult probe =
         test::runCliArgs({"gui", P("good.mgsession"), "--offscreen", "--frames", "1"}, test::hostileLimits());
-    if (probe.exitCode != 0) {
-        MESSAGE("skipping the `motiongp gui` session cases: no offscreen context here (" << test::describe(probe) << ": "
-                                                                                     << probe.err << ")");
-        return;
-    }
+    if (probe.exitCode != 0)
+        MGP_SKIP("no offscreen context for `motiongp gui` here (" << test::describe(probe) << ": " << probe.err << ")");
     for (const auto& c : all) {
         CAPTURE(c.name);
         const test::CliResult r = test::runCliArgs({"gui", P(c.file), "--offscreen", "--frames", "1"}, test::hostileLimits());

@@ -20,15 +20,29 @@
 
 namespace mgp::test {
 
-bool haveMocap() {
+namespace {
+bool exists(const std::string& path) {
     struct stat st {};
-    return ::stat((std::string(MOTIONGP_TEST_MOCAP) + "/asf_amc").c_str(), &st) == 0;
+    return ::stat(path.c_str(), &st) == 0;
 }
+}  // namespace
 
 std::string mocap(const std::string& relative) {
-    REQUIRE_MESSAGE(haveMocap(), "the CMU mocap folder is missing: expected it at "
-                                     << MOTIONGP_TEST_MOCAP << " (../shared/mocap beside the checkout)");
-    return std::string(MOTIONGP_TEST_MOCAP) + "/" + relative;
+    const std::string path = std::string(MOTIONGP_TEST_MOCAP) + "/" + relative;
+    REQUIRE_MESSAGE(exists(path), "expected a shipped clip at " << path
+                                      << ", found none (assets/mocap/README.md lists them; use sharedMocap for the rest)");
+    return path;
+}
+
+std::string sharedMocapDir() {
+    const std::string dir = MOTIONGP_TEST_SHARED_MOCAP;
+    return exists(dir + "/asf_amc") ? dir : std::string();
+}
+
+std::optional<std::string> sharedMocap(const std::string& relative) {
+    const std::string dir = sharedMocapDir();
+    if (dir.empty() || !exists(dir + "/" + relative)) return std::nullopt;
+    return dir + "/" + relative;
 }
 
 std::string scratchDir(const std::string& name) {

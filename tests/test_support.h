@@ -3,15 +3,21 @@
 #include <doctest/doctest.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace mgp::test {
 
-// ../shared/mocap beside the checkout (CI has it too). Fails the calling test if it is missing.
+// A clip shipped with the repository (assets/mocap, always there). Fails the calling test if the
+// file is not one of the shipped ones: tests that need more use sharedMocap.
 std::string mocap(const std::string& relative);
-bool haveMocap();
+// A file of the full CMU set (../shared/mocap beside the checkout, as the long runs read it), or
+// nullopt when that folder or file is absent: the caller then skips (MGP_SKIP, skip.h).
+std::optional<std::string> sharedMocap(const std::string& relative);
+// The full set's folder ("" when absent).
+std::string sharedMocapDir();
 // A fresh scratch directory under the build tree, private to this test process.
 std::string scratchDir(const std::string& name);
 void writeText(const std::string& path, const std::string& text);

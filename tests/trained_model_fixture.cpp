@@ -2,22 +2,16 @@
 
 #include <mutex>
 
-#include "gp/trainer.h"
-#include "io/clip_loader.h"
-#include "test_support.h"
+#include "gp/model_file.h"
 
 namespace mgp::test {
+
+std::string walkModelPath() { return std::string(MOTIONGP_TEST_FIXTURES) + "/walk35_fas_m100_t3.model"; }
 
 gp::ModelVersionPtr walkModel35() {
     static std::once_flag once;
     static gp::ModelVersionPtr model;
-    std::call_once(once, [] {
-        gp::TrainOptions options;
-        options.kind = gp::KernelKind::kFas;
-        options.activeSize = 100;
-        options.outerIterations = 3;
-        model = gp::ModelVersion::make(gp::trainOnClip(loadClip(mocap("asf_amc/35_01.amc")), options).model);
-    });
+    std::call_once(once, [] { model = gp::ModelVersion::make(gp::loadModel(walkModelPath())); });
     return model;
 }
 

@@ -110,6 +110,18 @@ std::string modelToJsonText(const GpModel& m) {
                      {"objective_history", m.objectiveHistory}};
     j["source"] = {{"file", m.sourceFile}, {"sha256", m.sourceSha256}};
     j["clip"] = clipToJson(m.clip);
+    // Y is not stored: a row is the clip's pose at its training frame. A row an adaptive update
+    // added holds the ACCEPTED pose, not the captured one, so those rows are written out (only
+    // when there are any: a freshly trained model's file is unchanged).
+    const Eigen::MatrixXd poses = poseMatrix(m.clip);
+    json edited = json::array();
+    for (Eigen::Index r = 0; r < m.Y.rows(); ++r) {
+        const int f = m.trainingFrames[static_cast<std::size_t>(r)];
+        bool same = f >= 0 && f < m.clip.frameCount();
+        for (int k = 0; same && k < m.D(); ++k) same = m.Y(r, k) == poses(f, m.keptColumns[k]);
+        if (!same) edited.push_back({{"row", r}, {"y", vecJson(m.Y.row(r).transpose())}});
+    }
+    if (!edited.empty()) j["edited_rows"] = edited;
     return j.dump(1) + "\n";
 }
 
@@ -219,6 +231,15 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
             if (f < 0 || f >= m.clip.frameCount())
                 throwParseError(file, 0, "training frames in 0.." + std::to_string(m.clip.frameCount() - 1), std::to_string(f));
             for (int k = 0; k < D; ++k) m.Y(r, k) = poses(f, m.keptColumns[k]);
+        }
+        if (j.contains("edited_rows")) {  // rows added by adaptive updates (absent in older files)
+            const json& edited = j["edited_rows"];
+            if (!edited.is_array()) throwParseError(file, 0, "edited_rows as an array", edited.type_name());
+            for (const json& e : edited) {
+                const int r = needInt(e, "row", file);
+                if (r < 0 || r >= n) throwParseError(file, 0, "edited_rows row in 0.." + std::to_string(n - 1), std::to_string(r));
+                m.Y.row(r) = readVec(need(e, "y", file), file, "edited_rows y", D).transpose();
+            }
         }
     } catch (const json::exception& e) {
         throwParseError(file, 0, "a valid motiongp-model document", e.what());

@@ -37,6 +37,22 @@ std::optional<std::string> findMocapFolder(const std::string& cliDir, const std:
     return std::nullopt;
 }
 
+std::optional<std::string> findShippedMocapFolder(const std::string& exeDir) {
+#ifdef MOTIONGP_SHIPPED_MOCAP
+    if (isMocapFolder(MOTIONGP_SHIPPED_MOCAP)) return std::string(MOTIONGP_SHIPPED_MOCAP);
+#endif
+    if (!exeDir.empty())
+        for (const char* rel : {"/../assets/mocap", "/assets/mocap", "/../share/motiongp/mocap"})
+            if (isMocapFolder(exeDir + rel)) return exeDir + rel;
+    return std::nullopt;
+}
+
+std::optional<std::string> findEditorMocapFolder(const std::string& cliDir, const std::string& exeDir) {
+    if (auto full = findMocapFolder(cliDir, exeDir)) return full;
+    if (!cliDir.empty()) return std::nullopt;
+    return findShippedMocapFolder(exeDir);
+}
+
 std::optional<std::string> defaultClipIn(const std::string& mocapDir) {
     const std::string amc = mocapDir + "/asf_amc/10_02.amc";
     if (isFile(amc) && isFile(mocapDir + "/asf_amc/10.asf")) return amc;

@@ -4,8 +4,8 @@
 # Needs clang and libFuzzer (Debian 12: apt-get install clang libclang-rt-14-dev) plus the
 # project's build dependencies (.ci/install-deps). Configures build-fuzz with clang and
 # -DMOTIONGP_FUZZ=ON, builds the fuzz targets, makes the seed corpora in build-fuzz/seeds (from
-# ../shared/mocap, or $MOTIONGP_DATA; the CMU files are only read, never copied into the
-# repository), runs each target for SECONDS_PER_TARGET and prints its executions and coverage.
+# $MOTIONGP_DATA, else ../shared/mocap, else the shipped clips in assets/mocap; the files are only
+# read), runs each target for SECONDS_PER_TARGET and prints its executions and coverage.
 # Crash/timeout/OOM inputs land in build-fuzz/artifacts/<target>/; the exit status is 1 if any
 # target found one (reproduce: build-fuzz/fuzz_<target> FILE). Environment: MOTIONGP_FUZZ_JOBS
 # (targets run in parallel, default 1), MOTIONGP_FUZZ_TARGETS (default "asf amc bvh model session").
@@ -15,6 +15,7 @@ SECONDS_PER_TARGET=${1:-60}
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 BUILD="$ROOT/build-fuzz"
 MOCAP=${MOTIONGP_DATA:-$ROOT/../shared/mocap}
+[ -d "$MOCAP/asf_amc" ] || MOCAP="$ROOT/assets/mocap"
 TARGETS=${MOTIONGP_FUZZ_TARGETS:-asf amc bvh model session}
 JOBS=${MOTIONGP_FUZZ_JOBS:-1}
 FUZZ="$ROOT/tests/fuzz"

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "skip.h"
+
 namespace mgp::test {
 
 namespace fs = std::filesystem;
@@ -12,6 +14,8 @@ const std::string& mocapDir() {
     static const std::string dir = MOTIONGP_TEST_MOCAP;
     return dir;
 }
+
+std::string fixtureModelPath() { return std::string(MOTIONGP_TEST_FIXTURES) + "/walk35_fas_m100_t3.model"; }
 
 void Harness::frame(int n) {
     for (int i = 0; i < n; ++i, ++frameNo) app->frame(input, 1.0 / 60.0, kGuiWidth, kGuiHeight);
@@ -34,27 +38,23 @@ void Harness::restartApp(ui::EditorOptions options) {
     app = std::make_unique<ui::EditorApp>(options);
 }
 
-std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool train) {
-    if (!fs::exists(mocapDir() + "/asf_amc/35_01.amc")) {
-        MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << mocapDir());
-        return nullptr;
-    }
+std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel) {
     auto h = std::make_unique<Harness>();
     try {
         h->ctx = std::make_unique<render::OffscreenContext>(kGuiWidth, kGuiHeight);
     } catch (const render::RenderError& e) {
-        MESSAGE("MOTIONGP_GL_SKIP: no offscreen GL context: " << e.what());
+        MGP_MARK_SKIPPED("no offscreen GL context: " << e.what());
         return nullptr;
     }
     if (llvmpipeOnly && !render::currentGlInfo().isLlvmpipe()) {
-        MESSAGE("MOTIONGP_GL_SKIP: goldens are made with Mesa llvmpipe");
+        MGP_MARK_SKIPPED("goldens are made with Mesa llvmpipe");
         return nullptr;
     }
     h->restartApp();
     REQUIRE(h->app->openClip(mocapDir() + "/asf_amc/35_01.amc") == "");
     h->frame(2);
-    if (train) {
-        REQUIRE(h->app->runAction({"train", "fas", "100", "3"}) == "");
+    if (withModel) {
+        REQUIRE(h->app->runAction({"open-model", fixtureModelPath()}) == "");
         h->app->waitIdle();
         REQUIRE(h->app->state().doc.hasModel());
         h->frame(2);

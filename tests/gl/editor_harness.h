@@ -1,7 +1,9 @@
 #pragma once
 // The offscreen editor the GUI tests drive (label `gl`): an EGL context, an EditorApp with the
-// built-in font, input fed exactly as a --script run feeds it. makeHarness opens 35_01 and
-// trains a small model (FASGPLVM, M = 100, T = 3: about a second).
+// built-in font, input fed exactly as a --script run feeds it. makeHarness opens the shipped 35_01
+// and, unless told not to, the committed model tests/fixtures/walk35_fas_m100_t3.model (FASGPLVM,
+// M = 100, T = 3): a model file, not a model trained at test time, so the pictures that show it are
+// the same on every CPU.
 #include <memory>
 #include <string>
 
@@ -27,10 +29,11 @@ struct Harness {
     void restartApp(ui::EditorOptions options = {});
 };
 
-// nullptr (the test is then reported skipped, with the reason) when the mocap folder or an
-// offscreen context is missing, or when llvmpipeOnly and the context is not llvmpipe.
-std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool train = true);
+// nullptr (the test is then reported skipped, with the reason: the caller returns) when no
+// offscreen context can be made, or when llvmpipeOnly and the context is not llvmpipe.
+std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel = true);
 
-const std::string& mocapDir();
+const std::string& mocapDir();      // the shipped clips (assets/mocap)
+std::string fixtureModelPath();     // the committed walk model
 
 }  // namespace mgp::test

@@ -24,6 +24,7 @@
 #include "snapshot.h"
 
 #define STB_IMAGE_IMPLEMENTATION
+#include "skip.h"
 #include "stb_image_include.h"
 
 using namespace mgp;
@@ -50,23 +51,18 @@ std::unique_ptr<OffscreenContext> referenceContext(int w, int h) {
     try {
         ctx = std::make_unique<OffscreenContext>(w, h);
     } catch (const RenderError& e) {
-        MESSAGE("MOTIONGP_GL_SKIP: no offscreen GL context: " << e.what());
+        MGP_MARK_SKIPPED("no offscreen GL context: " << e.what());
         return nullptr;
     }
     const GlInfo info = currentGlInfo();
     if (!info.isLlvmpipe()) {
-        MESSAGE("MOTIONGP_GL_SKIP: goldens are made with Mesa llvmpipe; this context is '"
-                << info.renderer << "' (" << info.version << ")");
+        MGP_MARK_SKIPPED("goldens are made with Mesa llvmpipe; this context is '" << info.renderer << "' ("
+                                                                              << info.version << ")");
         return nullptr;
     }
     return ctx;
 }
 
-bool haveMocap() {
-    if (fs::exists(kMocap + "/asf_amc/35_01.amc") && fs::exists(kMocap + "/asf_amc/10_02.amc")) return true;
-    MESSAGE("MOTIONGP_GL_SKIP: no CMU mocap folder at " << kMocap);
-    return false;
-}
 
 struct GoldenScene {
     Scene scene;
@@ -181,24 +177,20 @@ void runGolden(const std::string& name, const GoldenScene& g) {
 }  // namespace
 
 TEST_CASE("golden: 35_01 frame 1, front camera") {
-    if (!haveMocap()) return;
     runGolden("35_01_f1_front", clipScene("35_01.amc", 1, CameraPreset::kFront));
 }
 
 TEST_CASE("golden: 35_01 frame 1, side camera") {
-    if (!haveMocap()) return;
     runGolden("35_01_f1_side", clipScene("35_01.amc", 1, CameraPreset::kSide));
 }
 
 TEST_CASE("golden: 35_01 frame 1, three-quarter camera with the captured ghost") {
-    if (!haveMocap()) return;
     ClipSceneOptions opt;
     opt.ghostCaptured = true;
     runGolden("35_01_f1_three_quarter_ghost", clipScene("35_01.amc", 1, CameraPreset::kThreeQuarter, opt));
 }
 
 TEST_CASE("golden: 10_02 kick (frame 362), side camera, right-foot path selected") {
-    if (!haveMocap()) return;
     ClipSceneOptions opt;
     opt.selected = Effector::kRFoot;
     opt.paths = {Effector::kRFoot};
@@ -206,12 +198,10 @@ TEST_CASE("golden: 10_02 kick (frame 362), side camera, right-foot path selected
 }
 
 TEST_CASE("golden: editor overlays (hover, selected, targets, pins, path)") {
-    if (!haveMocap()) return;
     runGolden("35_01_f100_overlays", overlayScene());
 }
 
 TEST_CASE("determinism: two fresh contexts draw byte-identical PNGs") {
-    if (!haveMocap()) return;
     const GoldenScene g = overlayScene();
     std::vector<std::uint8_t> first, second;
     {
@@ -230,7 +220,6 @@ TEST_CASE("determinism: two fresh contexts draw byte-identical PNGs") {
 }
 
 TEST_CASE("determinism: `motiongp render` twice writes identical PNGs, with no display") {
-    if (!haveMocap()) return;
     if (!referenceContext(64, 64)) return;
     fs::create_directories(kOutDir);
     const std::string a = kOutDir + "/cli_a.png", b = kOutDir + "/cli_b.png";
@@ -279,7 +268,6 @@ TEST_CASE("offscreen context: 3.3 core or newer, resize keeps the context") {
 }
 
 TEST_CASE("renderer without MSAA draws straight into the target and matches the 4x frame closely") {
-    if (!haveMocap()) return;
     auto ctx = referenceContext(kWidth, kHeight);
     if (!ctx) return;
     const GoldenScene g = clipScene("35_01.amc", 1, CameraPreset::kFront);
