@@ -91,10 +91,9 @@ TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose
             }
         }
     }
-    // The goal is every move converged at 50 iterations; measured (42 moves): 9 converged and 41
-    // reached at 50, 39 converged and 41 reached at 300 (16_01 frame 41, lhand −25,15,0 stays
-    // 0.13 cm short; 10_03 frame 121's foot moves and it still descend at 300). These floors
-    // catch regressions; they are not the goal.
+    // The goal is every move converged at 50 iterations; measured (42 moves, committed 35_01
+    // fixture): 8 converged and 41 reached at 50, 40 converged and 41 reached at 300 (16_01 frame
+    // 41, lhand −25,15,0 stays 0.13 cm short). These floors catch regressions; they are not the goal.
     MESSAGE("at 50 iterations: " << convergedAt50 << "/" << solves << " converged, " << reachedAt50 << "/" << solves
                                  << " reached to 0.05 cm; at 300: " << converged300 << " converged, " << reached300 << " reached");
     CHECK(reachedAt50 >= solves - 1);
