@@ -1,7 +1,12 @@
-// `motiongp pose MODEL --frame T --target EFF=dx,dy,dz ... [--pin EFF ...] [--solver learned|plain]
-//  [--adaptive --out-model MODEL2] [--json]`: one IK solve on a frame of the model's source clip.
-// Offsets are cm from the effector's position in that frame. An unreachable target is a result
-// (reached: false, exit 0), not an error.
+// `motiongp pose MODEL --frame T --target EFF=dx,dy,dz[@STRENGTH] ... [--pin EFF ...]
+//  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--json]`:
+// one IK solve on a frame of the model's source clip. Offsets are cm from the effector's position
+// in that frame. An unreachable target is a result (reached: false, exit 0), not an error; so is
+// an adaptive update the admission rule refuses (adaptive.refused: true, with the reason).
+//
+// Solvers: learned (default) is the constrained learned IK (core/ik/constrained_ik.h: hard pins,
+// per-target strength); lbfgs is the paper's λ-penalty L-BFGS (core/ik/learned_ik.h), kept for
+// comparison; plain has no prior.
 #include <chrono>
 #include <iostream>
 
@@ -9,9 +14,12 @@
 #include "command_registry.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
+#include "gp/training_range.h"
+#include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
 #include "ik_cli.h"
+#include "motion/foot_contacts.h"
 
 namespace mgp::app {
 namespace {
@@ -19,14 +27,27 @@ namespace {
 struct PoseOptions {
     std::string model, solver = "learned", outModel;
     long long frame = 1;
-    std::vector<std::string> targets, pins;
+    std::vector<std::string> targets, pins, releases;
     bool adaptive = false, json = false;
     int iterations = 500;
 };
 
+nlohmann::json verdictJson(const gp::AdmissionVerdict& v) {
+    return {{"admitted", v.admitted},
+            {"reason", v.reason},
+            {"reached", v.reached},
+            {"sigma2", v.sigma2},
+            {"sigma2_limit", v.range.sigma2Limit},
+            {"sigma2_percentile", v.range.sigma2Percentile},
+            {"L_IK", v.lik},
+            {"L_IK_limit", v.range.likLimit},
+            {"percentile", v.range.percentile},
+            {"training_rows", v.range.rows}};
+}
+
 int runPose(const PoseOptions& o) {
-    if (o.solver != "learned" && o.solver != "plain")
-        throw UsageError("expected --solver learned or plain, found '" + o.solver + "'");
+    if (o.solver != "learned" && o.solver != "lbfgs" && o.solver != "plain")
+        throw UsageError("expected --solver learned, lbfgs or plain, found '" + o.solver + "'");
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     if (o.adaptive && o.solver == "plain") throw UsageError("expected --solver learned with --adaptive, found plain");
     if (o.targets.empty() && o.pins.empty()) throw UsageError("expected at least one --target or --pin, found none");
@@ -39,14 +60,33 @@ int runPose(const PoseOptions& o) {
     forwardKinematics(clip.skeleton, clip.frames[frame], fk);
     std::vector<IkConstraint> constraints;
     for (const std::string& t : o.targets) {
-        const auto [eff, offset] = parseTarget(t);
-        constraints.push_back({eff, effectorCm(clip.skeleton, fk, eff) + offset, false});
+        const TargetSpec spec = parseTargetWithStrength(t);
+        constraints.push_back({spec.effector, effectorCm(clip.skeleton, fk, spec.effector) + spec.offsetCm, false, spec.strength});
     }
     for (const std::string& p : o.pins) {
         const Effector eff = parseEffectorOption(p, "--pin");
         constraints.push_back({eff, effectorCm(clip.skeleton, fk, eff), true});
     }
+    // Feet in ground contact on this frame are held like pins unless released (or already
+    // constrained): the contact rule of core/motion/foot_contacts.h.
+    bool released[kEffectorCount] = {};
+    for (const std::string& r : o.releases) {
+        const Effector eff = parseEffectorOption(r, "--release");
+        if (eff != Effector::kLFoot && eff != Effector::kRFoot)
+            throw UsageError("expected --release lfoot or rfoot, found '" + r + "'");
+        released[static_cast<int>(eff)] = true;
+    }
     nlohmann::json j;
+    j["contact_pins"] = nlohmann::json::array();
+    const ContactSet contacts = detectFootContacts(clip);
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+        if (!clip.skeleton.hasEffector(foot) || released[static_cast<int>(foot)] || !contacts.at(foot, frame)) continue;
+        bool constrained = false;
+        for (const IkConstraint& c : constraints) constrained |= c.effector == foot;
+        if (constrained) continue;
+        constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+        j["contact_pins"].push_back(effectorName(foot));
+    }
     Pose pose;
     std::vector<IkConstraintResult> results;
     bool reached = false;
@@ -65,28 +105,72 @@ int runPose(const PoseOptions& o) {
         j["L_IK"] = nullptr;
         j["diagnostic"] = job.diagnostic;
     } else {
-        LearnedIkSolver solver(version);
-        LearnedIkRequest req;
-        req.start = clip.frames[frame];
-        req.startX = latentStartForFrame(*version, frame);
-        req.constraints = constraints;
-        req.maxIterations = o.iterations;
-        if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
-        const LearnedIkResult r = solver.solve(req);
-        pose = r.pose;
-        results = r.constraints;
-        reached = r.reached;
-        j["x"] = std::vector<double>(r.x.data(), r.x.data() + r.x.size());
-        j["sigma2"] = r.sigma2;
-        j["L_IK"] = r.lik;
-        j["diagnostic"] = r.diagnostic;
-        j["iterations"] = r.iterations;
+        Eigen::VectorXd x, y;
+        double sigma2 = 0.0, lik = 0.0;
+        if (o.solver == "learned") {
+            ConstrainedIkSolver solver(version);
+            ConstrainedIkRequest req;
+            req.start = clip.frames[frame];
+            req.startX = latentStartForFrame(*version, frame);
+            req.constraints = constraints;
+            req.maxIterations = o.iterations;
+            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
+            const ConstrainedIkResult r = solver.solve(req);
+            pose = r.pose;
+            results = r.constraints;
+            reached = r.reached;
+            x = r.x;
+            y = r.y;
+            sigma2 = r.sigma2;
+            lik = r.lik;
+            j["diagnostic"] = r.diagnostic;
+            j["converged"] = r.converged;
+            j["stop"] = ikStopName(r.stop);
+            j["iterations"] = r.iterations;
+            j["evaluations"] = r.evaluations;
+            j["objective"] = r.objective;
+        } else {
+            LearnedIkSolver solver(version);
+            LearnedIkRequest req;
+            req.start = clip.frames[frame];
+            req.startX = latentStartForFrame(*version, frame);
+            req.constraints = constraints;
+            req.maxIterations = o.iterations;
+            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
+            const LearnedIkResult r = solver.solve(req);
+            pose = r.pose;
+            results = r.constraints;
+            for (auto& c : results) c.strength = kStrengthPaper;  // the penalty form is the paper's λ
+            reached = r.reached;
+            x = r.x;
+            y = r.y;
+            sigma2 = r.sigma2;
+            lik = r.lik;
+            j["diagnostic"] = r.diagnostic;
+            j["converged"] = r.converged;
+            j["stop"] = r.converged ? "converged" : (r.diagnostic == "iteration cap" ? "iteration_cap" : "stalled");
+            j["iterations"] = r.iterations;
+            j["evaluations"] = r.evaluations;
+            j["objective"] = r.objective;
+        }
+        j["x"] = std::vector<double>(x.data(), x.data() + x.size());
+        j["sigma2"] = sigma2;
+        j["L_IK"] = lik;
+        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, reached, sigma2, lik);
+        j["natural"] = verdictJson(verdict);
         if (o.adaptive) {
-            const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, r.x, r.y, frame);
-            if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
-            gp::saveModel(o.outModel, *u.version->model);
-            j["adaptive"] = {{"rows", u.version->model->N()}, {"new_point_active", u.newPointActive},
-                             {"active_changed", u.activeChanged}, {"out_model", o.outModel}};
+            if (!verdict.admitted) {
+                j["adaptive"] = {{"refused", true}, {"reason", verdict.reason}, {"rows", m.N()}};
+            } else {
+                const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, x, y, frame);
+                if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
+                gp::saveModel(o.outModel, *u.version->model);
+                j["adaptive"] = {{"refused", false},
+                                 {"rows", u.version->model->N()},
+                                 {"new_point_active", u.newPointActive},
+                                 {"active_changed", u.activeChanged},
+                                 {"out_model", o.outModel}};
+            }
         }
     }
     j["reached"] = reached;
@@ -105,6 +189,14 @@ int runPose(const PoseOptions& o) {
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
                       << r.residualCm << " cm" << (r.reached ? "" : "  (not reached)") << "\n";
+        if (j.contains("adaptive")) {
+            if (j["adaptive"]["refused"].get<bool>())
+                std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()
+                          << " (the model file was not written)\n";
+            else
+                std::cout << "adaptive update: " << j["adaptive"]["rows"].get<int>() << " rows, written to " << o.outModel
+                          << "\n";
+        }
     }
     return 0;
 }
@@ -114,11 +206,16 @@ const CommandRegistration reg("pose", "Solve IK on one frame of a model's clip (
     auto o = std::make_shared<PoseOptions>();
     sub.add_option("model", o->model, "Model file (motiongp train --out)")->required();
     sub.add_option("--frame", o->frame, "Clip frame, counted from 1")->required();
-    sub.add_option("--target", o->targets, "EFF=dx,dy,dz: move an effector by this many cm (repeatable)");
-    sub.add_option("--pin", o->pins, "EFF: hold an effector where it is (repeatable)");
-    sub.add_option("--solver", o->solver, "learned (default) or plain (no prior)");
-    sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap")->check(CLI::Range(1, 100000));
-    sub.add_flag("--adaptive", o->adaptive, "Add the solved pose to the model (§5.3) and save it");
+    sub.add_option("--target", o->targets,
+                   "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact (default), paper "
+                   "(0.999) or a number in (0, 1] (repeatable)");
+    sub.add_option("--pin", o->pins, "EFF: hold an effector exactly where it is (repeatable)");
+    sub.add_option("--release", o->releases, "EFF: do not hold this foot although it is in ground contact (repeatable)");
+    sub.add_option("--solver", o->solver, "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
+    sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
+    sub.add_flag("--adaptive", o->adaptive,
+                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached, L_IK is within the training "
+                 "frames' 99th percentile and σ² within twice its own");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_flag("--json", o->json, "Print one JSON object");
     return [o]() { return runPose(*o); };

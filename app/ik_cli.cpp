@@ -36,6 +36,24 @@ std::pair<Effector, Eigen::Vector3d> parseTarget(const std::string& text) {
     return {parseEffectorOption(text.substr(0, eq), "--target"), parseOffset(text.substr(eq + 1), "--target")};
 }
 
+TargetSpec parseTargetWithStrength(const std::string& text) {
+    const std::size_t at = text.find('@');
+    TargetSpec spec;
+    const auto [eff, offset] = parseTarget(text.substr(0, at));
+    spec.effector = eff;
+    spec.offsetCm = offset;
+    if (at == std::string::npos) return spec;
+    const std::string s(trim(text.substr(at + 1)));
+    if (s == "exact") {
+        spec.strength = kStrengthExact;
+    } else if (s == "paper") {
+        spec.strength = kStrengthPaper;
+    } else if (!parseDouble(s, spec.strength) || !(spec.strength > 0.0 && spec.strength <= 1.0)) {
+        throw UsageError("expected --target strength after @ as exact, paper or a number in (0, 1], found '" + s + "'");
+    }
+    return spec;
+}
+
 std::vector<int> parseFrameList(const std::string& text, const std::string& option) {
     std::vector<int> out;
     std::stringstream ss(text);
@@ -61,7 +79,11 @@ gp::ModelVersionPtr loadModelVersion(const std::string& path) {
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : results)
-        if (r.pin == pins) out.push_back({{"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}});
+        if (r.pin == pins) {
+            nlohmann::json e{{"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}};
+            if (!pins) e["strength"] = r.strength;
+            out.push_back(std::move(e));
+        }
     return out;
 }
 

@@ -13,11 +13,19 @@ namespace mgp::app {
 Eigen::Vector3d parseOffset(const std::string& text, const std::string& option);
 // "EFF=dx,dy,dz".
 std::pair<Effector, Eigen::Vector3d> parseTarget(const std::string& text);
+// "EFF=dx,dy,dz[@STRENGTH]", STRENGTH = exact (1, the default), paper (0.999) or a number in (0, 1].
+struct TargetSpec {
+    Effector effector = Effector::kRHand;
+    Eigen::Vector3d offsetCm = Eigen::Vector3d::Zero();
+    double strength = kStrengthExact;
+};
+TargetSpec parseTargetWithStrength(const std::string& text);
 Effector parseEffectorOption(const std::string& text, const std::string& option);
 // "89,103,117,131" (1-based) → clip indices.
 std::vector<int> parseFrameList(const std::string& text, const std::string& option);
 // Loads a model file as version 0 (throws ParseError for a bad file).
 gp::ModelVersionPtr loadModelVersion(const std::string& path);
+// One entry per constraint of that kind: effector, residual_cm, reached (targets also strength).
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins);
 
 }  // namespace mgp::app

@@ -50,6 +50,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     } catch (const std::exception&) {
         contacts_ = {};  // no feet to hold: regeneration holds pins only
     }
+    contactReleased_.fill(false);
     synthetic_ = synthetic;
     frame_ = 0;
     edits_.clear();
@@ -258,7 +259,20 @@ std::vector<IkConstraint> EditorDocument::constraintsFor(const Eigen::Vector3d& 
         const auto e = static_cast<Effector>(i);
         if (pins_[i] && e != drag_.effector) cs.push_back({e, pinPositions_[i], true});
     }
+    for (const IkConstraint& c : drag_.contactPins)
+        if (!pins_[static_cast<int>(c.effector)] && c.effector != drag_.effector) cs.push_back(c);
     return cs;
+}
+
+bool EditorDocument::inContact(Effector foot) const {
+    if (!hasClip() || (foot != Effector::kLFoot && foot != Effector::kRFoot)) return false;
+    // A contact the user switched off on the timeline is not held by a drag either.
+    return contacts_.at(foot, frame_) != nullptr;
+}
+
+void EditorDocument::setContactReleased(Effector foot, bool released) {
+    if (contactReleased_[static_cast<int>(foot)] != released) ++revision_;
+    contactReleased_[static_cast<int>(foot)] = released;
 }
 
 std::string EditorDocument::beginDrag(Effector e) {
@@ -278,9 +292,12 @@ std::string EditorDocument::beginDrag(Effector e) {
         drag_.versionBefore = v->number;
         drag_.startX = currentLatent();
         drag_.x = drag_.startX;
-        if (!solver_ || solver_->version() != v) solver_ = std::make_unique<LearnedIkSolver>(v);
+        if (!solver_ || solver_->version() != v) solver_ = std::make_unique<ConstrainedIkSolver>(v);
     }
     updatePinPositions();
+    for (Effector f : {Effector::kLFoot, Effector::kRFoot})
+        if (f != e && hasEffector(f) && !contactReleased(f) && inContact(f))
+            drag_.contactPins.push_back({f, effectorCm(clip_.skeleton, drag_.startPose, f), true});
     latentPath_.clear();
     if (drag_.x.size() > 0) latentPath_.push_back(drag_.x);
     drag_.active = true;
@@ -314,6 +331,9 @@ void EditorDocument::solveLearned(int maxIterations, bool /*fromDragStart*/) {
     request_.startX = drag_.x;
     request_.constraints = constraintsFor(drag_.targetCm);
     request_.maxIterations = maxIterations;
+    // The root rotation is held (stiffly) near where the drag began, not where the last event left it.
+    request_.rootReferenceDeg = drag_.startPose.anglesDeg.empty() ? std::nullopt
+                                                                  : std::optional<Eigen::Vector3d>(drag_.startPose.anglesDeg[0]);
     if (!solver_->validate(request_).empty()) return;
     solver_->solve(request_, result_);
     if (!finitePose(result_.pose) || !result_.x.allFinite()) return;  // keep the last good pose
@@ -328,6 +348,8 @@ void EditorDocument::solveLearned(int maxIterations, bool /*fromDragStart*/) {
     readout_.sigma2 = result_.sigma2;
     readout_.lik = result_.lik;
     readout_.iterations += result_.iterations;
+    readout_.converged = result_.converged;
+    readout_.stop = result_.stop;
     readout_.diagnostic = result_.diagnostic;
 }
 
@@ -367,14 +389,14 @@ void EditorDocument::solveCompare() {
     if (!compareModel_) return;
     if (compareModel_->model->clip.skeleton.jointCount() != clip_.skeleton.jointCount()) return;
     if (!compareSolver_ || compareSolver_->version() != compareModel_)
-        compareSolver_ = std::make_unique<LearnedIkSolver>(compareModel_);
-    LearnedIkRequest req;
+        compareSolver_ = std::make_unique<ConstrainedIkSolver>(compareModel_);
+    ConstrainedIkRequest req;
     req.start = drag_.startPose;
     req.startX = latentStartForFrame(*compareModel_, std::min(frame_, compareModel_->model->clip.frameCount() - 1));
     req.constraints = constraintsFor(drag_.targetCm);
     req.maxIterations = 100;
     if (!compareSolver_->validate(req).empty()) return;
-    const LearnedIkResult r = compareSolver_->solve(req);
+    const ConstrainedIkResult r = compareSolver_->solve(req);
     if (finitePose(r.pose)) comparePose_ = r.pose;
 }
 
@@ -394,7 +416,26 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     step.label = std::string("drag ") + effectorName(rec.effector) + " on frame " + std::to_string(frame_ + 1);
     step.before[frame_] = rec.before;
     step.after[frame_] = rec.after;
-    if (worker_ && solver_ && readout_.valid && readout_.learned && result_.y.allFinite() && result_.x.allFinite()) {
+    const gp::ModelVersionPtr solvedOn = solver_ ? solver_->version() : nullptr;
+    const bool learnedPose = worker_ && solver_ && readout_.valid && readout_.learned && result_.y.allFinite() &&
+                             result_.x.allFinite();
+    const gp::AdmissionVerdict verdict =
+        learnedPose ? gp::admitPose(solvedOn->range, result_.reached, result_.sigma2, result_.lik) : gp::AdmissionVerdict{};
+    if (learnedPose && worker_->enabled() && !verdict.admitted) {
+        // Kept as an edit, not taught to the model: say so in the update table and the status.
+        std::lock_guard<std::mutex> lock(statusMutex_);
+        AdaptiveHistoryEntry h;
+        h.when = std::chrono::system_clock::now();
+        h.frame = frame_;
+        h.accepted = false;
+        h.diagnostic = "refused: " + verdict.reason;
+        h.versionBefore = h.versionAfter = solvedOn->number;
+        h.rowsAfter = solvedOn->model->N();
+        h.activeSize = static_cast<int>(solvedOn->model->active.size());
+        adaptiveHistory_.push_back(std::move(h));
+        adaptiveStatus_ = "pose kept as an edit, not added to the model: " + verdict.reason;
+    }
+    if (learnedPose && verdict.admitted) {
         AdaptiveSample s;
         s.x = drag_.x;
         s.yKept = result_.y;

@@ -33,8 +33,10 @@
 #include "edit/edit_record.h"
 #include "edit/path_edit.h"
 #include "edit/regenerate_job.h"
+#include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
+#include "motion/foot_contacts.h"
 #include "skeleton/clip.h"
 
 namespace mgp {
@@ -74,6 +76,8 @@ struct SolveReadout {
     bool reached = false;
     double sigma2 = 0.0, lik = 0.0;
     int iterations = 0;  // total over the drag's last target (live solve + refinements)
+    bool converged = false;
+    IkStop stop = IkStop::kInvalidRequest;  // of the last solve (learned only)
     std::string diagnostic;
 };
 
@@ -144,6 +148,12 @@ public:
     void setPinned(Effector e, bool on);
     bool pinned(Effector e) const { return pins_[static_cast<int>(e)]; }
     std::vector<Effector> pinnedEffectors() const;
+    // A foot in ground contact on the current frame (core/motion/foot_contacts.h) is held like a
+    // pin during a drag of another effector, unless released here (released feet stay released
+    // until set back, on every frame).
+    bool inContact(Effector foot) const;
+    void setContactReleased(Effector foot, bool released);
+    bool contactReleased(Effector foot) const { return contactReleased_[static_cast<int>(foot)]; }
 
     // ---- drag ------------------------------------------------------------------------------
     // Returns "" when the drag started, else why not (no clip, effector absent).
@@ -154,7 +164,9 @@ public:
     // (converged, no drag, or the refinement budget is spent).
     bool refine(int maxIterations = 50);
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
-    // the adaptive worker. Returns what changed.
+    // the adaptive worker if gp::admitPose admits it (every constraint reached, σ² and L_IK
+    // within the training frames' range); a refused pose stays an edit, and the update table
+    // and status say why. Returns what changed.
     std::optional<DragRecord> endDrag();
     // Drag falloff radius r in frames (motion/drag_falloff.h): with r > 0 and a model, a drag on
     // frame t is re-solved over t−r..t+r in the background on release and merged into the drag's
@@ -246,6 +258,7 @@ private:
     std::map<int, EditRecord> edits_;
     std::array<bool, kEffectorCount> pins_{};
     std::array<Eigen::Vector3d, kEffectorCount> pinPositions_{};
+    std::array<bool, kEffectorCount> contactReleased_{};  // per foot, for drags (contacts_ stays)
 
     std::unique_ptr<AdaptiveWorker> worker_;
     gp::ModelVersionPtr compareModel_;
@@ -269,9 +282,9 @@ private:
     CompareMode compare_ = CompareMode::kNone;
     std::optional<Pose> comparePose_;
 
-    std::unique_ptr<LearnedIkSolver> solver_, compareSolver_;
-    LearnedIkRequest request_;
-    LearnedIkResult result_;
+    std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;
+    ConstrainedIkRequest request_;
+    ConstrainedIkResult result_;
     SolveReadout readout_;
 
     struct Drag {
@@ -284,6 +297,7 @@ private:
         int versionBefore = 0;
         int refineBudget = 0;
         bool converged = false;
+        std::vector<IkConstraint> contactPins;  // feet in contact, where they were when the drag began
     } drag_;
     bool latentDrag_ = false;
     std::optional<EditRecord> latentBefore_;

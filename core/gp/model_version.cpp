@@ -7,6 +7,7 @@ std::shared_ptr<const ModelVersion> ModelVersion::make(GpModel model, int number
     v->number = number;
     auto m = std::make_shared<const GpModel>(std::move(model));
     v->point = std::make_shared<const PointModel>(m->pointModel());
+    v->range = computeTrainingRange(*m, *v->point);
     v->model = std::move(m);
     return v;
 }

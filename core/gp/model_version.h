@@ -7,6 +7,7 @@
 
 #include "gp/model.h"
 #include "gp/point_objective.h"
+#include "gp/training_range.h"
 
 namespace mgp::gp {
 
@@ -14,6 +15,8 @@ struct ModelVersion {
     int number = 0;  // 0 = as trained or loaded; +1 per accepted adaptive update
     std::shared_ptr<const GpModel> model;
     std::shared_ptr<const PointModel> point;
+    // σ² and L_IK percentiles over the training rows (what an admissible edited pose must meet).
+    TrainingRange range;
 
     // Builds the precomputation; throws std::runtime_error if K cannot be factored.
     static std::shared_ptr<const ModelVersion> make(GpModel model, int number = 0);

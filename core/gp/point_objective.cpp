@@ -67,6 +67,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     const bool clamped = !(noiseFree > 0.0);
     const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
     ws.variance = s2;
+    ws.clamped = clamped;
     ws.r = w_.cwiseProduct(y - ws.f);
     const double E = ws.r.squaredNorm();
     const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
@@ -83,6 +84,26 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     }
     if (gradY) *gradY = w_.cwiseProduct(ws.r) / s2;  // same size: evaluated in place
     return value;
+}
+
+void PointModel::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
+                                       Eigen::VectorXd& dSigma2) const {
+    const Eigen::Index d = XI_.cols();
+    Jf.resize(mu_.size(), d);
+    dSigma2.resize(d);
+    // f = μ + Bᵀk  ⇒  ∂f/∂x = Bᵀ ∂k/∂x.
+    Jf.noalias() = B_.transpose() * ws.J;
+    if (ws.clamped) {
+        dSigma2.setZero();
+        return;
+    }
+    // σ² = 1/β + k(x,x) − kᵀK⁻¹k  ⇒  ∂σ²/∂x = ∂k(x,x)/∂x − 2 (∂k/∂x)ᵀ a.
+    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
+    const double diagGrad = kernel_.hasEta()
+                                ? 2.0 * kernel_.eta() * std::exp(ws.phiX.squaredNorm()) * kAngularEps * kAngularEps / (n2 * n2)
+                                : 0.0;
+    dSigma2.noalias() = -2.0 * ws.J.transpose() * ws.a;
+    dSigma2 += diagGrad * x;
 }
 
 void PointModel::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {

@@ -24,6 +24,7 @@ struct PointWorkspace {
     Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
     Eigen::MatrixXd J;      // M×d: ∂k/∂x
     double variance = 0.0;  // σ²(x) of the last evaluation
+    bool clamped = false;   // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
 };
 
 class PointModel {
@@ -49,6 +50,12 @@ public:
     // given, must already have sizes d and D.
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
+
+    // After evaluate(x, y, ws, ...) on the same x: the mean's Jacobian ∂f/∂x (D×d) and the variance
+    // gradient ∂σ²/∂x (d), both exact (∂σ²/∂x = 0 where the clamp is active). No allocation once
+    // Jf and dSigma2 have their sizes.
+    void meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
+                               Eigen::VectorXd& dSigma2) const;
 
 private:
     Kernel kernel_;

@@ -10,6 +10,8 @@ std::string validateConstraints(const Skeleton& skeleton, const std::vector<IkCo
         const std::string name = effectorName(c.effector);
         if (!skeleton.hasEffector(c.effector)) return "expected an effector this skeleton has, found " + name;
         if (!c.targetCm.allFinite()) return "expected a finite target for " + name + ", found NaN or Inf";
+        if (!(c.strength > 0.0 && c.strength <= 1.0))
+            return "expected a strength in (0, 1] for " + name + ", found " + std::to_string(c.strength);
         if (seen[e]) return "expected each effector once, found " + name + " twice";
         seen[e] = true;
     }

@@ -12,10 +12,21 @@ namespace mgp {
 // A constraint is reached when its residual is at most this (cm).
 constexpr double kReachedToleranceCm = 0.5;
 
+// Target strength, from "natural" to "exact" (used by the constrained learned IK; the penalty
+// L-BFGS solver and plain IK ignore it):
+//   1 (kStrengthExact)  met exactly when reachable with the pins held, else least squares;
+//   s in (0, 1)         soft: the paper's penalty with λ = s, i.e. s/(1 − s)·‖FK − c‖² against L_IK,
+//                       so the prior may leave the target short (0.999 is the paper's point);
+//   small s             "natural": the pose stays near the prior's most likely pose.
+// Pins are always hard, whatever their strength.
+constexpr double kStrengthExact = 1.0;
+constexpr double kStrengthPaper = 0.999;
+
 struct IkConstraint {
     Effector effector = Effector::kRFoot;
     Eigen::Vector3d targetCm = Eigen::Vector3d::Zero();
     bool pin = false;  // a pin holds the effector where it is (targetCm = its start position)
+    double strength = kStrengthExact;
 };
 
 struct IkConstraintResult {
@@ -23,10 +34,11 @@ struct IkConstraintResult {
     bool pin = false;
     double residualCm = 0.0;
     bool reached = false;
+    double strength = kStrengthExact;
 };
 
 // Checks targets before a solve; returns "" if fine, else what is wrong (NaN target, unknown
-// effector on this skeleton, the same effector twice).
+// effector on this skeleton, the same effector twice, a strength outside (0, 1]).
 std::string validateConstraints(const Skeleton& skeleton, const std::vector<IkConstraint>& constraints);
 
 }  // namespace mgp

@@ -1,5 +1,8 @@
 #include "skeleton/forward_kinematics.h"
 
+#include <algorithm>
+#include <array>
+
 #include <Eigen/Geometry>
 #include <limits>
 
@@ -68,6 +71,44 @@ void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const 
         if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
         const Eigen::Vector3d w = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
         jac.col(i) = kDegToRad * w.cross(pe - fk.jointCm[j]);
+    }
+}
+
+void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                               const Pose& pose, Effector e, const Eigen::Vector3d& lambda,
+                               Eigen::Ref<Eigen::MatrixXd> out) {
+    out.setZero();
+    const EffectorSite& site = skeleton.effectorSite(e);
+    if (site.joint < 0) return;
+    const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
+    // The chain's DOFs: index, joint, position in the joint's rotation order (outermost first),
+    // world axis ω and ω × (p − q).
+    std::array<int, kPoseDofs> dof{}, joint{}, rank{};
+    std::array<Eigen::Vector3d, kPoseDofs> w, v;
+    int n = 0;
+    for (int i = 0; i < kPoseDofs; ++i) {
+        const int j = layout.joint(i);
+        if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
+        const RotationOrder& order = skeleton.joints[j].order;
+        dof[n] = i;
+        joint[n] = j;
+        rank[n] = static_cast<int>(std::find(order.begin(), order.end(), layout.axis(i)) - order.begin());
+        w[n] = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
+        v[n] = w[n].cross(pe - fk.jointCm[j]);
+        ++n;
+    }
+    const double k2 = kDegToRad * kDegToRad;
+    for (int a = 0; a < n; ++a) {
+        for (int b = a; b < n; ++b) {
+            // Which of the two is upstream: the ancestor joint, or the outer axis of one joint.
+            bool aUp;
+            if (joint[a] == joint[b]) aUp = rank[a] <= rank[b];
+            else aUp = skeleton.isAncestorOrSelf(joint[a], joint[b]);
+            const int up = aUp ? a : b, down = aUp ? b : a;
+            const double h = k2 * lambda.dot(w[up].cross(v[down]));
+            out(dof[a], dof[b]) = h;
+            out(dof[b], dof[a]) = h;
+        }
     }
 }
 

@@ -34,4 +34,12 @@ Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const 
 void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
                       const Pose& pose, Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
 
+// λ · ∂²(effector position)/∂y² for the 47 pose DOFs (47×47, cm/deg², symmetric): the
+// second-order term a Newton step on ‖FK − c‖² or on a pinned effector's multiplier needs. For
+// DOFs a (upstream, or the same DOF) and b on the effector's chain, with world axes ω and b's
+// pivot q_b: ∂²p/∂θ_a∂θ_b = (π/180)² ω_a × (ω_b × (p − q_b)). Other entries are exactly 0.
+void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                               const Pose& pose, Effector e, const Eigen::Vector3d& lambda,
+                               Eigen::Ref<Eigen::MatrixXd> out);
+
 }  // namespace mgp

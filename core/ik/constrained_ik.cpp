@@ -1,0 +1,368 @@
+#include "ik/constrained_ik.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mgp {
+
+namespace {
+constexpr double kFdStepX = 1e-5;          // central differences of ∂L_IK/∂x for the x–x block
+constexpr double kMaxDamping = 1e12;
+constexpr double kConvergedDamping = 1e-2;  // above this the decrement is not a Newton decrement
+constexpr int kProjections = 5;             // second-order corrections onto the pins per trial
+}  // namespace
+
+const char* ikStopName(IkStop stop) {
+    switch (stop) {
+        case IkStop::kConverged: return "converged";
+        case IkStop::kIterationCap: return "iteration_cap";
+        case IkStop::kStalled: return "stalled";
+        case IkStop::kInvalidRequest: return "invalid_request";
+        case IkStop::kNonFinite: return "non_finite";
+    }
+    return "unknown";
+}
+
+double targetWeight(double strength) {
+    if (strength >= kStrengthExact) return kExactTargetWeight;
+    return std::min(kExactTargetWeight, 2.0 * strength / (1.0 - strength));
+}
+
+ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
+    : version_(std::move(version)), layout_(version_->model->clip.skeleton) {
+    const gp::GpModel& m = *version_->model;
+    d_ = m.latentDim();
+    D_ = m.D();
+    n_ = d_ + D_;
+    yOfDof_.assign(kPoseDofs, -1);
+    for (int k = 0; k < D_; ++k) yOfDof_[m.keptColumns[k]] = k;
+    for (int a = 0; a < 3; ++a) rootY_[a] = yOfDof_[a];  // DOFs 0-2 are the root rotation
+    full_.resize(kPoseDofs);
+    x_.resize(d_);
+    y_.resize(D_);
+    gx_.resize(d_);
+    gy_.resize(D_);
+    gxP_.resize(d_);
+    gxM_.resize(d_);
+    gyTmp_.resize(D_);
+    xP_.resize(d_);
+    jac_.resize(3, kPoseDofs);
+    for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &delta_, &tmp_, &rhs_}) v->resize(n_);
+    H_.resize(n_, n_);
+    Hd_.resize(n_, n_);
+}
+
+std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    if (static_cast<int>(r.start.anglesDeg.size()) != sk.jointCount())
+        return "expected a start pose of the model's skeleton, found one with " + std::to_string(r.start.anglesDeg.size()) +
+               " joints";
+    if (r.startX.size() != d_) return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
+    if (!r.startX.allFinite()) return "expected a finite latent start, found NaN or Inf";
+    if (!r.start.rootCm.allFinite()) return "expected a finite root translation, found NaN or Inf";
+    for (const auto& a : r.start.anglesDeg)
+        if (!a.allFinite()) return "expected a finite start pose, found NaN or Inf";
+    if (r.maxIterations < 1) return "expected at least 1 iteration, found " + std::to_string(r.maxIterations);
+    if (!(r.rootStiffness >= 0.0) || !std::isfinite(r.rootStiffness))
+        return "expected a root stiffness ≥ 0, found " + std::to_string(r.rootStiffness);
+    if (r.rootReferenceDeg && !r.rootReferenceDeg->allFinite()) return "expected a finite root reference, found NaN or Inf";
+    return validateConstraints(sk, r.constraints);
+}
+
+void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
+    request_ = &request;
+    pose_ = request.start;
+    layout_.extract(request.start, full_.data());
+    const gp::GpModel& m = *version_->model;
+    for (std::size_t k = 0; k < m.constantColumns.size(); ++k) full_[m.constantColumns[k]] = m.constantValues[k];
+    rootRef_ = request.rootReferenceDeg ? *request.rootReferenceDeg : Eigen::Vector3d(full_[0], full_[1], full_[2]);
+    pins_.clear();
+    targets_.clear();
+    for (std::size_t i = 0; i < request.constraints.size(); ++i)
+        (request.constraints[i].pin ? pins_ : targets_).push_back(static_cast<int>(i));
+    const int p = 3 * static_cast<int>(pins_.size());
+    A_.resize(p, n_);
+    c_.resize(p);
+    cTrial_.resize(p);
+    nu_.resize(p);
+    HinvAt_.resize(n_, p);
+    S_.resize(p, p);
+}
+
+Eigen::VectorXd ConstrainedIkSolver::startPoint(const ConstrainedIkRequest& request) {
+    bind(request);
+    Eigen::VectorXd z(n_);
+    z.head(d_) = request.startX;
+    const gp::GpModel& m = *version_->model;
+    for (int k = 0; k < D_; ++k) z[d_ + k] = full_[m.keptColumns[k]];
+    return z;
+}
+
+void ConstrainedIkSolver::setPose(const Eigen::VectorXd& y) {
+    const gp::GpModel& m = *version_->model;
+    for (int k = 0; k < D_; ++k) full_[m.keptColumns[k]] = y[k];
+    layout_.apply(full_.data(), pose_);
+    forwardKinematics(m.clip.skeleton, pose_, fk_);
+}
+
+double ConstrainedIkSolver::pinResidual(const Eigen::VectorXd& z, Eigen::VectorXd& c) {
+    setPose(z.tail(D_));
+    const Skeleton& sk = version_->model->clip.skeleton;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < pins_.size(); ++i) {
+        const IkConstraint& pc = request_->constraints[pins_[i]];
+        c.segment<3>(3 * static_cast<Eigen::Index>(i)) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
+    }
+    if (c.size() > 0) worst = c.cwiseAbs().maxCoeff();
+    return worst;
+}
+
+double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives) {
+    const gp::GpModel& m = *version_->model;
+    const Skeleton& sk = m.clip.skeleton;
+    const ConstrainedIkRequest& r = *request_;
+    ++evaluations_;
+    x_ = z.head(d_);
+    y_ = z.tail(D_);
+    lik_ = version_->point->evaluate(x_, y_, ws_, derivatives ? &gx_ : nullptr, derivatives ? &gy_ : nullptr);
+    sigma2_ = ws_.variance;
+    double F = lik_;
+    const double s2 = sigma2_;
+    if (derivatives) {
+        g_.head(d_) = gx_;
+        g_.tail(D_) = gy_;
+        H_.setZero();
+        // y–y: ∂²/∂y² of ‖W(y − f)‖²/(2σ²) = W²/σ².
+        for (int k = 0; k < D_; ++k) H_(d_ + k, d_ + k) = m.w[k] * m.w[k] / s2;
+        // x–y: ∂(W r/σ²)/∂x = −W² J_f/σ² − (W r) (∂σ²/∂x)ᵀ/σ⁴.
+        version_->point->meanVarianceJacobians(x_, ws_, Jf_, dS2_);
+        for (int k = 0; k < D_; ++k) {
+            const double wk2 = m.w[k] * m.w[k];
+            const double wr = m.w[k] * ws_.r[k];
+            for (int i = 0; i < d_; ++i) {
+                const double h = -wk2 * Jf_(k, i) / s2 - wr * dS2_[i] / (s2 * s2);
+                H_(d_ + k, i) = h;
+                H_(i, d_ + k) = h;
+            }
+        }
+        // x–x: central differences of the exact x-gradient (y fixed).
+        for (int i = 0; i < d_; ++i) {
+            xP_ = x_;
+            xP_[i] += kFdStepX;
+            version_->point->evaluate(xP_, y_, wsFd_, &gxP_, &gyTmp_);
+            xP_[i] -= 2.0 * kFdStepX;
+            version_->point->evaluate(xP_, y_, wsFd_, &gxM_, &gyTmp_);
+            evaluations_ += 2;
+            for (int j = 0; j < d_; ++j) H_(j, i) = (gxP_[j] - gxM_[j]) / (2.0 * kFdStepX);
+        }
+        for (int i = 0; i < d_; ++i)
+            for (int j = 0; j < i; ++j) H_(i, j) = H_(j, i) = 0.5 * (H_(i, j) + H_(j, i));
+    }
+    setPose(y_);
+    // Targets (penalties) and pins (constraints).
+    for (int t : targets_) {
+        const IkConstraint& c = r.constraints[t];
+        const double kappa = targetWeight(c.strength);
+        const Eigen::Vector3d e = effectorCm(sk, fk_, c.effector) - c.targetCm;
+        F += 0.5 * kappa * e.squaredNorm();
+        if (!derivatives) continue;
+        effectorJacobian(sk, layout_, fk_, pose_, c.effector, jac_);
+        for (int a = 0; a < kPoseDofs; ++a) {
+            const int ka = yOfDof_[a];
+            if (ka < 0 || jac_.col(a).isZero(0.0)) continue;
+            g_[d_ + ka] += kappa * jac_.col(a).dot(e);
+            for (int b = 0; b <= a; ++b) {
+                const int kb = yOfDof_[b];
+                if (kb < 0) continue;
+                const double h = kappa * jac_.col(a).dot(jac_.col(b));
+                H_(d_ + ka, d_ + kb) += h;
+                if (kb != ka) H_(d_ + kb, d_ + ka) += h;
+            }
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        const int k = rootY_[a];
+        if (k < 0) continue;
+        const double dev = y_[k] - rootRef_[a];
+        F += 0.5 * r.rootStiffness * dev * dev;
+        if (derivatives) {
+            g_[d_ + k] += r.rootStiffness * dev;
+            H_(d_ + k, d_ + k) += r.rootStiffness;
+        }
+    }
+    if (derivatives) {
+        A_.setZero();
+        for (std::size_t i = 0; i < pins_.size(); ++i) {
+            const IkConstraint& pc = r.constraints[pins_[i]];
+            const auto row = 3 * static_cast<Eigen::Index>(i);
+            c_.segment<3>(row) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
+            effectorJacobian(sk, layout_, fk_, pose_, pc.effector, jac_);
+            for (int a = 0; a < kPoseDofs; ++a)
+                if (yOfDof_[a] >= 0) A_.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
+        }
+    }
+    return F;
+}
+
+double ConstrainedIkSolver::objective(const ConstrainedIkRequest& request, const Eigen::VectorXd& z,
+                                      Eigen::VectorXd* gradient) {
+    bind(request);
+    const double F = evaluate(z, gradient != nullptr);
+    if (gradient) *gradient = g_;
+    return F;
+}
+
+void ConstrainedIkSolver::fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result) {
+    // Re-evaluate at z_ so every output belongs to it.
+    result.objective = evaluate(z_, false);
+    result.x = z_.head(d_);
+    result.y = z_.tail(D_);
+    result.pose = pose_;
+    result.sigma2 = sigma2_;
+    result.lik = lik_;
+    result.constraints.clear();
+    result.reached = true;
+    const Skeleton& sk = version_->model->clip.skeleton;
+    for (const IkConstraint& c : request.constraints) {
+        IkConstraintResult cr;
+        cr.effector = c.effector;
+        cr.pin = c.pin;
+        cr.strength = c.pin ? kStrengthExact : c.strength;
+        // stableNorm: a target ~1e200 cm away gives a huge finite residual, not Inf.
+        cr.residualCm = (effectorCm(sk, fk_, c.effector) - c.targetCm).stableNorm();
+        cr.reached = cr.residualCm <= request.reachedToleranceCm;
+        result.reached = result.reached && cr.reached;
+        result.constraints.push_back(cr);
+    }
+}
+
+void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, ConstrainedIkResult& result) {
+    result.iterations = result.evaluations = 0;
+    result.converged = false;
+    result.decrement = std::numeric_limits<double>::quiet_NaN();
+    evaluations_ = 0;
+    if (const std::string problem = validate(request); !problem.empty()) {
+        result.stop = IkStop::kInvalidRequest;
+        result.diagnostic = problem;
+        result.pose = request.start;
+        result.x = request.startX;
+        result.y.resize(0);
+        result.constraints.clear();
+        result.reached = false;
+        result.objective = result.lik = result.sigma2 = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    z_ = startPoint(request);
+    double F = evaluate(z_, true);
+    if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
+        result.stop = IkStop::kNonFinite;
+        result.diagnostic = "expected a finite objective at the start, found NaN or Inf";
+        fillResult(request, result);
+        result.evaluations = evaluations_;
+        return;
+    }
+    const int p = static_cast<int>(c_.size());
+    double mu = 1e-6, nuLm = 2.0, meritNu = 0.0;
+    IkStop stop = IkStop::kIterationCap;
+    int it = 0;
+    while (true) {
+        // Damped Hessian model; grow μ until it is positive definite.
+        Hd_ = H_;
+        const double floor = 1e-9 * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+        for (int i = 0; i < n_; ++i) Hd_(i, i) += mu * std::max(std::abs(H_(i, i)), floor);
+        llt_.compute(Hd_);
+        if (llt_.info() != Eigen::Success) {
+            mu = std::max(mu * 10.0, 1e-6);
+            if (mu > kMaxDamping) {
+                stop = IkStop::kStalled;
+                break;
+            }
+            continue;
+        }
+        // KKT step: δ = −Hd⁻¹(g + Aᵀν), (A Hd⁻¹ Aᵀ) ν = c − A Hd⁻¹ g.
+        tmp_ = llt_.solve(g_);
+        if (p > 0) {
+            HinvAt_ = llt_.solve(A_.transpose());
+            S_.noalias() = A_ * HinvAt_;
+            const double reg = 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
+            S_.diagonal().array() += reg;  // rank-deficient pins (a straight leg) stay solvable
+            sLdlt_.compute(S_);
+            nu_ = sLdlt_.solve(c_ - A_ * tmp_);
+            delta_ = -tmp_ - HinvAt_ * nu_;
+        } else {
+            delta_ = -tmp_;
+        }
+        const double pinWorst = p > 0 ? c_.cwiseAbs().maxCoeff() : 0.0;
+        // Model decrease of F along δ (the pins' linearisation is met by δ).
+        const double modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(H_ * delta_));
+        // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδ − ½δᵀHdδ.
+        const double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
+        result.decrement = decrement;
+        if (pinWorst <= request.pinToleranceCm && mu <= kConvergedDamping &&
+            std::abs(decrement) <= request.stationarityAbsolute + request.stationarityRelative * std::abs(F)) {
+            stop = IkStop::kConverged;
+            break;
+        }
+        if (it >= request.maxIterations) break;
+        ++it;
+        if (p > 0) meritNu = std::max(meritNu, 2.0 * nu_.cwiseAbs().maxCoeff());
+        const double c1 = p > 0 ? c_.lpNorm<1>() : 0.0;
+        const double pred = modelDecrease + meritNu * c1;
+        // Trial point with second-order corrections onto the pins.
+        zTrial_ = z_ + delta_;
+        double trialPinNorm = 0.0;
+        if (p > 0) {
+            for (int k = 0; k < kProjections; ++k) {
+                if (pinResidual(zTrial_, cTrial_) <= 0.01 * request.pinToleranceCm) break;
+                nu_ = sLdlt_.solve(cTrial_);
+                zTrial_.noalias() -= HinvAt_ * nu_;
+            }
+            pinResidual(zTrial_, cTrial_);
+            trialPinNorm = cTrial_.lpNorm<1>();
+        }
+        const double Ft = evaluate(zTrial_, false);
+        // Both points on the pins (to a tenth of the tolerance): compare F itself, so round-off in
+        // c times a large ν cannot mask progress. Otherwise the ℓ1 merit.
+        const bool feasible = p == 0 || (pinWorst <= 0.1 * request.pinToleranceCm &&
+                                         cTrial_.cwiseAbs().maxCoeff() <= 0.1 * request.pinToleranceCm);
+        const double actual = feasible ? F - Ft : (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
+        const double predicted = feasible ? modelDecrease : pred;
+        const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
+        // Pins never get worse than the tolerance or where they are: a trial that leaves them (a
+        // projection that could not return, e.g. at a straight leg) is rejected, so μ shrinks the step.
+        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max(request.pinToleranceCm, pinWorst);
+        if (std::isfinite(Ft) && pinsHeld && gain > 1e-4) {
+            z_ = zTrial_;
+            F = evaluate(z_, true);
+            if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
+                stop = IkStop::kNonFinite;  // cannot happen for finite z; kept as a guard
+                break;
+            }
+            mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+            mu = std::max(mu, 1e-12);
+            nuLm = 2.0;
+        } else {
+            mu *= nuLm;
+            nuLm *= 2.0;
+            if (mu > kMaxDamping) {
+                stop = IkStop::kStalled;
+                break;
+            }
+        }
+    }
+    result.stop = stop;
+    result.converged = stop == IkStop::kConverged;
+    result.iterations = it;
+    fillResult(request, result);
+    result.evaluations = evaluations_;
+    result.diagnostic = ikStopName(stop);
+}
+
+ConstrainedIkResult ConstrainedIkSolver::solve(const ConstrainedIkRequest& request) {
+    ConstrainedIkResult r;
+    solve(request, r);
+    return r;
+}
+
+}  // namespace mgp

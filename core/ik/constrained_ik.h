@@ -1,0 +1,155 @@
+#pragma once
+// Constrained learned IK: the most likely pose under the GPLVM prior that holds every pin exactly
+// and meets every target as strongly as its strength asks (docs/maths-ik.md).
+//
+//   minimise over z = (x, y):  F(z) = L_IK(x, y) + ½ Σ_targets κ(s_t) ‖FK_t(y) − c_t‖²
+//                                              + ½ k_root ‖y_root − r_ref‖²
+//   subject to                 FK_p(y) = c_p  for every pin p                      (cm, degrees)
+//
+// Semantics (what an animator gets):
+//   - Pins are hard equality constraints: met to 1e-5 cm whenever they are jointly feasible.
+//   - A target of strength 1 ("exact") has κ = kExactTargetWeight: it is met (residual far below
+//     0.05 cm) whenever it is reachable with the pins held; otherwise the pose is the least-squares
+//     closest one (the prior only breaks ties) and the target reports reached = false.
+//   - A target of strength s < 1 has κ = 2s/(1 − s): F is then (L_IK·(1 − s) + s‖FK − c‖²)/(1 − s),
+//     the paper's penalty with λ = s. Lower s lets the prior keep the pose more natural.
+//   - Root orientation: y's three root rotations carry the stiff quadratic ½ k_root ‖Δ‖² (per
+//     degree²) around r_ref (the drag's starting root rotation), so the whole body turns or tilts
+//     only as much as the targets need once the limbs alone cost more than k_root·Δ.
+//   - The root translation, the model's constant columns and DOFs outside the 47-vector stay at
+//     the start pose's (constants: the model's) values.
+//
+// Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
+//   H = ∇²L_IK (y–y and x–y blocks analytic from ∂f/∂x and ∂σ²/∂x; x–x block by central differences
+//       of the analytic x-gradient, so the ln σ² term is handled exactly)
+//     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal.
+// (The full Newton model, adding κe_t·∇²FK_t and the pins' ν·∇²FK_p, was measured and lost:
+// it is indefinite away from the solution and needed 2–3× the iterations; docs/maths-ik.md.)
+// Marquardt damping μ·diag(H). Each step solves the KKT system of the pins' linearisation
+// (range-space form, A (H + μ diag H)⁻¹ Aᵀ), then a second-order correction projects the trial
+// point back onto the pins (up to 5 Gauss–Newton projections in the same metric). Steps are
+// accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
+// tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁.
+//
+// Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
+// decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
+// stationarityAbsolute + stationarityRelative·|F| (1e-6 + 1e-10·|F|) with μ ≤ 1e-2, i.e. no
+// Newton step could lower F by more than that. `iterations` counts every linear solve/trial step
+// (accepted or not); `evaluations` counts prior evaluations.
+//
+// The solver holds a preallocated workspace for one model version: warm starts come from the
+// request (the previous event's (x, pose)). solve() never throws.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gp/model_version.h"
+#include "ik/ik_types.h"
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_layout.h"
+
+namespace mgp {
+
+// Penalty per cm² (in ½κ‖e‖²) of an exact target: a 1e-3 cm miss costs 0.5, about what one
+// degree of an unlikely joint angle costs under the prior, so reachable targets end ≪ 0.05 cm.
+constexpr double kExactTargetWeight = 1e6;
+// Root orientation stiffness per degree² (in ½k‖Δ‖²).
+constexpr double kDefaultRootStiffness = 0.5;
+
+enum class IkStop {
+    kConverged,       // the KKT test above holds
+    kIterationCap,    // maxIterations trial steps without meeting it
+    kStalled,         // the damping grew past 1e12: no step lowers the merit (round-off level)
+    kInvalidRequest,  // validate() failed; the start pose is returned
+    kNonFinite,       // the start point has no finite objective; the start pose is returned
+};
+const char* ikStopName(IkStop stop);  // "converged", "iteration_cap", "stalled", "invalid_request", "non_finite"
+
+// Target weight κ for a strength in (0, 1].
+double targetWeight(double strength);
+
+struct ConstrainedIkRequest {
+    Pose start;                // warm start pose (root translation is kept)
+    Eigen::VectorXd startX;    // warm start latent point (d)
+    std::vector<IkConstraint> constraints;
+    int maxIterations = 50;
+    double rootStiffness = kDefaultRootStiffness;
+    std::optional<Eigen::Vector3d> rootReferenceDeg;  // r_ref; default: the start's root rotation
+    double pinToleranceCm = 1e-5;
+    double stationarityAbsolute = 1e-6;
+    double stationarityRelative = 1e-10;
+    double reachedToleranceCm = 0.05;  // a constraint is reached within this
+};
+
+struct ConstrainedIkResult {
+    Pose pose;
+    Eigen::VectorXd x, y;          // latent point (d), kept pose columns (D, degrees)
+    double sigma2 = 0.0;           // σ²(x)
+    double lik = 0.0;              // L_IK(x, y)
+    double objective = 0.0;        // F (without the pins, which hold)
+    double decrement = 0.0;        // the last stationarity measure (see above)
+    std::vector<IkConstraintResult> constraints;  // in request order
+    bool reached = false;          // every target and pin within reachedToleranceCm
+    bool converged = false;        // stop == kConverged
+    IkStop stop = IkStop::kInvalidRequest;
+    int iterations = 0;
+    int evaluations = 0;
+    std::string diagnostic;        // human-readable; the validation error for kInvalidRequest
+};
+
+class ConstrainedIkSolver {
+public:
+    explicit ConstrainedIkSolver(gp::ModelVersionPtr version);
+    const gp::ModelVersionPtr& version() const { return version_; }
+
+    // "" if the request can be solved, else what is wrong (expected ..., found ...).
+    std::string validate(const ConstrainedIkRequest& request) const;
+    void solve(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+    ConstrainedIkResult solve(const ConstrainedIkRequest& request);
+
+    // F at z = (x, y) for `request` and, if `gradient` is given, its exact gradient (the tests
+    // check it against central differences). Pins are not part of F.
+    double objective(const ConstrainedIkRequest& request, const Eigen::VectorXd& z, Eigen::VectorXd* gradient);
+    // The Hessian model H at z (after objective() at the same z with a gradient).
+    const Eigen::MatrixXd& hessianModel() const { return H_; }
+    // The start point z0 of a request (latent start and kept columns of the start pose).
+    Eigen::VectorXd startPoint(const ConstrainedIkRequest& request);
+
+private:
+    void bind(const ConstrainedIkRequest& request);
+    // F, and with `derivatives` also g_, H_, A_, c_ (pins) at z.
+    double evaluate(const Eigen::VectorXd& z, bool derivatives);
+    // Only FK and the pins' residual c (cm) at z; returns ‖c‖∞.
+    double pinResidual(const Eigen::VectorXd& z, Eigen::VectorXd& c);
+    void setPose(const Eigen::VectorXd& y);
+    void fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+
+    gp::ModelVersionPtr version_;
+    PoseLayout layout_;
+    int d_ = 0, D_ = 0, n_ = 0;
+    std::vector<int> yOfDof_;  // 47-index → index into y (−1 if constant)
+    int rootY_[3] = {-1, -1, -1};
+
+    // Bound request.
+    const ConstrainedIkRequest* request_ = nullptr;
+    std::vector<int> pins_, targets_;  // indices into request_->constraints
+    Eigen::Vector3d rootRef_ = Eigen::Vector3d::Zero();
+
+    // Workspace.
+    Pose pose_;
+    FkState fk_;
+    Eigen::VectorXd full_, x_, y_, gx_, gy_, gxP_, gxM_, gyTmp_, dS2_, xP_;
+    Eigen::MatrixXd Jf_;
+    gp::PointWorkspace ws_, wsFd_;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
+    Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, delta_, tmp_, nu_, rhs_;
+    Eigen::MatrixXd H_, Hd_, A_, HinvAt_, S_;
+    Eigen::LLT<Eigen::MatrixXd> llt_;
+    Eigen::LDLT<Eigen::MatrixXd> sLdlt_;
+    double sigma2_ = 0.0, lik_ = 0.0;
+    int evaluations_ = 0;
+};
+
+}  // namespace mgp

@@ -1,0 +1,68 @@
+// `motiongp pose --json` with the constrained solver: converged/stop/iterations, target strength,
+// contact pins and --release, the admission verdict, and --adaptive refusing a broken pose.
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "gp/model_file.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using nlohmann::json;
+using namespace mgp;
+
+namespace {
+std::string walkModelFile() {
+    static const std::string path = [] {
+        const std::string dir = test::scratchDir("cli_pose_constrained_model");
+        gp::saveModel(dir + "/walk.model", *test::walkModel35()->model);
+        return dir + "/walk.model";
+    }();
+    return path;
+}
+}  // namespace
+
+TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural, contact pins") {
+    const std::string model = walkModelFile();
+    auto r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5@0.9 --target lhand=0,5,0 --json");
+    REQUIRE(r.exitCode == 0);
+    json j = json::parse(r.out);
+    CHECK(j["stop"].is_string());
+    CHECK(j["converged"] == (j["stop"] == "converged"));
+    CHECK(j["iterations"].get<int>() >= 1);
+    CHECK(j["targets"][0]["strength"].get<double>() == 0.9);
+    CHECK(j["targets"][1]["strength"].get<double>() == 1.0);
+    CHECK(j["natural"]["percentile"].get<double>() == 99.0);
+    CHECK(j["natural"]["admitted"].is_boolean());
+    CHECK(j["natural"]["L_IK_limit"].get<double>() > 0.0);
+    // Frame 101 of the walk has a planted foot; it is held unless released.
+    REQUIRE(j["contact_pins"].size() >= 1);
+    const std::string foot = j["contact_pins"][0];
+    bool pinned = false;
+    for (const auto& p : j["pins"]) pinned |= p["effector"] == foot && p["residual_cm"].get<double>() <= 0.05;
+    CHECK(pinned);
+    r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5 --release " + foot + " --json");
+    REQUIRE(r.exitCode == 0);
+    j = json::parse(r.out);
+    for (const auto& c : j["contact_pins"]) CHECK(c != foot);
+    r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5@2 --json");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --target strength after @ as exact, paper or a number in (0, 1], found '2'\n");
+    r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5 --release head --json");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --release lfoot or rfoot, found 'head'\n");
+}
+
+TEST_CASE("motiongp pose --adaptive refuses an unreachable reach with pinned feet and says why") {
+    const std::string model = walkModelFile();
+    const std::string out = test::scratchDir("pose_adaptive_refused") + "/walk2.model";
+    const auto r = test::runCli("pose '" + model + "' --frame 61 --target rhand=120,120,0 --pin lfoot --pin rfoot --adaptive --out-model '" +
+                                out + "' --json");
+    REQUIRE(r.exitCode == 0);
+    const json j = json::parse(r.out);
+    CHECK(j["reached"] == false);
+    for (const auto& p : j["pins"]) CHECK(p["residual_cm"].get<double>() <= 0.05);
+    CHECK(j["natural"]["admitted"] == false);
+    CHECK(j["adaptive"]["refused"] == true);
+    CHECK(j["adaptive"]["reason"] == "a target or pin was not reached");
+    CHECK_FALSE(std::ifstream(out).good());  // nothing written
+}

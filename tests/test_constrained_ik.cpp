@@ -1,0 +1,241 @@
+// Constrained learned IK (core/ik/constrained_ik.h) on real clips: hard pins, exact targets, the
+// 50-iteration budget, unreachable targets, and the admission rule for adaptive updates
+// (core/gp/training_range.h). Tuned on 35_01; 10_03 (kick) and 16_01 (jump) are held out.
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "gp/trainer.h"
+#include "gp/training_range.h"
+#include "ik/constrained_ik.h"
+#include "io/clip_loader.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+// Same settings as the 35_01 fixture (M = 100, T = 3), on a held-out clip.
+gp::ModelVersionPtr heldOutModel(const std::string& file) {
+    static std::mutex mutex;
+    static std::map<std::string, gp::ModelVersionPtr> cache;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& v = cache[file];
+    if (!v) {
+        gp::TrainOptions options;
+        options.activeSize = 100;
+        options.outerIterations = 3;
+        v = gp::ModelVersion::make(gp::trainOnClip(loadClip(test::mocap("asf_amc/" + file)), options).model);
+    }
+    return v;
+}
+
+ConstrainedIkRequest captured(const gp::ModelVersion& v, int frame, int iterations = 50) {
+    ConstrainedIkRequest r;
+    r.start = v.model->clip.frames[frame];
+    r.startX = latentStartForFrame(v, frame);
+    r.maxIterations = iterations;
+    return r;
+}
+
+struct Move {
+    Effector effector;
+    Eigen::Vector3d offset;
+};
+}  // namespace
+
+TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose: pins always hold, targets met to 0.05 cm") {
+    // Right-handed world, Y up. Moves an animator makes: reach up/forward/out, lift and step a foot.
+    const std::vector<Move> moves = {{Effector::kRHand, {0, 20, 0}},  {Effector::kRHand, {0, 0, 30}},
+                                     {Effector::kLHand, {-25, 15, 0}}, {Effector::kRHand, {10, 35, 20}},
+                                     {Effector::kRFoot, {0, 20, 0}},   {Effector::kLFoot, {0, 25, 25}},
+                                     {Effector::kRFoot, {0, 30, 40}}};
+    int solves = 0, convergedAt50 = 0, reachedAt50 = 0, converged300 = 0, reached300 = 0;
+    for (const std::string file : {"35_01.amc", "10_03.amc", "16_01.amc"}) {
+        const auto version = file == "35_01.amc" ? test::walkModel35() : heldOutModel(file);
+        const Skeleton& sk = version->model->clip.skeleton;
+        ConstrainedIkSolver solver(version);
+        for (int frame : {40, 120}) {
+            for (const Move& mv : moves) {
+                CAPTURE(file);
+                CAPTURE(frame);
+                CAPTURE(std::string(effectorName(mv.effector)));
+                CAPTURE(mv.offset.transpose());
+                ConstrainedIkRequest req = captured(*version, frame);
+                FkState fk;
+                forwardKinematics(sk, req.start, fk);
+                req.constraints = {{mv.effector, effectorCm(sk, fk, mv.effector) + mv.offset, false}};
+                // Both feet pinned for a hand move; the other foot for a foot move.
+                for (Effector f : {Effector::kLFoot, Effector::kRFoot})
+                    if (f != mv.effector) req.constraints.push_back({f, effectorCm(sk, fk, f), true});
+                // The editor's budget (50 iterations): pins always hold; count what else holds.
+                const ConstrainedIkResult at50 = solver.solve(req);
+                ++solves;
+                convergedAt50 += at50.converged;
+                reachedAt50 += at50.reached;
+                CHECK(at50.iterations <= 50);
+                for (const auto& c : at50.constraints)
+                    if (c.pin) CHECK(c.residualCm <= 0.05);
+                CHECK(at50.pose.rootCm == req.start.rootCm);
+                // Given 300 iterations.
+                req.maxIterations = 300;
+                const ConstrainedIkResult res = solver.solve(req);
+                MESSAGE(file << " frame " << frame + 1 << " " << std::string(effectorName(mv.effector)) << " "
+                             << mv.offset.transpose() << ": at 50 " << std::string(ikStopName(at50.stop)) << ", target "
+                             << at50.constraints[0].residualCm << " cm; " << std::string(ikStopName(res.stop)) << " in "
+                             << res.iterations << ", target " << res.constraints[0].residualCm << " cm, L_IK " << res.lik);
+                converged300 += res.converged;
+                reached300 += res.reached;
+                for (const auto& c : res.constraints)
+                    if (c.pin) CHECK(c.residualCm <= 0.05);
+            }
+        }
+    }
+    // The goal is every move converged at 50 iterations; measured (42 moves, committed 35_01
+    // fixture): 8 converged and 41 reached at 50, 40 converged and 41 reached at 300 (16_01 frame
+    // 41, lhand −25,15,0 stays 0.13 cm short). These floors catch regressions; they are not the goal.
+    MESSAGE("at 50 iterations: " << convergedAt50 << "/" << solves << " converged, " << reachedAt50 << "/" << solves
+                                 << " reached to 0.05 cm; at 300: " << converged300 << " converged, " << reached300 << " reached");
+    CHECK(reachedAt50 >= solves - 1);
+    CHECK(converged300 >= solves - 3);
+    CHECK(reached300 >= solves - 1);
+}
+
+TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keeps the feet, reached:false, refused") {
+    for (const std::string file : {"35_01.amc", "10_03.amc"}) {
+        CAPTURE(file);
+        const auto version = file == "35_01.amc" ? test::walkModel35() : heldOutModel(file);
+        const Skeleton& sk = version->model->clip.skeleton;
+        ConstrainedIkSolver solver(version);
+        ConstrainedIkRequest req = captured(*version, 60, 200);
+        FkState fk;
+        forwardKinematics(sk, req.start, fk);
+        req.constraints = {{Effector::kRHand, effectorCm(sk, fk, Effector::kRHand) + Eigen::Vector3d(120, 120, 0), false},
+                           {Effector::kLFoot, effectorCm(sk, fk, Effector::kLFoot), true},
+                           {Effector::kRFoot, effectorCm(sk, fk, Effector::kRFoot), true}};
+        const ConstrainedIkResult res = solver.solve(req);
+        MESSAGE(file << ": " << std::string(ikStopName(res.stop)) << " after " << res.iterations << ", hand " << res.constraints[0].residualCm
+                     << " cm, feet " << res.constraints[1].residualCm << ", " << res.constraints[2].residualCm << " cm, L_IK "
+                     << res.lik << " (limit " << version->range.likLimit << "), σ² " << res.sigma2 << " (limit "
+                     << version->range.sigma2Limit << ")");
+        CHECK_FALSE(res.reached);
+        CHECK_FALSE(res.constraints[0].reached);
+        CHECK(res.constraints[0].residualCm > 1.0);
+        CHECK(res.constraints[1].residualCm <= 0.05);
+        CHECK(res.constraints[2].residualCm <= 0.05);
+        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, res.reached, res.sigma2, res.lik);
+        CHECK_FALSE(verdict.admitted);
+        CHECK(verdict.reason == "a target or pin was not reached");
+        // The least-squares answer: no pose that holds the feet gets the hand closer (checked
+        // against the same solve run 10× longer).
+        req.maxIterations = 2000;
+        const ConstrainedIkResult deep = solver.solve(req);
+        CHECK(res.constraints[0].residualCm <= deep.constraints[0].residualCm + 0.05);
+    }
+}
+
+TEST_CASE("constrained IK: pins hold to 1e-4 cm through a 200-event hand drag, each event within 50 iterations") {
+    const auto version = test::walkModel35();
+    const Skeleton& sk = version->model->clip.skeleton;
+    ConstrainedIkSolver solver(version);
+    ConstrainedIkRequest req = captured(*version, 100);
+    FkState fk;
+    forwardKinematics(sk, req.start, fk);
+    const Eigen::Vector3d hand = effectorCm(sk, fk, Effector::kRHand);
+    req.constraints = {{Effector::kRHand, hand, false},
+                       {Effector::kLFoot, effectorCm(sk, fk, Effector::kLFoot), true},
+                       {Effector::kRFoot, effectorCm(sk, fk, Effector::kRFoot), true}};
+    req.rootReferenceDeg = req.start.anglesDeg[0];
+    ConstrainedIkResult res = solver.solve(req);
+    int converged = 0;
+    double worstPin = 0.0, worstStep = 0.0;
+    for (int s = 1; s <= 200; ++s) {
+        req.start = res.pose;
+        req.startX = res.x;
+        const Eigen::VectorXd yPrev = res.y;
+        req.constraints[0].targetCm = hand + Eigen::Vector3d(0, 0.25 * s, 0.1 * s);
+        solver.solve(req, res);
+        converged += res.converged;
+        worstPin = std::max({worstPin, res.constraints[1].residualCm, res.constraints[2].residualCm});
+        worstStep = std::max(worstStep, (res.y - yPrev).cwiseAbs().maxCoeff());
+    }
+    MESSAGE("converged " << converged << "/200, worst pin " << worstPin << " cm, largest DOF step " << worstStep << "°");
+    CHECK(converged >= 190);
+    CHECK(worstPin <= 1e-4);
+    CHECK(worstStep < 5.0);  // no branch jump for a 0.27 cm step
+}
+
+TEST_CASE("constrained IK: strength runs from natural to exact, and the root turns only as much as needed") {
+    const auto version = test::walkModel35();
+    const Skeleton& sk = version->model->clip.skeleton;
+    ConstrainedIkSolver solver(version);
+    ConstrainedIkRequest req = captured(*version, 100, 200);
+    const Eigen::Vector3d hand = effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 25, 15);
+    double prevResidual = 1e9;
+    for (double s : {0.5, 0.9, 0.999, 1.0}) {
+        CAPTURE(s);
+        req.constraints = {{Effector::kRHand, hand, false, s}};
+        const ConstrainedIkResult res = solver.solve(req);
+        MESSAGE("strength " << s << ": residual " << res.constraints[0].residualCm << " cm, L_IK " << res.lik << ", "
+                            << std::string(ikStopName(res.stop)));
+        CHECK(res.converged);
+        CHECK(res.constraints[0].strength == s);
+        CHECK(res.constraints[0].residualCm <= prevResidual + 1e-9);  // stronger: closer
+        prevResidual = res.constraints[0].residualCm;
+    }
+    CHECK(prevResidual <= 0.05);
+    // A stiffer root moves the root less for the same (reached) target.
+    req.constraints = {{Effector::kRHand, hand, false}};
+    req.rootStiffness = 0.0;
+    const ConstrainedIkResult loose = solver.solve(req);
+    req.rootStiffness = 50.0;
+    const ConstrainedIkResult stiff = solver.solve(req);
+    const double looseTurn = (loose.pose.anglesDeg[0] - req.start.anglesDeg[0]).cwiseAbs().maxCoeff();
+    const double stiffTurn = (stiff.pose.anglesDeg[0] - req.start.anglesDeg[0]).cwiseAbs().maxCoeff();
+    MESSAGE("root change: " << looseTurn << "° free, " << stiffTurn << "° at k_root = 50");
+    CHECK(stiffTurn <= looseTurn + 1e-9);
+    CHECK(stiff.constraints[0].residualCm <= 0.05);
+}
+
+TEST_CASE("constrained IK: bad requests give one clear diagnostic and the start pose") {
+    const auto version = test::walkModel35();
+    ConstrainedIkSolver solver(version);
+    ConstrainedIkRequest req = captured(*version, 10);
+    req.constraints = {{Effector::kHead, Eigen::Vector3d(0, NAN, 0), false}};
+    ConstrainedIkResult res = solver.solve(req);
+    CHECK(res.stop == IkStop::kInvalidRequest);
+    CHECK(res.diagnostic == "expected a finite target for head, found NaN or Inf");
+    CHECK_FALSE(res.reached);
+    req.constraints = {{Effector::kHead, Eigen::Vector3d::Zero(), false, 1.5}};
+    res = solver.solve(req);
+    CHECK(res.diagnostic == "expected a strength in (0, 1] for head, found 1.500000");
+    req.constraints.clear();
+    req.startX = Eigen::VectorXd::Zero(3);
+    res = solver.solve(req);
+    CHECK(res.diagnostic == "expected a 2-D latent start, found 3");
+}
+
+TEST_CASE("training range: the 99th percentiles over the training rows, and the admission rule") {
+    const auto version = test::walkModel35();
+    const gp::TrainingRange& r = version->range;
+    CHECK(r.rows == version->model->N());
+    CHECK(r.percentile == 99.0);
+    CHECK(r.sigma2Limit >= r.sigma2Median);
+    CHECK(r.likLimit >= r.likMedian);
+    // By construction about 1 % of training rows lie above each limit.
+    int above = 0;
+    gp::PointWorkspace ws;
+    for (int i = 0; i < version->model->N(); ++i) {
+        const double l = version->point->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(), ws,
+                                                  nullptr, nullptr);
+        above += l > r.likLimit;
+    }
+    CHECK(above <= version->model->N() / 100 + 1);
+    CHECK(gp::admitPose(r, true, r.sigma2Median, r.likMedian).admitted);
+    CHECK(gp::admitPose(r, false, r.sigma2Median, r.likMedian).reason == "a target or pin was not reached");
+    const gp::AdmissionVerdict high = gp::admitPose(r, true, r.sigma2Median, 2.0 * std::abs(r.likLimit) + 1.0);
+    CHECK_FALSE(high.admitted);
+    CHECK(high.reason.find("L_IK") == 0);
+    CHECK_FALSE(gp::admitPose(r, true, 2.0 * r.sigma2Limit, r.likMedian).admitted);
+    CHECK_FALSE(gp::admitPose(r, true, NAN, r.likMedian).admitted);
+}

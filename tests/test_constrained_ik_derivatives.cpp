@@ -1,0 +1,151 @@
+// Derivatives the constrained learned IK relies on, each against central differences: the GP
+// mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (PointModel::meanVarianceJacobians), the
+// gradient of the solver's objective F over (x, y) (targets of several strengths and the root
+// stiffness), the prior's part of its Hessian model (exact), and the contracted second
+// derivative of FK (core/skeleton/forward_kinematics.h).
+#include <cmath>
+
+#include "ik/constrained_ik.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+ConstrainedIkRequest requestAt(const gp::ModelVersion& v, int frame) {
+    ConstrainedIkRequest r;
+    r.start = v.model->clip.frames[frame];
+    r.startX = latentStartForFrame(v, frame);
+    return r;
+}
+}  // namespace
+
+TEST_CASE("∂f/∂x and ∂σ²/∂x match central differences (training point, far point, near the origin)") {
+    const auto version = test::walkModel35();
+    const gp::PointModel& pm = *version->point;
+    const gp::GpModel& m = *version->model;
+    const Eigen::VectorXd y = m.Y.row(17).transpose();
+    for (const Eigen::VectorXd& x : {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
+                                     Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
+        CAPTURE(x.transpose());
+        gp::PointWorkspace ws;
+        pm.evaluate(x, y, ws, nullptr, nullptr);
+        Eigen::MatrixXd Jf;
+        Eigen::VectorXd dS2;
+        pm.meanVarianceJacobians(x, ws, Jf, dS2);
+        REQUIRE(Jf.rows() == m.D());
+        REQUIRE(Jf.cols() == m.latentDim());
+        const double h = 1e-6;
+        double errF = 0.0, errS = 0.0;
+        for (int i = 0; i < x.size(); ++i) {
+            Eigen::VectorXd a = x, b = x, fa, fb;
+            a[i] += h;
+            b[i] -= h;
+            double sa = 0.0, sb = 0.0;
+            pm.predict(a, fa, sa);
+            pm.predict(b, fb, sb);
+            errF = std::max(errF, ((fa - fb) / (2 * h) - Jf.col(i)).cwiseAbs().maxCoeff());
+            errS = std::max(errS, std::abs((sa - sb) / (2 * h) - dS2[i]));
+        }
+        MESSAGE("|∂f/∂x| max " << Jf.cwiseAbs().maxCoeff() << " err " << errF << "; |∂σ²/∂x| max "
+                               << dS2.cwiseAbs().maxCoeff() << " err " << errS);
+        CHECK(errF < 1e-6 * std::max(1.0, Jf.cwiseAbs().maxCoeff()));
+        CHECK(errS < 1e-6 * std::max(1.0, dS2.cwiseAbs().maxCoeff()));
+        // The workspace's σ² is the one predict() gives.
+        Eigen::VectorXd f;
+        double s2 = 0.0;
+        pm.predict(x, f, s2);
+        CHECK(ws.variance == doctest::Approx(s2).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("constrained IK: ∇F and the prior's Hessian match central differences") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    const Skeleton& sk = m.clip.skeleton;
+    ConstrainedIkSolver solver(version);
+    ConstrainedIkRequest req = requestAt(*version, 100);
+    req.constraints = {{Effector::kRFoot, effectorCm(sk, req.start, Effector::kRFoot) + Eigen::Vector3d(3, 12, -4), false, 1.0},
+                       {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
+                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
+    req.rootReferenceDeg = Eigen::Vector3d(1.0, -2.0, 3.0);
+    Eigen::VectorXd z = solver.startPoint(req);
+    const int d = m.latentDim();
+    z.head(d).array() += 0.05;
+    for (int k = d; k < z.size(); ++k) z[k] += 0.3 * std::sin(k);
+    Eigen::VectorXd g;
+    solver.objective(req, z, &g);
+    const Eigen::MatrixXd H = solver.hessianModel();
+    // Gradient: relative to |g|∞ (the exact target's κ makes it large).
+    double worst = 0.0;
+    for (int i = 0; i < z.size(); ++i) {
+        const double h = 1e-6;
+        Eigen::VectorXd zp = z, zm = z;
+        zp[i] += h;
+        zm[i] -= h;
+        const double numeric = (solver.objective(req, zp, nullptr) - solver.objective(req, zm, nullptr)) / (2 * h);
+        worst = std::max(worst, std::abs(numeric - g[i]));
+    }
+    MESSAGE("∇F: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());
+    CHECK(worst < 1e-6 * g.cwiseAbs().maxCoeff());
+    // The prior's part of H is its exact Hessian (analytic y–y and x–y blocks, the x–x difference
+    // quotient); targets enter as Gauss–Newton, so check H on a request with none (the root
+    // stiffness is exact too).
+    ConstrainedIkRequest free = req;
+    free.constraints.clear();
+    solver.objective(free, z, &g);
+    const Eigen::MatrixXd Hf = solver.hessianModel();
+    double worstH = 0.0, scaleH = Hf.cwiseAbs().maxCoeff();
+    for (int i = 0; i < z.size(); ++i) {
+        const double h = 1e-5;
+        Eigen::VectorXd zp = z, zm = z, gp_, gm;
+        zp[i] += h;
+        zm[i] -= h;
+        solver.objective(free, zp, &gp_);
+        solver.objective(free, zm, &gm);
+        const Eigen::VectorXd col = (gp_ - gm) / (2 * h);
+        worstH = std::max(worstH, (col - Hf.col(i)).cwiseAbs().maxCoeff());
+    }
+    MESSAGE("∇²(L_IK + root): max abs error " << worstH << " against max |H| " << scaleH);
+    CHECK(worstH < 1e-6 * scaleH);
+    CHECK((Hf - Hf.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * scaleH);
+    (void)H;
+}
+
+TEST_CASE("λ·∂²FK/∂y² matches central differences of λᵀ J for every effector") {
+    const auto version = test::walkModel35();
+    const Skeleton& sk = version->model->clip.skeleton;
+    const PoseLayout layout(sk);
+    Pose pose = version->model->clip.frames[77];
+    const Eigen::VectorXd y0 = layout.extract(pose);
+    const Eigen::Vector3d lambda(0.7, -1.3, 2.1);
+    FkState fk;
+    Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, kPoseDofs), Jp(3, kPoseDofs), Jm(3, kPoseDofs);
+    Eigen::MatrixXd Hc(kPoseDofs, kPoseDofs);
+    for (int e = 0; e < kEffectorCount; ++e) {
+        const auto eff = static_cast<Effector>(e);
+        CAPTURE(std::string(effectorName(eff)));
+        forwardKinematics(sk, pose, fk);
+        effectorHessianContracted(sk, layout, fk, pose, eff, lambda, Hc);
+        double worst = 0.0;
+        for (int i = 0; i < kPoseDofs; ++i) {
+            const double h = 1e-4;  // degrees
+            Eigen::VectorXd yp = y0, ym = y0;
+            yp[i] += h;
+            ym[i] -= h;
+            Pose pp = pose, pm = pose;
+            layout.apply(yp.data(), pp);
+            layout.apply(ym.data(), pm);
+            forwardKinematics(sk, pp, fk);
+            effectorJacobian(sk, layout, fk, pp, eff, Jp);
+            forwardKinematics(sk, pm, fk);
+            effectorJacobian(sk, layout, fk, pm, eff, Jm);
+            const Eigen::VectorXd col = ((Jp - Jm).transpose() * lambda) / (2 * h);
+            worst = std::max(worst, (col - Hc.col(i)).cwiseAbs().maxCoeff());
+        }
+        MESSAGE(effectorName(eff) << ": max abs error " << worst << " against max |H| " << Hc.cwiseAbs().maxCoeff());
+        CHECK(Hc.cwiseAbs().maxCoeff() > 0.0);
+        CHECK(worst < 1e-6 * Hc.cwiseAbs().maxCoeff());
+        CHECK((Hc - Hc.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    }
+}
