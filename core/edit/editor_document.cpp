@@ -51,6 +51,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
         contacts_ = {};  // no feet to hold: regeneration holds pins only
     }
     contactReleased_.fill(false);
+    falloffRadius_ = defaultFalloffRadius(clip_.fps);
     synthetic_ = synthetic;
     frame_ = 0;
     edits_.clear();
@@ -276,6 +277,7 @@ void EditorDocument::setContactReleased(Effector foot, bool released) {
 }
 
 std::string EditorDocument::beginDrag(Effector e) {
+    finishRunningFalloff();
     if (!hasClip()) return "no clip is open";
     if (!hasEffector(e)) return std::string("this skeleton has no ") + effectorName(e);
     if (drag_.active) endDrag();
@@ -573,8 +575,29 @@ std::string EditorDocument::redoLabel() const {
     return s ? s->label : "";
 }
 
+void EditorDocument::finishRunningFalloff() {
+    // A new drag or a path regeneration right after a drag waits for that drag's falloff (tens of
+    // milliseconds) and applies it first, so the earlier drag is never left as a one-frame spike.
+    if (falloffStepLabel_.empty() || !regenerate_.running()) return;
+    regenerate_.join();
+    pollRegenerate();
+}
+
+void EditorDocument::dropRunningFalloff() {
+    // Undo or redo right after a drag does not wait for the drag's falloff: the spread is dropped
+    // (the drag's own frame stays in its step) and the undo goes on. A path regeneration is the
+    // user's explicit request and still has to be waited for or cancelled.
+    if (falloffStepLabel_.empty() || !regenerate_.running()) return;
+    regenerate_.cancel();
+    regenerate_.join();
+    regenerate_.take();
+    regenerate_.takeMessage();
+    falloffStepLabel_.clear();
+}
+
 std::string EditorDocument::undo() {
     pollRegenerate();  // a regeneration that just finished is the latest step
+    dropRunningFalloff();
     cancelDrag();
     if (latentDrag_) endLatentDrag();
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
@@ -590,6 +613,7 @@ std::string EditorDocument::undo() {
 
 std::string EditorDocument::redo() {
     pollRegenerate();
+    dropRunningFalloff();
     cancelDrag();
     if (latentDrag_) endLatentDrag();
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
@@ -707,6 +731,7 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     const Clip& mc = v->model->clip;
     if (mc.frameCount() != clip_.frameCount() || mc.skeleton.jointCount() != clip_.skeleton.jointCount())
         return "expected a model trained on this clip, found one trained on " + mc.name;
+    finishRunningFalloff();
     pollRegenerate();  // never drop a finished result nobody took yet
     cancelDrag();
     MotionEditJob job;

@@ -170,7 +170,8 @@ public:
     std::optional<DragRecord> endDrag();
     // Drag falloff radius r in frames (motion/drag_falloff.h): with r > 0 and a model, a drag on
     // frame t is re-solved over t−r..t+r in the background on release and merged into the drag's
-    // own undo step. 0 (the default here) edits the dragged frame only.
+    // own undo step. 0 edits the dragged frame only. Opening a clip sets the default, a quarter second
+    // (defaultFalloffRadius: 30 frames at 120 fps).
     void setDragFalloff(int frames) { falloffRadius_ = std::max(0, frames); }
     int dragFalloff() const { return falloffRadius_; }
     void cancelDrag();  // restores the pose before the drag
@@ -245,6 +246,8 @@ private:
     Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
     void pushStep(EditStep step);
     void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);
+    void finishRunningFalloff();
+    void dropRunningFalloff();
     void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
     void resolveStepModels(EditStep& step);
     void installVersion(const gp::ModelVersionPtr& version);
@@ -273,7 +276,7 @@ private:
     std::optional<PathEdit> path_;
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
-    int falloffRadius_ = 0;
+    int falloffRadius_ = 0;  // set by setClip
     ContactSet contacts_;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
     mutable int trajectoryEffector_ = -1;
