@@ -59,6 +59,12 @@ struct Pin {
     glm::vec3 positionCm{0.0f};
 };
 
+// A planted foot (a detected ground contact held by the IK and regeneration): a flat green disc
+// on the ground under the foot.
+struct Footprint {
+    glm::vec3 positionCm{0.0f};  // the foot; the disc is drawn at ground height below it
+};
+
 // A polyline (an effector trajectory, e.g. a Hermite curve) with optional key points and a
 // highlighted current point.
 struct Path {
@@ -78,6 +84,7 @@ struct Scene {
     std::vector<Handle> handles;
     std::vector<Target> targets;
     std::vector<Pin> pins;
+    std::vector<Footprint> footprints;
     std::vector<Path> paths;
     float groundHeightCm = 0.0f;
     bool showGround = true;

@@ -501,6 +501,19 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
     }
 
+    for (const Footprint& f : scene.footprints) {
+        // A flat rosette just above the ground (the grid is drawn after the solids and loses the
+        // depth test there), in the timeline's contact-lane green: a low rim and eight spokes
+        // (segments have no end caps, so a rim alone would read as a thin ring).
+        d.colour(glm::vec3(0.30f, 0.78f, 0.42f), 1.0f, 0.25f);
+        const glm::vec3 base(f.positionCm.x, scene.groundHeightCm + 0.6f, f.positionCm.z);
+        d.segment(base - glm::vec3(0.0f, 0.5f, 0.0f), base + glm::vec3(0.0f, 0.3f, 0.0f), 7.0f, 7.0f);
+        for (int k = 0; k < 8; ++k) {
+            const float a = 0.785398f * static_cast<float>(k);
+            d.segment(base, base + glm::vec3(6.5f * std::cos(a), 0.0f, 6.5f * std::sin(a)), 1.1f, 1.1f);
+        }
+    }
+
     d.flush();
 
     // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.

@@ -312,6 +312,10 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
         scene.targets.push_back(t);
     }
     for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
+    // Feet planted on this frame that a drag or Regenerate holds (not switched off, not released).
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        if (doc.hasEffector(foot) && doc.inContact(foot) && !doc.contactReleased(foot))
+            scene.footprints.push_back({toGlm(doc.effectorPosition(foot))});
     return scene;
 }
 
