@@ -9,20 +9,9 @@
 using nlohmann::json;
 using namespace mgp;
 
-namespace {
-std::string savedWalk() {
-    static const std::string path = [] {
-        const std::string dir = test::scratchDir("cli_edit_span_model");
-        gp::saveModel(dir + "/walk.model", *test::walkModel35()->model);
-        return dir + "/walk.model";
-    }();
-    return path;
-}
-}  // namespace
-
 TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on request") {
     const std::string dir = test::scratchDir("cli_edit_span");
-    const std::string base = "edit '" + savedWalk() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir + "/e.bvh' --json";
+    const std::string base = "edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir + "/e.bvh' --json";
     auto r = test::runCli(base);
     REQUIRE(r.exitCode == 0);
     json j = json::parse(r.out);
@@ -47,7 +36,7 @@ TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on 
 }
 
 TEST_CASE("motiongp edit: bad --solver and --pin values are one error line") {
-    const std::string base = "edit '" + savedWalk() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
+    const std::string base = "edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
                              test::scratchDir("cli_edit_span_bad") + "/e.bvh'";
     auto r = test::runCli(base + " --solver newton");
     CHECK(r.exitCode == 2);

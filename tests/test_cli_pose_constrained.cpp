@@ -10,19 +10,8 @@
 using nlohmann::json;
 using namespace mgp;
 
-namespace {
-std::string walkModelFile() {
-    static const std::string path = [] {
-        const std::string dir = test::scratchDir("cli_pose_constrained_model");
-        gp::saveModel(dir + "/walk.model", *test::walkModel35()->model);
-        return dir + "/walk.model";
-    }();
-    return path;
-}
-}  // namespace
-
 TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural, contact pins") {
-    const std::string model = walkModelFile();
+    const std::string model = test::walkModelPath();
     auto r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5@0.9 --target lhand=0,5,0 --json");
     REQUIRE(r.exitCode == 0);
     json j = json::parse(r.out);
@@ -53,7 +42,7 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
 }
 
 TEST_CASE("motiongp pose --adaptive refuses an unreachable reach with pinned feet and says why") {
-    const std::string model = walkModelFile();
+    const std::string model = test::walkModelPath();
     const std::string out = test::scratchDir("pose_adaptive_refused") + "/walk2.model";
     const auto r = test::runCli("pose '" + model + "' --frame 61 --target rhand=120,120,0 --pin lfoot --pin rfoot --adaptive --out-model '" +
                                 out + "' --json");

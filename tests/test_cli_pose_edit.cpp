@@ -10,19 +10,8 @@
 using nlohmann::json;
 using namespace mgp;
 
-namespace {
-std::string savedWalkModel() {
-    static const std::string path = [] {
-        const std::string dir = test::scratchDir("cli_pose_edit_model");
-        gp::saveModel(dir + "/walk.model", *test::walkModel35()->model);
-        return dir + "/walk.model";
-    }();
-    return path;
-}
-}  // namespace
-
 TEST_CASE("motiongp pose --json: learned and plain solvers, pins, offsets from the frame's position") {
-    const std::string model = savedWalkModel();
+    const std::string model = test::walkModelPath();
     auto r = test::runCli("pose '" + model + "' --frame 101 --target rfoot=0,10,0 --pin lfoot --json");
     REQUIRE(r.exitCode == 0);
     json j = json::parse(r.out);
@@ -50,7 +39,7 @@ TEST_CASE("motiongp pose --json: learned and plain solvers, pins, offsets from t
 }
 
 TEST_CASE("motiongp pose: an unreachable target is a result, bad options are errors") {
-    const std::string model = savedWalkModel();
+    const std::string model = test::walkModelPath();
     auto r = test::runCli("pose '" + model + "' --frame 5 --target head=0,400,0 --json");
     CHECK(r.exitCode == 0);
     CHECK(json::parse(r.out)["reached"] == false);
@@ -64,7 +53,7 @@ TEST_CASE("motiongp pose: an unreachable target is a result, bad options are err
 }
 
 TEST_CASE("motiongp pose --adaptive writes a model with one more row") {
-    const std::string model = savedWalkModel();
+    const std::string model = test::walkModelPath();
     const std::string out = test::scratchDir("pose_adaptive") + "/walk2.model";
     const auto r = test::runCli("pose '" + model + "' --frame 101 --target rfoot=0,5,0 --adaptive --out-model '" + out + "' --json");
     REQUIRE(r.exitCode == 0);
@@ -73,7 +62,7 @@ TEST_CASE("motiongp pose --adaptive writes a model with one more row") {
 }
 
 TEST_CASE("motiongp edit: the paper's keys, a BVH with every frame, untouched frames unchanged") {
-    const std::string model = savedWalkModel();
+    const std::string model = test::walkModelPath();
     const std::string dir = test::scratchDir("cli_edit");
     const auto r = test::runCli("edit '" + model + "' --effector rfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir +
                                 "/edited.bvh' --adaptive --out-model '" + dir + "/adapted.model' --json");
