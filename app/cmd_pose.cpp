@@ -107,51 +107,37 @@ int runPose(const PoseOptions& o) {
     } else {
         Eigen::VectorXd x, y;
         double sigma2 = 0.0, lik = 0.0;
+        // Both learned solvers take the same request fields and report the same result fields.
+        auto solveWith = [&](auto& solver, auto req) {
+            req.start = clip.frames[frame];
+            req.startX = latentStartForFrame(*version, frame);
+            req.constraints = constraints;
+            req.maxIterations = o.iterations;
+            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
+            const auto r = solver.solve(req);
+            pose = r.pose;
+            results = r.constraints;
+            reached = r.reached;
+            x = r.x;
+            y = r.y;
+            sigma2 = r.sigma2;
+            lik = r.lik;
+            j["diagnostic"] = r.diagnostic;
+            j["converged"] = r.converged;
+            j["iterations"] = r.iterations;
+            j["evaluations"] = r.evaluations;
+            j["objective"] = r.objective;
+            return r;
+        };
         if (o.solver == "learned") {
             ConstrainedIkSolver solver(version);
-            ConstrainedIkRequest req;
-            req.start = clip.frames[frame];
-            req.startX = latentStartForFrame(*version, frame);
-            req.constraints = constraints;
-            req.maxIterations = o.iterations;
-            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
-            const ConstrainedIkResult r = solver.solve(req);
-            pose = r.pose;
-            results = r.constraints;
-            reached = r.reached;
-            x = r.x;
-            y = r.y;
-            sigma2 = r.sigma2;
-            lik = r.lik;
-            j["diagnostic"] = r.diagnostic;
-            j["converged"] = r.converged;
-            j["stop"] = ikStopName(r.stop);
-            j["iterations"] = r.iterations;
-            j["evaluations"] = r.evaluations;
-            j["objective"] = r.objective;
+            j["stop"] = ikStopName(solveWith(solver, ConstrainedIkRequest{}).stop);
         } else {
             LearnedIkSolver solver(version);
-            LearnedIkRequest req;
-            req.start = clip.frames[frame];
-            req.startX = latentStartForFrame(*version, frame);
-            req.constraints = constraints;
-            req.maxIterations = o.iterations;
-            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
-            const LearnedIkResult r = solver.solve(req);
-            pose = r.pose;
-            results = r.constraints;
+            const LearnedIkResult r = solveWith(solver, LearnedIkRequest{});
             for (auto& c : results) c.strength = kStrengthPaper;  // the penalty form is the paper's λ
-            reached = r.reached;
-            x = r.x;
-            y = r.y;
-            sigma2 = r.sigma2;
-            lik = r.lik;
-            j["diagnostic"] = r.diagnostic;
-            j["converged"] = r.converged;
+            // LearnedIkResult has no stop enum yet: its diagnostic names the iteration cap.
             j["stop"] = r.converged ? "converged" : (r.diagnostic == "iteration cap" ? "iteration_cap" : "stalled");
-            j["iterations"] = r.iterations;
-            j["evaluations"] = r.evaluations;
-            j["objective"] = r.objective;
         }
         j["x"] = std::vector<double>(x.data(), x.data() + x.size());
         j["sigma2"] = sigma2;

@@ -638,12 +638,8 @@ std::optional<Pose> EditorDocument::beforeGhost() const {
 
 const std::vector<Eigen::Vector3d>& EditorDocument::capturedTrajectory(Effector e) const {
     if (trajectoryEffector_ != static_cast<int>(e)) {
-        trajectory_.assign(clip_.frameCount(), Eigen::Vector3d::Zero());
-        FkState fk;
-        for (int t = 0; t < clip_.frameCount(); ++t) {
-            forwardKinematics(clip_.skeleton, clip_.frames[t], fk);
-            trajectory_[t] = effectorCm(clip_.skeleton, fk, e);
-        }
+        trajectory_ = effectorTrajectory(clip_, e);
+        if (trajectory_.empty()) trajectory_.assign(clip_.frameCount(), Eigen::Vector3d::Zero());  // no such effector
         trajectoryEffector_ = static_cast<int>(e);
     }
     return trajectory_;

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cstdlib>
+#include <initializer_list>
 
 namespace mgp {
 
@@ -21,6 +22,16 @@ bool isMocapFolder(const std::string& dir) {
     return !dir.empty() && (isDir(dir + "/asf_amc") || isDir(dir + "/bvh"));
 }
 
+namespace {
+// The first of exeDir + relative that is a mocap folder ("" exeDir: none).
+std::optional<std::string> firstMocapFolderBeside(const std::string& exeDir, std::initializer_list<const char*> relatives) {
+    if (!exeDir.empty())
+        for (const char* rel : relatives)
+            if (isMocapFolder(exeDir + rel)) return exeDir + rel;
+    return std::nullopt;
+}
+}  // namespace
+
 std::optional<std::string> findMocapFolder(const std::string& cliDir, const std::string& exeDir) {
     if (!cliDir.empty()) {
         if (isMocapFolder(cliDir)) return cliDir;
@@ -31,20 +42,14 @@ std::optional<std::string> findMocapFolder(const std::string& cliDir, const std:
 #ifdef MOTIONGP_SHARED_MOCAP
     if (isMocapFolder(MOTIONGP_SHARED_MOCAP)) return std::string(MOTIONGP_SHARED_MOCAP);
 #endif
-    if (!exeDir.empty())
-        for (const char* rel : {"/../shared/mocap", "/../../shared/mocap", "/shared/mocap"})
-            if (isMocapFolder(exeDir + rel)) return exeDir + rel;
-    return std::nullopt;
+    return firstMocapFolderBeside(exeDir, {"/../shared/mocap", "/../../shared/mocap", "/shared/mocap"});
 }
 
 std::optional<std::string> findShippedMocapFolder(const std::string& exeDir) {
 #ifdef MOTIONGP_SHIPPED_MOCAP
     if (isMocapFolder(MOTIONGP_SHIPPED_MOCAP)) return std::string(MOTIONGP_SHIPPED_MOCAP);
 #endif
-    if (!exeDir.empty())
-        for (const char* rel : {"/../assets/mocap", "/assets/mocap", "/../share/motiongp/mocap"})
-            if (isMocapFolder(exeDir + rel)) return exeDir + rel;
-    return std::nullopt;
+    return firstMocapFolderBeside(exeDir, {"/../assets/mocap", "/assets/mocap", "/../share/motiongp/mocap"});
 }
 
 std::optional<std::string> findEditorMocapFolder(const std::string& cliDir, const std::string& exeDir) {

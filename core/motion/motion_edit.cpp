@@ -1,5 +1,7 @@
 #include "motion/motion_edit.h"
 
+#include "motion/foot_contacts.h"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -34,14 +36,7 @@ std::string MotionEditJob::validate() const {
 }
 
 std::vector<Eigen::Vector3d> MotionEditJob::capturedTrajectory() const {
-    const Clip& clip = version->model->clip;
-    std::vector<Eigen::Vector3d> out(clip.frameCount());
-    FkState fk;
-    for (int t = 0; t < clip.frameCount(); ++t) {
-        forwardKinematics(clip.skeleton, clip.frames[t], fk);
-        out[t] = effectorCm(clip.skeleton, fk, effector);
-    }
-    return out;
+    return effectorTrajectory(version->model->clip, effector);
 }
 
 std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& captured,

@@ -159,27 +159,24 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         else out.setZero(d_);
     };
     Eigen::VectorXd a, bb, cc, acc;
+    // w‖q(s−1) − 2q(s) + q(s+1)‖² for one block of variables (q = u or v, at `offset` in a frame's
+    // block, `size` long) and its gradient on the frames strictly inside the span.
+    auto addSecondDifference = [&](int s, const auto& at, double w, int offset, int size) {
+        const double ws[3] = {1.0, -2.0, 1.0};
+        at(s - 1, a);
+        at(s, bb);
+        at(s + 1, cc);
+        acc = a - 2.0 * bb + cc;
+        F += w * acc.squaredNorm();
+        for (int j = 0; j < 3; ++j) {
+            const int t = s - 1 + j;
+            if (t > first_ && t < last_) grad.segment((t - first_ - 1) * b + offset, size) += 2.0 * w * ws[j] * acc;
+        }
+    };
     for (int s = first_; s <= last_; ++s) {
         if (s - 1 < 0 || s + 1 >= frames) continue;
-        const double ws[3] = {1.0, -2.0, 1.0};
-        uAt(s - 1, a);
-        uAt(s, bb);
-        uAt(s + 1, cc);
-        acc = a - 2.0 * bb + cc;
-        F += w_.smoothPose * acc.squaredNorm();
-        for (int j = 0; j < 3; ++j) {
-            const int t = s - 1 + j;
-            if (t > first_ && t < last_) grad.segment((t - first_ - 1) * b + d_, D_) += 2.0 * w_.smoothPose * ws[j] * acc;
-        }
-        vAt(s - 1, a);
-        vAt(s, bb);
-        vAt(s + 1, cc);
-        acc = a - 2.0 * bb + cc;
-        F += w_.smoothLatent * acc.squaredNorm();
-        for (int j = 0; j < 3; ++j) {
-            const int t = s - 1 + j;
-            if (t > first_ && t < last_) grad.segment((t - first_ - 1) * b, d_) += 2.0 * w_.smoothLatent * ws[j] * acc;
-        }
+        addSecondDifference(s, uAt, w_.smoothPose, d_, D_);
+        addSecondDifference(s, vAt, w_.smoothLatent, 0, d_);
     }
     if (!std::isfinite(F) || !grad.allFinite()) {
         grad.setZero();
