@@ -176,6 +176,29 @@ CliResult runCliArgs(const std::vector<std::string>& args, const CliLimits& limi
     return runBounded(argv, limits);
 }
 
+std::string unreachableAsNobody(const std::vector<std::string>& paths) {
+    if (::geteuid() != 0) return "";
+    std::vector<std::pair<std::string, int>> wanted{{MOTIONGP_TEST_BINARY, X_OK}};
+    for (const std::string& p : paths) wanted.push_back({p, F_OK});
+    // The child reports the index of the first unreachable path as its exit code (0: all reached).
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(255);
+        for (std::size_t i = 0; i < wanted.size(); ++i)
+            if (::access(wanted[i].first.c_str(), wanted[i].second) != 0) ::_exit(static_cast<int>(i + 1));
+        ::_exit(0);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    REQUIRE(WIFEXITED(status));
+    const int code = WEXITSTATUS(status);
+    if (code == 0) return "";
+    if (code == 255) return "running as root, but could not become nobody (65534)";
+    return "running as root, and nobody (65534), which makes file permissions apply, cannot reach " +
+           wanted[static_cast<std::size_t>(code - 1)].first + " (a parent folder is private)";
+}
+
 CliResult runCli(const std::string& args, const CliLimits& limits) {
     // `exec` so that the shell is replaced by motiongp (the limits and a timeout's kill reach it).
     return runBounded({"/bin/sh", "-c", std::string("exec '") + MOTIONGP_TEST_BINARY + "' " + args}, limits);

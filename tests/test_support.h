@@ -42,6 +42,10 @@ struct CliLimits {
 };
 // The bounds of the hostile-input table: 20 s wall clock, 2 GiB address space.
 CliLimits hostileLimits();
+// Why a child dropped to nobody (CliLimits::dropRoot) could not run the motiongp binary or reach
+// one of `paths` ("" when it can, or when this process is not root and drops nothing). As root in
+// a private folder (a home of mode 0700, a mktemp -d), nobody cannot even reach the binary.
+std::string unreachableAsNobody(const std::vector<std::string>& paths);
 
 // Runs the motiongp binary with the given argument string (shell-quoted by the caller).
 CliResult runCli(const std::string& args, const CliLimits& limits = {});
