@@ -11,6 +11,12 @@ constexpr double kFdStepX = 1e-5;          // central differences of ∂L_IK/∂
 constexpr double kMaxDamping = 1e12;
 constexpr double kConvergedDamping = 1e-2;  // above this the decrement is not a Newton decrement
 constexpr int kProjections = 5;             // second-order corrections onto the pins per trial
+constexpr double kNewtonDamping = 1e-3;     // at or below, after an accepted step: full Newton model
+constexpr double kFirstShift = 1e-8;         // first τ of an indefinite model, relative to max |H_ii|
+constexpr double kMaxStepDeg = 20.0;        // longest change of one angle in one step
+// A trial may leave the pins by at most this much (cm; 1/50 of the reached tolerance) when the
+// corrections of a long step have not brought them back yet; the next KKT step restores them.
+constexpr double kPinSlackCm = 1e-3;
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -35,6 +41,7 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     d_ = m.latentDim();
     D_ = m.D();
     n_ = d_ + D_;
+    latentStepBound_ = 0.5 / std::sqrt(m.kernel().gamma());  // half the RBF length scale
     yOfDof_.assign(kPoseDofs, -1);
     for (int k = 0; k < D_; ++k) yOfDof_[m.keptColumns[k]] = k;
     for (int a = 0; a < 3; ++a) rootY_[a] = yOfDof_[a];  // DOFs 0-2 are the root rotation
@@ -49,8 +56,8 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     xP_.resize(d_);
     jac_.resize(3, kPoseDofs);
     for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &delta_, &tmp_, &rhs_}) v->resize(n_);
-    H_.resize(n_, n_);
-    Hd_.resize(n_, n_);
+    for (Eigen::MatrixXd* m : {&H_, &C_, &Hm_, &Hd_}) m->resize(n_, n_);
+    hc_.resize(kPoseDofs, kPoseDofs);
 }
 
 std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
@@ -79,9 +86,20 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
     rootRef_ = request.rootReferenceDeg ? *request.rootReferenceDeg : Eigen::Vector3d(full_[0], full_[1], full_[2]);
     pins_.clear();
     targets_.clear();
-    for (std::size_t i = 0; i < request.constraints.size(); ++i)
-        (request.constraints[i].pin ? pins_ : targets_).push_back(static_cast<int>(i));
+    exactTargets_.clear();
+    for (std::size_t i = 0; i < request.constraints.size(); ++i) {
+        const IkConstraint& c = request.constraints[i];
+        (c.pin ? pins_ : targets_).push_back(static_cast<int>(i));
+        if (!c.pin && c.strength >= kStrengthExact) exactTargets_.push_back(static_cast<int>(i));
+    }
     const int p = 3 * static_cast<int>(pins_.size());
+    const int q = p + 3 * static_cast<int>(exactTargets_.size());
+    Aall_.resize(q, n_);
+    eHat_.resize(q);
+    eAt_.resize(q);
+    rAll_.resize(q);
+    HinvAll_.resize(n_, q);
+    Sall_.resize(q, q);
     A_.resize(p, n_);
     c_.resize(p);
     cTrial_.resize(p);
@@ -106,16 +124,20 @@ void ConstrainedIkSolver::setPose(const Eigen::VectorXd& y) {
     forwardKinematics(m.clip.skeleton, pose_, fk_);
 }
 
-double ConstrainedIkSolver::pinResidual(const Eigen::VectorXd& z, Eigen::VectorXd& c) {
+double ConstrainedIkSolver::correctionResidual(const Eigen::VectorXd& z, Eigen::VectorXd& r) {
     setPose(z.tail(D_));
     const Skeleton& sk = version_->model->clip.skeleton;
-    double worst = 0.0;
+    const auto p = static_cast<Eigen::Index>(3 * pins_.size());
     for (std::size_t i = 0; i < pins_.size(); ++i) {
         const IkConstraint& pc = request_->constraints[pins_[i]];
-        c.segment<3>(3 * static_cast<Eigen::Index>(i)) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
+        r.segment<3>(3 * static_cast<Eigen::Index>(i)) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
     }
-    if (c.size() > 0) worst = c.cwiseAbs().maxCoeff();
-    return worst;
+    for (std::size_t i = 0; i < exactTargets_.size(); ++i) {
+        const IkConstraint& tc = request_->constraints[exactTargets_[i]];
+        const auto row = p + 3 * static_cast<Eigen::Index>(i);
+        r.segment<3>(row) = effectorCm(sk, fk_, tc.effector) - tc.targetCm - eHat_.segment<3>(row);
+    }
+    return p > 0 ? r.head(p).cwiseAbs().maxCoeff() : 0.0;
 }
 
 double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives) {
@@ -133,6 +155,7 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         g_.head(d_) = gx_;
         g_.tail(D_) = gy_;
         H_.setZero();
+        C_.setZero();
         // y–y: ∂²/∂y² of ‖W(y − f)‖²/(2σ²) = W²/σ².
         for (int k = 0; k < D_; ++k) H_(d_ + k, d_ + k) = m.w[k] * m.w[k] / s2;
         // x–y: ∂(W r/σ²)/∂x = −W² J_f/σ² − (W r) (∂σ²/∂x)ᵀ/σ⁴.
@@ -167,7 +190,15 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         const Eigen::Vector3d e = effectorCm(sk, fk_, c.effector) - c.targetCm;
         F += 0.5 * kappa * e.squaredNorm();
         if (!derivatives) continue;
+        if (curvature_) addConstraintCurvature(c.effector, kappa * e);
         effectorJacobian(sk, layout_, fk_, pose_, c.effector, jac_);
+        if (const auto it = std::find(exactTargets_.begin(), exactTargets_.end(), t); it != exactTargets_.end()) {
+            const auto row = static_cast<Eigen::Index>(3 * pins_.size() + 3 * (it - exactTargets_.begin()));
+            Aall_.middleRows<3>(row).setZero();
+            for (int a = 0; a < kPoseDofs; ++a)
+                if (yOfDof_[a] >= 0) Aall_.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
+            eAt_.segment<3>(row) = e;  // the residual at z; ê adds the step's linear change
+        }
         for (int a = 0; a < kPoseDofs; ++a) {
             const int ka = yOfDof_[a];
             if (ka < 0 || jac_.col(a).isZero(0.0)) continue;
@@ -201,13 +232,35 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             for (int a = 0; a < kPoseDofs; ++a)
                 if (yOfDof_[a] >= 0) A_.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
         }
+        Aall_.topRows(A_.rows()) = A_;
+        eAt_.head(c_.size()).setZero();  // pins are corrected back onto c = 0
+        if (curvature_ && !pins_.empty()) {
+            // Least-squares multipliers at z, ν = −(A Aᵀ)⁻¹ A g: the pins' share of the curvature.
+            S_.noalias() = A_ * A_.transpose();
+            S_.diagonal().array() += 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
+            sLdlt_.compute(S_);
+            nu_ = -sLdlt_.solve(A_ * g_);
+            for (std::size_t i = 0; i < pins_.size(); ++i)
+                addConstraintCurvature(r.constraints[pins_[i]].effector, nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
+        }
     }
     return F;
+}
+
+void ConstrainedIkSolver::addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda) {
+    effectorHessianContracted(version_->model->clip.skeleton, layout_, fk_, pose_, e, lambda, hc_);
+    for (int a = 0; a < kPoseDofs; ++a) {
+        const int ka = yOfDof_[a];
+        if (ka < 0) continue;
+        for (int b = 0; b < kPoseDofs; ++b)
+            if (yOfDof_[b] >= 0) C_(d_ + ka, d_ + yOfDof_[b]) += hc_(a, b);
+    }
 }
 
 double ConstrainedIkSolver::objective(const ConstrainedIkRequest& request, const Eigen::VectorXd& z,
                                       Eigen::VectorXd* gradient) {
     bind(request);
+    curvature_ = true;
     const double F = evaluate(z, gradient != nullptr);
     if (gradient) *gradient = g_;
     return F;
@@ -254,6 +307,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         return;
     }
     z_ = startPoint(request);
+    curvature_ = false;
     double F = evaluate(z_, true);
     if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
         result.stop = IkStop::kNonFinite;
@@ -266,19 +320,40 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     double mu = 1e-6, nuLm = 2.0, meritNu = 0.0;
     IkStop stop = IkStop::kIterationCap;
     int it = 0;
+    bool lastAccepted = false;
     while (true) {
-        // Damped Hessian model; grow μ until it is positive definite.
-        Hd_ = H_;
+        // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
+        // Lagrangian Hessian) once the iteration is in its Newton regime; see the header.
+        const bool newton = lastAccepted && curvature_;
+        Hm_ = H_;
+        if (newton) Hm_ += C_;
+        // Damped model; grow μ until it is positive definite (a Newton model that is not falls
+        // back to Gauss–Newton first).
+        Hd_ = Hm_;
+        // ρAᵀA leaves the KKT step unchanged (it only shifts ν by −ρc) but makes the factorised
+        // matrix positive definite wherever the Hessian is on the pins' tangent space, which is
+        // all a constrained minimum has (docs/maths-ik.md §3).
+        if (p > 0) Hd_.noalias() += kExactTargetWeight * A_.transpose() * A_;
         const double floor = 1e-9 * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
         for (int i = 0; i < n_; ++i) Hd_(i, i) += mu * std::max(std::abs(H_(i, i)), floor);
         llt_.compute(Hd_);
-        if (llt_.info() != Eigen::Success) {
-            mu = std::max(mu * 10.0, 1e-6);
-            if (mu > kMaxDamping) {
-                stop = IkStop::kStalled;
-                break;
-            }
+        if (llt_.info() != Eigen::Success && newton) {
+            lastAccepted = false;
             continue;
+        }
+        // An indefinite model (the prior's x–x block is not convex everywhere) gets a shift τI
+        // for this step only; raising μ instead would slow every later step (docs/maths-ik.md §3).
+        double shift = 0.0;
+        while (llt_.info() != Eigen::Success) {
+            const double next = shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+            Hd_.diagonal().array() += next - shift;
+            shift = next;
+            llt_.compute(Hd_);
+            if (shift > kMaxDamping) break;
+        }
+        if (llt_.info() != Eigen::Success) {
+            stop = IkStop::kStalled;
+            break;
         }
         // KKT step: δ = −Hd⁻¹(g + Aᵀν), (A Hd⁻¹ Aᵀ) ν = c − A Hd⁻¹ g.
         tmp_ = llt_.solve(g_);
@@ -295,30 +370,52 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         }
         const double pinWorst = p > 0 ? c_.cwiseAbs().maxCoeff() : 0.0;
         // Model decrease of F along δ (the pins' linearisation is met by δ).
-        const double modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(H_ * delta_));
+        const double modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
         // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδ − ½δᵀHdδ.
         const double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
         result.decrement = decrement;
-        if (pinWorst <= request.pinToleranceCm && mu <= kConvergedDamping &&
+        if (pinWorst <= request.pinToleranceCm && mu <= kConvergedDamping && shift == 0.0 &&
             std::abs(decrement) <= request.stationarityAbsolute + request.stationarityRelative * std::abs(F)) {
             stop = IkStop::kConverged;
             break;
         }
         if (it >= request.maxIterations) break;
         ++it;
+        // Step bound: the linearisation of FK and of the prior does not reach further than about
+        // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
+        // (same direction) rather than left to the damping, which would also slow every later step.
+        const double scale = std::min({1.0, latentStepBound_ / std::max(1e-300, delta_.head(d_).norm()),
+                                       kMaxStepDeg / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff())});
+        double stepDecrease = modelDecrease;
+        if (scale < 1.0) {
+            delta_ *= scale;
+            stepDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
+        }
         if (p > 0) meritNu = std::max(meritNu, 2.0 * nu_.cwiseAbs().maxCoeff());
         const double c1 = p > 0 ? c_.lpNorm<1>() : 0.0;
-        const double pred = modelDecrease + meritNu * c1;
+        const double pred = stepDecrease + meritNu * scale * c1;
         // Trial point with second-order corrections onto the pins.
         zTrial_ = z_ + delta_;
         double trialPinNorm = 0.0;
-        if (p > 0) {
+        const Eigen::Index q = Aall_.rows();
+        if (q > 0) {
+            // Second-order correction: back onto the pins, and onto the exact targets' linearised
+            // prediction (a penalty of weight κ would otherwise charge the manifold's curvature
+            // to every step along it: linear convergence; docs/maths-ik.md §3).
+            eHat_ = eAt_;
+            eHat_.tail(q - p).noalias() += Aall_.bottomRows(q - p) * delta_;
+            HinvAll_ = llt_.solve(Aall_.transpose());
+            Sall_.noalias() = Aall_ * HinvAll_;
+            Sall_.diagonal().array() += 1e-12 * std::max(1.0, Sall_.diagonal().maxCoeff());
+            sAllLdlt_.compute(Sall_);
             for (int k = 0; k < kProjections; ++k) {
-                if (pinResidual(zTrial_, cTrial_) <= 0.01 * request.pinToleranceCm) break;
-                nu_ = sLdlt_.solve(cTrial_);
-                zTrial_.noalias() -= HinvAt_ * nu_;
+                const double pinWorstTrial = correctionResidual(zTrial_, rAll_);
+                const double targetWorst = q > p ? rAll_.tail(q - p).cwiseAbs().maxCoeff() : 0.0;
+                if (pinWorstTrial <= 0.01 * request.pinToleranceCm && targetWorst <= 0.01 * request.pinToleranceCm) break;
+                zTrial_.noalias() -= HinvAll_ * sAllLdlt_.solve(rAll_);
             }
-            pinResidual(zTrial_, cTrial_);
+            correctionResidual(zTrial_, rAll_);
+            cTrial_ = rAll_.head(p);
             trialPinNorm = cTrial_.lpNorm<1>();
         }
         const double Ft = evaluate(zTrial_, false);
@@ -327,22 +424,25 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const bool feasible = p == 0 || (pinWorst <= 0.1 * request.pinToleranceCm &&
                                          cTrial_.cwiseAbs().maxCoeff() <= 0.1 * request.pinToleranceCm);
         const double actual = feasible ? F - Ft : (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
-        const double predicted = feasible ? modelDecrease : pred;
+        const double predicted = feasible ? stepDecrease : pred;
         const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
         // Pins never get worse than the tolerance or where they are: a trial that leaves them (a
         // projection that could not return, e.g. at a straight leg) is rejected, so μ shrinks the step.
-        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max(request.pinToleranceCm, pinWorst);
+        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
         if (std::isfinite(Ft) && pinsHeld && gain > 1e-4) {
             z_ = zTrial_;
+            mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+            mu = std::max(mu, 1e-12);
+            curvature_ = mu <= kNewtonDamping;  // the next model is a Newton one: it needs C
             F = evaluate(z_, true);
             if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
                 stop = IkStop::kNonFinite;  // cannot happen for finite z; kept as a guard
                 break;
             }
-            mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
-            mu = std::max(mu, 1e-12);
             nuLm = 2.0;
+            lastAccepted = true;
         } else {
+            lastAccepted = false;
             mu *= nuLm;
             nuLm *= 2.0;
             if (mu > kMaxDamping) {

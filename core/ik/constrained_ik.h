@@ -22,19 +22,26 @@
 // Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
 //   H = ∇²L_IK (y–y and x–y blocks analytic from ∂f/∂x and ∂σ²/∂x; x–x block by central differences
 //       of the analytic x-gradient, so the ln σ² term is handled exactly)
-//     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal.
-// (The full Newton model, adding κe_t·∇²FK_t and the pins' ν·∇²FK_p, was measured and lost:
-// it is indefinite away from the solution and needed 2–3× the iterations; docs/maths-ik.md.)
-// Marquardt damping μ·diag(H). Each step solves the KKT system of the pins' linearisation
-// (range-space form, A (H + μ diag H)⁻¹ Aᵀ), then a second-order correction projects the trial
-// point back onto the pins (up to 5 Gauss–Newton projections in the same metric). Steps are
+//     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal,
+//     + the constraints' curvature Σ κe_t·∇²FK_t + Σ ν_p·∇²FK_p (ν: least-squares multipliers)
+//       once the iteration is in its Newton regime (the last step accepted with μ ≤ 1e-3);
+//       before that it is indefinite and only slows the damping down.
+// Marquardt damping μ·diag(H). The factorised matrix also carries ρAᵀA (ρ = κ) for the pins: it
+// leaves the KKT step unchanged and makes the matrix positive definite wherever the Hessian is on
+// the pins' tangent space. A model that is still indefinite gets a one-step shift τI. Each step
+// solves the KKT system of the pins' linearisation (range-space form, A (H + μ diag H)⁻¹ Aᵀ), is
+// shortened to at most half the RBF length scale in x and 20° in any angle, then a second-order
+// correction (up to 5 projections in the same metric) brings the trial point back onto the pins
+// and onto the exact targets' linearised prediction: without it the κ-penalty charges the curved
+// target manifold to every step along it and the iteration converges only linearly. Steps are
 // accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
-// tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁.
+// tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
+// 1e-3 cm (the next step restores them).
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
-// stationarityAbsolute + stationarityRelative·|F| (1e-6 + 1e-10·|F|) with μ ≤ 1e-2, i.e. no
-// Newton step could lower F by more than that. `iterations` counts every linear solve/trial step
+// stationarityAbsolute + stationarityRelative·|F| (1e-6 + 1e-10·|F|) with μ ≤ 1e-2 and no shift,
+// i.e. no Newton step could lower F by more than that. `iterations` counts every linear solve/trial step
 // (accepted or not); `evaluations` counts prior evaluations.
 //
 // The solver holds a preallocated workspace for one model version: warm starts come from the
@@ -121,20 +128,24 @@ private:
     void bind(const ConstrainedIkRequest& request);
     // F, and with `derivatives` also g_, H_, A_, c_ (pins) at z.
     double evaluate(const Eigen::VectorXd& z, bool derivatives);
-    // Only FK and the pins' residual c (cm) at z; returns ‖c‖∞.
-    double pinResidual(const Eigen::VectorXd& z, Eigen::VectorXd& c);
+    // FK at z and the second-order correction's residual r = [pins' c; exact targets' e − ê]
+    // (cm); returns the pins' ‖c‖∞.
+    double correctionResidual(const Eigen::VectorXd& z, Eigen::VectorXd& r);
     void setPose(const Eigen::VectorXd& y);
     void fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+    // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
+    void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
 
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     int d_ = 0, D_ = 0, n_ = 0;
     std::vector<int> yOfDof_;  // 47-index → index into y (−1 if constant)
     int rootY_[3] = {-1, -1, -1};
+    double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)
 
     // Bound request.
     const ConstrainedIkRequest* request_ = nullptr;
-    std::vector<int> pins_, targets_;  // indices into request_->constraints
+    std::vector<int> pins_, targets_, exactTargets_;  // indices into request_->constraints
     Eigen::Vector3d rootRef_ = Eigen::Vector3d::Zero();
 
     // Workspace.
@@ -145,10 +156,14 @@ private:
     gp::PointWorkspace ws_, wsFd_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
     Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, delta_, tmp_, nu_, rhs_;
-    Eigen::MatrixXd H_, Hd_, A_, HinvAt_, S_;
+    Eigen::MatrixXd H_, C_, Hm_, Hd_, A_, HinvAt_, S_, hc_;
     Eigen::LLT<Eigen::MatrixXd> llt_;
-    Eigen::LDLT<Eigen::MatrixXd> sLdlt_;
+    Eigen::LDLT<Eigen::MatrixXd> sLdlt_, sAllLdlt_;
+    // Second-order correction over pins and exact targets: Jacobian rows, predicted residuals ê.
+    Eigen::MatrixXd Aall_, HinvAll_, Sall_;
+    Eigen::VectorXd eAt_, eHat_, rAll_;
     double sigma2_ = 0.0, lik_ = 0.0;
+    bool curvature_ = false;  // evaluate() also fills C_ (the constraints' curvature)
     int evaluations_ = 0;
 };
 
