@@ -29,6 +29,21 @@ int runGui(const GuiArgs& args) {
         throw UsageError("expected --size between 320x240 and 8192x8192, found " + std::to_string(args.width) + "x" +
                          std::to_string(args.height));
     if (args.frames < 0) throw UsageError("expected --frames ≥ 0, found " + std::to_string(args.frames));
+    const std::string ext = std::filesystem::path(args.clip).extension().string();
+    const bool session = !args.clip.empty() && ext == ".mgsession";
+    // Anything that is neither a session nor a clip is tried as a model file (.json, .model).
+    const bool modelFile = !args.clip.empty() && !session && ext != ".amc" && ext != ".bvh" && ext != ".asf";
+    if (!args.clip.empty()) {
+        // Said before a window opens (no display, or a file manager's stale entry).
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(args.clip, ec))
+            throw UsageError("expected a clip (ASF/AMC, BVH), session or model file, found no file at '" + args.clip + "'");
+        if (ext == ".asf")
+            throw UsageError("expected a motion (.amc beside its .asf, or .bvh), found the skeleton '" + args.clip +
+                             "': open one of its .amc files");
+        if (!args.model.empty() && (session || modelFile))
+            throw UsageError("expected --model with a clip, found it with '" + args.clip + "'");
+    }
     std::optional<ui::ScriptPlayer> player;
     if (!args.script.empty()) player.emplace(ui::GuiScript::load(args.script));
 
@@ -49,12 +64,11 @@ int runGui(const GuiArgs& args) {
     eo.offerAutosaveRestore = !scripted;
     eo.recentFiles = !scripted;
     ui::EditorApp app(eo);
-    const bool session = !args.clip.empty() && std::filesystem::path(args.clip).extension() == ".mgsession";
     if (session) {
         const std::string err = app.openSession(args.clip);
         if (!err.empty()) throw ParseError(err);
-    } else if (!args.model.empty()) {
-        const std::string err = app.openModel(args.model);
+    } else if (!args.model.empty() || modelFile) {
+        const std::string err = app.openModel(modelFile ? args.clip : args.model);
         if (!err.empty()) throw ParseError(err);
     } else if (!args.clip.empty()) {
         const std::string err = app.openClip(args.clip);
@@ -118,7 +132,7 @@ const CommandRegistration reg("gui", "Open the interactive editor (or run it scr
     auto a = std::make_shared<GuiArgs>();
     auto size = std::make_shared<std::string>("1280x800");
     sub.add_option("file", a->clip,
-                   "Session (.mgsession), ASF/AMC or BVH clip to open (default: the 10_02 kick, else a synthetic walk)");
+                   "Session (.mgsession), ASF/AMC or BVH clip, or model file to open (default: the 10_02 kick, else a synthetic walk)");
     sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
     sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
     sub.add_option("--script", a->script, "Timed input events (format: ui/gui_script.h)");
