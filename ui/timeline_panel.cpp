@@ -52,6 +52,7 @@ void TimelinePanel::draw(EditorState& s) {
     const ImVec2 t0 = ImGui::GetCursorScreenPos();
     const float h = std::max(24.0f, avail.y - 2.0f);
     ImGui::InvisibleButton("##track", ImVec2(avail.x, h));
+    s.recordControl("timeline track");
     const bool active = ImGui::IsItemActive();
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 t1(t0.x + avail.x, t0.y + h);

@@ -1,0 +1,61 @@
+// The editor's layout in a small window (label `gl`, offscreen): at 1024×600 every panel's main
+// controls are drawn wholly inside what their window shows, with no scrolling: Train, Open and
+// Save model; the latent map; the timeline track; the IK readout's falloff; the Path tab's
+// Regenerate. Read from the rectangles the panels record (EditorState::controls).
+#include <doctest/doctest.h>
+
+#include "editor_app.h"
+#include "editor_harness.h"
+
+using namespace mgp;
+
+namespace {
+
+void frames(test::Harness& h, int w, int hgt, int n) {
+    for (int i = 0; i < n; ++i) h.app->frame(h.input, 1.0 / 60.0, w, hgt);
+}
+
+void checkControl(const ui::EditorState& s, const char* name, int w, int h) {
+    INFO("control " << name);
+    const auto it = s.controls.find(name);
+    REQUIRE(it != s.controls.end());
+    const ui::EditorState::ControlRect& r = it->second;
+    INFO("rect " << r.x0 << "," << r.y0 << " .. " << r.x1 << "," << r.y1);
+    CHECK(r.visible);
+    CHECK(r.x0 >= 0.0f);
+    CHECK(r.y0 >= 0.0f);
+    CHECK(r.x1 <= float(w));
+    CHECK(r.y1 <= float(h));
+    CHECK(r.x1 - r.x0 >= 8.0f);
+    CHECK(r.y1 - r.y0 >= 8.0f);
+}
+
+}  // namespace
+
+TEST_CASE("gui layout: at 1024x600 every panel's main controls are visible without scrolling") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    constexpr int W = 1024, H = 600;
+    ui::EditorState& s = h->app->state();
+    s.controls.clear();
+    frames(*h, W, H, 3);
+    for (const char* name : {"Train", "Open model", "Save model", "latent map", "timeline track", "drag falloff"})
+        checkControl(s, name, W, H);
+    const auto& map = s.controls.at("latent map");
+    CHECK(map.x1 - map.x0 >= 110.0f);  // still a usable map
+    // The Path tab comes forward with a path edit: Regenerate in view.
+    REQUIRE(s.doc.beginPathEdit(Effector::kRFoot) == "");
+    frames(*h, W, H, 3);
+    checkControl(s, "Regenerate", W, H);
+}
+
+TEST_CASE("gui layout: at 1280x800 the panels keep their sizes (the goldens' layout)") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    frames(*h, 1280, 800, 2);
+    CHECK(s.viewportWidth == 1280 - 380);
+    const auto& train = s.controls.at("Train");
+    CHECK(train.visible);
+    CHECK(train.x0 >= 900.0f);
+}
