@@ -59,6 +59,8 @@ int runGui(const GuiArgs& args) {
     const bool scripted = total > 0;
 
     ui::EditorOptions eo;
+    // HiDPI: --ui-scale, else the monitor's content scale (1 offscreen).
+    eo.uiScale = args.uiScale > 0.0f ? args.uiScale : window ? window->contentScale() : 1.0f;
     if (mocap) eo.mocapDir = *mocap;
     // A scripted run neither asks about old autosaves nor changes the user's recent files.
     eo.offerAutosaveRestore = !scripted;
@@ -139,6 +141,8 @@ const CommandRegistration reg("gui", "Open the interactive editor (or run it scr
     sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
     sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
     sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
+    sub.add_option("--ui-scale", a->uiScale, "Scale of fonts and panels (default: the monitor's content scale)")
+        ->check(CLI::Range(0.5f, 4.0f));
     return [=]() {
         GuiArgs g = *a;
         if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)

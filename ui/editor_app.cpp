@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <chrono>
@@ -105,9 +106,13 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
     // arrows, and maths (≥ ≤ √ ²); DejaVu Sans has them all.
     static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
                                       0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+    scale_ = std::isfinite(options_.uiScale) ? std::clamp(options_.uiScale, 0.5f, 4.0f) : 1.0f;
     if (!options_.builtinFont && std::filesystem::exists(kFontPath, ec))
-        io.Fonts->AddFontFromFileTTF(kFontPath, 15.0f, nullptr, kGlyphs);
+        io.Fonts->AddFontFromFileTTF(kFontPath, std::round(15.0f * scale_), nullptr, kGlyphs);
+    else
+        io.FontGlobalScale = scale_;  // the built-in bitmap font only comes in one size
     applyStyle();
+    ImGui::GetStyle().ScaleAllSizes(scale_);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     viewport_ = std::make_unique<ViewportPanel>();
     autosave_ = AutosaveTimer(options_.autosaveSeconds);
@@ -769,17 +774,19 @@ void EditorApp::menus() {
 
 void EditorApp::layout(int w, int h) {
     const float menuH = ImGui::GetFrameHeight();
-    const float timelineH = 104.0f;
+    // Sizes in pixels at scale 1; a HiDPI monitor's content scale multiplies them (and the fonts).
+    const float k = scale_;
+    const float timelineH = 104.0f * k;
     // The right column: 380 px wide with fixed panel heights from 1280×800 up; in a smaller window
     // narrower (30 % of the width, at least 290 px) with the heights shared out so every panel
     // keeps its main controls in view down to 1024×600.
     const float avail = float(h) - menuH;
-    float rightW = 380.0f, modelH = 262.0f, latentH = 356.0f;
-    if (w < 1280 || avail < modelH + latentH + 160.0f) {
-        rightW = std::clamp(float(w) * 0.30f, 290.0f, 380.0f);
-        modelH = std::clamp(avail * 0.30f, 130.0f, 262.0f);
-        const float readoutH = std::max(avail * 0.29f, 170.0f);
-        latentH = std::clamp(avail - modelH - readoutH, 120.0f, std::min(356.0f, rightW));
+    float rightW = 380.0f * k, modelH = 262.0f * k, latentH = 356.0f * k;
+    if (float(w) < 1280.0f * k || avail < modelH + latentH + 160.0f * k) {
+        rightW = std::clamp(float(w) * 0.30f, std::min(290.0f * k, float(w) * 0.45f), 380.0f * k);
+        modelH = std::clamp(avail * 0.30f, 130.0f * k, 262.0f * k);
+        const float readoutH = std::max(avail * 0.29f, 170.0f * k);
+        latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
     }
     const float leftW = float(w) - rightW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

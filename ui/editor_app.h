@@ -33,6 +33,8 @@ struct EditorOptions {
     bool offerAutosaveRestore = false;
     double autosaveSeconds = 120.0;  // autosave interval while there are unsaved changes
     bool recentFiles = false;        // read and update the user's recent-files list
+    // HiDPI: the monitor's content scale (2 on a 200 % display): fonts, spacing and panel sizes.
+    float uiScale = 1.0f;
 };
 
 class EditorApp {
@@ -62,6 +64,7 @@ public:
     const FileDialog& fileDialog() const { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
     bool messagesShown() const { return showMessages_; }   // View > Messages
+    float uiScale() const { return scale_; }
     bool offeringAutosave() const { return !restoreOffer_.empty(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
@@ -119,6 +122,7 @@ private:
     FileDialog dialog_;
     DialogPurpose purpose_ = DialogPurpose::kNone;
     DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
+    float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
     bool showHelp_ = false;
     bool showMessages_ = false;
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet

@@ -80,4 +80,10 @@ void GlfwWindow::setTitle(const std::string& title) {
     glfwSetWindowTitle(window_, title.c_str());
 }
 
+float GlfwWindow::contentScale() const {
+    float x = 1.0f, y = 1.0f;
+    glfwGetWindowContentScale(window_, &x, &y);
+    return x > 0.0f ? x : 1.0f;
+}
+
 }  // namespace mgp::ui

@@ -3,6 +3,7 @@
 // Save model; the latent map; the timeline track; the IK readout's falloff; the Path tab's
 // Regenerate. Read from the rectangles the panels record (EditorState::controls).
 #include <doctest/doctest.h>
+#include <imgui.h>
 
 #include "editor_app.h"
 #include "editor_harness.h"
@@ -58,4 +59,24 @@ TEST_CASE("gui layout: at 1280x800 the panels keep their sizes (the goldens' lay
     const auto& train = s.controls.at("Train");
     CHECK(train.visible);
     CHECK(train.x0 >= 900.0f);
+}
+
+TEST_CASE("gui layout: a 2x content scale (HiDPI) doubles fonts and panel sizes and keeps the controls in view") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    frames(*h, 1280, 800, 2);
+    const float frameH1 = ImGui::GetFrameHeight();
+    const float trainH1 = h->app->state().controls.at("Train").y1 - h->app->state().controls.at("Train").y0;
+    ui::EditorOptions o;
+    o.uiScale = 2.0f;
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    CHECK(h->app->uiScale() == 2.0f);
+    frames(*h, 1280, 800, 3);
+    const ui::EditorState& s = h->app->state();
+    CHECK(ImGui::GetFrameHeight() == doctest::Approx(2.0f * frameH1).epsilon(0.05));
+    const auto& train = s.controls.at("Train");
+    CHECK(train.y1 - train.y0 == doctest::Approx(2.0f * trainH1).epsilon(0.05));
+    CHECK(s.viewportWidth < 1280 - 380);  // the right column grew
+    for (const char* name : {"Train", "Open model", "timeline track", "drag falloff"}) checkControl(s, name, 1280, 800);
 }
