@@ -36,7 +36,7 @@ int runGui(const GuiArgs& args) {
     if (!args.clip.empty()) {
         // Said before a window opens (no display, or a file manager's stale entry).
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(args.clip, ec))
+        if (!std::filesystem::exists(args.clip, ec))  // a folder is the loaders' to report
             throw UsageError("expected a clip (ASF/AMC, BVH), session or model file, found no file at '" + args.clip + "'");
         if (ext == ".asf")
             throw UsageError("expected a motion (.amc beside its .asf, or .bvh), found the skeleton '" + args.clip +

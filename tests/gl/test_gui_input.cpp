@@ -103,7 +103,7 @@ TEST_CASE("gui input: shortcuts match their modifiers exactly") {
     CHECK(h->app->fileDialog().isOpen());
 }
 
-TEST_CASE("gui input: Save session as opens with a default name in a focused field; a modal keeps P from pinning") {
+TEST_CASE("gui input: Save session as opens with a default name in a focused field, and a modal keeps P from pinning") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
@@ -206,7 +206,7 @@ TEST_CASE("gui input: copy a pose, paste it on another frame (root kept), one un
     CHECK_FALSE(doc.isEdited(60));
 }
 
-TEST_CASE("gui input: X or Y during a handle drag holds the target on that world axis; the readout shows the offset in cm") {
+TEST_CASE("gui input: X or Y during a handle drag holds the target on that world axis, and the readout shows the offset in cm") {
     auto h = test::makeHarness(false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
