@@ -13,6 +13,7 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "edit/recent_files.h"
 #include "editor_app.h"
 #include "gl_context.h"
 #include "glfw_window.h"
@@ -65,6 +66,7 @@ int runGui(const GuiArgs& args) {
     // A scripted run neither asks about old autosaves nor changes the user's recent files.
     eo.offerAutosaveRestore = !scripted;
     eo.recentFiles = !scripted;
+    if (!scripted) eo.layoutFile = configDir() + "/layout.json";  // the splitters, as last left
     ui::EditorApp app(eo);
     if (session) {
         const std::string err = app.openSession(args.clip);

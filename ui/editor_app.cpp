@@ -121,6 +121,7 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
         recent_->load();
     }
     if (options_.offerAutosaveRestore) restoreOffer_ = findOrphanedAutosaves();
+    if (!options_.layoutFile.empty()) prefs_ = loadLayoutPrefs(options_.layoutFile);
 }
 
 EditorApp::~EditorApp() {
@@ -731,6 +732,10 @@ void EditorApp::menus() {
     if (beginMenu("View")) {
         if (ImGui::MenuItem("Frame character", "F")) state_.requestFrameCamera = true;
         ImGui::MenuItem("Messages", nullptr, &showMessages_);
+        if (ImGui::MenuItem("Reset layout", nullptr, false, prefs_.rightWidth > 0.0f || prefs_.timelineHeight > 0.0f)) {
+            prefs_ = LayoutPrefs{};
+            if (!options_.layoutFile.empty()) saveLayoutPrefs(options_.layoutFile, prefs_);
+        }
         ImGui::MenuItem("Follow character", nullptr, &state_.followCharacter);
         if (beginMenu("Compare ghost")) {
             if (ImGui::MenuItem("Off", nullptr, doc.compareMode() == CompareMode::kNone)) doc.setCompareMode(CompareMode::kNone);
@@ -788,6 +793,15 @@ void EditorApp::layout(int w, int h) {
         const float readoutH = std::max(avail * 0.29f, 170.0f * k);
         latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
     }
+    // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
+    if (prefs_.rightWidth > 0.0f) rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
+    float timelineFinal = timelineH;
+    if (prefs_.timelineHeight > 0.0f)
+        timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(70.0f * k, float(h) * 0.2f), float(h) * 0.5f);
+    layoutPanels(w, h, menuH, rightW, timelineFinal, modelH, latentH);
+}
+
+void EditorApp::layoutPanels(int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH) {
     const float leftW = float(w) - rightW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
@@ -847,6 +861,18 @@ void EditorApp::layout(int w, int h) {
     }
     ImGui::End();
 
+    // Splitters, on top of the panels' edges: the right column's width and the timeline's height.
+    bool released = false;
+    const float dx = splitter("##split-right", leftW - 3.0f, menuH, 6.0f, float(h) - menuH, true, released);
+    if (dx != 0.0f) prefs_.rightWidth = std::max(1.0f, (rightW - dx) / scale_);
+    bool releasedTimeline = false;
+    const float dy = splitter("##split-timeline", 0.0f, float(h) - timelineH - 3.0f, leftW - 3.0f, 6.0f, false, releasedTimeline);
+    if (dy != 0.0f) prefs_.timelineHeight = std::max(1.0f, (timelineH - dy) / scale_);
+    if ((released || releasedTimeline) && !options_.layoutFile.empty()) {
+        const std::string err = saveLayoutPrefs(options_.layoutFile, prefs_);
+        if (!err.empty()) state_.setStatus("could not remember the layout: " + err, true);
+    }
+
     if (showHelp_) {
         ImGui::SetNextWindowPos(ImVec2(leftW * 0.5f, float(h) * 0.4f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
         ImGui::Begin("Controls", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
@@ -874,6 +900,29 @@ void EditorApp::layout(int w, int h) {
         ImGui::TextDisabled("Unsaved work is autosaved every %.0f s and offered back after a crash.", options_.autosaveSeconds);
         ImGui::End();
     }
+}
+
+float EditorApp::splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PopStyleVar(3);
+    ImGui::InvisibleButton("##strip", ImVec2(w, h));
+    const bool active = ImGui::IsItemActive();
+    released = ImGui::IsItemDeactivated();
+    float delta = 0.0f;
+    if (active || ImGui::IsItemHovered()) {
+        ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(90, 140, 220, active ? 200 : 120));
+        if (active) delta = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+    }
+    ImGui::End();
+    return delta;
 }
 
 // View > Messages: the status line's history, newest first.

@@ -20,6 +20,7 @@
 #include "input_replay.h"
 #include "input_state.h"
 #include "latent_map_panel.h"
+#include "layout_store.h"
 #include "png_capture.h"
 #include "timeline_panel.h"
 #include "viewport_panel.h"
@@ -35,6 +36,9 @@ struct EditorOptions {
     bool recentFiles = false;        // read and update the user's recent-files list
     // HiDPI: the monitor's content scale (2 on a 200 % display): fonts, spacing and panel sizes.
     float uiScale = 1.0f;
+    // Where the splitters' positions are remembered ("" = not remembered; the interactive
+    // editor uses configDir()/layout.json).
+    std::string layoutFile;
 };
 
 class EditorApp {
@@ -110,6 +114,7 @@ private:
     std::string pastePose();  // onto the current frame (root position kept), one undo step
     void menus();
     void layout(int width, int height);
+    void layoutPanels(int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
     void dialogs();
     void messagesWindow();
 
@@ -123,6 +128,9 @@ private:
     DialogPurpose purpose_ = DialogPurpose::kNone;
     DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
     float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
+    LayoutPrefs prefs_;   // the splitters, as the user left them
+    // A draggable strip between panels; returns the mouse's move along it this frame.
+    float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
     bool showHelp_ = false;
     bool showMessages_ = false;
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet

@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 #include <imgui.h>
 
+#include <filesystem>
+
 #include "editor_app.h"
 #include "editor_harness.h"
 
@@ -79,4 +81,48 @@ TEST_CASE("gui layout: a 2x content scale (HiDPI) doubles fonts and panel sizes 
     CHECK(train.y1 - train.y0 == doctest::Approx(2.0f * trainH1).epsilon(0.05));
     CHECK(s.viewportWidth < 1280 - 380);  // the right column grew
     for (const char* name : {"Train", "Open model", "timeline track", "drag falloff"}) checkControl(s, name, 1280, 800);
+}
+
+TEST_CASE("gui layout: dragging the splitters resizes the panels, and the next editor remembers it") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string dir = std::string(MOTIONGP_GL_OUT_DIR) + "/layout_prefs";
+    const std::string file = dir + "/layout.json";
+    std::filesystem::remove_all(dir);
+    ui::EditorOptions o;
+    o.layoutFile = file;
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    frames(*h, 1280, 800, 3);
+    ui::EditorState& s = h->app->state();
+    REQUIRE(s.viewportWidth == 900);
+    const int viewportH = s.viewportHeight;
+
+    // Right column: grab the boundary at x = 900 and pull it 100 px to the left.
+    auto drag = [&](float x, float y, float dx, float dy) {
+        h->input.mouseX = x;
+        h->input.mouseY = y;
+        frames(*h, 1280, 800, 2);
+        h->input.setButton(0, true);
+        frames(*h, 1280, 800, 2);
+        for (int i = 0; i < 4; ++i) {
+            h->input.mouseX += dx / 4;
+            h->input.mouseY += dy / 4;
+            frames(*h, 1280, 800, 1);
+        }
+        h->input.setButton(0, false);
+        frames(*h, 1280, 800, 3);
+    };
+    drag(900.0f, 400.0f, -100.0f, 0.0f);
+    CHECK(s.viewportWidth == 800);
+    // Timeline: its top edge up by 60 px.
+    drag(400.0f, float(800 - 104), 0.0f, -60.0f);
+    CHECK(s.viewportHeight == viewportH - 60);
+    REQUIRE(std::filesystem::exists(file));
+
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    frames(*h, 1280, 800, 3);
+    CHECK(h->app->state().viewportWidth == 800);
+    CHECK(h->app->state().viewportHeight == viewportH - 60);
 }
