@@ -13,6 +13,7 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "edit/recent_files.h"
 #include "editor_app.h"
 #include "gl_context.h"
 #include "glfw_window.h"
@@ -29,6 +30,21 @@ int runGui(const GuiArgs& args) {
         throw UsageError("expected --size between 320x240 and 8192x8192, found " + std::to_string(args.width) + "x" +
                          std::to_string(args.height));
     if (args.frames < 0) throw UsageError("expected --frames ≥ 0, found " + std::to_string(args.frames));
+    const std::string ext = std::filesystem::path(args.clip).extension().string();
+    const bool session = !args.clip.empty() && ext == ".mgsession";
+    // Anything that is neither a session nor a clip is tried as a model file (.json, .model).
+    const bool modelFile = !args.clip.empty() && !session && ext != ".amc" && ext != ".bvh" && ext != ".asf";
+    if (!args.clip.empty()) {
+        // Said before a window opens (no display, or a file manager's stale entry).
+        std::error_code ec;
+        if (!std::filesystem::exists(args.clip, ec))  // a folder is the loaders' to report
+            throw UsageError("expected a clip (ASF/AMC, BVH), session or model file, found no file at '" + args.clip + "'");
+        if (ext == ".asf")
+            throw UsageError("expected a motion (.amc beside its .asf, or .bvh), found the skeleton '" + args.clip +
+                             "': open one of its .amc files");
+        if (!args.model.empty() && (session || modelFile))
+            throw UsageError("expected --model with a clip, found it with '" + args.clip + "'");
+    }
     std::optional<ui::ScriptPlayer> player;
     if (!args.script.empty()) player.emplace(ui::GuiScript::load(args.script));
 
@@ -44,17 +60,19 @@ int runGui(const GuiArgs& args) {
     const bool scripted = total > 0;
 
     ui::EditorOptions eo;
+    // HiDPI: --ui-scale, else the monitor's content scale (1 offscreen).
+    eo.uiScale = args.uiScale > 0.0f ? args.uiScale : window ? window->contentScale() : 1.0f;
     if (mocap) eo.mocapDir = *mocap;
     // A scripted run neither asks about old autosaves nor changes the user's recent files.
     eo.offerAutosaveRestore = !scripted;
     eo.recentFiles = !scripted;
+    if (!scripted) eo.layoutFile = configDir() + "/layout.json";  // the splitters, as last left
     ui::EditorApp app(eo);
-    const bool session = !args.clip.empty() && std::filesystem::path(args.clip).extension() == ".mgsession";
     if (session) {
         const std::string err = app.openSession(args.clip);
         if (!err.empty()) throw ParseError(err);
-    } else if (!args.model.empty()) {
-        const std::string err = app.openModel(args.model);
+    } else if (!args.model.empty() || modelFile) {
+        const std::string err = app.openModel(modelFile ? args.clip : args.model);
         if (!err.empty()) throw ParseError(err);
     } else if (!args.clip.empty()) {
         const std::string err = app.openClip(args.clip);
@@ -118,13 +136,15 @@ const CommandRegistration reg("gui", "Open the interactive editor (or run it scr
     auto a = std::make_shared<GuiArgs>();
     auto size = std::make_shared<std::string>("1280x800");
     sub.add_option("file", a->clip,
-                   "Session (.mgsession), ASF/AMC or BVH clip to open (default: the 10_02 kick, else a synthetic walk)");
+                   "Session (.mgsession), ASF/AMC or BVH clip, or model file to open (default: the 10_02 kick, else a synthetic walk)");
     sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
     sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
     sub.add_option("--script", a->script, "Timed input events (format: ui/gui_script.h)");
     sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
     sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
     sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
+    sub.add_option("--ui-scale", a->uiScale, "Scale of fonts and panels (default: the monitor's content scale)")
+        ->check(CLI::Range(0.5f, 4.0f));
     return [=]() {
         GuiArgs g = *a;
         if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)

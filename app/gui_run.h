@@ -12,6 +12,7 @@ struct GuiArgs {
     std::string screenshot;  // PNG of the whole window after the last frame
     bool offscreen = false;  // EGL surfaceless context, no display needed
     int width = 1280, height = 800;
+    float uiScale = 0.0f;    // fonts and panels; 0 = the monitor's content scale
 };
 
 // Returns the exit code; throws UsageError / ParseError / RenderError for the caller to report.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include "io/parse_error.h"
 #include "model_panel.h"
 #include "path_panel.h"
+#include "shortcuts.h"
 #include "skeleton/synthetic_clip.h"
 
 namespace mgp::ui {
@@ -104,9 +106,13 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
     // arrows, and maths (≥ ≤ √ ²); DejaVu Sans has them all.
     static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
                                       0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+    scale_ = std::isfinite(options_.uiScale) ? std::clamp(options_.uiScale, 0.5f, 4.0f) : 1.0f;
     if (!options_.builtinFont && std::filesystem::exists(kFontPath, ec))
-        io.Fonts->AddFontFromFileTTF(kFontPath, 15.0f, nullptr, kGlyphs);
+        io.Fonts->AddFontFromFileTTF(kFontPath, std::round(15.0f * scale_), nullptr, kGlyphs);
+    else
+        io.FontGlobalScale = scale_;  // the built-in bitmap font only comes in one size
     applyStyle();
+    ImGui::GetStyle().ScaleAllSizes(scale_);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     viewport_ = std::make_unique<ViewportPanel>();
     autosave_ = AutosaveTimer(options_.autosaveSeconds);
@@ -115,6 +121,7 @@ EditorApp::EditorApp(EditorOptions options) : options_(std::move(options)) {
         recent_->load();
     }
     if (options_.offerAutosaveRestore) restoreOffer_ = findOrphanedAutosaves();
+    if (!options_.layoutFile.empty()) prefs_ = loadLayoutPrefs(options_.layoutFile);
 }
 
 EditorApp::~EditorApp() {
@@ -197,8 +204,13 @@ std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
     const std::string err =
         state_.training.start(state_.doc.clip(), state_.trainOptions, baseName(state_.doc.clip().sourcePath));
-    if (err.empty()) state_.setStatus("training started (the editor stays usable; Cancel in the Model panel)");
-    else state_.setStatus(err, true);
+    if (err.empty()) {
+        state_.setStatusWhile("training (the editor stays usable; Cancel in the Model panel)",
+                              [job = &state_.training] { return job->running(); });
+        trainingSeen_ = true;
+    } else {
+        state_.setStatus(err, true);
+    }
     return err;
 }
 
@@ -354,6 +366,7 @@ std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
         state_.camera.targetCm = glm::vec3(d.camera.targetCm.x(), d.camera.targetCm.y(), d.camera.targetCm.z());
         state_.followCharacter = d.camera.followCharacter;
         state_.cameraNeedsFraming = false;
+        state_.cameraRestored = true;
         state_.playing = false;
         state_.showCapturedPath = flag("show_captured_path", true);
         state_.showBeforeGhost = flag("show_before_ghost", false);
@@ -391,7 +404,7 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
     // editor's autosave before the old file goes, so a second crash loses nothing either.
     sessionPath_.clear();
     savedRevision_ = -1;
-    if (!autosaveNow().empty()) return "could not keep the restored autosave: " + state_.status;
+    if (!autosaveNow().empty()) return "could not keep the restored autosave: " + state_.messages.latestText();
     discardAutosave(file);
     restoreOffer_.clear();
     state_.setStatus("restored the autosave from " + file + " (File > Save session to keep it)");
@@ -431,6 +444,13 @@ void EditorApp::pollJobs() {
         state_.doc.setModel(v, !same);
         state_.modelLabel = std::string("trained ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
         state_.setStatus(state_.training.message());
+        trainingSeen_ = false;
+    }
+    if (trainingSeen_ && !state_.training.running()) {
+        // Stopped without a model (cancelled or failed): say how it ended.
+        trainingSeen_ = false;
+        const std::string why = state_.training.message();
+        state_.setStatus(why.empty() ? "training stopped" : "training stopped: " + why);
     }
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {
         state_.doc.setCompareModel(v);
@@ -462,7 +482,7 @@ void EditorApp::waitIdle() {
 
 bool EditorApp::animating() const {
     const EditorDocument& d = state_.doc;
-    return state_.playing || d.dragging() || d.latentDragging() || d.regenerating() || state_.training.running() ||
+    return replay_.pending() || state_.playing || d.dragging() || d.latentDragging() || d.regenerating() || state_.training.running() ||
            state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
            (d.hasModel() && !latent_.upToDate(state_));
 }
@@ -536,6 +556,11 @@ std::string EditorApp::runAction(const std::vector<std::string>& a) {
         return "";
     }
     if (n == "undo") return state_.doc.undo();
+    if (n == "copy-pose") {
+        copyPose();
+        return "";
+    }
+    if (n == "paste-pose") return pastePose();
     if (n == "redo") return state_.doc.redo();
     if (n == "path") {
         Effector e;
@@ -577,43 +602,65 @@ std::string EditorApp::runAction(const std::vector<std::string>& a) {
 
 void EditorApp::shortcuts() {
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || dialog_.isOpen() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+    // A modal, a menu or a text field owns the keyboard: no shortcut reaches the document then.
+    state_.keysBlocked = io.WantTextInput || dialog_.isOpen() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    if (state_.keysBlocked) return;
     EditorDocument& doc = state_.doc;
-    if (io.KeyCtrl) {
-        auto report = [this](const std::string& err) {
-            if (!err.empty()) state_.setStatus(err, true);
-        };
-        if (ImGui::IsKeyPressed('Z', true)) {
-            if (io.KeyShift) report(doc.redo());
-            else report(doc.undo());
-        }
-        if (ImGui::IsKeyPressed('Y', true)) report(doc.redo());
-        if (ImGui::IsKeyPressed('O', false)) state_.requestOpenClip = true;
-        if (ImGui::IsKeyPressed('M', false)) state_.requestOpenModel = true;
-        if (ImGui::IsKeyPressed('S', false)) {
-            if (io.KeyShift || sessionPath_.empty()) request_ = DialogPurpose::kSaveSession;
-            else saveSession(sessionPath_);
-        }
-        if (ImGui::IsKeyPressed('E', false)) request_ = io.KeyShift ? DialogPurpose::kExportPng : DialogPurpose::kExportBvh;
-        if (ImGui::IsKeyPressed('T', false) && doc.trainable() && !state_.training.running()) state_.requestTrain = true;
-        if (ImGui::IsKeyPressed('R', false) && doc.pathEdit() && !doc.regenerating()) report(doc.startRegenerate());
-        if (ImGui::IsKeyPressed('Q', false)) state_.requestQuit = true;
-        return;
+    auto report = [this](const std::string& err) {
+        if (!err.empty()) state_.setStatus(err, true);
+    };
+    if (chordPressed('Z', kCtrl, true)) report(doc.undo());
+    if (chordPressed('Z', kCtrl | kShift, true) || chordPressed('Y', kCtrl, true)) report(doc.redo());
+    if (chordPressed('O', kCtrl)) state_.requestOpenClip = true;
+    if (chordPressed('M', kCtrl)) state_.requestOpenModel = true;
+    if (chordPressed('S', kCtrl)) {
+        if (sessionPath_.empty()) request_ = DialogPurpose::kSaveSession;
+        else saveSession(sessionPath_);
     }
-    if (ImGui::IsKeyPressed(key::kSpace, false)) state_.playing = !state_.playing;
-    if (ImGui::IsKeyPressed(key::kRight, true)) doc.setFrame(doc.frame() + (io.KeyShift ? 10 : 1));
-    if (ImGui::IsKeyPressed(key::kLeft, true)) doc.setFrame(doc.frame() - (io.KeyShift ? 10 : 1));
-    if (ImGui::IsKeyPressed(key::kHome, false)) doc.setFrame(0);
-    if (ImGui::IsKeyPressed(key::kEnd, false)) doc.setFrame(doc.frameCount() - 1);
-    if (ImGui::IsKeyPressed(key::kF1, false)) showHelp_ = !showHelp_;
+    if (chordPressed('S', kCtrl | kShift)) request_ = DialogPurpose::kSaveSession;
+    if (chordPressed('E', kCtrl)) request_ = DialogPurpose::kExportBvh;
+    if (chordPressed('E', kCtrl | kShift)) request_ = DialogPurpose::kExportPng;
+    if (chordPressed('T', kCtrl) && doc.trainable() && !state_.training.running()) state_.requestTrain = true;
+    if (chordPressed('R', kCtrl) && doc.pathEdit() && !doc.regenerating()) report(doc.startRegenerate());
+    if (chordPressed('Q', kCtrl)) state_.requestQuit = true;
+    if (chordPressed('C', kCtrl)) copyPose();
+    if (chordPressed('V', kCtrl)) report(pastePose());
+    if (chordPressed(key::kSpace)) state_.playing = !state_.playing;
+    if (chordPressed(key::kRight, kNoMods, true)) doc.setFrame(doc.frame() + 1);
+    if (chordPressed(key::kRight, kShift, true)) doc.setFrame(doc.frame() + 10);
+    if (chordPressed(key::kLeft, kNoMods, true)) doc.setFrame(doc.frame() - 1);
+    if (chordPressed(key::kLeft, kShift, true)) doc.setFrame(doc.frame() - 10);
+    if (chordPressed(key::kHome)) doc.setFrame(0);
+    if (chordPressed(key::kEnd)) doc.setFrame(doc.frameCount() - 1);
+    if (chordPressed(key::kF1)) showHelp_ = !showHelp_;
+}
+
+void EditorApp::copyPose() {
+    if (!state_.doc.hasClip()) return;
+    poseClipboard_ = state_.doc.currentPose();
+    state_.setStatus("copied the pose of frame " + std::to_string(state_.doc.frame() + 1));
+}
+
+std::string EditorApp::pastePose() {
+    if (!poseClipboard_) return "nothing to paste: copy a pose first (Edit > Copy pose, Ctrl+C)";
+    const std::string err = state_.doc.pastePose(*poseClipboard_);
+    if (err.empty()) state_.setStatus("pasted the pose onto frame " + std::to_string(state_.doc.frame() + 1));
+    return err;
 }
 
 void EditorApp::menus() {
     EditorDocument& doc = state_.doc;
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
+    // Esc closes an open menu (and the menus above it).
+    const bool escape = ImGui::IsKeyPressed(key::kEscape, false);
+    auto beginMenu = [escape](const char* label, bool enabled = true) {
+        if (!ImGui::BeginMenu(label, enabled)) return false;
+        if (escape) ImGui::CloseCurrentPopup();
+        return true;
+    };
+    if (beginMenu("File")) {
         if (ImGui::MenuItem("Open...", "Ctrl+O")) state_.requestOpenClip = true;
-        if (ImGui::BeginMenu("Open recent", recent_ && !recent_->entries().empty())) {
+        if (beginMenu("Open recent", recent_ && !recent_->entries().empty())) {
             const std::vector<RecentFile> entries = recent_->entries();  // a copy: opening reorders the list
             for (const RecentFile& r : entries) {
                 const std::string label = baseName(r.path) + "  (" + recentKindName(r.kind) + ")";
@@ -642,7 +689,7 @@ void EditorApp::menus() {
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) state_.requestQuit = true;
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
+    if (beginMenu("Edit")) {
         const std::string undo = doc.canUndo() ? "Undo " + doc.undoLabel() : "Undo";
         const std::string redo = doc.canRedo() ? "Redo " + doc.redoLabel() : "Redo";
         auto report = [this](const std::string& err) {
@@ -653,7 +700,10 @@ void EditorApp::menus() {
         if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc.canRedo() && idle)) report(doc.redo());
         ImGui::Separator();
         if (ImGui::MenuItem("Revert frame to capture", nullptr, false, doc.isEdited(doc.frame()))) doc.clearEdit(doc.frame());
-        if (ImGui::BeginMenu("Pins")) {
+        if (ImGui::MenuItem("Copy pose", "Ctrl+C", false, doc.hasClip())) copyPose();
+        if (ImGui::MenuItem("Paste pose", "Ctrl+V", false, poseClipboard_.has_value() && !doc.regenerating()))
+            report(pastePose());
+        if (beginMenu("Pins")) {
             for (int i = 0; i < kEffectorCount; ++i) {
                 const auto e = static_cast<Effector>(i);
                 if (ImGui::MenuItem(effectorName(e), i == 0 ? "P on handle" : nullptr, doc.pinned(e), doc.hasEffector(e)))
@@ -671,7 +721,7 @@ void EditorApp::menus() {
         if (ImGui::MenuItem("Stop editing the path", nullptr, false, doc.pathEdit().has_value())) doc.endPathEdit();
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Model")) {
+    if (beginMenu("Model")) {
         if (ImGui::MenuItem("Train", "Ctrl+T", false, doc.trainable() && !state_.training.running()))
             state_.requestTrain = true;
         if (ImGui::MenuItem("Cancel training", nullptr, false, state_.training.running())) state_.training.cancel();
@@ -679,10 +729,15 @@ void EditorApp::menus() {
         if (ImGui::MenuItem("Adaptive active set", nullptr, &adaptive)) doc.setAdaptiveEnabled(adaptive);
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
+    if (beginMenu("View")) {
         if (ImGui::MenuItem("Frame character", "F")) state_.requestFrameCamera = true;
+        ImGui::MenuItem("Messages", nullptr, &showMessages_);
+        if (ImGui::MenuItem("Reset layout", nullptr, false, prefs_.rightWidth > 0.0f || prefs_.timelineHeight > 0.0f)) {
+            prefs_ = LayoutPrefs{};
+            if (!options_.layoutFile.empty()) saveLayoutPrefs(options_.layoutFile, prefs_);
+        }
         ImGui::MenuItem("Follow character", nullptr, &state_.followCharacter);
-        if (ImGui::BeginMenu("Compare ghost")) {
+        if (beginMenu("Compare ghost")) {
             if (ImGui::MenuItem("Off", nullptr, doc.compareMode() == CompareMode::kNone)) doc.setCompareMode(CompareMode::kNone);
             if (ImGui::MenuItem("Plain IK", nullptr, doc.compareMode() == CompareMode::kPlainIk))
                 doc.setCompareMode(CompareMode::kPlainIk);
@@ -692,7 +747,7 @@ void EditorApp::menus() {
         }
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Playback")) {
+    if (beginMenu("Playback")) {
         if (ImGui::MenuItem(state_.playing ? "Pause" : "Play", "Space")) state_.playing = !state_.playing;
         if (ImGui::MenuItem("Next frame", "Right")) doc.setFrame(doc.frame() + 1);
         if (ImGui::MenuItem("Previous frame", "Left")) doc.setFrame(doc.frame() - 1);
@@ -701,7 +756,7 @@ void EditorApp::menus() {
         if (ImGui::MenuItem("Last frame", "End")) doc.setFrame(doc.frameCount() - 1);
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Help")) {
+    if (beginMenu("Help")) {
         if (ImGui::MenuItem("Controls", "F1")) showHelp_ = true;
         ImGui::EndMenu();
     }
@@ -724,8 +779,29 @@ void EditorApp::menus() {
 
 void EditorApp::layout(int w, int h) {
     const float menuH = ImGui::GetFrameHeight();
-    const float rightW = 380.0f, timelineH = 104.0f;
-    const float modelH = 262.0f, latentH = 356.0f;
+    // Sizes in pixels at scale 1; a HiDPI monitor's content scale multiplies them (and the fonts).
+    const float k = scale_;
+    const float timelineH = 104.0f * k;
+    // The right column: 380 px wide with fixed panel heights from 1280×800 up; in a smaller window
+    // narrower (30 % of the width, at least 290 px) with the heights shared out so every panel
+    // keeps its main controls in view down to 1024×600.
+    const float avail = float(h) - menuH;
+    float rightW = 380.0f * k, modelH = 262.0f * k, latentH = 356.0f * k;
+    if (float(w) < 1280.0f * k || avail < modelH + latentH + 160.0f * k) {
+        rightW = std::clamp(float(w) * 0.30f, std::min(290.0f * k, float(w) * 0.45f), 380.0f * k);
+        modelH = std::clamp(avail * 0.30f, 130.0f * k, 262.0f * k);
+        const float readoutH = std::max(avail * 0.29f, 170.0f * k);
+        latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
+    }
+    // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
+    if (prefs_.rightWidth > 0.0f) rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
+    float timelineFinal = timelineH;
+    if (prefs_.timelineHeight > 0.0f)
+        timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(70.0f * k, float(h) * 0.2f), float(h) * 0.5f);
+    layoutPanels(w, h, menuH, rightW, timelineFinal, modelH, latentH);
+}
+
+void EditorApp::layoutPanels(int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH) {
     const float leftW = float(w) - rightW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
@@ -750,8 +826,10 @@ void EditorApp::layout(int w, int h) {
         ImGui::BeginChild("tl", ImVec2(0, -statusH), false, ImGuiWindowFlags_NoScrollbar);
         timeline_.draw(state_);
         ImGui::EndChild();
-        if (state_.statusIsError) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", state_.status.c_str());
-        else ImGui::TextDisabled("%s", state_.status.c_str());
+        if (const StatusMessage* m = state_.messages.current()) {
+            if (m->error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", m->text.c_str());
+            else ImGui::TextDisabled("%s", m->text.c_str());
+        }
     }
     ImGui::End();
 
@@ -783,24 +861,39 @@ void EditorApp::layout(int w, int h) {
     }
     ImGui::End();
 
+    // Splitters, on top of the panels' edges: the right column's width and the timeline's height.
+    bool released = false;
+    const float dx = splitter("##split-right", leftW - 3.0f, menuH, 6.0f, float(h) - menuH, true, released);
+    if (dx != 0.0f) prefs_.rightWidth = std::max(1.0f, (rightW - dx) / scale_);
+    bool releasedTimeline = false;
+    const float dy = splitter("##split-timeline", 0.0f, float(h) - timelineH - 3.0f, leftW - 3.0f, 6.0f, false, releasedTimeline);
+    if (dy != 0.0f) prefs_.timelineHeight = std::max(1.0f, (timelineH - dy) / scale_);
+    if ((released || releasedTimeline) && !options_.layoutFile.empty()) {
+        const std::string err = saveLayoutPrefs(options_.layoutFile, prefs_);
+        if (!err.empty()) state_.setStatus("could not remember the layout: " + err, true);
+    }
+
     if (showHelp_) {
         ImGui::SetNextWindowPos(ImVec2(leftW * 0.5f, float(h) * 0.4f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
         ImGui::Begin("Controls", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
         ImGui::Text("Viewport");
         ImGui::BulletText("Hover a hand/foot/head handle, left-drag: pose with learned IK (camera-facing plane)");
         ImGui::BulletText("Shift while dragging a handle or a path key: move on the horizontal plane");
+        ImGui::BulletText("X, Y or Z while dragging a handle: along that world axis (again: free); the offset shows in cm");
         ImGui::BulletText("Right-click or P on a handle: pin / unpin (keeps a foot planted)");
         ImGui::BulletText("Left-drag empty space: orbit   Middle-drag or Shift+left: pan   Wheel: zoom   F: frame");
         ImGui::BulletText("Esc during a drag: cancel");
         ImGui::Text("Path editing (Edit menu or the Path tab)");
         ImGui::BulletText("Drag a key point in the viewport, or type its offset in the Path tab");
         ImGui::BulletText("Ctrl+R: regenerate the span between the first and last key");
+        ImGui::BulletText("Drag the edges between the viewport, the right column and the timeline to resize them");
         ImGui::Text("Timeline");
         ImGui::BulletText("Space: play/pause   Left/Right: step (Shift: 10)   Home/End: first/last");
         ImGui::Text("Latent map");
         ImGui::BulletText("Hover: nearest training frame   Click a point: go to its frame");
         ImGui::BulletText("Drag the red point: pose from the model mean f(x)");
         ImGui::Text("Files and history");
+        ImGui::BulletText("Ctrl+C / Ctrl+V: copy this frame's pose / paste it onto another frame (root kept)");
         ImGui::BulletText("Ctrl+Z: undo   Ctrl+Shift+Z or Ctrl+Y: redo (a drag or a regeneration is one step;");
         ImGui::Text("      undo also restores the model version the step changed)");
         ImGui::BulletText("Ctrl+O: open a session, clip or model   Ctrl+M: open model");
@@ -810,6 +903,47 @@ void EditorApp::layout(int w, int h) {
         ImGui::TextDisabled("Unsaved work is autosaved every %.0f s and offered back after a crash.", options_.autosaveSeconds);
         ImGui::End();
     }
+}
+
+float EditorApp::splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PopStyleVar(3);
+    ImGui::InvisibleButton("##strip", ImVec2(w, h));
+    const bool active = ImGui::IsItemActive();
+    released = ImGui::IsItemDeactivated();
+    float delta = 0.0f;
+    if (active || ImGui::IsItemHovered()) {
+        ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(90, 140, 220, active ? 200 : 120));
+        if (active) delta = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+    }
+    ImGui::End();
+    return delta;
+}
+
+// View > Messages: the status line's history, newest first.
+void EditorApp::messagesWindow() {
+    if (!showMessages_) return;
+    ImGui::SetNextWindowSize(ImVec2(520, 260), ImGuiCond_Appearing);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::Begin("Messages", &showMessages_, ImGuiWindowFlags_NoSavedSettings)) {
+        const auto& h = state_.messages.history();
+        if (h.empty()) ImGui::TextDisabled("(no messages yet)");
+        for (auto it = h.rbegin(); it != h.rend(); ++it) {
+            ImGui::TextDisabled("%6.0f s ago", state_.uiSeconds - it->postedAt);
+            ImGui::SameLine();
+            if (it->error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", it->text.c_str());
+            else ImGui::TextUnformatted(it->text.c_str());
+        }
+    }
+    ImGui::End();
 }
 
 void EditorApp::dialogs() {
@@ -839,19 +973,39 @@ void EditorApp::dialogs() {
 
 void EditorApp::openDialog(DialogPurpose purpose) {
     const std::string mocap = options_.mocapDir.empty() ? "" : options_.mocapDir + "/asf_amc";
+    // Save dialogs start with a name made from the session or the clip, ready to confirm.
+    const EditorDocument& doc = state_.doc;
+    const std::string clipStem = doc.hasClip() && !doc.clip().sourcePath.empty()
+                                     ? std::filesystem::path(doc.clip().sourcePath).stem().string()
+                                     : doc.hasClip() && !doc.clip().name.empty() ? doc.clip().name : "motion";
+    const std::string sessionName =
+        sessionPath_.empty() ? clipStem + ".mgsession" : std::filesystem::path(sessionPath_).filename().string();
+    const std::string frameTag = "_f" + std::to_string(doc.frame() + 1);
     switch (purpose) {
         case DialogPurpose::kClip:
             dialog_.open("Open session, clip (ASF/AMC, BVH) or model", FileDialog::Mode::kOpen,
-                         {".mgsession", ".amc", ".bvh", ".json"}, mocap);
+                         {".mgsession", ".amc", ".bvh", ".json", ".model"}, mocap);
             break;
-        case DialogPurpose::kModel: dialog_.open("Open model", FileDialog::Mode::kOpen, {".json"}, ""); break;
-        case DialogPurpose::kSaveModel: dialog_.open("Save model", FileDialog::Mode::kSave, {".json"}, ""); break;
-        case DialogPurpose::kSaveSession: dialog_.open("Save session", FileDialog::Mode::kSave, {".mgsession"}, ""); break;
-        case DialogPurpose::kExportBvh: dialog_.open("Export motion as BVH", FileDialog::Mode::kSave, {".bvh"}, ""); break;
-        case DialogPurpose::kExportPng: dialog_.open("Export viewport as PNG", FileDialog::Mode::kSave, {".png"}, ""); break;
+        case DialogPurpose::kModel: dialog_.open("Open model", FileDialog::Mode::kOpen, {".json", ".model"}, ""); break;
+        case DialogPurpose::kSaveModel:
+            dialog_.open("Save model", FileDialog::Mode::kSave, {".json", ".model"}, "", clipStem + ".model");
+            break;
+        case DialogPurpose::kSaveSession:
+            dialog_.open("Save session", FileDialog::Mode::kSave, {".mgsession"}, "", sessionName);
+            break;
+        case DialogPurpose::kExportBvh:
+            dialog_.open("Export motion as BVH", FileDialog::Mode::kSave, {".bvh"}, "", clipStem + "_edited.bvh");
+            break;
+        case DialogPurpose::kExportPng:
+            dialog_.open("Export viewport as PNG", FileDialog::Mode::kSave, {".png"}, "", clipStem + frameTag + ".png");
+            break;
         case DialogPurpose::kNone: return;
     }
     purpose_ = purpose;
+}
+
+bool EditorApp::popupOpen() const {
+    return dialog_.isOpen() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
 
 void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
@@ -866,7 +1020,7 @@ void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
 std::string EditorApp::openAny(const std::string& path) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext == ".mgsession") return openSession(path);
-    if (ext == ".json") return openModel(path);
+    if (ext == ".json" || ext == ".model") return openModel(path);
     return openClip(path);
 }
 
@@ -947,16 +1101,18 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     io.DisplayFramebufferScale = ImVec2(1, 1);
     io.DeltaTime = dt > 0.0 ? float(dt) : 1.0f / 60.0f;
     io.MousePos = in.mouseX >= 0 && in.mouseY >= 0 ? ImVec2(in.mouseX, in.mouseY) : ImVec2(-FLT_MAX, -FLT_MAX);
-    for (int b = 0; b < 3; ++b) io.MouseDown[b] = in.mouseDown[b];
+    replay_.next(in);
+    for (int b = 0; b < 3; ++b) io.MouseDown[b] = replay_.buttons()[b];
     io.MouseWheel = in.wheel;
     in.wheel = 0.0f;
-    for (int k = 0; k < key::kCount && k < int(IM_ARRAYSIZE(io.KeysDown)); ++k) io.KeysDown[k] = in.keys[k];
-    io.KeyShift = in.shift();
-    io.KeyCtrl = in.ctrl();
-    io.KeyAlt = in.alt();
+    for (int k = 0; k < key::kCount && k < int(IM_ARRAYSIZE(io.KeysDown)); ++k) io.KeysDown[k] = replay_.keys()[k];
+    io.KeyShift = replay_.shift();
+    io.KeyCtrl = replay_.ctrl();
+    io.KeyAlt = replay_.alt();
     for (char32_t c : in.chars) io.AddInputCharacter(static_cast<unsigned>(c));
     in.chars.clear();
 
+    state_.uiSeconds += io.DeltaTime;
     pollJobs();
     autosaveIfDue();
     TimelinePanel::advance(state_, io.DeltaTime);
@@ -965,9 +1121,11 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     ImGui::NewFrame();
     shortcuts();
     menus();
+    state_.messages.update(state_.uiSeconds, state_.doc.revision());
     layout(width, height);
     dialogs();
     prompts();
+    messagesWindow();
     ImGui::Render();
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -988,8 +1146,6 @@ render::Image EditorApp::capture(int width, int height) const {
 ScriptPlayer::ScriptPlayer(GuiScript script) : script_(std::move(script)) {}
 
 void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<std::string>& screenshots) {
-    for (int k : releaseNext_) in.keys[k] = false;
-    releaseNext_.clear();
     const auto& ev = script_.events();
     auto button = [](const std::string& b) { return b == "left" ? 0 : b == "right" ? 1 : 2; };
     while (next_ < ev.size() && ev[next_].frame <= frame) {
@@ -1014,14 +1170,14 @@ void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<
                 errors_.push_back("line " + std::to_string(e.line) + ": handle '" + a[0] + "' is not on screen");
             }
         } else if (e.verb == "down" || e.verb == "up") {
-            in.mouseDown[button(a[0])] = e.verb == "down";
+            in.setButton(button(a[0]), e.verb == "down");
         } else if (e.verb == "wheel") {
             in.wheel += float(std::atof(a[0].c_str()));
         } else if (e.verb == "key" || e.verb == "keydown" || e.verb == "keyup") {
             const int k = keyFromName(a[0]);
             if (k < 0) continue;
-            in.keys[k] = e.verb != "keyup";
-            if (e.verb == "key") releaseNext_.push_back(k);
+            in.setKey(k, e.verb != "keyup");
+            if (e.verb == "key") in.setKey(k, false);  // a tap: the replay spreads it over two frames
         } else if (e.verb == "action") {
             if (a[0] == "screenshot") {
                 screenshots.push_back(a.size() > 1 ? a[1] : "screenshot.png");

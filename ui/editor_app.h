@@ -8,6 +8,7 @@
 // readout on the right; timeline and status line at the bottom.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,10 @@
 #include "editor_state.h"
 #include "file_dialog.h"
 #include "gui_script.h"
+#include "input_replay.h"
 #include "input_state.h"
 #include "latent_map_panel.h"
+#include "layout_store.h"
 #include "png_capture.h"
 #include "timeline_panel.h"
 #include "viewport_panel.h"
@@ -31,6 +34,11 @@ struct EditorOptions {
     bool offerAutosaveRestore = false;
     double autosaveSeconds = 120.0;  // autosave interval while there are unsaved changes
     bool recentFiles = false;        // read and update the user's recent-files list
+    // HiDPI: the monitor's content scale (2 on a 200 % display): fonts, spacing and panel sizes.
+    float uiScale = 1.0f;
+    // Where the splitters' positions are remembered ("" = not remembered; the interactive
+    // editor uses configDir()/layout.json).
+    std::string layoutFile;
 };
 
 class EditorApp {
@@ -57,6 +65,10 @@ public:
     std::string exportPng(const std::string& path);
     bool dirty() const { return state_.doc.revision() != savedRevision_; }
     bool askingAboutUnsavedChanges() const { return askingUnsaved_; }  // the modal is up
+    const FileDialog& fileDialog() const { return dialog_; }
+    bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
+    bool messagesShown() const { return showMessages_; }   // View > Messages
+    float uiScale() const { return scale_; }
     bool offeringAutosave() const { return !restoreOffer_.empty(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
@@ -98,19 +110,31 @@ private:
     // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
     void guardUnsaved(std::function<void()> action, std::string what);
     void shortcuts();
+    void copyPose();          // the current frame's pose to the pose clipboard
+    std::string pastePose();  // onto the current frame (root position kept), one undo step
     void menus();
     void layout(int width, int height);
+    void layoutPanels(int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
     void dialogs();
+    void messagesWindow();
 
     EditorOptions options_;
     EditorState state_;
     std::unique_ptr<ViewportPanel> viewport_;
+    InputReplay replay_;  // presses and releases, at most one change per button or key per frame
     LatentMapPanel latent_;
     TimelinePanel timeline_;
     FileDialog dialog_;
     DialogPurpose purpose_ = DialogPurpose::kNone;
     DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
+    float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
+    LayoutPrefs prefs_;   // the splitters, as the user left them
+    // A draggable strip between panels; returns the mouse's move along it this frame.
+    float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
     bool showHelp_ = false;
+    bool showMessages_ = false;
+    bool trainingSeen_ = false;  // a training run this editor started has not been reported yet
+    std::optional<Pose> poseClipboard_;
     bool pathTabShown_ = false;
 
     std::string sessionPath_;  // "" until saved or opened
@@ -141,7 +165,6 @@ public:
 private:
     GuiScript script_;
     std::size_t next_ = 0;
-    std::vector<int> releaseNext_;
     std::vector<std::string> errors_;
 };
 

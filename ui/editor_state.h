@@ -1,6 +1,8 @@
 #pragma once
 // What the editor's panels share: the document (core), the background jobs, the camera and the
 // small amount of UI-only state. Panels read and write it; EditorApp owns it.
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -8,6 +10,7 @@
 #include "edit/editor_document.h"
 #include "edit/training_job.h"
 #include "gp/trainer.h"
+#include "message_log.h"
 
 namespace mgp::ui {
 
@@ -18,12 +21,13 @@ struct EditorState {
     gp::TrainOptions trainOptions;
     render::OrbitCamera camera;
     bool cameraNeedsFraming = true;
+    bool cameraRestored = false;  // set with a camera read from a session: following restarts there
     bool followCharacter = true;  // the camera follows the root over the ground
 
     std::string clipLabel;   // shown in the title bar
     std::string modelLabel;  // "trained fas", a file name, ...
-    std::string status;      // the status bar's latest message
-    bool statusIsError = false;
+    MessageLog messages;     // the status line and View > Messages
+    double uiSeconds = 0.0;  // UI time (sum of frame dt): messages expire by it
 
     bool playing = false;
     double playAccumulator = 0.0;  // fractional frames
@@ -31,6 +35,12 @@ struct EditorState {
     int hoveredHandle = -1;  // Effector under the mouse in the viewport, -1 none
     std::optional<Effector> selected;
     int hoveredTrainingRow = -1;  // latent map hover
+
+    // A handle drag: where the handle started (cm), the axis it is held to (-1 free, 0 X, 1 Y,
+    // 2 Z; X/Y/Z keys) and the offset readout the viewport shows ("" when not dragging).
+    Eigen::Vector3d dragStartCm = Eigen::Vector3d::Zero();
+    int dragAxis = -1;
+    std::string dragReadout;
 
     // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
     int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none
@@ -43,14 +53,28 @@ struct EditorState {
     float viewportX = 0.0f, viewportY = 0.0f;
     int viewportWidth = 0, viewportHeight = 0;
 
+    // Where each panel's main controls were last drawn (window pixels) and whether they were
+    // visible (not clipped away): the layout tests read it.
+    struct ControlRect {
+        float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        bool visible = false;
+    };
+    std::map<std::string, ControlRect> controls;
+    // Call right after drawing the item named `name`.
+    void recordControl(const std::string& name);
+
+    // A modal, menu or text field has the keyboard this frame: panels ignore their keys.
+    bool keysBlocked = false;
+
     // Requests the panels raise for EditorApp (file dialogs, training).
     bool requestOpenClip = false, requestOpenModel = false, requestSaveModel = false;
     bool requestTrain = false, requestTrainCompare = false, requestFrameCamera = false;
     bool requestQuit = false;
 
-    void setStatus(std::string s, bool error = false) {
-        status = std::move(s);
-        statusIsError = error;
+    void setStatus(std::string s, bool error = false) { messages.post(std::move(s), error, uiSeconds, doc.revision()); }
+    // A message that stays while `holds` is true, then becomes `after` (or goes when it is "").
+    void setStatusWhile(std::string s, std::function<bool()> holds, std::string after = "") {
+        messages.post(std::move(s), false, uiSeconds, doc.revision(), std::move(holds), std::move(after));
     }
 };
 

@@ -6,22 +6,25 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 namespace fs = std::filesystem;
 
 namespace mgp::ui {
 
-void FileDialog::open(std::string title, Mode mode, std::vector<std::string> extensions, const std::string& startDir) {
+void FileDialog::open(std::string title, Mode mode, std::vector<std::string> extensions, const std::string& startDir,
+                      const std::string& defaultName) {
     title_ = std::move(title);
     mode_ = mode;
     extensions_ = std::move(extensions);
     std::error_code ec;
     const std::string start = !startDir.empty() && fs::is_directory(startDir, ec) ? startDir : fs::current_path(ec).string();
     list(start);
-    path_[0] = '\0';
+    std::snprintf(path_, sizeof path_, "%s", defaultName.c_str());
     error_.clear();
     open_ = true;
     justOpened_ = true;
+    focusName_ = true;
 }
 
 void FileDialog::list(const std::string& dir) {
@@ -80,7 +83,9 @@ std::optional<std::string> FileDialog::draw() {
         ImGui::EndChild();
         if (!go.empty()) list((fs::path(dir_) / go).string());
         ImGui::SetNextItemWidth(-170);
-        const bool enter = ImGui::InputText("##path", path_, sizeof path_, ImGuiInputTextFlags_EnterReturnsTrue);
+        if (std::exchange(focusName_, false)) ImGui::SetKeyboardFocusHere();
+        const bool enter = ImGui::InputText("##path", path_, sizeof path_,
+                                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
         ImGui::SameLine();
         const bool ok = ImGui::Button(mode_ == Mode::kOpen ? "Open" : "Save", ImVec2(75, 0));
         ImGui::SameLine();

@@ -11,12 +11,15 @@ namespace mgp::ui {
 class FileDialog {
 public:
     enum class Mode { kOpen, kSave };
-    // Opens the dialog (shown from the next draw()).
-    void open(std::string title, Mode mode, std::vector<std::string> extensions, const std::string& startDir);
+    // Opens the dialog (shown from the next draw()) with `defaultName` in the name field, which
+    // has the keyboard focus (typing replaces the name).
+    void open(std::string title, Mode mode, std::vector<std::string> extensions, const std::string& startDir,
+              const std::string& defaultName = "");
     // Draws it if open; returns the chosen path once.
     std::optional<std::string> draw();
     bool isOpen() const { return open_; }
     const std::string& title() const { return title_; }
+    const char* typedPath() const { return path_; }
 
 private:
     void list(const std::string& dir);
@@ -26,7 +29,7 @@ private:
     std::string dir_;
     std::vector<std::string> dirs_, files_;
     char path_[1024] = {};
-    bool open_ = false, justOpened_ = false;
+    bool open_ = false, justOpened_ = false, focusName_ = false;
     std::string error_;
 };
 

@@ -33,17 +33,17 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) : title_
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
         const int b = button == GLFW_MOUSE_BUTTON_LEFT ? 0 : button == GLFW_MOUSE_BUTTON_RIGHT ? 1
                       : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2 : -1;
-        if (b >= 0) inputOf(w).mouseDown[b] = action == GLFW_PRESS;
+        inputOf(w).setButton(b, action == GLFW_PRESS);
     });
     glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) { inputOf(w).wheel += float(dy); });
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int k, int, int action, int) {
-        if (k >= 0 && k < key::kCount && action != GLFW_REPEAT) inputOf(w).keys[k] = action == GLFW_PRESS;
+        if (action != GLFW_REPEAT) inputOf(w).setKey(k, action == GLFW_PRESS);
     });
     glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned c) { inputOf(w).chars.push_back(char32_t(c)); });
     glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int focused) {
         if (!focused) {
-            inputOf(w).keys.fill(false);
-            inputOf(w).mouseDown.fill(false);
+            for (int k = 0; k < key::kCount; ++k) inputOf(w).setKey(k, false);
+            for (int b = 0; b < 3; ++b) inputOf(w).setButton(b, false);
         }
     });
 }
@@ -78,6 +78,12 @@ void GlfwWindow::setTitle(const std::string& title) {
     if (title == title_) return;
     title_ = title;
     glfwSetWindowTitle(window_, title.c_str());
+}
+
+float GlfwWindow::contentScale() const {
+    float x = 1.0f, y = 1.0f;
+    glfwGetWindowContentScale(window_, &x, &y);
+    return x > 0.0f ? x : 1.0f;
 }
 
 }  // namespace mgp::ui

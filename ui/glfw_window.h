@@ -30,6 +30,8 @@ public:
     bool shouldClose() const;
     void cancelClose();  // the app asked about unsaved changes and the user stayed
     void setTitle(const std::string& title);
+    // The monitor's content scale (1 on a 96 dpi display, 2 at 200 %), for HiDPI sizes.
+    float contentScale() const;
     InputState& input() { return input_; }
 
 private:

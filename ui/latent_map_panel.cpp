@@ -96,6 +96,7 @@ void LatentMapPanel::draw(EditorState& s) {
 
     ImGui::SetCursorScreenPos(p0);
     ImGui::InvisibleButton("##latentmap", ImVec2(side, side));
+    s.recordControl("latent map");
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "skeleton/pose_layout.h"
+#include "widgets.h"
 
 namespace mgp::ui {
 
@@ -246,34 +247,7 @@ void drawModelPanel(EditorState& s) {
     }
     ImGui::Separator();
     const gp::ModelVersionPtr v = doc.model();
-    if (v) {
-        const gp::GpModel& m = *v->model;
-        ImGui::Text("Model %s", s.modelLabel.c_str());
-        ImGui::SameLine();
-        ImGui::TextDisabled("%s, version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", v->number);
-        ImGui::TextDisabled("N = %d  active M = %zu  D = %d  latent d = %d", m.N(), m.active.size(), m.D(),
-                            m.latentDim());
-        bool adaptive = doc.adaptiveEnabled();
-        if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
-        const int pending = doc.adaptivePending();
-        const std::string st = doc.adaptiveStatus();
-        if (pending > 0) ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
-        else if (!st.empty()) ImGui::TextDisabled("last %s", st.c_str());
-        if (ImGui::CollapsingHeader("Parameters")) drawParameters(m);
-        if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
-        if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
-        const std::vector<AdaptiveHistoryEntry> history = doc.adaptiveHistory();
-        char label[64];
-        std::snprintf(label, sizeof label, "Adaptive updates (%zu)###adaptive", history.size());
-        if (ImGui::CollapsingHeader(label)) drawAdaptiveHistory(history);
-    } else {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("No model: drags use plain IK until one is trained or opened");
-        ImGui::PopStyleColor();
-    }
-    ImGui::Separator();
-
-    // Training.
+    // Training and the model file first: reachable without scrolling, whatever the model shows.
     if (s.training.running()) {
         progressRow(s.training, "main");
     } else {
@@ -283,7 +257,9 @@ void drawModelPanel(EditorState& s) {
         ImGui::SameLine();
         ImGui::RadioButton("SGPLVM", &kind, 1);
         o.kind = kind == 0 ? gp::KernelKind::kFas : gp::KernelKind::kSgplvm;
-        ImGui::PushItemWidth(70);
+        // Four fields and their one-letter labels share the row, however narrow the panel.
+        const float labelW = ImGui::CalcTextSize("M").x + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+        ImGui::PushItemWidth(std::clamp(ImGui::GetContentRegionAvail().x / 4.0f - labelW, 30.0f, 70.0f));
         ImGui::InputInt("M", &o.activeSize, 0);
         ImGui::SameLine();
         ImGui::InputInt("T", &o.outerIterations, 0);
@@ -299,21 +275,57 @@ void drawModelPanel(EditorState& s) {
         o.scgIterations = std::clamp(o.scgIterations, 1, 10000);
         if (!(o.tolerance > 0)) o.tolerance = 0.01;
         ImGui::BeginDisabled(!doc.trainable());
-        if (ImGui::Button("Train  (Ctrl+T)")) s.requestTrain = true;
+        if (ImGui::Button("Train")) s.requestTrain = true;
+        s.recordControl("Train");
         ImGui::EndDisabled();
-        if (!doc.trainable() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip("Training needs an ASF/AMC clip (BVH is view-only for now)");
-        ImGui::SameLine();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)"
+                                              : "Training needs an ASF/AMC clip (BVH is view-only for now)");
+        sameLineIfFits("Open model...");
         if (ImGui::Button("Open model...")) s.requestOpenModel = true;
-        ImGui::SameLine();
+        s.recordControl("Open model");
+        sameLineIfFits("Save model...");
         ImGui::BeginDisabled(!v);
         if (ImGui::Button("Save model...")) s.requestSaveModel = true;
+        s.recordControl("Save model");
         ImGui::EndDisabled();
     }
     const std::string msg = s.training.message();
     if (!msg.empty() && !s.training.running() && msg.rfind("trained", 0) != 0)
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "%s", msg.c_str());
     ImGui::Separator();
+    if (v) {
+        const gp::GpModel& m = *v->model;
+        ImGui::Text("Model %s", s.modelLabel.c_str());
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s, version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", v->number);
+        ImGui::TextDisabled("N = %d  active M = %zu  D = %d  latent d = %d", m.N(), m.active.size(), m.D(),
+                            m.latentDim());
+        bool adaptive = doc.adaptiveEnabled();
+        if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
+        const int pending = doc.adaptivePending();
+        const std::string st = doc.adaptiveStatus();
+        const std::vector<AdaptiveHistoryEntry> history = doc.adaptiveHistory();
+        // The last update's outcome only while it describes the model shown (undo and redo
+        // install other versions).
+        const bool describesThis = !history.empty() && history.back().versionAfter == v->number;
+        if (pending > 0) ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
+        else if (!st.empty() && describesThis) ImGui::TextDisabled("last %s", st.c_str());
+        else if (!history.empty()) ImGui::TextDisabled("version %d (restored by undo/redo)", v->number);
+        if (ImGui::CollapsingHeader("Parameters")) drawParameters(m);
+        if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
+        if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
+        char label[64];
+        std::snprintf(label, sizeof label, "Adaptive updates (%zu)###adaptive", history.size());
+        if (ImGui::CollapsingHeader(label)) drawAdaptiveHistory(history);
+    } else {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("No model: drags use plain IK until one is trained or opened");
+        ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+
+
 
     // Compare ghost.
     int mode = int(doc.compareMode());
@@ -344,6 +356,7 @@ void drawIkReadout(EditorState& s) {
     int radius = s.doc.dragFalloff();
     ImGui::SetNextItemWidth(120.0f);
     if (ImGui::SliderInt("drag falloff (frames)", &radius, 0, 120)) s.doc.setDragFalloff(radius);
+    s.recordControl("drag falloff");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
                           "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "widgets.h"
+
 namespace mgp::ui {
 
 namespace {
@@ -128,7 +130,9 @@ void regenerateRow(EditorState& s) {
         return;
     }
     ImGui::BeginDisabled(!doc.hasModel());
-    if (ImGui::Button("Regenerate")) {
+    const bool clickedRegenerate = ImGui::Button("Regenerate");
+    s.recordControl("Regenerate");
+    if (clickedRegenerate) {
         const std::string err = doc.startRegenerate();
         if (err.empty()) s.setStatus("regenerating the edited span...");
         else reportError(s, err);
@@ -167,7 +171,9 @@ void drawPathPanel(EditorState& s) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (!path) {
-        if (ImGui::Button("Edit path")) {
+        const bool clickedEditpath = ImGui::Button("Edit path");
+        s.recordControl("Edit path");
+        if (clickedEditpath) {
             const std::string err = doc.beginPathEdit(current);
             if (err.empty()) {
                 s.selected = current;
@@ -188,7 +194,7 @@ void drawPathPanel(EditorState& s) {
     ImGui::SameLine();
     if (ImGui::Button("Default keys")) reportError(s, doc.beginPathEdit(doc.pathEdit()->effector));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Four keys 14 frames apart around the current frame; offsets reset");
-    ImGui::SameLine();
+    sameLineIfFits("Regenerate");
     regenerateRow(s);
     if (!doc.pathEdit()) return;
 
@@ -201,13 +207,13 @@ void drawPathPanel(EditorState& s) {
         doc.setPathMode(PathMode::kDisplacement);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A Hermite curve through the keys' offsets, added to the captured path\n(keeps the captured detail)");
-    ImGui::SameLine();
+    sameLineIfFits("Captured path", ImGui::GetFrameHeight());
     ImGui::Checkbox("Captured path", &s.showCapturedPath);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the captured path (grey) beside the edited one (blue)");
 
     ImGui::Checkbox("Before ghost", &s.showBeforeGhost);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("This frame's pose before the last undoable step, in violet");
-    ImGui::SameLine();
+    sameLineIfFits("Add key at current frame");
     if (ImGui::Button("Add key at current frame")) {
         std::vector<int> frames = doc.pathEdit()->keyFrames;
         if (std::find(frames.begin(), frames.end(), doc.frame()) != frames.end()) {

@@ -33,7 +33,9 @@ void TimelinePanel::draw(EditorState& s) {
     if (ImGui::Button("<")) doc.setFrame(doc.frame() - 1);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Previous frame (Left)");
     ImGui::SameLine();
-    if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(56, 0))) s.playing = !s.playing;
+    // Wide enough for "Pause" in any font size (HiDPI), so the row does not jump when it toggles.
+    const float playW = std::max(56.0f, ImGui::CalcTextSize("Pause").x + 2.0f * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(playW, 0))) s.playing = !s.playing;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
     ImGui::SameLine();
     if (ImGui::Button(">")) doc.setFrame(doc.frame() + 1);
@@ -44,14 +46,22 @@ void TimelinePanel::draw(EditorState& s) {
     ImGui::SameLine();
     ImGui::Text("Frame %d / %d   %.2f s / %.2f s   %.0f fps%s", doc.frame() + 1, n, doc.frame() / fps, (n - 1) / fps,
                 fps, doc.isEdited(doc.frame()) ? "   [edited]" : "");
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 170.0f);
-    ImGui::TextDisabled("%zu edited frame%s", doc.edits().size(), doc.edits().size() == 1 ? "" : "s");
+    // The edit count on the right of the row, or left out when the row is too narrow for it
+    // (a small window): never drawn over the frame text.
+    char edited[48];
+    std::snprintf(edited, sizeof edited, "%zu edited frame%s", doc.edits().size(), doc.edits().size() == 1 ? "" : "s");
+    const float editedX = ImGui::GetWindowContentRegionMax().x - std::max(170.0f, ImGui::CalcTextSize(edited).x + 65.0f);
+    if (editedX - ImGui::GetStyle().ItemSpacing.x >= ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x) {
+        ImGui::SameLine(editedX);
+        ImGui::TextDisabled("%s", edited);
+    }
 
     // Track.
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 t0 = ImGui::GetCursorScreenPos();
     const float h = std::max(24.0f, avail.y - 2.0f);
     ImGui::InvisibleButton("##track", ImVec2(avail.x, h));
+    s.recordControl("timeline track");
     const bool active = ImGui::IsItemActive();
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 t1(t0.x + avail.x, t0.y + h);

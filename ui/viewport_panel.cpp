@@ -8,9 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "picking.h"
 #include "scene_builder.h"
+#include "shortcuts.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::ui {
@@ -40,6 +42,37 @@ bool dragPlanePoint(const render::OrbitCamera& camera, float mx, float my, int w
     out = toEigen(hit);
     return true;
 }
+
+// The point of the world axis line through `anchor` nearest the mouse ray (axis 0 X, 1 Y, 2 Z);
+// false when the ray runs along the axis (no usable point).
+bool dragAxisPoint(const render::OrbitCamera& camera, float mx, float my, int width, int height,
+                   const Eigen::Vector3d& anchor, int axis, Eigen::Vector3d& out) {
+    const render::Ray ray = camera.rayFromPixel(mx, my, width, height);
+    const Eigen::Vector3d o = toEigen(ray.origin), d = toEigen(ray.direction).normalized();
+    const Eigen::Vector3d a = Eigen::Vector3d::Unit(axis);
+    const Eigen::Vector3d w = anchor - o;
+    const double ad = a.dot(d), denom = 1.0 - ad * ad;
+    if (denom < 1e-6) return false;
+    const double t = (ad * d.dot(w) - a.dot(w)) / denom;  // along the axis from the anchor
+    out = anchor + t * a;
+    return out.allFinite();
+}
+
+const char* dragAxisLabel(int axis) {
+    return axis == 0 ? "along X" : axis == 1 ? "along Y" : axis == 2 ? "along Z" : "free";
+}
+
+}  // namespace
+
+std::optional<Pose> beforeGhostPose(const EditorState& s) {
+    if (std::optional<Pose> before = s.doc.beforeGhost()) return before;
+    // No undo step for this frame (e.g. a reopened session, whose history is not saved): an
+    // edited frame's "before" is its captured pose.
+    if (s.doc.hasClip() && s.doc.isEdited(s.doc.frame())) return s.doc.capturedPose();
+    return std::nullopt;
+}
+
+namespace {
 
 // The edited path with its keys (what the viewport draws and where keys are picked), or
 // nullopt when no path is being edited.
@@ -180,9 +213,12 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
         if (io.MouseClicked[0]) {
             if (s.hoveredHandle >= 0) {
                 const auto e = static_cast<Effector>(s.hoveredHandle);
+                const Eigen::Vector3d start = doc.effectorPosition(e);
                 const std::string err = doc.beginDrag(e);
                 if (err.empty()) {
                     mode_ = Mode::kDragHandle;
+                    s.dragStartCm = start;
+                    s.dragAxis = -1;
                     s.selected = e;
                     s.playing = false;
                 } else {
@@ -222,11 +258,17 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
             } else if (!io.MouseDown[0]) {
                 doc.endDrag();
                 mode_ = Mode::kNone;
-                s.setStatus(std::string("accepted pose for frame ") + std::to_string(doc.frame() + 1) +
-                            (doc.hasModel() && doc.adaptiveEnabled() ? " (adaptive update queued)" : ""));
+                const std::string accepted = "accepted pose for frame " + std::to_string(doc.frame() + 1);
+                if (doc.adaptivePending() > 0)
+                    s.setStatusWhile(accepted + " (adaptive update running)",
+                                     [d = &doc] { return d->adaptivePending() > 0; }, accepted + " (adaptive update done)");
+                else
+                    s.setStatus(accepted);
             } else if (movedThisFrame_) {
                 Eigen::Vector3d hit;
-                if (dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit)) doc.dragTo(hit, 50);
+                const bool ok = s.dragAxis >= 0 ? dragAxisPoint(s.camera, mx, my, width_, height_, s.dragStartCm, s.dragAxis, hit)
+                                                : dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit);
+                if (ok) doc.dragTo(hit, 50);
             } else {
                 doc.refine(50);  // the user holds still: keep converging
             }
@@ -283,7 +325,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
         scene.figures.push_back(std::move(ghost));
     }
     if (s.showBeforeGhost) {
-        if (const std::optional<Pose> before = doc.beforeGhost()) {
+        if (const std::optional<Pose> before = beforeGhostPose(s)) {
             FkState fk;
             forwardKinematics(doc.clip().skeleton, *before, fk);
             render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
@@ -339,6 +381,7 @@ void ViewportPanel::draw(EditorState& s) {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     // Follow: the camera keeps the character's root (projected on the ground) where it was, so a
     // walk stays in view during playback and scrubbing.
+    if (std::exchange(s.cameraRestored, false)) followValid_ = false;  // the camera is as saved
     if (s.doc.hasClip()) {
         const Eigen::Vector3d root = s.doc.currentPose().rootCm;
         if (s.followCharacter && followValid_ && s.doc.clip().name == followClip_) {
@@ -354,9 +397,12 @@ void ViewportPanel::draw(EditorState& s) {
 
     // Keys that act on the viewport.
     ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantTextInput && !io.KeyCtrl) {
-        if (ImGui::IsKeyPressed('F', false)) frameCharacter(s);
-        if (ImGui::IsKeyPressed('P', false)) {
+    if (!s.keysBlocked) {
+        if (chordPressed('F')) frameCharacter(s);
+        // X, Y or Z during a handle drag: move along that world axis only (again: free).
+        for (int a = 0; a < 3; ++a)
+            if (mode_ == Mode::kDragHandle && chordPressed("XYZ"[a])) s.dragAxis = s.dragAxis == a ? -1 : a;
+        if (chordPressed('P')) {
             const int target = s.hoveredHandle >= 0 ? s.hoveredHandle : (s.selected ? int(*s.selected) : -1);
             if (target >= 0) {
                 const auto e = static_cast<Effector>(target);
@@ -364,12 +410,12 @@ void ViewportPanel::draw(EditorState& s) {
                 s.setStatus(std::string(s.doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
             }
         }
-        if (ImGui::IsKeyPressed(256 /*Escape*/, false) && s.doc.dragging()) {
+        if (chordPressed(256 /*Escape*/) && s.doc.dragging()) {
             s.doc.cancelDrag();
             mode_ = Mode::kNone;
             s.setStatus("drag cancelled");
         }
-        if (ImGui::IsKeyPressed(256 /*Escape*/, false) && mode_ == Mode::kDragKey) {
+        if (chordPressed(256 /*Escape*/) && mode_ == Mode::kDragKey) {
             s.doc.setPathKeyOffset(dragKey_, dragKeyStartOffset_);
             mode_ = Mode::kNone;
             s.setStatus("key drag cancelled");
@@ -416,12 +462,24 @@ void ViewportPanel::draw(EditorState& s) {
     dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(colour_)), origin,
                  ImVec2(origin.x + w, origin.y + h), ImVec2(0, float(rh_) / float(h)), ImVec2(float(rw_) / float(w), 0));
     // Overlay: what the mouse does.
-    const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  Shift: ground plane  |  Esc: cancel"
+    const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
                        : mode_ == Mode::kDragKey  ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
                        : s.doc.pathEdit()
                            ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
                            : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
     dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(230, 232, 236, 200), hint);
+    if (mode_ == Mode::kDragHandle && s.doc.dragging()) {
+        // The offset from where the handle was picked up, in cm, and the axis it is held to.
+        const Eigen::Vector3d d = s.doc.dragTarget() - s.dragStartCm;
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s  dX %+.1f  dY %+.1f  dZ %+.1f cm  |d| %.1f cm", dragAxisLabel(s.dragAxis), d.x(),
+                      d.y(), d.z(), d.norm());
+        s.dragReadout = buf;
+        const float lh = ImGui::GetTextLineHeightWithSpacing();
+        dl->AddText(ImVec2(origin.x + 8, origin.y + 6 + lh), IM_COL32(255, 214, 120, 255), buf);
+    } else {
+        s.dragReadout.clear();
+    }
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",

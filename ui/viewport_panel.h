@@ -7,6 +7,7 @@
 // handles win where they overlap), the captured path and the before ghost (EditorState flags).
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,9 @@ private:
 // Window pixel of a world point (cm) in the viewport as last drawn (EditorState::viewport*);
 // false when behind the camera or outside the viewport. Usable without the panel (scripts, tests).
 bool viewportWindowPosition(const EditorState& state, const Eigen::Vector3d& pointCm, float& x, float& y);
+// The pose the "Before ghost" shows on the current frame: the pose before the last undoable step
+// that touched it, else (no such step) the captured pose of an edited frame; none otherwise.
+std::optional<Pose> beforeGhostPose(const EditorState& state);
 // Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
 bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
 

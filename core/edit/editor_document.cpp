@@ -88,6 +88,25 @@ void EditorDocument::clearEdit(int frame) {
     pushStep(std::move(step));
 }
 
+std::string EditorDocument::pastePose(const Pose& pose) {
+    if (!hasClip()) return "no clip to paste onto";
+    if (regenerating()) return "wait for the regeneration to finish before pasting";
+    if (pose.anglesDeg.size() != currentPose().anglesDeg.size())
+        return "expected a pose of this clip's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) +
+               " bones (copied from another clip?)";
+    cancelDrag();
+    EditRecord rec;
+    rec.pose = pose;
+    rec.pose.rootCm = currentPose().rootCm;
+    EditStep step;
+    step.label = "paste pose on frame " + std::to_string(frame_ + 1);
+    step.before[frame_] = editAt(frame_);
+    step.after[frame_] = rec;
+    applyFrames(step.after);
+    pushStep(std::move(step));
+    return "";
+}
+
 void EditorDocument::restoreEdits(std::map<int, EditRecord> edits) {
     cancelDrag();
     latentDrag_ = false;

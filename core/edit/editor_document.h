@@ -105,6 +105,9 @@ public:
     bool isEdited(int frame) const { return edits_.count(frame) != 0; }
     const std::map<int, EditRecord>& edits() const { return edits_; }
     void clearEdit(int frame);  // one undo step
+    // Pastes `pose` (copied from any frame of this clip) onto the current frame as one undo step;
+    // the current frame's root position is kept so the character does not jump. "" or why not.
+    std::string pastePose(const Pose& pose);
     // Replaces every edit at once (loading a session); clears the undo history.
     void restoreEdits(std::map<int, EditRecord> edits);
     Eigen::Vector3d effectorPosition(Effector e) const;  // FK of the current pose (cm)

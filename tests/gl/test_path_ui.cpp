@@ -277,7 +277,7 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     CHECK(s.showBeforeGhost);
     p.click("Regenerate");  // disabled without a model: a click does nothing
     CHECK_FALSE(doc.regenerating());
-    CHECK(s.status.find("regenerating") == std::string::npos);
+    CHECK(s.messages.latestText().find("regenerating") == std::string::npos);
     doc.setFrame(95);
     REQUIRE(p.click("Add key at current frame"));
     CHECK(doc.pathEdit()->keyFrames == std::vector<int>{88, 95, 102, 116, 130});

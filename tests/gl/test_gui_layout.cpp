@@ -1,0 +1,128 @@
+// The editor's layout in a small window (label `gl`, offscreen): at 1024×600 every panel's main
+// controls are drawn wholly inside what their window shows, with no scrolling: Train, Open and
+// Save model; the latent map; the timeline track; the IK readout's falloff; the Path tab's
+// Regenerate. Read from the rectangles the panels record (EditorState::controls).
+#include <doctest/doctest.h>
+#include <imgui.h>
+
+#include <filesystem>
+
+#include "editor_app.h"
+#include "editor_harness.h"
+
+using namespace mgp;
+
+namespace {
+
+void frames(test::Harness& h, int w, int hgt, int n) {
+    for (int i = 0; i < n; ++i) h.app->frame(h.input, 1.0 / 60.0, w, hgt);
+}
+
+void checkControl(const ui::EditorState& s, const char* name, int w, int h) {
+    INFO("control " << name);
+    const auto it = s.controls.find(name);
+    REQUIRE(it != s.controls.end());
+    const ui::EditorState::ControlRect& r = it->second;
+    INFO("rect " << r.x0 << "," << r.y0 << " .. " << r.x1 << "," << r.y1);
+    CHECK(r.visible);
+    CHECK(r.x0 >= 0.0f);
+    CHECK(r.y0 >= 0.0f);
+    CHECK(r.x1 <= float(w));
+    CHECK(r.y1 <= float(h));
+    CHECK(r.x1 - r.x0 >= 8.0f);
+    CHECK(r.y1 - r.y0 >= 8.0f);
+}
+
+}  // namespace
+
+TEST_CASE("gui layout: at 1024x600 every panel's main controls are visible without scrolling") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    constexpr int W = 1024, H = 600;
+    ui::EditorState& s = h->app->state();
+    s.controls.clear();
+    frames(*h, W, H, 3);
+    for (const char* name : {"Train", "Open model", "Save model", "latent map", "timeline track", "drag falloff"})
+        checkControl(s, name, W, H);
+    const auto& map = s.controls.at("latent map");
+    CHECK(map.x1 - map.x0 >= 110.0f);  // still a usable map
+    // The Path tab comes forward with a path edit: Regenerate in view.
+    REQUIRE(s.doc.beginPathEdit(Effector::kRFoot) == "");
+    frames(*h, W, H, 3);
+    checkControl(s, "Regenerate", W, H);
+}
+
+TEST_CASE("gui layout: at 1280x800 the panels keep their sizes (the goldens' layout)") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    frames(*h, 1280, 800, 2);
+    CHECK(s.viewportWidth == 1280 - 380);
+    const auto& train = s.controls.at("Train");
+    CHECK(train.visible);
+    CHECK(train.x0 >= 900.0f);
+}
+
+TEST_CASE("gui layout: a 2x content scale (HiDPI) doubles fonts and panel sizes and keeps the controls in view") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    frames(*h, 1280, 800, 2);
+    const float frameH1 = ImGui::GetFrameHeight();
+    const float trainH1 = h->app->state().controls.at("Train").y1 - h->app->state().controls.at("Train").y0;
+    ui::EditorOptions o;
+    o.uiScale = 2.0f;
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    CHECK(h->app->uiScale() == 2.0f);
+    frames(*h, 1280, 800, 3);
+    const ui::EditorState& s = h->app->state();
+    CHECK(ImGui::GetFrameHeight() == doctest::Approx(2.0f * frameH1).epsilon(0.05));
+    const auto& train = s.controls.at("Train");
+    CHECK(train.y1 - train.y0 == doctest::Approx(2.0f * trainH1).epsilon(0.05));
+    CHECK(s.viewportWidth < 1280 - 380);  // the right column grew
+    for (const char* name : {"Train", "Open model", "timeline track", "drag falloff"}) checkControl(s, name, 1280, 800);
+}
+
+TEST_CASE("gui layout: dragging the splitters resizes the panels, and the next editor remembers it") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string dir = std::string(MOTIONGP_GL_OUT_DIR) + "/layout_prefs";
+    const std::string file = dir + "/layout.json";
+    std::filesystem::remove_all(dir);
+    ui::EditorOptions o;
+    o.layoutFile = file;
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    frames(*h, 1280, 800, 3);
+    ui::EditorState& s = h->app->state();
+    REQUIRE(s.viewportWidth == 900);
+    const int viewportH = s.viewportHeight;
+
+    // Right column: grab the boundary at x = 900 and pull it 100 px to the left.
+    auto drag = [&](float x, float y, float dx, float dy) {
+        h->input.mouseX = x;
+        h->input.mouseY = y;
+        frames(*h, 1280, 800, 2);
+        h->input.setButton(0, true);
+        frames(*h, 1280, 800, 2);
+        for (int i = 0; i < 4; ++i) {
+            h->input.mouseX += dx / 4;
+            h->input.mouseY += dy / 4;
+            frames(*h, 1280, 800, 1);
+        }
+        h->input.setButton(0, false);
+        frames(*h, 1280, 800, 3);
+    };
+    drag(900.0f, 400.0f, -100.0f, 0.0f);
+    CHECK(s.viewportWidth == 800);
+    // Timeline: its top edge up by 60 px.
+    drag(400.0f, float(800 - 104), 0.0f, -60.0f);
+    CHECK(s.viewportHeight == viewportH - 60);
+    REQUIRE(std::filesystem::exists(file));
+
+    h->restartApp(o);
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    frames(*h, 1280, 800, 3);
+    CHECK(h->app->state().viewportWidth == 800);
+    CHECK(h->app->state().viewportHeight == viewportH - 60);
+}
