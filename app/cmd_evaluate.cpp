@@ -90,7 +90,8 @@ const CommandRegistration reg(
                 const eval::HeldOutReport h = eval::heldOutReconstruction(r.model, split.heldFrames);
                 j["heldout"] = {{"every", o->every}, {"held_out", h.heldOut}, {"trained", h.trained},
                                 {"outer_iterations", opt.outerIterations}, {"rms_deg", h.rmsDeg},
-                                {"nearest_frame_rms_deg", h.nearestRmsDeg}, {"train_seconds", trainSeconds}};
+                                {"nearest_frame_rms_deg", h.nearestRmsDeg}, {"inbetween_rms_deg", h.timeRmsDeg},
+                                {"inbetween_frames", h.timeCount}, {"train_seconds", trainSeconds}};
             } else {
                 j["heldout"] = nullptr;
             }
@@ -108,7 +109,8 @@ const CommandRegistration reg(
             if (j["heldout"].is_object())
                 std::cout << "  held-out reconstruction (every " << o->every << "th frame): RMS "
                           << j["heldout"]["rms_deg"] << " deg, nearest training frame "
-                          << j["heldout"]["nearest_frame_rms_deg"] << " deg\n";
+                          << j["heldout"]["nearest_frame_rms_deg"] << " deg, in-betweened from time neighbours "
+                          << j["heldout"]["inbetween_rms_deg"] << " deg\n";
             return 0;
         };
     });

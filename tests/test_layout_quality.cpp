@@ -3,6 +3,7 @@
 // reconstruction, and training with the smooth prior (docs/maths.md §19) on a real clip.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -112,6 +113,32 @@ TEST_CASE("layout quality: held-out reconstruction of a training frame is close,
     CHECK(r.heldOut == 2);
     CHECK(r.nearestRmsDeg < 1e-9);  // the frame's own row (fullPose rounding only)
     CHECK(r.rmsDeg < 5.0);
+}
+
+TEST_CASE("layout quality: a frame left out of the model is placed, reconstructed and in-betweened") {
+    // The committed model minus one inactive row: that frame is then held out, with training
+    // frames just before and after it.
+    gp::GpModel m = *mgp::test::walkModel35()->model;
+    int r = 150;
+    while (std::find(m.active.begin(), m.active.end(), r) != m.active.end()) ++r;
+    const int frame = m.trainingFrames[static_cast<std::size_t>(r)];
+    auto dropRow = [r](Eigen::MatrixXd& A) {
+        Eigen::MatrixXd B(A.rows() - 1, A.cols());
+        B << A.topRows(r), A.bottomRows(A.rows() - r - 1);
+        A = B;
+    };
+    dropRow(m.X);
+    dropRow(m.Y);
+    m.trainingFrames.erase(m.trainingFrames.begin() + r);
+    for (int& i : m.active)
+        if (i > r) --i;
+    const eval::HeldOutReport h = eval::heldOutReconstruction(m, {frame});
+    CHECK(h.heldOut == 1);
+    CHECK(h.timeCount == 1);
+    CHECK(h.nearestRmsDeg > 0.0);
+    CHECK(h.rmsDeg < 5.0);
+    CHECK(std::isfinite(h.timeRmsDeg));
+    CHECK(h.timeRmsDeg < 10.0);
 }
 
 TEST_CASE("smooth prior: training on the walk makes the latent path continuous and is saved") {

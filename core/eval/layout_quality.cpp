@@ -177,7 +177,16 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     constexpr int kFirst = 3, kCount = kPoseDofs - kFirst;
     Eigen::MatrixXd trainFull(model.N(), kPoseDofs);
     for (int i = 0; i < model.N(); ++i) trainFull.row(i) = model.fullPose(model.Y.row(i).transpose()).transpose();
-    double sse = 0.0, sseNearest = 0.0;
+    double sse = 0.0, sseNearest = 0.0, sseTime = 0.0;
+    // Training rows by frame, and the median frame gap (the segmentation of the temporal prior).
+    std::vector<std::pair<int, int>> byFrame;
+    for (int i = 0; i < model.N() && i < static_cast<int>(model.trainingFrames.size()); ++i)
+        byFrame.emplace_back(model.trainingFrames[static_cast<std::size_t>(i)], i);
+    std::sort(byFrame.begin(), byFrame.end());
+    std::vector<double> gaps;
+    for (std::size_t k = 1; k < byFrame.size(); ++k)
+        if (byFrame[k].first > byFrame[k - 1].first) gaps.push_back(byFrame[k].first - byFrame[k - 1].first);
+    const double hbar = gaps.empty() ? 1.0 : percentile(gaps, 0.5);
     gp::ScgOptions so;
     so.maxIterations = iterations;
     for (int f : heldFrames) {
@@ -213,11 +222,26 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
         pm.predict(bestX, mean, var);
         const Eigen::VectorXd pred = model.fullPose(mean);
         sse += (pred.tail(kCount) - truth.tail(kCount)).squaredNorm();
+        // In-betweening from the time neighbours (within 3 median gaps on each side).
+        const auto after = std::upper_bound(byFrame.begin(), byFrame.end(), std::make_pair(f, model.N()));
+        if (after != byFrame.end() && after != byFrame.begin()) {
+            const auto before = std::prev(after);
+            const int f0 = before->first, f1 = after->first;
+            if (f0 < f && f < f1 && f - f0 <= 3.0 * hbar && f1 - f <= 3.0 * hbar) {
+                const double u = static_cast<double>(f - f0) / (f1 - f0);
+                const Eigen::VectorXd xt =
+                    (1.0 - u) * model.X.row(before->second).transpose() + u * model.X.row(after->second).transpose();
+                pm.predict(xt, mean, var);
+                sseTime += (model.fullPose(mean).tail(kCount) - truth.tail(kCount)).squaredNorm();
+                ++rep.timeCount;
+            }
+        }
     }
     const double count = static_cast<double>(heldFrames.size()) * kCount;
     rep.heldOut = static_cast<int>(heldFrames.size());
     rep.rmsDeg = std::sqrt(sse / count);
     rep.nearestRmsDeg = std::sqrt(sseNearest / count);
+    rep.timeRmsDeg = rep.timeCount > 0 ? std::sqrt(sseTime / (static_cast<double>(rep.timeCount) * kCount)) : 0.0;
     return rep;
 }
 

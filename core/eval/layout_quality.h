@@ -8,7 +8,8 @@
 //      by minimising L_IK(x, y) over x from its pose y (best of the 3 nearest training frames'
 //      latent points as starts), reconstructs f(x) and reports the RMS error over the 44 non-root
 //      DOFs in degrees, next to the nearest-training-frame baseline (the training pose nearest
-//      in that same RMS);
+//      in that same RMS); and the in-betweening error of x interpolated in time from the two
+//      neighbouring training frames' latent points (no pose used: what a continuous layout buys);
 //  (c) the full-GP yardstick: the log marginal likelihood of all N training rows (columns
 //      standardised) under a full GP on the given latent points with an RBF + bias + white kernel
 //      whose four hyperparameters are re-fitted (SCG on their logs), per value (÷ N·D).
@@ -61,6 +62,11 @@ struct HeldOutReport {
     int heldOut = 0, trained = 0;
     double rmsDeg = 0.0;         // f(x*) against the true pose, non-root DOFs
     double nearestRmsDeg = 0.0;  // nearest training pose against the true pose
+    // In-betweening: x placed by linear interpolation in time between the latent points of the
+    // training frames just before and after (frames with both, in one segment: `timeCount`), no
+    // pose information used; f(x) against the true pose.
+    double timeRmsDeg = 0.0;
+    int timeCount = 0;
 };
 // `model` was trained without heldFrames; its clip supplies the true poses.
 HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames,

@@ -47,9 +47,11 @@ struct TrainOptions {
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
     // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
     bool paperLiteral = false;
-    // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model;
-    // kSmooth adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8, λ = priorWeight.
-    LatentPrior prior = LatentPrior::kNone;
+    // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model (table1,
+    // table2 and the committed fixtures use it); kSmooth, the default (README "Training
+    // defaults" says why), adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8,
+    // λ = priorWeight.
+    LatentPrior prior = LatentPrior::kSmooth;
     double priorWeight = kDefaultSmoothWeight;
 
     // Throws std::invalid_argument naming the first bad field.
