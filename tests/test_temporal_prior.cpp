@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "gp/active_step.h"
 #include "gp/temporal_prior.h"
 
 using namespace mgp::gp;
@@ -118,4 +119,30 @@ TEST_CASE("temporal prior: one point's part has the whole prior's differences an
             CHECK(g[k] == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
         }
     }
+}
+
+TEST_CASE("temporal prior: the Step-6 term on the active rows, gradient by central differences") {
+    const std::vector<int> frames{0, 1, 2, 3, 4, 5, 6, 7, 8};
+    const TemporalPrior p = TemporalPrior::secondDifference(frames, 2.5);
+    const Eigen::MatrixXd X = wavy(9);
+    const std::vector<int> active{7, 1, 4, 5};  // any order, inactive rows in between
+    const LatentTerm term = priorOnActive(p, X, active);
+    Eigen::MatrixXd XI(4, 2);
+    XI << 0.3, -0.2, 1.1, 0.4, -0.7, 0.9, 0.05, -1.3;
+    Eigen::MatrixXd g, scratch;
+    const double v = term(XI, g);
+    // The value is the whole prior with those rows replaced.
+    Eigen::MatrixXd full = X;
+    for (std::size_t i = 0; i < active.size(); ++i) full.row(active[i]) = XI.row(static_cast<Eigen::Index>(i));
+    CHECK(v == doctest::Approx(p.value(full)).epsilon(1e-14));
+    REQUIRE(g.rows() == 4);
+    const double h = 1e-6;
+    for (Eigen::Index i = 0; i < XI.rows(); ++i)
+        for (Eigen::Index k = 0; k < XI.cols(); ++k) {
+            Eigen::MatrixXd Xp = XI, Xm = XI;
+            Xp(i, k) += h;
+            Xm(i, k) -= h;
+            const double fd = (term(Xp, scratch) - term(Xm, scratch)) / (2 * h);
+            CHECK(g(i, k) == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
+        }
 }

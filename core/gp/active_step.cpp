@@ -7,6 +7,18 @@
 
 namespace mgp::gp {
 
+LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, const std::vector<int>& active) {
+    return [prior, X, active](const Eigen::MatrixXd& XI, Eigen::MatrixXd& grad) {
+        Eigen::MatrixXd full = X;
+        for (std::size_t i = 0; i < active.size(); ++i) full.row(active[i]) = XI.row(static_cast<Eigen::Index>(i));
+        Eigen::MatrixXd g;
+        const double v = prior.value(full, &g);
+        grad.resize(static_cast<Eigen::Index>(active.size()), X.cols());
+        for (std::size_t i = 0; i < active.size(); ++i) grad.row(static_cast<Eigen::Index>(i)) = g.row(active[i]);
+        return v;
+    };
+}
+
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0, const Eigen::MatrixXd& XI0,
                                     const Eigen::MatrixXd& Yhat, const ScgOptions& options,
                                     const GpObjectiveOptions& objective, const LatentTerm& extra) {

@@ -145,16 +145,8 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
     if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
-    LatentTerm extra;
-    if (!prior_.empty())
-        extra = [this, &active](const Eigen::MatrixXd& XI, Eigen::MatrixXd& grad) {
-            Eigen::MatrixXd full = X_;  // the inactive rows stay where they are during Step 6
-            for (std::size_t i = 0; i < active.size(); ++i) full.row(active[i]) = XI.row(static_cast<Eigen::Index>(i));
-            Eigen::MatrixXd g;
-            const double v = prior_.value(full, &g);
-            grad = rowsOf(g, active);
-            return v;
-        };
+    // The inactive rows stay where they are during Step 6.
+    const LatentTerm extra = prior_.empty() ? LatentTerm() : priorOnActive(prior_, X_, active);
     const ActiveStepResult step =
         optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
     psi_ = step.psi;
