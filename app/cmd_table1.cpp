@@ -193,6 +193,7 @@ const CommandRegistration reg(
                 row["T_report"] = T;
                 for (gp::KernelKind kind : {gp::KernelKind::kFas, gp::KernelKind::kSgplvm}) {
                     gp::TrainOptions opt;
+                    opt.prior = gp::LatentPrior::kNone;  // the paper's model, whatever the editor's default
                     opt.kind = kind;
                     opt.activeSize = o->active;
                     opt.outerIterations = T;

@@ -71,6 +71,7 @@ Clip buildClip(const std::string& dir, const std::vector<Span>& spans, std::map<
 
 gp::ModelVersionPtr trainOn(const Clip& clip, gp::KernelKind kind, int active, int iters) {
     gp::TrainOptions options;
+    options.prior = gp::LatentPrior::kNone;  // the paper's model, whatever the editor's default
     options.kind = kind;
     options.activeSize = active;
     options.outerIterations = iters;

@@ -1,5 +1,5 @@
 // `motiongp train CLIP [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
-//   [--scg-iters S] [--tol C] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
+//   [--scg-iters S] [--tol C] [--prior smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
 // Learns a FASGPLVM (default) or SGPLVM pose model (ALGORITHM.md §7) and writes the model file
 // (core/gp/model_file.h). Progress goes to stderr; --json prints one object on stdout. Timings
 // are printed, never stored in the model. Ctrl-C cancels cleanly (no model is written).
@@ -73,7 +73,8 @@ void printBar(int iter, int total, double L, double elapsed, bool tty) {
 const CommandRegistration reg(
     "train", "Learn a FASGPLVM or SGPLVM pose model from an ASF/AMC clip", [](CLI::App& sub) -> CommandRunner {
         struct Opts {
-            std::string clip, skel, model = "fas", frames, out;
+            std::string clip, skel, model = "fas", frames, out, prior = gp::latentPriorName(gp::TrainOptions{}.prior);
+            double priorWeight = gp::kDefaultSmoothWeight;
             int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
             double tol = 0.01;
             bool json = false;
@@ -86,6 +87,10 @@ const CommandRegistration reg(
         sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default 100)");
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
+        sub.add_option("--prior", o->prior,
+                       std::string("Temporal prior on the latent points: smooth (second differences over time) or none "
+                                   "(the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
+        sub.add_option("--prior-weight", o->priorWeight, "Weight λ of the smooth prior (default 100)");
         sub.add_option("--frames", o->frames, "Keep clip frames A..B (from 1, inclusive), e.g. 1:180");
         sub.add_option("--step", o->step, "Then keep every K-th frame (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
@@ -100,6 +105,11 @@ const CommandRegistration reg(
             if (o->scgIters < 1) throw UsageError("expected --scg-iters ≥ 1, found " + std::to_string(o->scgIters));
             if (o->step < 1) throw UsageError("expected --step ≥ 1, found " + std::to_string(o->step));
             if (!(o->tol > 0.0) || !std::isfinite(o->tol)) throw UsageError("expected --tol > 0, found " + std::to_string(o->tol));
+            gp::LatentPrior prior;
+            if (!gp::parseLatentPrior(o->prior, prior))
+                throw UsageError("expected --prior smooth or none, found '" + o->prior + "'");
+            if (!(o->priorWeight >= 0.0) || !std::isfinite(o->priorWeight))
+                throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
 
             Clip clip = loadClip(o->clip, o->skel);
@@ -126,13 +136,15 @@ const CommandRegistration reg(
             opt.scgIterations = o->scgIters;
             opt.tolerance = o->tol;
             opt.threads = o->threads;
+            opt.prior = prior;
+            opt.priorWeight = o->priorWeight;
 
             const bool tty = ::isatty(2) != 0;
             const auto t0 = std::chrono::steady_clock::now();
             auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
             std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clip.name << ", N = " << frames.size()
                       << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(frames.size()))
-                      << ", T = " << o->iters << "\n";
+                      << ", T = " << o->iters << ", prior " << gp::latentPriorName(prior) << "\n";
             gCancel.store(false);
             auto previous = std::signal(SIGINT, onSigint);
             gp::TrainResult res = gp::train(data, opt, [&](const gp::IterationLog& e) {
@@ -158,6 +170,8 @@ const CommandRegistration reg(
             const gp::Kernel k = model.kernel();
             nlohmann::json j;
             j["model"] = gp::kernelKindName(kind);
+            j["prior"] = gp::latentPriorName(prior);
+            if (prior != gp::LatentPrior::kNone) j["prior_weight"] = o->priorWeight;
             j["N"] = model.N();
             j["D"] = model.D();
             j["M"] = static_cast<int>(model.active.size());

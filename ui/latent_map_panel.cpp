@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "eval/layout_quality.h"
+
 namespace mgp::ui {
 
 namespace {
@@ -106,6 +108,20 @@ void LatentMapPanel::draw(EditorState& s) {
     else
         dl->AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
 
+    // The training frames joined in time order (thin line under the dots): a continuous layout
+    // is one curve per motion, a fragmented one shows long jumps across the map.
+    if (pairsModel_.lock() != v->model) {
+        pairs_ = model.trainingFrames.size() == static_cast<std::size_t>(model.N())
+                     ? eval::timeConsecutivePairs(model.trainingFrames)
+                     : std::vector<std::pair<int, int>>{};
+        pairsModel_ = v->model;
+    }
+    if (showTrajectory_)
+        for (const auto& [a, b] : pairs_)
+            dl->AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
+                        toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
+                        IM_COL32(235, 235, 240, 120), 1.0f);
+
     // Training points coloured by frame, active set ringed.
     const int frames = std::max(1, doc.frameCount() - 1);
     int nearest = -1;
@@ -203,8 +219,11 @@ void LatentMapPanel::draw(EditorState& s) {
     const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
     dl->AddText(ImVec2(capX, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
     ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 4.0f + 2.0f * lineH));
+    ImGui::Checkbox("time path", &showTrajectory_);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
+    ImGui::SameLine();
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
-    else ImGui::TextDisabled("bright: confident   dots: frames   rings: active set");
+    else ImGui::TextDisabled("bright: confident  rings: active");
 }
 
 }  // namespace mgp::ui

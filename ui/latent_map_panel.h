@@ -2,10 +2,15 @@
 // The latent map: the 2-D latent space with σ²(x) as one colour texture (computed off the UI
 // thread after every model change), a colour bar saying what the colour means, the training
 // points coloured by frame, the active set ringed, the current latent point and its path during a
-// drag. Hover names the nearest training frame; clicking a training point jumps the timeline
+// drag, and (toggle "time path", on by default) each clip's training frames joined in time order by
+// a thin line, so fragments and loops of the layout show. Hover names the nearest training frame; clicking a training point jumps the timeline
 // there; dragging the current point poses the character from the model mean f(x).
 #include "editor_state.h"
 #include "latent_map_image.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
 
 namespace mgp::ui {
 
@@ -30,6 +35,10 @@ private:
     const void* requestedModel_ = nullptr;
     int requestedVersion_ = -1;
     bool dragging_ = false;
+    bool showTrajectory_ = true;
+    // Time-consecutive training rows of the drawn model (recomputed when the model changes).
+    std::weak_ptr<const gp::GpModel> pairsModel_;
+    std::vector<std::pair<int, int>> pairs_;
 };
 
 }  // namespace mgp::ui

@@ -1,13 +1,27 @@
 #include "gp/active_step.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 
 namespace mgp::gp {
 
+LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, const std::vector<int>& active) {
+    return [prior, X, active](const Eigen::MatrixXd& XI, Eigen::MatrixXd& grad) {
+        Eigen::MatrixXd full = X;
+        for (std::size_t i = 0; i < active.size(); ++i) full.row(active[i]) = XI.row(static_cast<Eigen::Index>(i));
+        Eigen::MatrixXd g;
+        const double v = prior.value(full, &g);
+        grad.resize(static_cast<Eigen::Index>(active.size()), X.cols());
+        for (std::size_t i = 0; i < active.size(); ++i) grad.row(static_cast<Eigen::Index>(i)) = g.row(active[i]);
+        return v;
+    };
+}
+
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0, const Eigen::MatrixXd& XI0,
                                     const Eigen::MatrixXd& Yhat, const ScgOptions& options,
-                                    const GpObjectiveOptions& objective) {
+                                    const GpObjectiveOptions& objective, const LatentTerm& extra) {
     const int m = static_cast<int>(XI0.rows()), d = static_cast<int>(XI0.cols());
     const int p = paramCount(kind);
     ActiveStepResult out;
@@ -15,8 +29,19 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
         Eigen::VectorXd psi;
         Eigen::MatrixXd XI;
         unpackParams(z, p, m, d, psi, XI);
-        const GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
+        GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
         out.trialJitterMax = std::max(out.trialJitterMax, ev.jitter);
+        if (extra && ev.ok) {
+            Eigen::MatrixXd gx;
+            const double v = extra(XI, gx);
+            ev.value += v;
+            ev.gradX += gx;
+            if (!std::isfinite(ev.value) || !ev.gradX.allFinite()) {
+                ev.value = std::numeric_limits<double>::infinity();
+                ev.gradPsi.setZero();
+                ev.gradX.setZero();
+            }
+        }
         g = packParams(ev.gradPsi, ev.gradX);
         return ev.value;
     };
@@ -27,7 +52,12 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     out.iterations = r.iterations;
     unpackParams(r.x, p, m, d, out.psi, out.XI);
     out.psi = out.psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
-    const GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat, objective);
+    GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat, objective);
+    if (extra && fin.ok) {
+        Eigen::MatrixXd gx;
+        fin.value += extra(out.XI, gx);
+        fin.gradX += gx;
+    }
     out.jitter = fin.jitter;
     out.trialJitterMax = std::max(out.trialJitterMax, fin.jitter);
     out.after = fin.value;

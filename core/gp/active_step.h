@@ -3,10 +3,13 @@
 // L_GP with W profiled out under the gauge (§4.4), from the given warm start. Used by the
 // trainer's outer loop and by the adaptive update (§5.3).
 #include <Eigen/Core>
+#include <functional>
+#include <vector>
 
 #include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/scg.h"
+#include "gp/temporal_prior.h"
 
 namespace mgp::gp {
 
@@ -23,8 +26,18 @@ struct ActiveStepResult {
     bool ok = false;         // the end point evaluated finitely
 };
 
+// An extra term on the active latent points (the temporal prior, docs/maths.md §19): returns its
+// value at X_I and writes ∂/∂X_I into grad (M×d, sized by the callee).
+using LatentTerm = std::function<double(const Eigen::MatrixXd& XI, Eigen::MatrixXd& grad)>;
+
+// The temporal prior as a term on the active rows (Step 6, docs/maths.md §19): L_smooth of X
+// with rows `active` replaced by X_I and every other row held as in X; the gradient is the
+// rows `active` of ∂L_smooth/∂X. X and active are copied into the term.
+LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, const std::vector<int>& active);
+
+// With `extra` set, the minimised function is L_GP + extra(X_I) (before/after include it).
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI,
                                     const Eigen::MatrixXd& Yhat, const ScgOptions& options,
-                                    const GpObjectiveOptions& objective = {});
+                                    const GpObjectiveOptions& objective = {}, const LatentTerm& extra = nullptr);
 
 }  // namespace mgp::gp

@@ -12,6 +12,7 @@
 
 #include "gp/kernel.h"
 #include "gp/point_objective.h"
+#include "gp/temporal_prior.h"
 #include "skeleton/clip.h"
 
 namespace mgp::gp {
@@ -25,6 +26,8 @@ struct TrainingSettings {
     double tolerance = 0.01;     // C of Step 9
     int frameFirst = 1, frameLast = 0;  // --frames A:B as given (1-based; 0 = to the end)
     int frameStep = 1;                  // --step K
+    LatentPrior prior = LatentPrior::kNone;  // temporal prior (docs/maths.md §19)
+    double priorWeight = 0.0;                // its λ (0 with kNone)
 };
 
 struct GpModel {

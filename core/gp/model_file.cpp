@@ -108,6 +108,9 @@ std::string modelToJsonText(const GpModel& m) {
                      {"tolerance", s.tolerance}, {"frame_first", s.frameFirst}, {"frame_last", s.frameLast},
                      {"frame_step", s.frameStep}, {"iterations", m.iterations}, {"converged", m.converged},
                      {"objective_history", m.objectiveHistory}};
+    // Only written for a prior other than none, so the paper model's file is unchanged.
+    if (s.prior != LatentPrior::kNone)
+        j["training"]["prior"] = {{"kind", latentPriorName(s.prior)}, {"weight", s.priorWeight}};
     j["source"] = {{"file", m.sourceFile}, {"sha256", m.sourceSha256}};
     j["clip"] = clipToJson(m.clip);
     // Y is not stored: a row is the clip's pose at its training frame. A row an adaptive update
@@ -215,6 +218,16 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.settings.frameStep = needInt(t, "frame_step", file);
         m.iterations = needInt(t, "iterations", file);
         m.converged = need(t, "converged", file).get<bool>();
+        if (t.contains("prior")) {  // absent: the paper's model (no temporal prior)
+            const json& pr = t["prior"];
+            if (!pr.is_object() || !pr.contains("kind") || !pr["kind"].is_string() ||
+                !parseLatentPrior(pr["kind"].get<std::string>(), m.settings.prior))
+                throwParseError(file, 0, "training.prior.kind \"none\" or \"smooth\"", pr.dump());
+            if (!pr.contains("weight") || !pr["weight"].is_number() || !std::isfinite(pr["weight"].get<double>()) ||
+                pr["weight"].get<double>() < 0.0)
+                throwParseError(file, 0, "a finite training.prior.weight ≥ 0", pr.dump());
+            m.settings.priorWeight = pr["weight"].get<double>();
+        }
         if (t.contains("objective_history")) {  // absent in files written before it existed
             const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");
             m.objectiveHistory.assign(h.data(), h.data() + h.size());

@@ -135,11 +135,12 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     return value;
 }
 
-void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
-                            Eigen::MatrixXd& X, const ScgOptions& options, int threads,
-                            const std::atomic<bool>* cancel) {
+namespace {
+
+void optimizePass(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+                  Eigen::MatrixXd& X, const ScgOptions& options, int threads, const std::atomic<bool>* cancel,
+                  const TemporalPrior* prior) {
     if (points.empty()) return;
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min<int>(threads, static_cast<int>(points.size()));
     std::vector<Eigen::VectorXd> results(points.size());
     std::atomic<std::size_t> next{0};
@@ -151,8 +152,14 @@ void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, c
                 continue;
             }
             const Eigen::VectorXd y = Y.row(i).transpose();
+            Eigen::VectorXd gp;
             const ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-                return model.evaluate(x, y, &g, nullptr);
+                double v = model.evaluate(x, y, &g, nullptr);
+                if (prior) {
+                    v += prior->pointValue(X, i, x, &gp);
+                    g += gp;
+                }
+                return v;
             };
             const ScgResult r = scgMinimize(fg, X.row(i).transpose(), options);
             results[t] = r.x.allFinite() ? r.x : Eigen::VectorXd(X.row(i).transpose());
@@ -163,6 +170,28 @@ void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, c
     worker();
     for (auto& th : pool) th.join();
     for (std::size_t t = 0; t < points.size(); ++t) X.row(points[t]) = results[t].transpose();
+}
+
+}  // namespace
+
+void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads,
+                            const std::atomic<bool>* cancel, const TemporalPrior* prior) {
+    if (points.empty()) return;
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!prior || prior->empty()) {
+        optimizePass(model, Y, points, X, options, threads, cancel, nullptr);
+        return;
+    }
+    std::vector<int> position(static_cast<std::size_t>(X.rows()), 0);
+    const std::vector<int>& order = prior->timeOrder();
+    for (std::size_t k = 0; k < order.size() && order[k] < X.rows(); ++k) position[order[k]] = static_cast<int>(k);
+    for (int colour = 0; colour < 3; ++colour) {
+        std::vector<int> pass;
+        for (int i : points)
+            if (position[static_cast<std::size_t>(i)] % 3 == colour) pass.push_back(i);
+        optimizePass(model, Y, pass, X, options, threads, cancel, prior);
+    }
 }
 
 }  // namespace mgp::gp

@@ -16,6 +16,7 @@
 
 #include "gp/kernel.h"
 #include "gp/scg.h"
+#include "gp/temporal_prior.h"
 
 namespace mgp::gp {
 
@@ -70,8 +71,12 @@ private:
 // Step 8: for every row index in `points`, minimise L_IK(x, Y.row(i)) over x from X.row(i) with
 // SCG, writing the result back into X. threads ≤ 0 means std::thread::hardware_concurrency().
 // If `cancel` becomes true the remaining points are skipped (X is then partly updated).
+// With a non-empty temporal `prior` (docs/maths.md §19) each point minimises L_IK plus the prior
+// terms that involve it, its time neighbours held at their current values; the points go in
+// three passes by their time position mod 3 (no two points of one pass share a term), each pass
+// seeing the previous passes' results: a block Gauss-Seidel sweep, still deterministic.
 void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
                             Eigen::MatrixXd& X, const ScgOptions& options, int threads = 0,
-                            const std::atomic<bool>* cancel = nullptr);
+                            const std::atomic<bool>* cancel = nullptr, const TemporalPrior* prior = nullptr);
 
 }  // namespace mgp::gp

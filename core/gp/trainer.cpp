@@ -104,6 +104,8 @@ void TrainOptions::validate() const {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw std::invalid_argument("TrainOptions: expected a finite tolerance > 0");
     if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
+    if (prior == LatentPrior::kSmooth && (!(priorWeight >= 0.0) || !std::isfinite(priorWeight)))
+        throw std::invalid_argument("TrainOptions: expected a finite priorWeight ≥ 0");
 }
 
 Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::move(data)), opt_(options) {
@@ -112,10 +114,12 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
+    if (opt_.prior == LatentPrior::kSmooth) prior_ = TemporalPrior::secondDifference(data_.frames, opt_.priorWeight);
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
                                        objective(), false);
     lInit_ = ev.value;
+    if (!prior_.empty()) lInit_ += prior_.value(X_);
     prevW_ = ev.ok ? ev.w : Eigen::VectorXd::Ones(data_.Y.cols());
     // The paper's Step 3 initialises w = 1; the Step-9 Δ of the first iteration is measured
     // against that.
@@ -141,8 +145,10 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
     if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
+    // The inactive rows stay where they are during Step 6.
+    const LatentTerm extra = prior_.empty() ? LatentTerm() : priorOnActive(prior_, X_, active);
     const ActiveStepResult step =
-        optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective());
+        optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
     psi_ = step.psi;
     for (std::size_t i = 0; i < active.size(); ++i) X_.row(active[i]) = step.XI.row(static_cast<Eigen::Index>(i));
     if (entry) {
@@ -169,7 +175,7 @@ void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic
     so.maxIterations = opt_.pointIterations;
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
-    optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads, cancel);
+    optimizeInactivePoints(pm, data_.Y, inactive, X_, so, opt_.threads, cancel, prior_.empty() ? nullptr : &prior_);
 }
 
 std::vector<double> Trainer::objectiveHistory() const {
@@ -278,6 +284,8 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.settings.scgIterations = options.scgIterations;
     m.settings.pointIterations = options.pointIterations;
     m.settings.tolerance = options.tolerance;
+    m.settings.prior = options.prior;
+    m.settings.priorWeight = options.prior == LatentPrior::kNone ? 0.0 : options.priorWeight;
     m.iterations = static_cast<int>(res.log.size());
     m.converged = res.converged;
     m.objectiveHistory = trainer.objectiveHistory();

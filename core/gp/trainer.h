@@ -23,10 +23,14 @@
 #include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/model.h"
+#include "gp/temporal_prior.h"
 
 namespace mgp::gp {
 
 enum class ConvergenceTest { kRaw, kLog };
+
+// λ of the smoothness prior when none is given (docs/maths.md §19 says how it was chosen).
+constexpr double kDefaultSmoothWeight = 100.0;
 
 struct TrainOptions {
     KernelKind kind = KernelKind::kFas;
@@ -43,6 +47,12 @@ struct TrainOptions {
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
     // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
     bool paperLiteral = false;
+    // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model (table1,
+    // table2 and the committed fixtures use it); kSmooth, the default (README "Training
+    // defaults" says why), adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8,
+    // λ = priorWeight.
+    LatentPrior prior = LatentPrior::kSmooth;
+    double priorWeight = kDefaultSmoothWeight;
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;
@@ -63,7 +73,8 @@ TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& fram
 
 struct IterationLog {
     int iter = 0;
-    double L = 0.0;               // L_GP after Step 6 (on Step 5's active set)
+    double L = 0.0;               // L_GP after Step 6 (on Step 5's active set), plus the temporal
+                                  // prior's value over all rows when one is used
     double L_before = 0.0;        // L_GP before Step 6 on the same active set
     double maxDeltaRaw = 0.0;     // the paper's Step-9 metric
     double maxDeltaLog = 0.0;     // max |Δ ln(·)| over the same parameters
@@ -99,6 +110,8 @@ public:
     const std::vector<int>& activeSet() const { return active_; }
     const TrainingData& data() const { return data_; }
     const TrainOptions& options() const { return opt_; }
+    // The temporal prior in use (empty for LatentPrior::kNone).
+    const TemporalPrior& temporalPrior() const { return prior_; }
     // Profiled W on the current active set.
     Eigen::VectorXd currentWeights() const;
 
@@ -114,6 +127,7 @@ private:
     Eigen::VectorXd psi_;
     Eigen::MatrixXd X_;
     std::vector<int> active_;
+    TemporalPrior prior_;
     Eigen::VectorXd prevW_;
     double lInit_ = 0.0;
     bool frozen_ = false;
