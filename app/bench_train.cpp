@@ -1,4 +1,4 @@
-// bench section "train": the training speed bars of DESIGN.md §4.
+// bench section "train": how long training takes, per step and in total (README, Command line).
 //  - outer_iteration_180: one outer iteration (Steps 5-8) on a 180-frame real clip, M = 200
 //    (N < M: every frame is active, so this is Step 6: 100 SCG iterations on L_GP);
 //  - gpc_equal_work: full model M = N = 150 real frames, one Step 6 of exactly 100 SCG

@@ -1,5 +1,5 @@
 // `motiongp table1 [--quick | --iters-scale F] [--scg-iters S] [--literal] [--threads N] [--json]`
-// The paper's Table 1 ("convergence precision") under the protocol of ALGORITHM.md §11.1:
+// The paper's Table 1 ("convergence precision") under the protocol of docs/maths.md §14:
 // FASGPLVM vs SGPLVM on five real CMU clips of the paper's motion kinds and about its lengths,
 // same preprocessing, M = 200, same initial values, IVM, SCG counts and tolerances, reported at
 // the paper's iteration counts (52, 46, 71, 63, 58). Both use the corrected, gauge-fixed

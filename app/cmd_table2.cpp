@@ -1,7 +1,7 @@
 // `motiongp table2 [--iters T] [--active M] [--max-delta CM] [--quick] [--json]`: the paper's
-// Table 2 (editing range in cm) with the model-independent naturalness tests of ALGORITHM.md
-// §11.2, 2×2: SGPLVM/FASGPLVM × static/adaptive, on the Table 1 clips and the paper's edits.
-// Also compares the learned IK's poses with the plain IK's (issue 4): RMS over the 44 non-root
+// Table 2 (editing range in cm) with the model-independent naturalness tests of docs/maths.md
+// §14, 2×2: SGPLVM/FASGPLVM × static/adaptive, on the Table 1 clips and the paper's edits.
+// Also compares the learned IK's poses with the plain IK's: RMS over the 44 non-root
 // DOFs (wrapped to ±180°) to the nearest real frame.
 #include <chrono>
 #include <cmath>

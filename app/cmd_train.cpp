@@ -1,6 +1,6 @@
 // `motiongp train CLIP [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
 //   [--scg-iters S] [--tol C] [--prior smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
-// Learns a FASGPLVM (default) or SGPLVM pose model (ALGORITHM.md §7) and writes the model file
+// Learns a FASGPLVM (default) or SGPLVM pose model (docs/maths.md §8) and writes the model file
 // (core/gp/model_file.h). Progress goes to stderr; --json prints one object on stdout. Timings
 // are printed, never stored in the model. Ctrl-C cancels cleanly (no model is written).
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 item 1 and the AMC edge cases (frame labels, CRLF/LF, bone order by name).
+// The ASF/AMC reader (docs/maths.md §2) and the AMC edge cases (frame labels, CRLF/LF, bone order by name).
 #include <algorithm>
 
 #include "io/amc_reader.h"

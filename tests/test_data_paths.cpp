@@ -1,4 +1,4 @@
-// Search order for the mocap folder (DESIGN.md §1) and the synthetic fallback.
+// Search order for the mocap folder (docs/architecture.md §8) and the synthetic fallback.
 #include <cstdlib>
 
 #include "io/data_paths.h"

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 items 2-3: FK anchors on 35_01 and the analytic Jacobian.
+// docs/maths.md §2: FK anchors on 35_01 and the analytic Jacobian.
 #include <random>
 
 #include "io/clip_loader.h"

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 items 7 (L_GP gradients), 8 (gauge) and 9 (W closed form), on real CMU data.
+// docs/maths.md §4: L_GP gradients, the gauge and the closed-form W, on real CMU data.
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The hostile-input table (issue 8, item 3): bad files run end to end through the command line,
+// The hostile-input table: bad files run end to end through the command line,
 // as a user would run them. Every case must end with its one clear error on stderr
 // ("motiongp: error: FILE[:LINE]: expected …, found …", asserted exactly) and a non-zero exit —
 // never a signal, never a hang (each child is killed after 20 s) and never a huge allocation

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 item 10: IVM residual variances equal a direct solve; selection ignores Y.
+// docs/maths.md §6: IVM residual variances equal a direct solve; selection ignores Y.
 #include <doctest/doctest.h>
 
 #include <Eigen/Cholesky>

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 item 6 (kernel PSD) and the kernel's own derivative contractions (§3.3).
+// The kernel is PSD, and its own derivative contractions are right (docs/maths.md §3).
 #include <doctest/doctest.h>
 
 #include <Eigen/Eigenvalues>

@@ -1,4 +1,4 @@
-// Nothing lost (issue 8, item 5): the atomic writes of MODELS (`motiongp train --out`) and
+// Nothing lost: the atomic writes of MODELS (`motiongp train --out`) and
 // SESSIONS (saveSession) under a kill mid-save, a full disk and a read-only folder, and what a
 // killed save leaves behind. The writer's own tests are in test_atomic_file.cpp; the GUI's
 // killed save and autosave restore in tests/gl/test_gui_sessions.cpp.

@@ -1,4 +1,4 @@
-// Numerical faults (issue 8, item 4): training on degenerate data, and learned IK and the editor
+// Numerical faults: training on degenerate data, and learned IK and the editor
 // document on unreachable, far-away, zero-length and non-finite targets. Each case ends with a
 // clear message or a valid result — a saved model whose every number is finite when read back,
 // a finite pose with `reached: false` where the target cannot be met — never NaN, never a crash.

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 items 4 (constant columns, via the training preprocessing) and 5 (whitened PCA).
+// docs/maths.md §5: constant columns (via the training preprocessing) and whitened PCA.
 #include <doctest/doctest.h>
 
 #include "gp/pca_init.h"

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 items 7 (L_IK gradients w.r.t. x and y) and 12 (σ² ≥ 1/β), plus Step 8's
+// docs/maths.md §9: L_IK gradients w.r.t. x and y, and σ² ≥ 1/β, plus Step 8's
 // thread-count independence.
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-// ALGORITHM.md §13 item 11: SCG on Rosenbrock and on a function that returns NaN off its domain.
+// docs/maths.md §7: SCG on Rosenbrock and on a function that returns NaN off its domain.
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The outer loop (ALGORITHM.md §7): a small real clip trains deterministically (byte-identical
+// The outer loop (docs/maths.md §8): a small real clip trains deterministically (byte-identical
 // model files across runs and thread counts), lowers L_GP below L_init, and can be cancelled.
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// EditorDocument: what the interactive editor edits, with no GL or ImGui (DESIGN.md §1). The UI
+// EditorDocument: what the interactive editor edits, with no GL or ImGui (docs/architecture.md §1). The UI
 // calls these methods; tests call them directly.
 //
 //   clip            the loaded motion (angles unwrapped over time, so it matches a model's rows)
@@ -13,7 +13,7 @@
 //   path            the effector path being edited (keys, offsets, mode) and its regeneration
 //   history         undo/redo steps; undo also restores the model version a step changed
 //
-// Units: cm, world Y up (DESIGN.md §2). One drag, one latent drag, one regeneration or one
+// Units: cm, world Y up (docs/maths.md, conventions). One drag, one latent drag, one regeneration or one
 // cleared edit = one undo step.
 // Without a model, drags are solved by plain IK (damped least squares) so a clip can be posed
 // before training; the readout says which solver ran.

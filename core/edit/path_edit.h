@@ -1,5 +1,5 @@
 #pragma once
-// The effector path being edited in the editor (ALGORITHM.md §10): which effector, the key
+// The effector path being edited in the editor (docs/maths.md §12): which effector, the key
 // frames, each key's offset from the captured path, direct or displacement mode.
 #include <string>
 #include <vector>

@@ -135,7 +135,7 @@ void readClipReference(const Reader& r, const json& c, SessionData& s) {
     s.syntheticClip = r.boolean(r.field(c, "synthetic", "clip"), "clip.synthetic");
     s.syntheticFrames = r.integer(r.field(c, "synthetic_frames", "clip"), "clip.synthetic_frames");
     // loadSessionClip builds the walk with this many frames: bound it, else a declared 2^31 − 1
-    // allocates without limit when the session is opened (issue 8).
+    // allocates without limit when the session is opened.
     if (s.syntheticFrames < 1 || s.syntheticFrames > kMaxSyntheticFrames)
         r.fail("clip.synthetic_frames in 1.." + std::to_string(kMaxSyntheticFrames), std::to_string(s.syntheticFrames));
     s.clipPath = r.string(r.field(c, "path", "clip"), "clip.path");

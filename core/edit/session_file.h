@@ -27,7 +27,7 @@
 //     "ui": { free-form object, stored as given }
 //   }
 //
-// Units as everywhere (DESIGN.md §2): cm, degrees, Y up. Every number must be finite; frames
+// Units as everywhere (docs/maths.md, conventions): cm, degrees, Y up. Every number must be finite; frames
 // are 0-based, distinct and inside the clip. Doubles use nlohmann-json's shortest round-trip
 // form, so everything reads back bit-exactly. With a model, the clip is the model's own and the
 // clip reference is informational; without one, the clip file is found relative to the session

@@ -1,6 +1,6 @@
 #pragma once
 // TrainingJob: trains a model from a clip on a background thread, one outer iteration at a time,
-// with progress, an ETA and cancellation (DESIGN.md §4: the app never blocks the UI on
+// with progress, an ETA and cancellation (docs/architecture.md §4: the app never blocks the UI on
 // training). The UI polls progress() every frame and takes the finished model once.
 // No GL or ImGui here.
 #include <atomic>

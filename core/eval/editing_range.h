@@ -1,5 +1,5 @@
 #pragma once
-// The editing-range sweep of ALGORITHM.md §11.2: target c(δ) = p_e(y_t) + δ·u for δ = 0, 1, 2, …
+// The editing-range sweep of docs/maths.md §14: target c(δ) = p_e(y_t) + δ·u for δ = 0, 1, 2, …
 // cm, each solved with the learned IK warm-started from δ − 1, judged by the naturalness tests.
 // A test's range is the largest δ such that every δ' ≤ δ passes it (−1: δ = 0 already fails);
 // the combined range needs every test. With `adaptive`, §5.3 runs after every accepted δ (all

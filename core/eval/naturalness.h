@@ -1,5 +1,5 @@
 #pragma once
-// The model-independent naturalness tests of the editing-range protocol (ALGORITHM.md §11.2).
+// The model-independent naturalness tests of the editing-range protocol (docs/maths.md §14).
 // The reference set R holds real frames only (never model outputs, never the edited frame):
 // other CMU trials of the same subject and motion, or, as a fallback, the training clip with the
 // edited frame ±10 frames removed. Poses are full 47-vectors in degrees (§2.3 order).

@@ -1,6 +1,6 @@
 #pragma once
 // Probabilistic PCA density (Tipping & Bishop), the model-independent density of the editing
-// range protocol (ALGORITHM.md §11.2 test 4): a Gaussian N(μ, U_q Λ_q U_qᵀ + σ²(I − U_q U_qᵀ))
+// range protocol (docs/maths.md §14 test 4): a Gaussian N(μ, U_q Λ_q U_qᵀ + σ²(I − U_q U_qᵀ))
 // with σ² the mean of the discarded eigenvalues. A different family from the GPLVM on purpose.
 #include <Eigen/Core>
 

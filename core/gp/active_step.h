@@ -1,5 +1,5 @@
 #pragma once
-// Step 6 of the training loop (ALGORITHM.md §7) as a free function: SCG over (ψ = ln θ, X_I) on
+// Step 6 of the training loop (docs/maths.md §8) as a free function: SCG over (ψ = ln θ, X_I) on
 // L_GP with W profiled out under the gauge (§4.4), from the given warm start. Used by the
 // trainer's outer loop and by the adaptive update (§5.3).
 #include <Eigen/Core>

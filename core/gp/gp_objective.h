@@ -1,5 +1,5 @@
 #pragma once
-// The training objective L_GP (ALGORITHM.md §4), corrected as decided there:
+// The training objective L_GP (docs/maths.md §4), corrected as decided there:
 //
 //   L_GP = (D/2) ln|K| + ½ Σ_k w_k² s_k + ½ Σ_{i∈I} ‖x_i‖² + Σ_p ln θ_p − c Σ_k ln w_k,
 //   s_k = ŷ_kᵀ K⁻¹ ŷ_k, c = M (rows of the data term), θ = (α, γ, β[, η]).

@@ -1,5 +1,5 @@
 #pragma once
-// Active-set selection by the IVM criterion for Gaussian noise (ALGORITHM.md §5): greedily pick
+// Active-set selection by the IVM criterion for Gaussian noise (docs/maths.md §6): greedily pick
 // the point of largest noise-free posterior variance — a pivoted partial Cholesky. It depends on
 // X and θ only, never on Y or W. Ties go to the smallest index; no swap refinement.
 #include <Eigen/Core>

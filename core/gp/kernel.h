@@ -1,5 +1,5 @@
 #pragma once
-// Kernels of the GPLVM (ALGORITHM.md §3). Both models share this one interface:
+// Kernels of the GPLVM (docs/maths.md §3). Both models share this one interface:
 //
 //   FAS    k(x_i, x_j) = α·exp(−(γ/2)‖x_i − x_j‖²) + η·exp(φ(x_i)·φ(x_j)) + δ_ij/β
 //   SGPLVM k(x_i, x_j) = α·exp(−(γ/2)‖x_i − x_j‖²)                        + δ_ij/β

@@ -45,7 +45,7 @@ const json& need(const json& j, const char* key, const std::string& file) {
 }
 
 // An integer that fits in an int. nlohmann's get<int>() converts a float (1e300) or a 64-bit
-// value with a plain cast (undefined behaviour for 1e300, issue 8): check first.
+// value with a plain cast (undefined behaviour for 1e300): check first.
 int intOf(const json& v, const std::string& file, const std::string& what) {
     const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= std::numeric_limits<int>::max()
                       : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
@@ -158,7 +158,7 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const int n = needInt(j, "N", file), D = needInt(j, "D", file);
         const int d = needInt(j, "latent_dim", file);
         // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
-        // the 47 pose DOFs), else a declared 2^31 − 1 allocated gigabytes (issue 8).
+        // the 47 pose DOFs), else a declared 2^31 − 1 allocated gigabytes.
         if (n < 1 || D < 1 || D > kPoseDofs || d < 1 || d > kPoseDofs)
             throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim ≤ 47",
                             "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));

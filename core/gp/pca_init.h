@@ -1,5 +1,5 @@
 #pragma once
-// Preprocessing and latent initialisation (ALGORITHM.md §2.6).
+// Preprocessing and latent initialisation (docs/maths.md §5).
 //  - constant-column removal (std ≤ 1e-6°), the removed columns held at their means;
 //  - μ = column means, Ȳ = Y − 1μᵀ;
 //  - whitened PCA: C = ȲᵀȲ/N, X = Ȳ U_d Λ_d^{-1/2}, so each latent column has mean 0 and

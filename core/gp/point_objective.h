@@ -1,5 +1,5 @@
 #pragma once
-// The per-point objective L_IK (ALGORITHM.md §6), corrected form:
+// The per-point objective L_IK (docs/maths.md §9), corrected form:
 //
 //   L_IK(x, y) = ‖W (y − f(x))‖² / (2σ²(x)) + (D/2) ln σ²(x) + ½‖x‖²
 //   f(x)  = μ + Ŷᵀ K⁻¹ k(x)                (unscaled pose space, degrees, kept columns)

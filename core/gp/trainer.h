@@ -1,5 +1,5 @@
 #pragma once
-// The outer training loop, Steps 1–10 (ALGORITHM.md §7), shared by FASGPLVM and SGPLVM:
+// The outer training loop, Steps 1–10 (docs/maths.md §8), shared by FASGPLVM and SGPLVM:
 //
 //   preprocess (§2.6): constant columns out, μ, whitened PCA X, θ = 1, w = 1
 //   for t = 1..T:

@@ -1,5 +1,5 @@
 #pragma once
-// Learned IK (ALGORITHM.md §8): the most likely pose under the GPLVM prior that meets the targets,
+// Learned IK (docs/maths.md §10): the most likely pose under the GPLVM prior that meets the targets,
 //
 //   minimise over (x, y):  F = (1 − λ) L_IK(x, y) + λ Σ_e ‖FK_e(y) − c_e‖²     (cm, λ = 0.999)
 //

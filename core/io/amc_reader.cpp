@@ -79,7 +79,7 @@ Clip parse(TextReader& r, const AsfSkeleton& asf) {
         if (isFrameNumberLine(tok, number)) {
             finishFrame();
             // Bounded so that number + 1 (and label + frame index later) cannot overflow: a
-            // label of 2^63 − 1 was undefined behaviour (issue 8).
+            // label of 2^63 − 1 was undefined behaviour.
             if (number < -kMaxAbsFrameNumber || number > kMaxAbsFrameNumber)
                 r.failAt(line, "a frame number within ±1e12", quoteToken(tok[0]));
             if (!clip.frames.empty() && number != expectedNumber)

@@ -36,7 +36,7 @@ Eigen::Vector3d readVec3(const nlohmann::json& j, const std::string& file, const
 }
 
 // An integer in [lo, hi]: nlohmann's get<int>() casts a float such as 1e300 with undefined
-// behaviour (issue 8), so check the type and range first.
+// behaviour, so check the type and range first.
 long long integerOf(const nlohmann::json& v, long long lo, long long hi, const std::string& file,
                     const std::string& what) {
     bool ok = false;

@@ -6,7 +6,7 @@
 // row-major, rotation order, animated axes), and per frame the 47 pose DOFs in the §2.3 order
 // (degrees, unwrapped over time) plus the root translation in cm. Angles of bones outside the
 // 22-bone model (hands, fingers, thumbs, toes) are not stored: a loaded clip holds them at 0,
-// as ALGORITHM.md §2.3 decides for FK. Doubles are written by nlohmann-json's shortest
+// as docs/maths.md §2 decides for FK. Doubles are written by nlohmann-json's shortest
 // round-trip formatting, so they read back bit-exactly.
 #include <nlohmann/json.hpp>
 #include <string>

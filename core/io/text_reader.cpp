@@ -159,7 +159,7 @@ bool parseInt(std::string_view token, long long& out) {
     }
     for (; i < token.size(); ++i) {
         if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
-        // 19 digits can exceed 2^63 − 1 (signed overflow, found by fuzzing, issue 8): not a number.
+        // 19 digits can exceed 2^63 − 1 (signed overflow, found by fuzzing): not a number.
         if (v > (std::numeric_limits<long long>::max() - (token[i] - '0')) / 10) return false;
         v = v * 10 + (token[i] - '0');
     }

@@ -1,5 +1,5 @@
 #pragma once
-// Cubic Hermite path of one effector through key frames (ALGORITHM.md §10).
+// Cubic Hermite path of one effector through key frames (docs/maths.md §12).
 // Time is the frame index itself (uniform knots, never chord length), positions in cm, tangents
 // in cm per frame. Interior tangents are Catmull–Rom (central differences of the keys); the end
 // tangents are given (the captured motion's own velocity), so the edited path joins the

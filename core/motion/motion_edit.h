@@ -1,5 +1,5 @@
 #pragma once
-// Motion regeneration along an edited effector path (ALGORITHM.md §10).
+// Motion regeneration along an edited effector path (docs/maths.md §12).
 //
 // Keys are clip frames t_0 < … < t_n (0-based) with an offset (cm) each; the paper's example is
 // 89, 103, 117, 131 with the two middle keys moved. Direct mode (the paper's): a cubic Hermite

@@ -1,5 +1,5 @@
 #pragma once
-// Forward kinematics and the analytic effector Jacobian (ALGORITHM.md §2.2).
+// Forward kinematics and the analytic effector Jacobian (docs/maths.md §2).
 // Units: positions in cm, world Y up; Jacobian columns in cm per DEGREE.
 #include <Eigen/Core>
 #include <vector>

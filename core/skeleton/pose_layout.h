@@ -1,5 +1,5 @@
 #pragma once
-// The paper's pose vector y (ALGORITHM.md §2.3): 47 rotational DOFs in DEGREES, in this exact
+// The paper's pose vector y (docs/maths.md §2): 47 rotational DOFs in DEGREES, in this exact
 // order everywhere (files, W, limits). Root translation (cm) is kept separately.
 //
 //   0-2 root rx ry rz     15-17 lowerback     33-34 lclavicle ry rz   40-41 rclavicle ry rz

@@ -18,7 +18,7 @@
 
 namespace mgp {
 
-// The five end effectors an animator drags (DESIGN.md §2).
+// The five end effectors an animator drags (docs/maths.md, conventions).
 enum class Effector : int { kLHand = 0, kRHand, kLFoot, kRFoot, kHead, kCount };
 constexpr int kEffectorCount = static_cast<int>(Effector::kCount);
 const char* effectorName(Effector e);
