@@ -34,7 +34,18 @@ struct Figure {
     glm::vec3 ghostTint{0.45f, 0.62f, 0.95f};
     float ghostAlpha = 0.35f;
     bool castsShadow = true;
+    // A solid figure's bones and joints are drawn mix(side colour, tint, tintWeight): how far the
+    // pose lies outside the model's training range (render/range_tint.h); 0 = the side colours.
+    glm::vec3 tint{0.0f};
+    float tintWeight = 0.0f;
 };
+
+// The colour a solid figure's bone or joint of side colour `base` is drawn in.
+inline glm::vec3 tintedColour(const glm::vec3& base, const Figure& f) {
+    if (!(f.tintWeight > 0.0f)) return base;  // exactly the side colour: untinted goldens stay
+    if (f.tintWeight >= 1.0f) return f.tint;
+    return base + (f.tint - base) * f.tintWeight;
+}
 
 enum class HandleState { kIdle, kHover, kSelected };
 

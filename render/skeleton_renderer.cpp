@@ -324,11 +324,11 @@ struct Drawer {
     }
     void figure(const Figure& f, const RenderStyle& s, bool ghost) {
         for (const BoneSegment& b : f.bones) {
-            if (!ghost) colour(sideColour(s, b.side));
+            if (!ghost) colour(tintedColour(sideColour(s, b.side), f));
             segment(b.startCm, b.endCm, b.startRadiusCm, b.endRadiusCm);
         }
         for (const JointBall& j : f.joints) {
-            if (!ghost) colour(sideColour(s, j.side) * 0.92f);
+            if (!ghost) colour(tintedColour(sideColour(s, j.side), f) * 0.92f);
             ball(j.centreCm, j.radiusCm);
         }
     }

@@ -737,6 +737,7 @@ void EditorApp::menus() {
             if (!options_.layoutFile.empty()) saveLayoutPrefs(options_.layoutFile, prefs_);
         }
         ImGui::MenuItem("Follow character", nullptr, &state_.followCharacter);
+        ImGui::MenuItem("Pose range tint", nullptr, &state_.showRangeTint, doc.hasModel());
         if (beginMenu("Compare ghost")) {
             if (ImGui::MenuItem("Off", nullptr, doc.compareMode() == CompareMode::kNone)) doc.setCompareMode(CompareMode::kNone);
             if (ImGui::MenuItem("Plain IK", nullptr, doc.compareMode() == CompareMode::kPlainIk))

@@ -88,6 +88,7 @@ public:
     void requestQuit() { state_.requestQuit = true; }
     EditorState& state() { return state_; }
     const EditorState& state() const { return state_; }
+    const ViewportPanel& viewport() const { return *viewport_; }
     bool latentMapUpToDate() const { return latent_.upToDate(state_); }
     // Window pixel of an effector handle (as last drawn).
     bool handleScreenPosition(Effector e, float& x, float& y) const;

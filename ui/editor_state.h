@@ -47,6 +47,10 @@ struct EditorState {
     int selectedKey = -1;           // path key last dragged or picked, -1 none
     bool showCapturedPath = true;   // the captured path beside the edited one
     bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
+    // View > Pose range: tint the figure by σ²(x) against the model's training range, with a legend
+    // (render/range_tint.h). Only a solved pose is tinted (a drag, an edited frame) and only with a model.
+    bool showRangeTint = true;
+    std::string rangeLegend;  // the legend's text as last drawn, lines joined by '\n' ("" when hidden)
 
     // Where the viewport's image was last drawn (window pixels), so points can be projected to
     // the window outside the viewport's draw (scripts, tests).

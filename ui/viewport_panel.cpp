@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "picking.h"
+#include "range_tint.h"
 #include "scene_builder.h"
 #include "shortcuts.h"
 #include "skeleton/forward_kinematics.h"
@@ -309,6 +310,9 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     FkState fk;
     forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
     scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
+    if (s.showRangeTint)
+        if (const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict())
+            render::applyRangeTint(scene.figures.back(), render::rangeTint(v->range, v->sigma2, v->lik));
     scene.groundHeightCm = groundHeight_;
     scene.groundCentreCm = toGlm(fk.jointCm[0]);
     scene.handles = render::effectorHandles(doc.clip().skeleton, fk);
@@ -439,6 +443,8 @@ void ViewportPanel::draw(EditorState& s) {
         for (const render::Figure& f : scene.figures) {
             sig.push_back(f.ghost ? 1.0f : 0.0f);
             addVec(f.ghostTint);
+            addVec(f.tint);
+            sig.push_back(f.tintWeight);
             for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
         }
         for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
@@ -451,6 +457,7 @@ void ViewportPanel::draw(EditorState& s) {
             for (const glm::vec3& v : p.keysCm) addVec(v);
         }
         sig.push_back(scene.groundHeightCm);
+        lastScene_ = scene;
         if (sig != lastSignature_) {
             renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -480,6 +487,7 @@ void ViewportPanel::draw(EditorState& s) {
     } else {
         s.dragReadout.clear();
     }
+    drawRangeLegend(s, origin.x + w, origin.y + h);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
@@ -490,6 +498,69 @@ void ViewportPanel::draw(EditorState& s) {
         const Eigen::Vector3d& o = s.doc.pathEdit()->keyOffsetsCm[key];
         ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1, s.doc.pathEdit()->keyFrames[key] + 1,
                           o.x(), o.y(), o.z());
+    }
+}
+
+// Bottom-right corner (the hints are top-left, the caption bottom-left): the colour bar of render::rangeTint (side colour → amber at the σ² limit → red
+// beyond), the pose's σ² and L_IK against their limits, and whether an update would take it.
+void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
+    s.rangeLegend.clear();
+    if (!s.showRangeTint || !s.doc.hasModel()) return;
+    const std::optional<gp::AdmissionVerdict> v = s.doc.currentPoseVerdict();
+    const render::RangeTint tint = v ? render::rangeTint(v->range, v->sigma2, v->lik) : render::RangeTint{};
+    char l1[160], l2[160], l3[220];
+    if (v) {
+        std::snprintf(l1, sizeof l1, "sigma^2 %.4g  (p%g %.4g, limit %.4g)", v->sigma2, v->range.percentile,
+                      v->range.sigma2Percentile, v->range.sigma2Limit);
+        std::snprintf(l2, sizeof l2, "L_IK %.4g  (limit %.4g)", v->lik, v->range.likLimit);
+        std::snprintf(l3, sizeof l3, "%s: %s", render::rangeBandLabel(tint.band),
+                      v->admitted ? "would be admitted" : ("refused (" + v->reason + ")").c_str());
+    } else {
+        std::snprintf(l1, sizeof l1, "no solved pose on this frame: not tinted");
+        l2[0] = l3[0] = '\0';
+    }
+    s.rangeLegend = std::string(l1) + (v ? "\n" + std::string(l2) + "\n" + l3 : "");
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float lh = ImGui::GetTextLineHeightWithSpacing();
+    const float pad = 6.0f * ImGui::GetFontSize() / 15.0f;
+    const char* labels[3] = {"in range", "near limit", "out of range"};
+    const int lines = v ? 3 : 1;
+    float textW = 0.0f;
+    for (const char* t : {l1, l2, l3}) textW = std::max(textW, ImGui::CalcTextSize(t).x);
+    const float barW = std::max(textW, ImGui::CalcTextSize("in range  near limit  out of range").x + 3 * pad);
+    const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + lh * lines + pad;
+    const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);
+    dl->AddRectFilled(a, ImVec2(a.x + boxW, a.y + boxH), IM_COL32(20, 22, 26, 210), 4.0f);
+    // The bar: one third per band; the middle third ramps from the neutral bone colour to amber.
+    const auto col = [](const glm::vec3& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)); };
+    const float bx = a.x + pad, by = a.y + pad, third = barW / 3.0f, bh = lh * 0.6f;
+    const glm::vec3 neutral{0.90f, 0.87f, 0.80f};
+    dl->AddRectFilled(ImVec2(bx, by), ImVec2(bx + third, by + bh), col(neutral));
+    dl->AddRectFilledMultiColor(ImVec2(bx + third, by), ImVec2(bx + 2 * third, by + bh), col(neutral), col(render::kRangeAmber),
+                                col(render::kRangeAmber), col(neutral));
+    dl->AddRectFilled(ImVec2(bx + 2 * third, by), ImVec2(bx + barW, by + bh), col(render::kRangeRed));
+    if (v) {
+        // Where this pose sits on the bar.
+        float at = tint.band == render::RangeBand::kOutOfRange ? 2.5f
+                   : tint.band == render::RangeBand::kNearLimit ? 1.0f + tint.weight
+                   : std::clamp(float(v->sigma2 / std::max(v->range.sigma2Percentile, 1e-300)), 0.0f, 1.0f);
+        const float px = bx + at * third;
+        dl->AddTriangleFilled(ImVec2(px, by + bh + 1), ImVec2(px - 5, by + bh + 7), ImVec2(px + 5, by + bh + 7),
+                              IM_COL32(255, 255, 255, 255));
+    }
+    for (int i = 0; i < 3; ++i) {
+        const float tw = ImGui::CalcTextSize(labels[i]).x;
+        dl->AddText(ImVec2(bx + third * (i + 0.5f) - tw * 0.5f, by + bh + 6), IM_COL32(220, 222, 226, 255), labels[i]);
+    }
+    const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
+                           : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
+                           : v->admitted ? IM_COL32(150, 230, 150, 255) : IM_COL32(255, 190, 90, 255);
+    float ty = by + bh + 6 + lh;
+    dl->AddText(ImVec2(bx, ty), IM_COL32(230, 232, 236, 255), l1);
+    if (v) {
+        dl->AddText(ImVec2(bx, ty + lh), IM_COL32(230, 232, 236, 255), l2);
+        dl->AddText(ImVec2(bx, ty + 2 * lh), stateCol, l3);
     }
 }
 

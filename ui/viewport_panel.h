@@ -34,6 +34,7 @@ public:
     // ui/viewport_export.cpp). Throws render::RenderError before the first draw.
     render::Image renderImage(const EditorState& state);
     long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
+    const render::Scene& lastScene() const { return lastScene_; }  // as last built by draw()
 
 private:
     void ensureTarget(int w, int h);
@@ -56,6 +57,8 @@ private:
     std::string followClip_;
     std::vector<float> lastSignature_;
     long sceneDraws_ = 0;
+    render::Scene lastScene_;
+    void drawRangeLegend(EditorState& state, float x1, float y1);  // bottom-right corner at (x1, y1)
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;
 };

@@ -7,6 +7,7 @@
 
 #include "motion/drag_falloff.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_layout.h"
 
 namespace mgp {
 
@@ -456,6 +457,9 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         adaptiveHistory_.push_back(std::move(h));
         adaptiveStatus_ = "pose kept as an edit, not added to the model: " + verdict.reason;
     }
+    lastDrag_.frame = frame_;
+    lastDrag_.pose = drag_.pose;
+    lastDrag_.reached = readout_.valid ? readout_.reached : true;
     if (learnedPose && verdict.admitted) {
         AdaptiveSample s;
         s.x = drag_.x;
@@ -821,6 +825,39 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
 void EditorDocument::waitIdle() {
     regenerate_.join();
     if (worker_) worker_->waitIdle();
+}
+
+}  // namespace mgp
+
+namespace mgp {
+
+namespace {
+bool samePose(const Pose& a, const Pose& b) {
+    return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg;
+}
+}  // namespace
+
+std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
+    const gp::ModelVersionPtr v = model();
+    if (!v || !hasClip()) return std::nullopt;
+    if (drag_.active) {
+        if (!readout_.valid || !readout_.learned) return std::nullopt;
+        return gp::admitPose(v->range, readout_.reached, readout_.sigma2, readout_.lik);
+    }
+    const auto it = edits_.find(frame_);
+    if (it == edits_.end()) return std::nullopt;
+    const EditRecord& e = it->second;
+    if (e.x.size() != v->point->latentDim() || !e.x.allFinite()) return std::nullopt;
+    if (v->model->clip.skeleton.jointCount() != clip_.skeleton.jointCount()) return std::nullopt;
+    const PoseLayout layout(clip_.skeleton);
+    const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
+    const double lik = v->point->evaluate(e.x, y, nullptr, nullptr);
+    Eigen::VectorXd mean;
+    double sigma2 = 0.0;
+    v->point->predict(e.x, mean, sigma2);
+    // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
+    const bool reached = !(lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose)) || lastDrag_.reached;
+    return gp::admitPose(v->range, reached, sigma2, lik);
 }
 
 }  // namespace mgp

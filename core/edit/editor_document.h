@@ -33,6 +33,7 @@
 #include "edit/edit_record.h"
 #include "edit/path_edit.h"
 #include "edit/regenerate_job.h"
+#include "gp/training_range.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
@@ -182,6 +183,11 @@ public:
     Effector dragEffector() const { return drag_.effector; }
     Eigen::Vector3d dragTarget() const { return drag_.targetCm; }
     const SolveReadout& readout() const { return readout_; }
+    // σ²(x), L_IK and the admission verdict of the current frame's solved pose against the latest
+    // model version's training range: the live drag solve, else the frame's accepted edit (its x
+    // and pose re-evaluated, so an update that taught the model the pose calms it). None without a
+    // model, on a captured frame, or for an edit without a latent point (plain IK).
+    std::optional<gp::AdmissionVerdict> currentPoseVerdict() const;
 
     // Latent drag: pose the current frame from the model mean f(x) (root translation kept).
     bool beginLatentDrag();
@@ -291,6 +297,12 @@ private:
     std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;
     ConstrainedIkRequest request_;
     ConstrainedIkResult result_;
+    // Whether the last accepted drag reached its targets (constraints are not kept with an edit).
+    struct {
+        int frame = -1;
+        Pose pose;
+        bool reached = true;
+    } lastDrag_;
     SolveReadout readout_;
 
     struct Drag {

@@ -1,0 +1,120 @@
+// The viewport's pose-range tint and legend, driven through the editor offscreen with the committed
+// walk model: a hand dragged far out of reach turns the figure red and the legend says the pose is
+// out of range and refused; a small drag stays admissible; a captured frame is never tinted. The
+// tint is read from the scene the viewport built (plain data), not from pixels.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "editor_app.h"
+#include "editor_harness.h"
+#include "gui_script.h"
+#include "range_tint.h"
+
+using namespace mgp;
+using test::makeHarness;
+
+namespace {
+
+const render::Figure& shownFigure(const ui::EditorApp& app) {
+    const render::Scene& scene = app.viewport().lastScene();
+    REQUIRE_FALSE(scene.figures.empty());
+    REQUIRE_FALSE(scene.figures.front().ghost);
+    return scene.figures.front();
+}
+
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("gui range tint: a hand dragged far out of reach is red and refused") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    REQUIRE(doc.hasModel());
+    doc.setDragFalloff(0);
+    doc.setFrame(60);
+    h->frame(2);
+    // A captured frame: not tinted, and the legend says so.
+    CHECK(shownFigure(*h->app).tintWeight == 0.0f);
+    CHECK(contains(s.rangeLegend, "no solved pose"));
+
+    std::string script = "0 hover rhand\n2 down left\n";
+    for (int k = 0; k < 10; ++k) script += std::to_string(4 + 2 * k) + " moveby 25 -25\n";
+    // Hold the drag: check the live solve's tint before releasing.
+    auto errors = h->play(ui::GuiScript::parse(script));
+    REQUIRE(errors.empty());
+    REQUIRE(doc.dragging());
+    std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
+    REQUIRE(v);
+    INFO("sigma2 " << v->sigma2 << " (limit " << v->range.sigma2Limit << ")  lik " << v->lik << " (limit "
+                   << v->range.likLimit << ")  reached " << v->reached << "  legend: " << s.rangeLegend);
+    CHECK_FALSE(v->admitted);
+    CHECK((v->sigma2 > v->range.sigma2Limit || v->lik > v->range.likLimit));
+    const render::Figure& live = shownFigure(*h->app);
+    CHECK(live.tintWeight == 1.0f);
+    CHECK(live.tint == render::kRangeRed);
+    CHECK(contains(s.rangeLegend, "out of range"));
+    CHECK(contains(s.rangeLegend, "refused"));
+
+    errors = h->play(ui::GuiScript::parse("0 up left\n"));
+    REQUIRE(errors.empty());
+    CHECK_FALSE(doc.dragging());
+    REQUIRE(doc.isEdited(60));
+    h->app->waitIdle();
+    h->frame(2);
+    // The accepted edit is judged again from its x and pose: still red, still refused.
+    v = doc.currentPoseVerdict();
+    REQUIRE(v);
+    CHECK_FALSE(v->admitted);
+    CHECK(shownFigure(*h->app).tint == render::kRangeRed);
+    CHECK(shownFigure(*h->app).tintWeight == 1.0f);
+    CHECK(contains(s.rangeLegend, "out of range"));
+    CHECK(contains(s.rangeLegend, "refused"));
+    CHECK(contains(doc.adaptiveStatus(), "not added to the model"));
+
+    // View > Pose range tint off: side colours and no legend.
+    s.showRangeTint = false;
+    h->frame(2);
+    CHECK(shownFigure(*h->app).tintWeight == 0.0f);
+    CHECK(s.rangeLegend.empty());
+    s.showRangeTint = true;
+
+    // Another, captured frame keeps the side colours.
+    doc.setFrame(10);
+    h->frame(2);
+    CHECK(shownFigure(*h->app).tintWeight == 0.0f);
+}
+
+TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    REQUIRE(doc.hasModel());
+    doc.setDragFalloff(0);
+    doc.setFrame(40);
+    h->frame(2);
+    const auto errors = h->play(ui::GuiScript::parse("0 hover rhand\n2 down left\n4 moveby 0 -4\n6 moveby 0 -4\n"));
+    REQUIRE(errors.empty());
+    REQUIRE(doc.dragging());
+    const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
+    REQUIRE(v);
+    INFO("sigma2 " << v->sigma2 << " (p " << v->range.sigma2Percentile << ", limit " << v->range.sigma2Limit << ")  lik "
+                   << v->lik << " (limit " << v->range.likLimit << ")  legend: " << s.rangeLegend);
+    CHECK(v->admitted);
+    const render::RangeTint expected = render::rangeTint(v->range, v->sigma2, v->lik);
+    CHECK(expected.band != render::RangeBand::kOutOfRange);
+    const render::Figure& f = shownFigure(*h->app);
+    CHECK(f.tintWeight == expected.weight);
+    CHECK(f.tintWeight < 1.0f);
+    CHECK(f.tint != render::kRangeRed);
+    CHECK(contains(s.rangeLegend, "would be admitted"));
+    CHECK_FALSE(contains(s.rangeLegend, "out of range"));
+    REQUIRE(h->play(ui::GuiScript::parse("0 up left\n")).empty());
+    REQUIRE(doc.isEdited(40));
+    h->app->waitIdle();
+    h->frame(2);
+    CHECK(contains(s.rangeLegend, "would be admitted"));
+}
