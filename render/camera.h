@@ -1,6 +1,6 @@
 #pragma once
 // Orbit camera (pure maths, no GL context needed): a target point, yaw/pitch about it and a
-// distance. World is Y up, right-handed, centimetres (DESIGN.md §2). Pixels: x to the right,
+// distance. World is Y up, right-handed, centimetres (docs/maths.md, conventions). Pixels: x to the right,
 // y DOWN from the top-left corner of the viewport (as windows and PNG rows report them).
 #include <glm/glm.hpp>
 

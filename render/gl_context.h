@@ -3,7 +3,7 @@
 // EGL context (tests, CLI, bench) and the future GLFW window satisfy, so one drawing path
 // (SceneRenderer::draw into framebuffer 0) serves both.
 //
-// OffscreenContext follows the recipe of DESIGN.md §3: EGL surfaceless platform
+// OffscreenContext, the headless recipe that works with Mesa on these machines: EGL surfaceless platform
 // (eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL)),
 // eglBindAPI(EGL_OPENGL_API), an OpenGL 3.3 core context and a PBUFFER surface made current.
 // No X server or environment variables are needed.

@@ -1,6 +1,6 @@
 #pragma once
 // What the viewport shows, as plain data (no GL): the ui/ layer and the CLI fill a Scene and
-// SceneRenderer draws it. World is Y up, right-handed, centimetres (DESIGN.md §2).
+// SceneRenderer draws it. World is Y up, right-handed, centimetres (docs/maths.md, conventions).
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // Filling a Scene from core data (skeleton, FK, clips). Plain data out, no GL.
-// Units: cm, Y up (DESIGN.md §2). Frames are 0-based here (the CLI converts from 1-based).
+// Units: cm, Y up (docs/maths.md, conventions). Frames are 0-based here (the CLI converts from 1-based).
 #include <optional>
 #include <vector>
 

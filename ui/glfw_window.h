@@ -2,7 +2,7 @@
 // A GLFW window with an OpenGL 3.3 core context (the interactive editor). It implements
 // render::GlSurface and collects mouse, wheel, key and character events into an InputState
 // (GLFW key codes pass through unchanged). GLFW needs a display (a desktop or xvfb-run); tests
-// never create one (DESIGN.md §3).
+// never create one: they draw offscreen (render/gl_context.h).
 #include <string>
 
 #include "gl_context.h"

@@ -69,7 +69,7 @@ int hoveredPlotIndex(int count, bool lines) {
     return static_cast<int>(t * float(lines ? count - 1 : count));
 }
 
-// α, γ, η, β (ALGORITHM.md §3) and the noise they imply.
+// α, γ, η, β (docs/maths.md §3) and the noise they imply.
 void drawParameters(const gp::GpModel& m) {
     const gp::Kernel k = m.kernel();
     if (ImGui::BeginTable("params", 3, ImGuiTableFlags_SizingFixedFit)) {

@@ -1,5 +1,5 @@
 #pragma once
-// The Path panel (ALGORITHM.md §10): pick an effector, start or end a path edit, edit its keys
+// The Path panel (docs/maths.md §12): pick an effector, start or end a path edit, edit its keys
 // (1-based frame, offset in cm from the captured path, go to, remove, add at the current frame,
 // default keys), choose direct or displacement mode, show the captured path and the before ghost
 // in the viewport, and regenerate the span in the background (progress and Cancel). The path

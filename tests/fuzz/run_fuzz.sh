@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bounded fuzzing of every loader (issue 8): bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET=60]
+# Bounded fuzzing of every loader: bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET=60]
 #
 # Needs clang and libFuzzer (Debian 12: apt-get install clang libclang-rt-14-dev) plus the
 # project's build dependencies (.ci/install-deps). Configures build-fuzz with clang and
