@@ -87,12 +87,16 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
     pins_.clear();
     targets_.clear();
     exactTargets_.clear();
-    for (std::size_t i = 0; i < request.constraints.size(); ++i) {
-        const IkConstraint& c = request.constraints[i];
-        (c.pin ? pins_ : targets_).push_back(static_cast<int>(i));
-        if (!c.pin && c.strength >= kStrengthExact) exactTargets_.push_back(static_cast<int>(i));
-    }
+    for (std::size_t i = 0; i < request.constraints.size(); ++i)
+        (request.constraints[i].pin ? pins_ : targets_).push_back(static_cast<int>(i));
     const int p = 3 * static_cast<int>(pins_.size());
+    // Exact targets follow the pins in the second-order correction's rows.
+    correctionRow_.assign(targets_.size(), -1);
+    for (std::size_t k = 0; k < targets_.size(); ++k)
+        if (request.constraints[targets_[k]].strength >= kStrengthExact) {
+            correctionRow_[k] = p + 3 * static_cast<int>(exactTargets_.size());
+            exactTargets_.push_back(targets_[k]);
+        }
     const int q = p + 3 * static_cast<int>(exactTargets_.size());
     Aall_.resize(q, n_);
     eHat_.resize(q);
@@ -184,20 +188,17 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     }
     setPose(y_);
     // Targets (penalties) and pins (constraints).
-    for (int t : targets_) {
-        const IkConstraint& c = r.constraints[t];
+    for (std::size_t k = 0; k < targets_.size(); ++k) {
+        const IkConstraint& c = r.constraints[targets_[k]];
         const double kappa = targetWeight(c.strength);
         const Eigen::Vector3d e = effectorCm(sk, fk_, c.effector) - c.targetCm;
         F += 0.5 * kappa * e.squaredNorm();
         if (!derivatives) continue;
         if (curvature_) addConstraintCurvature(c.effector, kappa * e);
         effectorJacobian(sk, layout_, fk_, pose_, c.effector, jac_);
-        if (const auto it = std::find(exactTargets_.begin(), exactTargets_.end(), t); it != exactTargets_.end()) {
-            const auto row = static_cast<Eigen::Index>(3 * pins_.size() + 3 * (it - exactTargets_.begin()));
-            Aall_.middleRows<3>(row).setZero();
-            for (int a = 0; a < kPoseDofs; ++a)
-                if (yOfDof_[a] >= 0) Aall_.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
-            eAt_.segment<3>(row) = e;  // the residual at z; ê adds the step's linear change
+        if (correctionRow_[k] >= 0) {
+            scatterJacobian(Aall_, correctionRow_[k]);
+            eAt_.segment<3>(correctionRow_[k]) = e;  // the residual at z; ê adds the step's linear change
         }
         for (int a = 0; a < kPoseDofs; ++a) {
             const int ka = yOfDof_[a];
@@ -223,14 +224,12 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         }
     }
     if (derivatives) {
-        A_.setZero();
         for (std::size_t i = 0; i < pins_.size(); ++i) {
             const IkConstraint& pc = r.constraints[pins_[i]];
             const auto row = 3 * static_cast<Eigen::Index>(i);
             c_.segment<3>(row) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
             effectorJacobian(sk, layout_, fk_, pose_, pc.effector, jac_);
-            for (int a = 0; a < kPoseDofs; ++a)
-                if (yOfDof_[a] >= 0) A_.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
+            scatterJacobian(A_, row);
         }
         Aall_.topRows(A_.rows()) = A_;
         eAt_.head(c_.size()).setZero();  // pins are corrected back onto c = 0
@@ -245,6 +244,12 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         }
     }
     return F;
+}
+
+void ConstrainedIkSolver::scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const {
+    into.middleRows<3>(row).setZero();
+    for (int a = 0; a < kPoseDofs; ++a)
+        if (yOfDof_[a] >= 0) into.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
 }
 
 void ConstrainedIkSolver::addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda) {
@@ -327,8 +332,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const bool newton = lastAccepted && curvature_;
         Hm_ = H_;
         if (newton) Hm_ += C_;
-        // Damped model; grow μ until it is positive definite (a Newton model that is not falls
-        // back to Gauss–Newton first).
+        // Damped model (a Newton model that cannot be factorised falls back to Gauss–Newton).
         Hd_ = Hm_;
         // ρAᵀA leaves the KKT step unchanged (it only shifts ν by −ρc) but makes the factorised
         // matrix positive definite wherever the Hessian is on the pins' tangent space, which is
@@ -394,7 +398,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         if (p > 0) meritNu = std::max(meritNu, 2.0 * nu_.cwiseAbs().maxCoeff());
         const double c1 = p > 0 ? c_.lpNorm<1>() : 0.0;
         const double pred = stepDecrease + meritNu * scale * c1;
-        // Trial point with second-order corrections onto the pins.
+        // Trial point with second-order corrections.
         zTrial_ = z_ + delta_;
         double trialPinNorm = 0.0;
         const Eigen::Index q = Aall_.rows();
@@ -426,8 +430,9 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double actual = feasible ? F - Ft : (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
         const double predicted = feasible ? stepDecrease : pred;
         const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
-        // Pins never get worse than the tolerance or where they are: a trial that leaves them (a
-        // projection that could not return, e.g. at a straight leg) is rejected, so μ shrinks the step.
+        // Pins never get visibly worse: a trial that leaves them by more than kPinSlackCm, the
+        // tolerance or where they are (a projection that could not return, e.g. at a straight leg)
+        // is rejected, so μ shrinks the step.
         const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
         if (std::isfinite(Ft) && pinsHeld && gain > 1e-4) {
             z_ = zTrial_;

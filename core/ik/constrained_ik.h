@@ -133,6 +133,8 @@ private:
     double correctionResidual(const Eigen::VectorXd& z, Eigen::VectorXd& r);
     void setPose(const Eigen::VectorXd& y);
     void fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+    // Rows row..row+2 of `into` = the effector Jacobian jac_ on the kept columns y (x columns 0).
+    void scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const;
     // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
     void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
 
@@ -146,6 +148,7 @@ private:
     // Bound request.
     const ConstrainedIkRequest* request_ = nullptr;
     std::vector<int> pins_, targets_, exactTargets_;  // indices into request_->constraints
+    std::vector<int> correctionRow_;  // per target: its first row in Aall_, −1 if not exact
     Eigen::Vector3d rootRef_ = Eigen::Vector3d::Zero();
 
     // Workspace.
