@@ -400,7 +400,6 @@ void ViewportPanel::draw(EditorState& s) {
     if (s.doc.hasClip() && ImGui::IsMousePosValid(&mouse)) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
 
     // Keys that act on the viewport.
-    ImGuiIO& io = ImGui::GetIO();
     if (!s.keysBlocked) {
         if (chordPressed('F')) frameCharacter(s);
         // X, Y or Z during a handle drag: move along that world axis only (again: free).
