@@ -99,7 +99,7 @@ std::string inChild(bool asNobody, const std::function<void()>& fn) {
     REQUIRE(pid >= 0);
     if (pid == 0) {
         ::close(fds[0]);
-        if (asNobody && ::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(126);
+        if (asNobody && ::geteuid() == 0 && !test::becomeNobody()) ::_exit(126);
         std::string msg;
         try {
             fn();

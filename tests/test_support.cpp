@@ -126,7 +126,7 @@ Child spawnBounded(const std::vector<std::string>& argv, const CliLimits& limits
 #endif
         }
         if (limits.dropRoot && ::geteuid() == 0) {
-            if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(126);
+            if (!becomeNobody()) ::_exit(126);
         }
         ::execv(cargv[0], cargv.data());
         ::_exit(127);
@@ -176,6 +176,8 @@ CliResult runCliArgs(const std::vector<std::string>& args, const CliLimits& limi
     return runBounded(argv, limits);
 }
 
+bool becomeNobody() { return ::setgroups(0, nullptr) == 0 && ::setgid(65534) == 0 && ::setuid(65534) == 0; }
+
 std::string unreachableAsNobody(const std::vector<std::string>& paths) {
     if (::geteuid() != 0) return "";
     std::vector<std::pair<std::string, int>> wanted{{MOTIONGP_TEST_BINARY, X_OK}};
@@ -184,7 +186,7 @@ std::string unreachableAsNobody(const std::vector<std::string>& paths) {
     const pid_t pid = ::fork();
     REQUIRE(pid >= 0);
     if (pid == 0) {
-        if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(255);
+        if (!becomeNobody()) ::_exit(255);
         for (std::size_t i = 0; i < wanted.size(); ++i)
             if (::access(wanted[i].first.c_str(), wanted[i].second) != 0) ::_exit(static_cast<int>(i + 1));
         ::_exit(0);

@@ -42,6 +42,9 @@ struct CliLimits {
 };
 // The bounds of the hostile-input table: 20 s wall clock, 2 GiB address space.
 CliLimits hostileLimits();
+// In a forked child of root: become nobody (65534) with no supplementary groups, so that file
+// permissions apply. Only async-signal-safe calls (it runs between fork and exec). False if it failed.
+bool becomeNobody();
 // Why a child dropped to nobody (CliLimits::dropRoot) could not run the motiongp binary or reach
 // one of `paths` ("" when it can, or when this process is not root and drops nothing). As root in
 // a private folder (a home of mode 0700, a mktemp -d), nobody cannot even reach the binary.
