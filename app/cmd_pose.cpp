@@ -200,8 +200,8 @@ const CommandRegistration reg("pose", "Solve IK on one frame of a model's clip (
     sub.add_option("--solver", o->solver, "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
     sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive,
-                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached, L_IK is within the training "
-                 "frames' 99th percentile and σ² within twice its own");
+                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and L_IK is within the "
+                 "99th percentile (σ²: twice it) of the captured frames scored as new poses");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_flag("--json", o->json, "Print one JSON object");
     return [o]() { return runPose(*o); };

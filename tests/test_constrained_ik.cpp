@@ -1,6 +1,7 @@
 // Constrained learned IK (core/ik/constrained_ik.h) on real clips: hard pins, exact targets, the
 // 50-iteration budget, unreachable targets, and the admission rule for adaptive updates
 // (core/gp/training_range.h). Tuned on 35_01; 10_03 (kick) and 16_01 (jump) are held out.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -215,22 +216,38 @@ TEST_CASE("constrained IK: bad requests give one clear diagnostic and the start 
     CHECK(res.diagnostic == "expected a 2-D latent start, found 3");
 }
 
-TEST_CASE("training range: the 99th percentiles over the training rows, and the admission rule") {
+TEST_CASE("training range: the 99th percentiles of the captured frames scored as new poses, and the admission rule") {
     const auto version = test::walkModel35();
     const gp::TrainingRange& r = version->range;
     CHECK(r.rows == version->model->N());
     CHECK(r.percentile == 99.0);
     CHECK(r.sigma2Limit >= r.sigma2Median);
     CHECK(r.likLimit >= r.likMedian);
-    // By construction about 1 % of training rows lie above each limit.
-    int above = 0;
-    gp::PointWorkspace ws;
-    for (int i = 0; i < version->model->N(); ++i) {
-        const double l = version->point->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(), ws,
-                                                  nullptr, nullptr);
-        above += l > r.likLimit;
+    // By construction about 1 % of the held-out scores lie above each percentile.
+    std::vector<double> s2, lik;
+    gp::heldOutMomentScores(*version->model, *version->point, gp::kHeldOutWindowFrames, s2, lik);
+    REQUIRE(static_cast<int>(lik.size()) == version->model->N());
+    int above = 0, aboveS2 = 0;
+    for (std::size_t i = 0; i < lik.size(); ++i) {
+        above += lik[i] > r.likLimit;
+        aboveS2 += s2[i] > r.sigma2Percentile;
     }
     CHECK(above <= version->model->N() / 100 + 1);
+    CHECK(aboveS2 <= version->model->N() / 100 + 1);
+    // Hiding a row's moment is what makes it a new pose: in-sample, rows score below the
+    // held-out median for most rows (σ² ≈ 1/β at an active row; measured 319 of 358).
+    gp::PointWorkspace ws;
+    int inSampleBelowMedian = 0;
+    for (int i = 0; i < version->model->N(); ++i)
+        inSampleBelowMedian += version->point->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(),
+                                                        ws, nullptr, nullptr) < r.likMedian;
+    CHECK(inSampleBelowMedian >= version->model->N() * 8 / 10);
+    // A window of 0 frames hides only the row itself, so the scores fall as the window shrinks.
+    std::vector<double> s2Own, likOwn;
+    gp::heldOutMomentScores(*version->model, *version->point, 0, s2Own, likOwn);
+    double sumOwn = 0.0, sumWindow = 0.0;
+    for (std::size_t i = 0; i < lik.size(); ++i) sumOwn += likOwn[i], sumWindow += lik[i];
+    CHECK(sumOwn < sumWindow);
     CHECK(gp::admitPose(r, true, r.sigma2Median, r.likMedian).admitted);
     CHECK(gp::admitPose(r, false, r.sigma2Median, r.likMedian).reason == "a target or pin was not reached");
     const gp::AdmissionVerdict high = gp::admitPose(r, true, r.sigma2Median, 2.0 * std::abs(r.likLimit) + 1.0);
@@ -238,4 +255,42 @@ TEST_CASE("training range: the 99th percentiles over the training rows, and the 
     CHECK(high.reason.find("L_IK") == 0);
     CHECK_FALSE(gp::admitPose(r, true, 2.0 * r.sigma2Limit, r.likMedian).admitted);
     CHECK_FALSE(gp::admitPose(r, true, NAN, r.likMedian).admitted);
+}
+
+TEST_CASE("point model: predicting while holding out active points equals a model built without them") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    const Eigen::MatrixXd XI = m.activeX(), Yhat = m.activeYhat();
+    const gp::Kernel kernel = version->point->kernel();
+    const std::vector<int> heldOut = {3, 4, 5, 17, 90};
+    std::vector<int> kept;
+    for (int j = 0; j < XI.rows(); ++j)
+        if (std::find(heldOut.begin(), heldOut.end(), j) == heldOut.end()) kept.push_back(j);
+    Eigen::MatrixXd XK(static_cast<Eigen::Index>(kept.size()), XI.cols()), YK(static_cast<Eigen::Index>(kept.size()), Yhat.cols());
+    for (std::size_t r = 0; r < kept.size(); ++r) {
+        XK.row(static_cast<Eigen::Index>(r)) = XI.row(kept[r]);
+        YK.row(static_cast<Eigen::Index>(r)) = Yhat.row(kept[r]);
+    }
+    const gp::PointModel reduced(kernel, XK, YK, m.mu, m.w);
+    REQUIRE(version->point->jitter() == 0.0);
+    REQUIRE(reduced.jitter() == 0.0);
+    for (const int row : {4, 60, 200}) {
+        CAPTURE(row);
+        // At a held-out point itself, at a training row, and between two rows.
+        const Eigen::VectorXd x = row == 4 ? Eigen::VectorXd(XI.row(4).transpose())
+                                           : Eigen::VectorXd(0.5 * (m.X.row(row) + m.X.row(row + 1)).transpose());
+        Eigen::VectorXd meanHeld, meanReduced;
+        double varHeld = 0.0, varReduced = 0.0;
+        version->point->predictHoldingOut(x, heldOut, meanHeld, varHeld);
+        reduced.predict(x, meanReduced, varReduced);
+        CHECK((meanHeld - meanReduced).cwiseAbs().maxCoeff() <= 1e-7 * (1.0 + meanReduced.cwiseAbs().maxCoeff()));
+        CHECK(std::abs(varHeld - varReduced) <= 1e-9 * (1.0 + varReduced));
+        // Holding out nothing is the plain prediction.
+        Eigen::VectorXd meanAll, meanNone;
+        double varAll = 0.0, varNone = 0.0;
+        version->point->predict(x, meanAll, varAll);
+        version->point->predictHoldingOut(x, {}, meanNone, varNone);
+        CHECK(meanNone == meanAll);
+        CHECK(varNone == varAll);
+    }
 }

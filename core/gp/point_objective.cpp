@@ -112,6 +112,30 @@ void PointModel::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - k.dot(Kinv_ * k));
 }
 
+void PointModel::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
+                                   double& variance) const {
+    if (heldOut.empty()) return predict(x, mean, variance);
+    const Eigen::Index b = static_cast<Eigen::Index>(heldOut.size());
+    // z = k(x) with the held-out entries zeroed; v = K⁻¹z holds P k_keep (kept rows) and Qᵀ k_keep
+    // (held-out rows), so (K_{−B})⁻¹k_keep = v_keep − Q S⁻¹ v_B.
+    Eigen::VectorXd z = kernel_.cross(XI_, x);
+    for (const int j : heldOut) z[j] = 0.0;
+    const Eigen::VectorXd v = Kinv_ * z;
+    Eigen::MatrixXd S(b, b);
+    Eigen::VectorXd vB(b);
+    Eigen::MatrixXd BB(b, B_.cols());
+    for (Eigen::Index r = 0; r < b; ++r) {
+        vB[r] = v[heldOut[static_cast<std::size_t>(r)]];
+        BB.row(r) = B_.row(heldOut[static_cast<std::size_t>(r)]);
+        for (Eigen::Index c = 0; c < b; ++c) S(r, c) = Kinv_(heldOut[static_cast<std::size_t>(r)], heldOut[static_cast<std::size_t>(c)]);
+    }
+    const Eigen::VectorXd t = S.llt().solve(vB);  // S⁻¹ v_B (S is a principal block of K⁻¹: SPD)
+    // B_keep = (K⁻¹Ŷ)_keep, and (K_{−B})⁻¹Ŷ_keep = B_keep − Q S⁻¹ B_B, so the mean is
+    // μ + B_keepᵀ k_keep − B_Bᵀ S⁻¹ Qᵀ k_keep = μ + B_ᵀz − B_Bᵀ t.
+    mean = mu_ + B_.transpose() * z - BB.transpose() * t;
+    variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - z.dot(v) + vB.dot(t));
+}
+
 double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                             Eigen::VectorXd* gradY) const {
     const double D = static_cast<double>(mu_.size());

@@ -42,6 +42,13 @@ public:
 
     // Mean pose f(x) and variance σ²(x).
     void predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const;
+    // The same prediction from the GP conditioned on every active point except `heldOut`
+    // (distinct indices into the active set): the block-inverse identity
+    //   (K_{−B})⁻¹ = P − Q S⁻¹ Qᵀ,   K⁻¹ = [P Q; Qᵀ S]
+    // gives it in O(M|B| + |B|³) from this model's K⁻¹ and K⁻¹Ŷ, with no refactorisation
+    // (docs/maths-ik.md §5: what a captured pose scores when the model has not seen its moment).
+    void predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
+                           double& variance) const;
 
     // L_IK(x, y); gradients are written when the pointers are non-null (sized by the callee).
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,

@@ -19,36 +19,36 @@ double percentileOf(std::vector<double> v, double p) {
 }
 }  // namespace
 
+void heldOutMomentScores(const GpModel& model, const PointModel& point, int windowFrames, std::vector<double>& sigma2,
+                         std::vector<double>& lik) {
+    sigma2.clear();
+    lik.clear();
+    const double D = static_cast<double>(model.Y.cols());
+    Eigen::VectorXd x, y, mean;
+    std::vector<int> held;
+    for (int i = 0; i < model.N(); ++i) {
+        held.clear();
+        for (std::size_t a = 0; a < model.active.size(); ++a)
+            if (std::abs(model.trainingFrames[static_cast<std::size_t>(model.active[a])] -
+                         model.trainingFrames[static_cast<std::size_t>(i)]) <= windowFrames)
+                held.push_back(static_cast<int>(a));
+        x = model.X.row(i).transpose();
+        y = model.Y.row(i).transpose();
+        double v = 0.0;
+        point.predictHoldingOut(x, held, mean, v);
+        const double l = model.w.cwiseProduct(y - mean).squaredNorm() / (2.0 * v) + 0.5 * D * std::log(v) + 0.5 * x.squaredNorm();
+        if (!std::isfinite(l) || !std::isfinite(v)) continue;
+        sigma2.push_back(v);
+        lik.push_back(l);
+    }
+}
+
 TrainingRange computeTrainingRange(const GpModel& model, const PointModel& point, double percentile) {
     TrainingRange out;
     out.percentile = percentile;
     out.rows = model.N();
     std::vector<double> s2, lik;
-    s2.reserve(model.N());
-    lik.reserve(model.N());
-    PointWorkspace ws;
-    Eigen::VectorXd x, y;
-    for (int i = 0; i < model.N(); ++i) {
-        x = model.X.row(i).transpose();
-        y = model.Y.row(i).transpose();
-        const double l = point.evaluate(x, y, ws, nullptr, nullptr);
-        if (!std::isfinite(l) || !std::isfinite(ws.variance)) continue;
-        lik.push_back(l);
-        s2.push_back(ws.variance);
-    }
-    // σ² is near 1/β at a training row itself, so the rows alone would refuse nearly every new
-    // pose: the reference also holds σ² halfway between consecutive training frames (in clip
-    // order), i.e. along the captured motion's own latent path.
-    std::vector<int> order(static_cast<std::size_t>(model.N()));
-    for (int i = 0; i < model.N(); ++i) order[static_cast<std::size_t>(i)] = i;
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return model.trainingFrames[a] < model.trainingFrames[b]; });
-    Eigen::VectorXd mean;
-    for (std::size_t k = 1; k < order.size(); ++k) {
-        x = 0.5 * (model.X.row(order[k - 1]) + model.X.row(order[k])).transpose();
-        double v = 0.0;
-        point.predict(x, mean, v);
-        if (std::isfinite(v)) s2.push_back(v);
-    }
+    heldOutMomentScores(model, point, kHeldOutWindowFrames, s2, lik);
     out.sigma2Percentile = percentileOf(s2, percentile);
     out.sigma2Limit = kSigma2Margin * out.sigma2Percentile;
     out.likLimit = percentileOf(lik, percentile);
@@ -70,11 +70,11 @@ AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigm
     if (!v.reached) {
         v.reason = "a target or pin was not reached";
     } else if (!v.likInRange) {
-        std::snprintf(buf, sizeof buf, "L_IK %.4g is above the training frames' %gth percentile %.4g", lik, range.percentile,
+        std::snprintf(buf, sizeof buf, "L_IK %.4g is above the held-out training moments' %gth percentile %.4g", lik, range.percentile,
                       range.likLimit);
         v.reason = buf;
     } else if (!v.sigma2InRange) {
-        std::snprintf(buf, sizeof buf, "σ² %.4g is above %g × the training frames' %gth percentile %.4g", sigma2,
+        std::snprintf(buf, sizeof buf, "σ² %.4g is above %g × the held-out training moments' %gth percentile %.4g", sigma2,
                       kSigma2Margin, range.percentile, range.sigma2Percentile);
         v.reason = buf;
     }
