@@ -19,6 +19,38 @@ LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, c
     };
 }
 
+double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, const Eigen::MatrixXd& Yhat,
+                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g, double* jitter) {
+    const int p = paramCount(kind);
+    const int d = m > 0 ? static_cast<int>((z.size() - p) / m) : 0;
+    Eigen::VectorXd psi;
+    Eigen::MatrixXd XI;
+    unpackParams(z, p, m, d, psi, XI);
+    if (psi.hasNaN()) {  // a failed trial step, as for non-finite X_I (maths §4.4)
+        g = Eigen::VectorXd::Zero(z.size());
+        if (jitter) *jitter = 0.0;
+        return std::numeric_limits<double>::infinity();
+    }
+    GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
+    if (jitter) *jitter = ev.jitter;
+    if (extra && ev.ok) {
+        Eigen::MatrixXd gx;
+        const double v = extra(XI, gx);
+        ev.value += v;
+        ev.gradX += gx;
+        if (!std::isfinite(ev.value) || !ev.gradX.allFinite()) {
+            ev.value = std::numeric_limits<double>::infinity();
+            ev.gradPsi.setZero();
+            ev.gradX.setZero();
+        }
+    }
+    // Outside the box the kernel clamps ψ_p, so L is flat in ψ_p there: its derivative is 0.
+    for (int i = 0; i < p; ++i)
+        if (std::abs(psi[i]) > kLogParamBound) ev.gradPsi[i] = 0.0;
+    g = packParams(ev.gradPsi, ev.gradX);
+    return ev.value;
+}
+
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0, const Eigen::MatrixXd& XI0,
                                     const Eigen::MatrixXd& Yhat, const ScgOptions& options,
                                     const GpObjectiveOptions& objective, const LatentTerm& extra) {
@@ -26,24 +58,10 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     const int p = paramCount(kind);
     ActiveStepResult out;
     const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
-        Eigen::VectorXd psi;
-        Eigen::MatrixXd XI;
-        unpackParams(z, p, m, d, psi, XI);
-        GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
-        out.trialJitterMax = std::max(out.trialJitterMax, ev.jitter);
-        if (extra && ev.ok) {
-            Eigen::MatrixXd gx;
-            const double v = extra(XI, gx);
-            ev.value += v;
-            ev.gradX += gx;
-            if (!std::isfinite(ev.value) || !ev.gradX.allFinite()) {
-                ev.value = std::numeric_limits<double>::infinity();
-                ev.gradPsi.setZero();
-                ev.gradX.setZero();
-            }
-        }
-        g = packParams(ev.gradPsi, ev.gradX);
-        return ev.value;
+        double jitter = 0.0;
+        const double value = activeStepObjective(kind, z, m, Yhat, objective, extra, g, &jitter);
+        out.trialJitterMax = std::max(out.trialJitterMax, jitter);
+        return value;
     };
     const Eigen::VectorXd z0 = packParams(psi0, XI0);
     Eigen::VectorXd g0(z0.size());

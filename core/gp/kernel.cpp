@@ -22,9 +22,10 @@ Kernel::Kernel(KernelKind kind, const Eigen::VectorXd& logParams) : kind_(kind) 
         throw std::invalid_argument("Kernel: wrong number of log-parameters");
     psi_ = logParams;
     for (Eigen::Index i = 0; i < psi_.size(); ++i) {
-        double v = psi_[i];
-        if (!std::isfinite(v)) v = 0.0;  // never let a NaN in: treat as θ = 1
-        psi_[i] = std::clamp(v, -kLogParamBound, kLogParamBound);
+        // A NaN has no place in the box: say so rather than evaluate some other θ (maths §4.6).
+        if (std::isnan(psi_[i]))
+            throw std::invalid_argument("expected finite kernel log-parameters, found NaN at index " + std::to_string(i));
+        psi_[i] = std::clamp(psi_[i], -kLogParamBound, kLogParamBound);
     }
     alpha_ = std::exp(psi_[kAlpha]);
     gamma_ = std::exp(psi_[kGamma]);
