@@ -236,3 +236,22 @@ TEST_CASE("Step 6 objective: flat outside the log-parameter box, with a zero gra
         }
     }
 }
+
+TEST_CASE("L_GP: a reused GpWorkspace gives the same bits as a fresh one, whatever it held before") {
+    const Fixture f = walkFixture();
+    const Kernel k(KernelKind::kFas, psiFor(KernelKind::kFas));
+    GpWorkspace fresh, reused;
+    // Fill the reused workspace with another problem's sizes and values first.
+    const Eigen::MatrixXd smallX = f.XI.topRows(7) * 1.3, smallY = f.Yhat.topRows(7);
+    evaluateGp(Kernel(KernelKind::kSgplvm, psiFor(KernelKind::kSgplvm)), smallX, smallY, {}, true, reused);
+    const GpEvaluation a = evaluateGp(k, f.XI, f.Yhat, {}, true, fresh);
+    const GpEvaluation b = evaluateGp(k, f.XI, f.Yhat, {}, true, reused);
+    const GpEvaluation c = evaluateGp(k, f.XI, f.Yhat);
+    REQUIRE(a.ok);
+    CHECK(a.value == b.value);
+    CHECK(a.value == c.value);
+    CHECK(a.gradPsi == b.gradPsi);
+    CHECK(a.gradX == b.gradX);
+    CHECK(a.gradX == c.gradX);
+    CHECK(a.w == b.w);
+}

@@ -20,7 +20,8 @@ LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, c
 }
 
 double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, const Eigen::MatrixXd& Yhat,
-                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g, double* jitter) {
+                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g, double* jitter,
+                           GpWorkspace* workspace) {
     const int p = paramCount(kind);
     const int d = m > 0 ? static_cast<int>((z.size() - p) / m) : 0;
     Eigen::VectorXd psi;
@@ -31,7 +32,8 @@ double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, con
         if (jitter) *jitter = 0.0;
         return std::numeric_limits<double>::infinity();
     }
-    GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective);
+    GpWorkspace local;
+    GpEvaluation ev = evaluateGp(Kernel(kind, psi), XI, Yhat, objective, true, workspace ? *workspace : local);
     if (jitter) *jitter = ev.jitter;
     if (extra && ev.ok) {
         Eigen::MatrixXd gx;
@@ -57,9 +59,10 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     const int m = static_cast<int>(XI0.rows()), d = static_cast<int>(XI0.cols());
     const int p = paramCount(kind);
     ActiveStepResult out;
+    GpWorkspace workspace;  // reused by every evaluation of this step (one thread)
     const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
         double jitter = 0.0;
-        const double value = activeStepObjective(kind, z, m, Yhat, objective, extra, g, &jitter);
+        const double value = activeStepObjective(kind, z, m, Yhat, objective, extra, g, &jitter, &workspace);
         out.trialJitterMax = std::max(out.trialJitterMax, jitter);
         return value;
     };
@@ -70,7 +73,7 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     out.iterations = r.iterations;
     unpackParams(r.x, p, m, d, out.psi, out.XI);
     out.psi = out.psi.cwiseMax(-kLogParamBound).cwiseMin(kLogParamBound);
-    GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat, objective);
+    GpEvaluation fin = evaluateGp(Kernel(kind, out.psi), out.XI, Yhat, objective, true, workspace);
     if (extra && fin.ok) {
         Eigen::MatrixXd gx;
         fin.value += extra(out.XI, gx);

@@ -131,8 +131,15 @@ Eigen::VectorXd Kernel::gradLogParams(const Eigen::MatrixXd& X, const Eigen::Mat
 }
 
 Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const {
+    GradXScratch scratch;
+    return gradX(X, p, G, scratch);
+}
+
+Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G,
+                              GradXScratch& scratch) const {
     // RBF: 2 Σ_j G_ij (−αγ)(x_i − x_j) R_ij = −2αγ (diag(H1) X − H X)_i with H = G∘R.
-    thread_local Eigen::MatrixXd H, Q;  // scratch storage reused across calls
+    Eigen::MatrixXd& H = scratch.H;
+    Eigen::MatrixXd& Q = scratch.Q;
     H.resize(G.rows(), G.cols());
     H.array() = G.array() * p.R.array();
     Eigen::MatrixXd out = (-2.0 * alpha_ * gamma_) * (H.rowwise().sum().asDiagonal() * X - H * X);
