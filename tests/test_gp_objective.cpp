@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "gp/active_step.h"
 #include "gp/gp_objective.h"
 #include "gp/pca_init.h"
 #include "gp/scg.h"
@@ -187,13 +188,70 @@ TEST_CASE("L_GP: closed-form W is stationary (gauge and free) and the gauge hold
 TEST_CASE("L_GP: no NaN leaves the function") {
     Fixture f = walkFixture();
     Eigen::VectorXd psi(4);
-    psi << 1000.0, std::nan(""), -1000.0, 50.0;
+    psi << 1000.0, 0.0, -1000.0, 50.0;
     const GpEvaluation a = evaluateGp(Kernel(KernelKind::kFas, psi), f.XI, f.Yhat);
     CHECK(!std::isnan(a.value));
     CHECK(!a.gradPsi.hasNaN());
+    // A NaN parameter is refused by the kernel, and Step 6's objective calls it a failed step.
+    psi[1] = std::nan("");
+    CHECK_THROWS_AS(Kernel(KernelKind::kFas, psi), std::invalid_argument);
+    Eigen::VectorXd g;
+    const double v = activeStepObjective(KernelKind::kFas, packParams(psi, f.XI), static_cast<int>(f.XI.rows()), f.Yhat, {},
+                                         nullptr, g);
+    CHECK(std::isinf(v));
+    CHECK(g.size() == psi.size() + f.XI.size());
+    CHECK(g.isZero());
     f.XI(0, 0) = std::nan("");
     const GpEvaluation b = evaluateGp(Kernel(KernelKind::kFas, psiFor(KernelKind::kFas)), f.XI, f.Yhat);
     CHECK(!b.ok);
     CHECK(std::isinf(b.value));
     CHECK(!b.gradX.hasNaN());
+}
+
+TEST_CASE("Step 6 objective: flat outside the log-parameter box, with a zero gradient there (central differences)") {
+    const Fixture f = walkFixture();
+    for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
+        Eigen::VectorXd psi = psiFor(kind);
+        psi[kAlpha] = kLogParamBound + 4.0;  // outside the box: α is clamped at e^36
+        psi[kBeta] = -(kLogParamBound + 2.0);
+        const int m = static_cast<int>(f.XI.rows());
+        const Eigen::VectorXd z = packParams(psi, f.XI);
+        Eigen::VectorXd g, gp_, gm;
+        const double v = activeStepObjective(kind, z, m, f.Yhat, {}, nullptr, g);
+        REQUIRE(std::isfinite(v));
+        const double h = 1e-4;
+        for (int i = 0; i < 8; ++i) {
+            Eigen::VectorXd zp = z, zm = z;
+            zp[i] += h;
+            zm[i] -= h;
+            const double num = (activeStepObjective(kind, zp, m, f.Yhat, {}, nullptr, gp_) -
+                                activeStepObjective(kind, zm, m, f.Yhat, {}, nullptr, gm)) / (2 * h);
+            INFO(kernelKindName(kind) << " coordinate " << i << ": analytic " << g[i] << ", numeric " << num);
+            if (i == kAlpha || i == kBeta) {
+                CHECK(g[i] == 0.0);  // before: the gradient of the clamped value, not 0
+                CHECK(num == 0.0);   // the value is exactly flat
+            } else {
+                CHECK(std::abs(num - g[i]) <= 1e-5 * std::max(1.0, std::abs(g[i])));
+            }
+        }
+    }
+}
+
+TEST_CASE("L_GP: a reused GpWorkspace gives the same bits as a fresh one, whatever it held before") {
+    const Fixture f = walkFixture();
+    const Kernel k(KernelKind::kFas, psiFor(KernelKind::kFas));
+    GpWorkspace fresh, reused;
+    // Fill the reused workspace with another problem's sizes and values first.
+    const Eigen::MatrixXd smallX = f.XI.topRows(7) * 1.3, smallY = f.Yhat.topRows(7);
+    evaluateGp(Kernel(KernelKind::kSgplvm, psiFor(KernelKind::kSgplvm)), smallX, smallY, {}, true, reused);
+    const GpEvaluation a = evaluateGp(k, f.XI, f.Yhat, {}, true, fresh);
+    const GpEvaluation b = evaluateGp(k, f.XI, f.Yhat, {}, true, reused);
+    const GpEvaluation c = evaluateGp(k, f.XI, f.Yhat);
+    REQUIRE(a.ok);
+    CHECK(a.value == b.value);
+    CHECK(a.value == c.value);
+    CHECK(a.gradPsi == b.gradPsi);
+    CHECK(a.gradX == b.gradX);
+    CHECK(a.gradX == c.gradX);
+    CHECK(a.w == b.w);
 }

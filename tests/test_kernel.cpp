@@ -103,11 +103,15 @@ TEST_CASE("kernel: cross and diagonal latent gradients against central differenc
     }
 }
 
-TEST_CASE("kernel: log-parameters are clamped and a NaN parameter never reaches exp()") {
+TEST_CASE("kernel: log-parameters are clamped and a NaN parameter is rejected with a clear error") {
     Eigen::VectorXd psi(4);
-    psi << 100.0, -100.0, std::nan(""), 0.0;
+    psi << 100.0, -100.0, 0.0, 0.0;
     const Kernel k(KernelKind::kFas, psi);
     CHECK(k.logParams()[kAlpha] == kLogParamBound);
     CHECK(k.logParams()[kGamma] == -kLogParamBound);
     CHECK(std::isfinite(k.beta()));
+    // A NaN used to become θ = 1 silently; it never reaches exp() and is now named.
+    psi[2] = std::nan("");
+    CHECK_THROWS_WITH_AS(Kernel(KernelKind::kFas, psi), "expected finite kernel log-parameters, found NaN at index 2",
+                         std::invalid_argument);
 }

@@ -102,3 +102,74 @@ TEST_CASE("learned IK: unreachable and NaN targets give finite results, reached 
     CHECK_FALSE(res.reached);
     for (const auto& a : res.pose.anglesDeg) CHECK(a.allFinite());
 }
+
+namespace {
+// ‖x − a‖² whose gradient turns to the wrong sign after `goodEvaluations` calls: the line
+// search of the next iteration then fails. Carries the counter CountingLineSearch increments.
+struct TurningBad {
+    int* lineSearches;
+    int goodEvaluations;
+    int evaluations = 0;
+    double operator()(const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+        const Eigen::VectorXd a = Eigen::VectorXd::LinSpaced(x.size(), 1.0, 3.0);
+        g = 2.0 * (x - a).cwiseProduct(Eigen::VectorXd::LinSpaced(x.size(), 1.0, 9.0));
+        const double f = (x - a).cwiseAbs2().dot(Eigen::VectorXd::LinSpaced(x.size(), 1.0, 9.0));
+        if (++evaluations > goodEvaluations) g = -g;
+        return f;
+    }
+};
+}  // namespace
+
+TEST_CASE("learned IK: the line-search counter gives the true iteration count, also when a line search throws") {
+    LBFGSpp::LBFGSParam<double> param;
+    param.epsilon = 1e-30;
+    param.epsilon_rel = 1e-30;
+    param.past = 0;
+    param.max_iterations = 6;
+    LBFGSpp::LBFGSSolver<double, CountingLineSearch> solver(param);
+    int lineSearches = 0;
+    TurningBad good{&lineSearches, 1000000};
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(5);
+    double fx = 0.0;
+    const int k = solver.minimize(good, x, fx);
+    CHECK(k == 6);
+    CHECK(lineSearches == k);  // one line search per iteration
+    // A wrong-signed gradient from the start: the first line search never finds a decrease and
+    // throws, so no iteration completed (the cap, 100, was reported before).
+    lineSearches = 0;
+    param.max_iterations = 100;
+    TurningBad bad{&lineSearches, 0};
+    x.setZero();
+    CHECK_THROWS_AS(solver.minimize(bad, x, fx), std::runtime_error);
+    CHECK(lineSearches == 1);
+    // Going wrong part-way: some iterations complete, then one throws, well before the cap.
+    lineSearches = 0;
+    TurningBad later{&lineSearches, 4};
+    x.setZero();
+    CHECK_THROWS(solver.minimize(later, x, fx));
+    CHECK(lineSearches >= 1);
+    CHECK(lineSearches < 100);
+}
+
+TEST_CASE("learned IK: the stop reason is an enum that agrees with converged and the diagnostic") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    LearnedIkSolver solver(version);
+    LearnedIkRequest req = test::requestAtFrame(*version, 100, 200);
+    req.constraints = {{Effector::kRFoot, effectorCm(m.clip.skeleton, req.start, Effector::kRFoot) + Eigen::Vector3d(0, 5, 0), false}};
+    const LearnedIkResult r = solver.solve(req);
+    CHECK(r.converged == (r.stop == LearnedIkStop::kConverged));
+    if (r.stop == LearnedIkStop::kLineSearchFailed) CHECK(r.diagnostic.rfind("line search: ", 0) == 0);
+    else CHECK(r.diagnostic == learnedIkStopName(r.stop));
+    CHECK(r.iterations >= 0);
+    CHECK(r.iterations <= req.maxIterations);
+    req.maxIterations = 2;
+    const LearnedIkResult capped = solver.solve(req);
+    CHECK(capped.stop == LearnedIkStop::kIterationCap);
+    CHECK(capped.iterations == 2);
+    CHECK(capped.diagnostic == "iteration cap");
+    req.maxIterations = 0;
+    const LearnedIkResult refused = solver.solve(req);
+    CHECK(refused.stop == LearnedIkStop::kInvalidRequest);
+    CHECK(refused.iterations == 0);
+}

@@ -158,6 +158,11 @@ TEST_CASE("model_file: newer versions, other formats, truncated and empty files 
     bad = doc;
     bad["clip"]["first_frame_label"] = 1e300;
     expectError(bad.dump(1), "an integer for first_frame_label, found 1e+300");
+    // A NaN kernel parameter (JSON writes it as null) is refused with the field's name, never
+    // read as θ = 1.
+    bad = doc;
+    bad["log_params"][1] = nullptr;
+    expectError(bad.dump(1), "numbers in log_params, found null");
     CHECK_THROWS_AS(loadModel(tmpDir() + "/does-not-exist.json"), mgp::ParseError);
 }
 

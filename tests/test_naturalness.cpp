@@ -101,6 +101,9 @@ TEST_CASE("editing-range sweep: per-test ranges are prefix ranges and the combin
     const EditingRange r = job.run();
     REQUIRE(!r.steps.empty());
     CHECK(r.steps[0].deltaCm == 0);
+    // δ = 0 is the captured frame itself (left out of R by ±10): a range of −1 would make the
+    // prefix checks below vacuous.
+    CHECK(r.combined >= 0);
     const int perTest[5] = {r.reach, r.ranges, r.nearest, r.density, r.continuity};
     CHECK(r.combined == *std::min_element(perTest, perTest + 5));
     // Prefix semantics: every step up to the combined range was accepted, and the next was not.

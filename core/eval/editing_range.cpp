@@ -43,7 +43,7 @@ EditingRange EditingRangeJob::run() const {
             if (passing[k]) *ranges[k] = delta;
         }
         if (adaptive && passing[0] && res.x.allFinite()) {
-            const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*current, res.x, res.y, frame);
+            const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*current, res.x, res.y, frame, adaptiveScgIterations);
             if (u.accepted) {
                 current = u.version;
                 step.updatedModel = true;

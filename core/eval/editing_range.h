@@ -38,6 +38,7 @@ struct EditingRangeJob {
     bool adaptive = false;
     int maxDeltaCm = 80;
     int ikIterations = 500;
+    int adaptiveScgIterations = 100;  // SCG iterations of each adaptive update
     EditingRange run() const;
 };
 

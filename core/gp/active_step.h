@@ -35,6 +35,14 @@ using LatentTerm = std::function<double(const Eigen::MatrixXd& XI, Eigen::Matrix
 // rows `active` of ∂L_smooth/∂X. X and active are copied into the term.
 LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, const std::vector<int>& active);
 
+// The function Step 6 minimises, at z = packParams(ψ, X_I) (M = m rows): L_GP (+ extra(X_I)),
+// gradient into g. ψ outside the ±kLogParamBound box is clamped by the kernel, so the function is
+// flat there and g's ψ entry is 0; a NaN in ψ is a failed step (+∞, zero gradient). jitter (if
+// given) receives the Cholesky jitter used. workspace: the caller's scratch (nullptr: a local one).
+double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, const Eigen::MatrixXd& Yhat,
+                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g,
+                           double* jitter = nullptr, GpWorkspace* workspace = nullptr);
+
 // With `extra` set, the minimised function is L_GP + extra(X_I) (before/after include it).
 ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI,
                                     const Eigen::MatrixXd& Yhat, const ScgOptions& options,

@@ -26,6 +26,12 @@ bool jitterCholesky(const Eigen::MatrixXd& K, Eigen::LLT<Eigen::MatrixXd>& llt, 
 
 GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
                         const GpObjectiveOptions& options, bool wantGradient) {
+    GpWorkspace workspace;
+    return evaluateGp(kernel, XI, Yhat, options, wantGradient, workspace);
+}
+
+GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+                        const GpObjectiveOptions& options, bool wantGradient, GpWorkspace& ws) {
     GpEvaluation ev;
     const Eigen::Index m = XI.rows(), d = XI.cols(), D = Yhat.cols();
     const double inf = std::numeric_limits<double>::infinity();
@@ -34,16 +40,14 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
     ev.gradX = Eigen::MatrixXd::Zero(m, d);
     if (m == 0 || D == 0 || Yhat.rows() != m || !XI.allFinite()) return ev;
 
-    // Per-thread scratch: the M×M buffers are reused across calls (no page faults per call).
-    // Only storage is shared between calls, never values, so results do not depend on history.
-    thread_local GramParts parts;
-    thread_local Eigen::MatrixXd K, Linv, G;
+    GramParts& parts = ws.parts;
+    Eigen::MatrixXd &K = ws.K, &Linv = ws.Linv, &G = ws.G;
     kernel.parts(XI, parts);
     K.resize(m, m);
     K.noalias() = kernel.alpha() * parts.R;
     if (kernel.hasEta()) K.noalias() += kernel.eta() * parts.E;
     K.diagonal().array() += 1.0 / kernel.beta();
-    thread_local Eigen::LLT<Eigen::MatrixXd> llt;
+    Eigen::LLT<Eigen::MatrixXd>& llt = ws.llt;
     if (!jitterCholesky(K, llt, ev.jitter)) return ev;
     const Eigen::MatrixXd& L = llt.matrixLLT();
     const double logDet = 2.0 * L.diagonal().array().log().sum();
@@ -83,7 +87,7 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
         G.triangularView<Eigen::StrictlyUpper>() = G.transpose();  // exactly symmetric for gradX
         ev.gradPsi = kernel.gradLogParams(parts, G);
         ev.gradPsi.array() += 1.0;  // each +ln θ prior adds exactly 1
-        ev.gradX = kernel.gradX(XI, parts, G) + XI;
+        ev.gradX = kernel.gradX(XI, parts, G, ws.gradX) + XI;
         if (!ev.gradPsi.allFinite() || !ev.gradX.allFinite()) {
             ev.gradPsi.setZero();
             ev.gradX.setZero();

@@ -42,7 +42,20 @@ struct GpEvaluation {
 // at most 10 tries. Returns false if every try failed. `jitter` receives the amount added.
 bool jitterCholesky(const Eigen::MatrixXd& K, Eigen::LLT<Eigen::MatrixXd>& llt, double& jitter);
 
+// The M×M scratch of one evaluation, reused by the caller across calls (no page faults per call),
+// like PointWorkspace for the per-point objective. Only storage is reused, never values, so a
+// result does not depend on what the workspace held. One workspace per thread.
+struct GpWorkspace {
+    GramParts parts;
+    Eigen::MatrixXd K, Linv, G;
+    Eigen::LLT<Eigen::MatrixXd> llt;
+    GradXScratch gradX;
+};
+
 // L_GP and its gradient at (kernel, X_I) for the centred active rows Ŷ (M×D, unscaled).
+GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+                        const GpObjectiveOptions& options, bool wantGradient, GpWorkspace& workspace);
+// The same with a workspace of its own (allocates; for one-off evaluations).
 GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
                         const GpObjectiveOptions& options = {}, bool wantGradient = true);
 

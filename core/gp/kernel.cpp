@@ -22,9 +22,10 @@ Kernel::Kernel(KernelKind kind, const Eigen::VectorXd& logParams) : kind_(kind) 
         throw std::invalid_argument("Kernel: wrong number of log-parameters");
     psi_ = logParams;
     for (Eigen::Index i = 0; i < psi_.size(); ++i) {
-        double v = psi_[i];
-        if (!std::isfinite(v)) v = 0.0;  // never let a NaN in: treat as θ = 1
-        psi_[i] = std::clamp(v, -kLogParamBound, kLogParamBound);
+        // A NaN has no place in the box: say so rather than evaluate some other θ (maths §4.6).
+        if (std::isnan(psi_[i]))
+            throw std::invalid_argument("expected finite kernel log-parameters, found NaN at index " + std::to_string(i));
+        psi_[i] = std::clamp(psi_[i], -kLogParamBound, kLogParamBound);
     }
     alpha_ = std::exp(psi_[kAlpha]);
     gamma_ = std::exp(psi_[kGamma]);
@@ -130,8 +131,15 @@ Eigen::VectorXd Kernel::gradLogParams(const Eigen::MatrixXd& X, const Eigen::Mat
 }
 
 Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const {
+    GradXScratch scratch;
+    return gradX(X, p, G, scratch);
+}
+
+Eigen::MatrixXd Kernel::gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G,
+                              GradXScratch& scratch) const {
     // RBF: 2 Σ_j G_ij (−αγ)(x_i − x_j) R_ij = −2αγ (diag(H1) X − H X)_i with H = G∘R.
-    thread_local Eigen::MatrixXd H, Q;  // scratch storage reused across calls
+    Eigen::MatrixXd& H = scratch.H;
+    Eigen::MatrixXd& Q = scratch.Q;
     H.resize(G.rows(), G.cols());
     H.array() = G.array() * p.R.array();
     Eigen::MatrixXd out = (-2.0 * alpha_ * gamma_) * (H.rowwise().sum().asDiagonal() * X - H * X);

@@ -32,6 +32,11 @@ struct GramParts {
     Eigen::VectorXd n;
 };
 
+// Scratch storage of gradX (G∘R and G∘E, M×M); only storage is reused, never values.
+struct GradXScratch {
+    Eigen::MatrixXd H, Q;
+};
+
 class Kernel {
 public:
     Kernel(KernelKind kind, const Eigen::VectorXd& logParams);
@@ -58,6 +63,7 @@ public:
     Eigen::MatrixXd gram(const GramParts& p) const;
     Eigen::VectorXd gradLogParams(const GramParts& p, const Eigen::MatrixXd& G) const;
     Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const;
+    Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G, GradXScratch& scratch) const;
 
     // Σ_ij G_ij ∂K_ij/∂ψ_p for every log-parameter p (G any M×M matrix).
     Eigen::VectorXd gradLogParams(const Eigen::MatrixXd& X, const Eigen::MatrixXd& G) const;

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "gp/gp_objective.h"
+#include "util/parallel_for.h"
 
 namespace mgp::gp {
 
@@ -189,10 +190,7 @@ void optimizePass(const PointModel& model, const Eigen::MatrixXd& Y, const std::
             results[t] = r.x.allFinite() ? r.x : Eigen::VectorXd(X.row(i).transpose());
         }
     };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
+    parallelFor(threads, [&](int) { worker(); });
     for (std::size_t t = 0; t < points.size(); ++t) X.row(points[t]) = results[t].transpose();
 }
 

@@ -33,7 +33,18 @@ LearnedIkSolver::LearnedIkSolver(gp::ModelVersionPtr version)
     lbfgsParam_.max_linesearch = 40;
     lbfgsParam_.past = 5;
     lbfgsParam_.delta = 1e-7;
-    lbfgs_ = std::make_unique<LBFGSpp::LBFGSSolver<double>>(lbfgsParam_);
+    lbfgs_ = std::make_unique<LBFGSpp::LBFGSSolver<double, CountingLineSearch>>(lbfgsParam_);
+}
+
+const char* learnedIkStopName(LearnedIkStop stop) {
+    switch (stop) {
+        case LearnedIkStop::kInvalidRequest: return "invalid request";
+        case LearnedIkStop::kConverged: return "converged";
+        case LearnedIkStop::kStalled: return "stalled";
+        case LearnedIkStop::kIterationCap: return "iteration cap";
+        case LearnedIkStop::kLineSearchFailed: return "line search";
+    }
+    return "?";
 }
 
 void LearnedIkSolver::computeScaling(const Eigen::VectorXd& z0) {
@@ -129,6 +140,7 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     result.iterations = result.evaluations = 0;
     result.pose = request.start;
     result.x = request.startX;
+    result.stop = LearnedIkStop::kInvalidRequest;
     if (const std::string problem = validate(request); !problem.empty()) {
         result.diagnostic = problem;
         result.objective = result.lik = result.sigma2 = std::numeric_limits<double>::quiet_NaN();
@@ -144,21 +156,30 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     lbfgsParam_.max_iterations = request.maxIterations;
     if (request.precondition) computeScaling(z_);
     else scale_.setOnes();
-    // L-BFGS runs on u = S⁻¹ z.
-    auto f = [this](const Eigen::VectorXd& u, Eigen::VectorXd& g) {
-        zScaled_ = scale_.cwiseProduct(u);
-        const double F = objective(zScaled_, gScaled_);
-        g = scale_.cwiseProduct(gScaled_);
-        return F;
-    };
+    // L-BFGS runs on u = S⁻¹ z. The functor carries the line-search counter CountingLineSearch
+    // increments.
+    int lineSearches = 0;
+    struct Objective {
+        LearnedIkSolver* self;
+        int* lineSearches;
+        double operator()(const Eigen::VectorXd& u, Eigen::VectorXd& g) {
+            self->zScaled_ = self->scale_.cwiseProduct(u);
+            const double F = self->objective(self->zScaled_, self->gScaled_);
+            g = self->scale_.cwiseProduct(self->gScaled_);
+            return F;
+        }
+    } f{this, &lineSearches};
     u_ = z_.cwiseQuotient(scale_);
     double fz = 0.0;
     try {
         result.iterations = lbfgs_->minimize(f, u_, fz);
-        result.diagnostic = result.iterations >= request.maxIterations ? "iteration cap" : "stalled";
+        result.stop = result.iterations >= request.maxIterations ? LearnedIkStop::kIterationCap : LearnedIkStop::kStalled;
+        result.diagnostic = learnedIkStopName(result.stop);
     } catch (const std::exception& e) {
+        result.stop = LearnedIkStop::kLineSearchFailed;
         result.diagnostic = std::string("line search: ") + e.what();
-        result.iterations = request.maxIterations;  // unknown; LBFGS++ does not report it
+        // The failed line search's iteration did not complete.
+        result.iterations = std::max(0, lineSearches - 1);
     }
     result.evaluations = evaluations_;
     // Residuals with stableNorm: a target ~1e200 cm away must give a finite (huge) residual, not
@@ -201,8 +222,11 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     result.lik = version_->point->evaluate(x_, y_, pointWs_, nullptr, nullptr);
     bool tight = true;
     fillConstraints(tight);
-    result.converged = tight && result.diagnostic == "stalled";
-    if (result.converged) result.diagnostic = "converged";
+    result.converged = tight && result.stop == LearnedIkStop::kStalled;
+    if (result.converged) {
+        result.stop = LearnedIkStop::kConverged;
+        result.diagnostic = learnedIkStopName(result.stop);
+    }
 }
 
 LearnedIkResult LearnedIkSolver::solve(const LearnedIkRequest& request) {

@@ -42,6 +42,28 @@ struct LearnedIkRequest {
     bool precondition = true;
 };
 
+// Why a solve stopped. `diagnostic` says the same in words (and a line search's message).
+enum class LearnedIkStop {
+    kInvalidRequest,    // validate() refused it; nothing was solved
+    kConverged,         // the stopping rule was met with every residual < convergedResidualCm
+    kStalled,           // the stopping rule (F stalled, or a zero gradient) was met, residuals not tight
+    kIterationCap,      // maxIterations reached
+    kLineSearchFailed,  // LBFGS++ threw; the best point seen is returned
+};
+const char* learnedIkStopName(LearnedIkStop stop);
+
+// The backtracking line search of LBFGS++, counting the line searches started in the objective
+// functor it is given: LBFGS++ returns no iteration count when it throws.
+template <class Scalar>
+struct CountingLineSearch {
+    template <typename Foo, typename Vector, typename Param>
+    static void LineSearch(Foo& f, Scalar& fx, Vector& x, Vector& grad, Scalar& step, const Vector& drt, const Vector& xp,
+                           const Param& param) {
+        ++*f.lineSearches;
+        LBFGSpp::LineSearchBacktracking<Scalar>::LineSearch(f, fx, x, grad, step, drt, xp, param);
+    }
+};
+
 struct LearnedIkResult {
     Pose pose;
     Eigen::VectorXd x;             // latent point (d)
@@ -52,8 +74,9 @@ struct LearnedIkResult {
     std::vector<IkConstraintResult> constraints;
     bool reached = false;          // every target and pin within 0.5 cm
     bool converged = false;        // stopping rule met with every residual < 0.05 cm
-    int iterations = 0;
+    int iterations = 0;            // L-BFGS iterations completed (also when a line search failed)
     int evaluations = 0;
+    LearnedIkStop stop = LearnedIkStop::kInvalidRequest;
     std::string diagnostic;        // "converged", "iteration cap", a line-search message, ...
 };
 
@@ -86,7 +109,7 @@ private:
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
     Eigen::VectorXd bestZ_, scale_, zScaled_, gScaled_, z_, u_, gTmp_, zProbe_;
     LBFGSpp::LBFGSParam<double> lbfgsParam_;
-    std::unique_ptr<LBFGSpp::LBFGSSolver<double>> lbfgs_;  // holds a reference to lbfgsParam_
+    std::unique_ptr<LBFGSpp::LBFGSSolver<double, CountingLineSearch>> lbfgs_;  // holds a reference to lbfgsParam_
     double bestF_ = 0.0;
     int evaluations_ = 0;
 };

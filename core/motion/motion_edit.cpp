@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "util/parallel_for.h"
+
 namespace mgp {
 
 std::string MotionEditJob::validate() const {
@@ -195,10 +197,7 @@ void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& ho
             if (framesDone) ++*framesDone;
         }
     };
-    std::vector<std::thread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-    for (auto& th : pool) th.join();
+    parallelFor(workers, work);
     if (cancel && cancel->load()) cancelled = true;
 }
 
