@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "edit/adaptive_worker.h"
+#include "edit/compare_mode.h"
 #include "edit/edit_history.h"
 #include "edit/edit_record.h"
 #include "edit/path_edit.h"
@@ -41,9 +42,6 @@
 #include "skeleton/clip.h"
 
 namespace mgp {
-
-// What the compare ghost shows: the same targets solved by another solver.
-enum class CompareMode { kNone, kPlainIk, kSecondModel };
 
 // What one drag changed (returned by endDrag; the undo history keeps it as one step).
 struct DragRecord {
