@@ -5,23 +5,27 @@
 // Call frame() once per frame with the context current; it draws into framebuffer 0.
 //
 // Default layout (1280×800): menu bar; viewport in the centre; Model panel, latent map and IK
-// readout on the right; timeline and status line at the bottom.
+// readout on the right; timeline and status line at the bottom (editor_layout.h). What the
+// menus, shortcuts and scripts can do is the action table (editor_actions.h); the modal
+// questions are editor_prompts.h; the script player is script_player.h.
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "edit/autosave.h"
+#include "edit/autosave_policy.h"
 #include "edit/recent_files.h"
+#include "editor_layout.h"
+#include "editor_prompts.h"
 #include "editor_state.h"
 #include "file_dialog.h"
-#include "gui_script.h"
+#include "file_requests.h"
 #include "input_replay.h"
 #include "input_state.h"
 #include "latent_map_panel.h"
-#include "layout_store.h"
 #include "png_capture.h"
+#include "script_player.h"
 #include "timeline_panel.h"
 #include "viewport_panel.h"
 
@@ -53,23 +57,39 @@ public:
     void openSyntheticClip(const std::string& why);
     std::string openModel(const std::string& path);
     std::string saveModel(const std::string& path);
-    std::string startTraining();  // on the open clip with state().trainOptions
+    std::string startTraining();         // on the open clip with state().trainOptions
+    std::string startCompareTraining();  // the compare model: the other kernel, same options
     // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
     std::string openSession(const std::string& path, bool addToRecent = true);
     std::string saveSession(const std::string& path);  // becomes the current session file
+    void saveSessionOrAsk();  // to the current session file, or the Save dialog when there is none
     std::string autosaveNow();                         // to this editor's autosave file
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
     std::string restoreAutosave(const std::string& path = "");
     // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
     std::string exportBvh(const std::string& path);
     std::string exportPng(const std::string& path);
+    // Opens the file dialog for `kind`; with `what` ("opening a model") after asking about
+    // unsaved changes, since the document will be replaced.
+    void askForFile(FileKind kind, const std::string& what = "");
+    // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
+    void guardUnsaved(std::function<void()> action, std::string what);
+    void copyPose();          // the current frame's pose to the pose clipboard
+    std::string pastePose();  // onto the current frame (root position kept), one undo step
+    bool hasCopiedPose() const { return poseClipboard_.has_value(); }
+    void toggleHelp() { showHelp_ = !showHelp_; }
+    const RecentFiles* recentFiles() const { return recent_.get(); }  // null when turned off
+    void openRecent(const std::string& path);  // after asking about unsaved changes
+    bool layoutCustomized() const { return layout_.customized(); }
+    void resetLayout() { layout_.reset(); }
+
     bool dirty() const { return state_.doc.revision() != savedRevision_; }
-    bool askingAboutUnsavedChanges() const { return askingUnsaved_; }  // the modal is up
+    bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
     const FileDialog& fileDialog() const { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
     bool messagesShown() const { return showMessages_; }   // View > Messages
     float uiScale() const { return scale_; }
-    bool offeringAutosave() const { return !restoreOffer_.empty(); }
+    bool offeringAutosave() const { return prompts_.offeringAutosave(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
     // One UI frame of width×height pixels; dt in seconds.
@@ -85,7 +105,8 @@ public:
     bool animating() const;
     // True once the user confirmed quitting (after the unsaved-changes prompt if needed).
     bool quitRequested() const { return quitConfirmed_; }
-    void requestQuit() { state_.requestQuit = true; }
+    void requestQuit() { quitAsked_ = true; }  // asks about unsaved changes first
+    void confirmQuit() { quitConfirmed_ = true; }  // quits without asking
     EditorState& state() { return state_; }
     const EditorState& state() const { return state_; }
     const ViewportPanel& viewport() const { return *viewport_; }
@@ -93,31 +114,22 @@ public:
     // Window pixel of an effector handle (as last drawn).
     bool handleScreenPosition(Effector e, float& x, float& y) const;
     bool keyScreenPosition(int key, float& x, float& y) const;  // path key (0-based), as last drawn
-    // Runs a named UI action (the script's `action` verb); "" or the error.
+    // Runs a named action (editor_actions.h; args[0] is the name): "" or the error.
     std::string runAction(const std::vector<std::string>& args);
 
 private:
-    enum class DialogPurpose { kNone, kClip, kModel, kSaveModel, kSaveSession, kExportBvh, kExportPng };
     void pollJobs();
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
-    void autosaveIfDue();
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
-    void prompts();
     void markSaved();
     void remember(const std::string& path, RecentKind kind);
     std::string openAny(const std::string& path);  // by extension: session, model or clip
-    void openDialog(DialogPurpose purpose);
-    // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
-    void guardUnsaved(std::function<void()> action, std::string what);
+    void openDialog(FileKind kind);
     void shortcuts();
-    void copyPose();          // the current frame's pose to the pose clipboard
-    std::string pastePose();  // onto the current frame (root position kept), one undo step
-    void menus();
-    void layout(int width, int height);
-    void layoutPanels(int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
+    void runRequests();  // the actions the panels asked for (EditorState::request)
     void dialogs();
-    void messagesWindow();
+    void prompts();
 
     EditorOptions options_;
     EditorState state_;
@@ -126,47 +138,21 @@ private:
     LatentMapPanel latent_;
     TimelinePanel timeline_;
     FileDialog dialog_;
-    DialogPurpose purpose_ = DialogPurpose::kNone;
-    DialogPurpose request_ = DialogPurpose::kNone;  // a dialog a menu or shortcut asked for
+    FileKind purpose_ = FileKind::kNone;  // what the open file dialog is for
     float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
-    LayoutPrefs prefs_;   // the splitters, as the user left them
-    // A draggable strip between panels; returns the mouse's move along it this frame.
-    float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
+    EditorLayout layout_;
+    EditorPrompts prompts_;
     bool showHelp_ = false;
     bool showMessages_ = false;
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet
     std::optional<Pose> poseClipboard_;
-    bool pathTabShown_ = false;
 
     std::string sessionPath_;  // "" until saved or opened
     long savedRevision_ = 0;   // doc.revision() when last saved or opened
     std::unique_ptr<RecentFiles> recent_;  // null when the options turn the list off
-    AutosaveTimer autosave_;
-    std::string autosaveFile_;
+    AutosavePolicy autosave_;
+    bool quitAsked_ = false;  // Quit was chosen: the unsaved-changes question comes first
     bool quitConfirmed_ = false;
-    // The unsaved-changes question: what waits for the answer, and what runs after "Save" when
-    // the session still needs a file name.
-    std::function<void()> pending_, afterSave_;
-    std::string pendingWhat_;
-    bool askingUnsaved_ = false;
-    long autosavedRevision_ = 0;
-    std::vector<AutosaveCandidate> restoreOffer_;
-};
-
-// Plays a GuiScript into an InputState and the app's actions, frame by frame.
-class ScriptPlayer {
-public:
-    explicit ScriptPlayer(GuiScript script);
-    // Applies the events of `frame` (before EditorApp::frame). Screenshot actions are returned in
-    // `screenshots` and must be written after the frame is drawn.
-    void apply(int frame, InputState& input, EditorApp& app, std::vector<std::string>& screenshots);
-    int lastFrame() const { return script_.lastFrame(); }
-    const std::vector<std::string>& errors() const { return errors_; }
-
-private:
-    GuiScript script_;
-    std::size_t next_ = 0;
-    std::vector<std::string> errors_;
 };
 
 }  // namespace mgp::ui

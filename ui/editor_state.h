@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "camera.h"
 #include "edit/editor_document.h"
@@ -70,10 +71,12 @@ struct EditorState {
     // A modal, menu or text field has the keyboard this frame: panels ignore their keys.
     bool keysBlocked = false;
 
-    // Requests the panels raise for EditorApp (file dialogs, training).
-    bool requestOpenClip = false, requestOpenModel = false, requestSaveModel = false;
-    bool requestTrain = false, requestTrainCompare = false, requestFrameCamera = false;
-    bool requestQuit = false;
+    // The one way a panel asks the app for something: an action of the action table by name
+    // (editor_actions.h: "train", "open-model", ...), run by the app later in the same frame.
+    std::vector<std::string> requests;
+    void request(std::string action) { requests.push_back(std::move(action)); }
+    // Set by the frame-camera action: the viewport frames the character on its next draw.
+    bool requestFrameCamera = false;
 
     void setStatus(std::string s, bool error = false) { messages.post(std::move(s), error, uiSeconds, doc.revision()); }
     // A message that stays while `holds` is true, then becomes `after` (or goes when it is "").

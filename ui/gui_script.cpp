@@ -6,7 +6,9 @@
 #include <set>
 #include <sstream>
 
+#include "editor_actions.h"
 #include "io/parse_error.h"
+#include "io/text_reader.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp::ui {
@@ -15,10 +17,8 @@ int keyFromName(const std::string& nameIn) {
     std::string n = nameIn;
     for (char& c : n) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     if (n.size() == 1 && ((n[0] >= 'A' && n[0] <= 'Z') || (n[0] >= '0' && n[0] <= '9'))) return n[0];
-    if (n.size() >= 2 && n.size() <= 3 && n[0] == 'F' && std::isdigit(static_cast<unsigned char>(n[1]))) {
-        const int k = std::atoi(n.c_str() + 1);
-        if (k >= 1 && k <= 12) return key::kF1 + k - 1;
-    }
+    if (long long k = 0; n.size() >= 2 && n.size() <= 3 && n[0] == 'F' && parseInt(n.substr(1), k) && k >= 1 && k <= 12)
+        return key::kF1 + static_cast<int>(k) - 1;
     static const std::pair<const char*, int> named[] = {
         {"SPACE", key::kSpace},   {"LEFT", key::kLeft},         {"RIGHT", key::kRight},   {"UP", key::kUp},
         {"DOWN", key::kDown},     {"ESCAPE", key::kEscape},     {"ESC", key::kEscape},    {"ENTER", key::kEnter},
@@ -31,23 +31,20 @@ int keyFromName(const std::string& nameIn) {
 }
 
 namespace {
+// The project's strict parsers (io/text_reader.h): the whole token is the number.
 bool isNumber(const std::string& s) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    std::strtod(s.c_str(), &end);
-    return end && *end == '\0';
+    double v = 0.0;
+    return parseDouble(s, v);
+}
+bool isCount(const std::string& s, int minimum) {
+    long long v = 0;
+    return parseInt(s, v) && v >= minimum && v <= 1000000000;
 }
 }  // namespace
 
 GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
     static const std::set<std::string> verbs = {"move", "moveby", "hover", "down", "up", "wheel",
                                                 "key", "keydown", "keyup", "action"};
-    static const std::set<std::string> actions = {"open", "open-model", "save-model", "train", "train-compare", "cancel-train",
-                                                  "wait", "play", "pause", "frame", "pin", "compare",
-                                                  "frame-camera", "screenshot", "undo", "redo", "path", "path-keys",
-                                                  "path-offset", "path-mode", "regenerate", "save-session",
-                                                  "open-session", "export-bvh", "export-png", "autosave",
-                                                  "restore-autosave", "quit", "discard-and-quit"};
     GuiScript script;
     std::istringstream in(text);
     std::string line;
@@ -59,7 +56,7 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
         std::vector<std::string> tok;
         for (std::string t; ls >> t;) tok.push_back(t);
         if (tok.empty()) continue;
-        if (!isNumber(tok[0]) || std::atoi(tok[0].c_str()) < 0)
+        if (!isCount(tok[0], 0))
             throwParseError(file, lineNo, "a frame number ≥ 0 first", "'" + tok[0] + "'");
         if (tok.size() < 2) throwParseError(file, lineNo, "a verb after the frame number", "end of line");
         const std::string& verb = tok[1];
@@ -77,7 +74,7 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
         } else if (verb == "hover") {
             need(1, "an effector (lhand rhand lfoot rfoot head) or key:N");
             Effector e;
-            const bool key = args[0].rfind("key:", 0) == 0 && isNumber(args[0].substr(4)) && std::atoi(args[0].c_str() + 4) >= 1;
+            const bool key = args[0].rfind("key:", 0) == 0 && isCount(args[0].substr(4), 1);
             if (!key && !parseEffector(args[0], e))
                 throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head or key:N", "'" + args[0] + "'");
         } else if (verb == "down" || verb == "up") {
@@ -92,22 +89,20 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             if (keyFromName(args[0]) < 0) throwParseError(file, lineNo, "a key name (A-Z, 0-9, SPACE, LEFT, ...)", "'" + args[0] + "'");
         } else if (verb == "action") {
             need(1, "an action name");
-            if (!actions.count(args[0])) {
+            const ActionTable& table = ActionTable::editor();
+            const EditorAction* action = table.find(args[0]);
+            if (!action) {
                 std::string list;
-                for (const std::string& n : actions) list += (list.empty() ? "" : ", ") + n;
+                for (const EditorAction& a : table.actions()) list += (list.empty() ? "" : ", ") + a.name;
                 throwParseError(file, lineNo, "an action (" + list + ")", "'" + args[0] + "'");
             }
-            static const std::set<std::string> needArgument = {
-                "open", "open-model", "save-model", "screenshot", "frame", "pin", "compare", "path", "path-keys",
-                "path-mode", "save-session", "open-session", "export-bvh", "export-png"};
-            const std::string& a = args[0];
-            if (needArgument.count(a) && args.size() < 2)
-                throwParseError(file, lineNo, "an argument after '" + a + "'", "none");
-            if (a == "path-offset" && (args.size() != 5 || !isNumber(args[1]) || !isNumber(args[2]) ||
-                                       !isNumber(args[3]) || !isNumber(args[4])))
-                throwParseError(file, lineNo, "path-offset KEY DX DY DZ (numbers)", std::to_string(args.size() - 1) + " arguments");
+            // A synopsis that starts with a required argument ("PATH", not "[PATH]") needs one.
+            if (!action->args.empty() && action->args[0] != '[' && args.size() < 2)
+                throwParseError(file, lineNo, "an argument after '" + args[0] + "'", "none");
         }
-        script.add(std::atoi(tok[0].c_str()), verb, std::move(args));
+        long long frame = 0;
+        parseInt(tok[0], frame);
+        script.add(static_cast<int>(frame), verb, std::move(args));
         script.events_.back().line = lineNo;
     }
     return script;

@@ -16,33 +16,9 @@
 //   key NAME               press a key; it is released on the next frame
 //   keydown NAME           hold a key (e.g. SHIFT for a ground-plane drag or a pan)
 //   keyup NAME             release a held key
-//   action NAME [ARGS]     a named UI action:
-//       open PATH            open an ASF/AMC or BVH clip
-//       open-model PATH      open a saved model (its clip comes with it)
-//       save-model PATH      save the current model
-//       train [fas|sgplvm] [M] [T]   start training on the open clip (defaults from the panel)
-//       train-compare        train the compare model (the other kernel) for `compare model`
-//       cancel-train         cancel the training run
-//       wait                 block until training, adaptive updates and the latent map are done
-//       play | pause         timeline playback
-//       frame N              go to frame N (1-based, as the timeline shows it)
-//       pin EFFECTOR         toggle a pin
-//       compare none|plain|model   the compare ghost
-//       frame-camera         frame the character (same as F)
-//       undo | redo          one step of the edit history (Ctrl+Z / Ctrl+Shift+Z)
-//       path EFFECTOR        edit that effector's path (default keys around the current frame)
-//       path-keys F1 F2 ...  the path's key frames (1-based, increasing)
-//       path-offset K DX DY DZ   key K's (1-based) offset from the captured path, cm
-//       path-mode direct|displacement
-//       regenerate [ITERS]   solve the path span (background; `wait` waits for it)
-//       save-session PATH    save the session (becomes the current session file)
-//       open-session PATH    open a session
-//       export-bvh PATH      the edited motion as BVH
-//       export-png PATH      the 3-D viewport as PNG
-//       autosave             write this editor's autosave file now
-//       restore-autosave [PATH]   restore an autosave (default: newest left by a dead editor)
-//       quit                 quit (asks about unsaved changes)   discard-and-quit: without asking
-//       screenshot PATH      save a PNG of the whole window after this frame
+//   action NAME [ARGS]     an action of the editor's action table (editor_actions.h; listed
+//                          in the README): e.g. `open PATH`, `frame N`, `undo`, `wait`, and
+//                          `screenshot PATH` (a PNG of the whole window after this frame)
 //
 // Key names: A-Z, 0-9, SPACE, LEFT, RIGHT, UP, DOWN, ESCAPE, ENTER, TAB, DELETE, BACKSPACE, HOME,
 // END, PAGEUP, PAGEDOWN, F1-F12, SHIFT, CTRL, ALT. Events on the same frame apply in file order.

@@ -13,6 +13,7 @@ void MessageLog::post(std::string text, bool error, double now, long revision, s
     m.holds = std::move(holds);
     m.after = std::move(after);
     history_.push_back(std::move(m));
+    ++posts_;
     while (history_.size() > kHistory) history_.pop_front();
 }
 

@@ -33,9 +33,11 @@ public:
     const StatusMessage* current() const;
     const std::deque<StatusMessage>& history() const { return history_; }  // oldest first
     const std::string& latestText() const;  // the newest message, expired or not ("" if none)
+    long postCount() const { return posts_; }  // messages posted so far (the history drops old ones)
 
 private:
     std::deque<StatusMessage> history_;
+    long posts_ = 0;
 };
 
 }  // namespace mgp::ui

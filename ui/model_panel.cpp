@@ -275,18 +275,18 @@ void drawModelPanel(EditorState& s) {
         o.scgIterations = std::clamp(o.scgIterations, 1, 10000);
         if (!(o.tolerance > 0)) o.tolerance = 0.01;
         ImGui::BeginDisabled(!doc.trainable());
-        if (ImGui::Button("Train")) s.requestTrain = true;
+        if (ImGui::Button("Train")) s.request("train");
         s.recordControl("Train");
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)"
                                               : "Training needs an ASF/AMC clip (BVH is view-only for now)");
         sameLineIfFits("Open model...");
-        if (ImGui::Button("Open model...")) s.requestOpenModel = true;
+        if (ImGui::Button("Open model...")) s.request("open-model");
         s.recordControl("Open model");
         sameLineIfFits("Save model...");
         ImGui::BeginDisabled(!v);
-        if (ImGui::Button("Save model...")) s.requestSaveModel = true;
+        if (ImGui::Button("Save model...")) s.request("save-model");
         s.recordControl("Save model");
         ImGui::EndDisabled();
     }
@@ -345,7 +345,7 @@ void drawModelPanel(EditorState& s) {
                                 cm->model->N());
         } else {
             ImGui::BeginDisabled(!doc.trainable());
-            if (ImGui::Button("Train 2nd model (other kernel)")) s.requestTrainCompare = true;
+            if (ImGui::Button("Train 2nd model (other kernel)")) s.request("train-compare");
             ImGui::EndDisabled();
         }
     }

@@ -28,7 +28,7 @@ EditorDocument::~EditorDocument() {
     // The jobs call back into members declared after them: stop them first.
     regenerate_.cancel();
     regenerate_.join();
-    worker_.reset();
+    models_.clear();
 }
 
 void EditorDocument::setClip(Clip clip, bool synthetic) {
@@ -39,8 +39,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     regenerate_.join();
     regenerate_.take();
     history_.clear();
-    path_.reset();
-    trajectoryEffector_ = -1;
+    paths_.reset();
     ++revision_;
     unwrapClip(clip);
     clip_ = std::move(clip);
@@ -150,40 +149,7 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
 }
 
 void EditorDocument::installWorker(gp::ModelVersionPtr version) {
-    worker_.reset();
-    worker_ = std::make_unique<AdaptiveWorker>(version);
-    worker_->setEnabled(adaptive_);
-    {
-        std::lock_guard<std::mutex> lock(statusMutex_);
-        adaptiveStatus_.clear();
-        adaptiveHistory_.clear();
-        versionLog_.reset(version, 0);
-    }
-    worker_->setListener([this](const AdaptiveReport& r) {
-        std::lock_guard<std::mutex> lock(statusMutex_);
-        versionLog_.record(r.sequence, r.published);
-        if (r.result.accepted) ++revision_;
-        AdaptiveHistoryEntry h;
-        h.when = std::chrono::system_clock::now();
-        h.frame = r.frame;
-        h.accepted = r.result.accepted;
-        h.diagnostic = r.result.diagnostic;
-        h.seconds = r.seconds;
-        h.versionBefore = r.versionBefore;
-        h.versionAfter = r.published->number;
-        h.rowsAfter = r.modelRows;
-        h.activeSize = static_cast<int>(r.published->model->active.size());
-        h.activeChanged = r.result.activeChanged;
-        h.newPointActive = r.result.newPointActive;
-        h.objectiveBefore = r.result.objectiveBefore;
-        h.objectiveAfter = r.result.objectiveAfter;
-        adaptiveHistory_.push_back(std::move(h));
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "update %s in %.2f s (N = %d)", r.result.accepted ? "accepted" : "rejected",
-                      r.seconds, r.modelRows);
-        adaptiveStatus_ = buf;
-        if (!r.result.accepted && !r.result.diagnostic.empty()) adaptiveStatus_ += ": " + r.result.diagnostic;
-    });
+    models_.install(std::move(version));
     solver_.reset();
     latentPath_.clear();
     cacheFrame_ = -1;
@@ -195,32 +161,13 @@ void EditorDocument::clearModel() {
     latentBefore_.reset();
     regenerate_.cancel();  // its result would belong to the old model
     history_.forgetModels();
-    worker_.reset();
+    models_.clear();
     solver_.reset();
     cacheFrame_ = -1;
 }
 
-gp::ModelVersionPtr EditorDocument::model() const { return worker_ ? worker_->current() : nullptr; }
-
 void EditorDocument::setAdaptiveEnabled(bool on) {
-    if (adaptive_ != on) ++revision_;
-    adaptive_ = on;
-    if (worker_) worker_->setEnabled(on);
-}
-
-std::string EditorDocument::adaptiveStatus() const {
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    return adaptiveStatus_;
-}
-
-int EditorDocument::adaptiveUpdates() const {
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    return static_cast<int>(adaptiveHistory_.size());
-}
-
-std::vector<AdaptiveHistoryEntry> EditorDocument::adaptiveHistory() const {
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    return adaptiveHistory_;
+    if (models_.setAdaptiveEnabled(on)) ++revision_;
 }
 
 void EditorDocument::setCompareMode(CompareMode mode) {
@@ -439,24 +386,12 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     step.before[frame_] = rec.before;
     step.after[frame_] = rec.after;
     const gp::ModelVersionPtr solvedOn = solver_ ? solver_->version() : nullptr;
-    const bool learnedPose = worker_ && solver_ && readout_.valid && readout_.learned && result_.y.allFinite() &&
+    const bool learnedPose = models_.hasModel() && solver_ && readout_.valid && readout_.learned && result_.y.allFinite() &&
                              result_.x.allFinite();
     const gp::AdmissionVerdict verdict =
         learnedPose ? gp::admitPose(solvedOn->range, result_.reached, result_.sigma2, result_.lik) : gp::AdmissionVerdict{};
-    if (learnedPose && worker_->enabled() && !verdict.admitted) {
-        // Kept as an edit, not taught to the model: say so in the update table and the status.
-        std::lock_guard<std::mutex> lock(statusMutex_);
-        AdaptiveHistoryEntry h;
-        h.when = std::chrono::system_clock::now();
-        h.frame = frame_;
-        h.accepted = false;
-        h.diagnostic = "refused: " + verdict.reason;
-        h.versionBefore = h.versionAfter = solvedOn->number;
-        h.rowsAfter = solvedOn->model->N();
-        h.activeSize = static_cast<int>(solvedOn->model->active.size());
-        adaptiveHistory_.push_back(std::move(h));
-        adaptiveStatus_ = "pose kept as an edit, not added to the model: " + verdict.reason;
-    }
+    if (learnedPose && models_.updating() && !verdict.admitted)
+        models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
     lastDrag_.frame = frame_;
     lastDrag_.pose = drag_.pose;
     lastDrag_.reached = readout_.valid ? readout_.reached : true;
@@ -465,7 +400,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         s.x = drag_.x;
         s.yKept = result_.y;
         s.clipFrame = frame_;
-        if (const long seq = worker_->post(std::move(s)); seq > 0) step.samples.push_back(seq);
+        if (const long seq = models_.post(std::move(s)); seq > 0) step.samples.push_back(seq);
     }
     applyFrames(step.after);
     const std::string label = step.label;
@@ -550,11 +485,7 @@ void EditorDocument::endLatentDrag() {
 void EditorDocument::pushStep(EditStep step) {
     history_.push(std::move(step));
     ++revision_;
-    // Versions no remaining step can ask for are freed. Samples still queued have higher
-    // sequence numbers than any entry pruned here, so the log keeps what they will need.
-    const long oldest = std::min(history_.oldestUnresolvedSample(), worker_ ? worker_->lastSequence() + 1 : LONG_MAX);
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    versionLog_.pruneBefore(oldest);
+    models_.pruneVersions(history_.oldestUnresolvedSample());  // versions no remaining step can ask for
 }
 
 void EditorDocument::applyFrames(const std::map<int, std::optional<EditRecord>>& frames) {
@@ -565,27 +496,8 @@ void EditorDocument::applyFrames(const std::map<int, std::optional<EditRecord>>&
     updatePinPositions();
 }
 
-void EditorDocument::resolveStepModels(EditStep& step) {
-    if (step.modelResolved) return;
-    step.modelResolved = true;
-    if (step.samples.empty() || !worker_) return;
-    worker_->waitIdle();  // the step's own updates must have published before we can undo them
-    std::lock_guard<std::mutex> lock(statusMutex_);
-    step.modelBefore = versionLog_.before(step.samples.front());
-    step.modelAfter = worker_->current();
-    if (!step.modelBefore) step.modelAfter = nullptr;  // unknown: leave the model alone
-}
-
 void EditorDocument::installVersion(const gp::ModelVersionPtr& version) {
-    if (!version || !worker_ || worker_->current() == version) return;
-    worker_->waitIdle();
-    worker_->reset(version);
-    {
-        // Samples posted from now on start from this version.
-        std::lock_guard<std::mutex> lock(statusMutex_);
-        versionLog_.record(worker_->lastSequence(), version);
-    }
-    cacheFrame_ = -1;
+    if (models_.restore(version)) cacheFrame_ = -1;
 }
 
 std::string EditorDocument::undoLabel() const {
@@ -626,7 +538,7 @@ std::string EditorDocument::undo() {
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
     EditStep* step = history_.topUndo();
     if (!step) return "nothing to undo";
-    resolveStepModels(*step);
+    models_.resolveStep(*step);
     applyFrames(step->before);
     installVersion(step->modelBefore);
     history_.moveUndoToRedo();
@@ -659,92 +571,11 @@ std::optional<Pose> EditorDocument::beforeGhost() const {
 
 // ---- path editing --------------------------------------------------------------------------
 
-const std::vector<Eigen::Vector3d>& EditorDocument::capturedTrajectory(Effector e) const {
-    if (trajectoryEffector_ != static_cast<int>(e)) {
-        trajectory_ = effectorTrajectory(clip_, e);
-        if (trajectory_.empty()) trajectory_.assign(clip_.frameCount(), Eigen::Vector3d::Zero());  // no such effector
-        trajectoryEffector_ = static_cast<int>(e);
-    }
-    return trajectory_;
-}
-
-std::string EditorDocument::beginPathEdit(Effector e) {
-    PathEdit p;
-    p.effector = e;
-    p.keyFrames = defaultPathKeys(frame_, frameCount());
-    p.keyOffsetsCm.assign(p.keyFrames.size(), Eigen::Vector3d::Zero());
-    return setPathEdit(std::move(p));
-}
-
-std::string EditorDocument::setPathEdit(PathEdit p) {
-    if (!hasClip()) return "no clip is open";
-    if (!hasEffector(p.effector)) return std::string("this skeleton has no ") + effectorName(p.effector);
-    if (std::string problem = validatePathKeys(p.keyFrames, frameCount()); !problem.empty()) return problem;
-    if (p.keyOffsetsCm.size() != p.keyFrames.size())
-        return "expected one offset per key (" + std::to_string(p.keyFrames.size()) + "), found " +
-               std::to_string(p.keyOffsetsCm.size());
-    for (const Eigen::Vector3d& o : p.keyOffsetsCm)
-        if (!o.allFinite()) return "expected finite key offsets, found NaN or Inf";
-    path_ = std::move(p);
-    ++revision_;
-    return "";
-}
-
-void EditorDocument::endPathEdit() {
-    if (path_) ++revision_;
-    path_.reset();
-}
-
-std::string EditorDocument::setPathKeyFrames(std::vector<int> keyFrames) {
-    if (!path_) return "no path is being edited";
-    PathEdit p = *path_;
-    p.keyFrames = std::move(keyFrames);
-    p.keyOffsetsCm.assign(p.keyFrames.size(), Eigen::Vector3d::Zero());
-    for (std::size_t i = 0; i < p.keyFrames.size(); ++i) {
-        const auto it = std::find(path_->keyFrames.begin(), path_->keyFrames.end(), p.keyFrames[i]);
-        if (it != path_->keyFrames.end()) p.keyOffsetsCm[i] = path_->keyOffsetsCm[it - path_->keyFrames.begin()];
-    }
-    return setPathEdit(std::move(p));
-}
-
-std::string EditorDocument::setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) {
-    if (!path_) return "no path is being edited";
-    if (key < 0 || key >= static_cast<int>(path_->keyFrames.size()))
-        return "expected a key in 1.." + std::to_string(path_->keyFrames.size()) + ", found " + std::to_string(key + 1);
-    if (!offsetCm.allFinite()) return "expected a finite offset, found NaN or Inf";
-    path_->keyOffsetsCm[key] = offsetCm;
-    ++revision_;
-    return "";
-}
-
-std::string EditorDocument::setPathKeyPosition(int key, const Eigen::Vector3d& positionCm) {
-    if (!path_ || key < 0 || key >= static_cast<int>(path_->keyFrames.size())) return setPathKeyOffset(key, positionCm);
-    return setPathKeyOffset(key, positionCm - capturedTrajectory(path_->effector)[path_->keyFrames[key]]);
-}
-
-void EditorDocument::setPathMode(PathMode mode) {
-    if (!path_ || path_->mode == mode) return;
-    path_->mode = mode;
-    ++revision_;
-}
-
-Eigen::Vector3d EditorDocument::pathKeyPosition(int key) const {
-    return capturedTrajectory(path_->effector)[path_->keyFrames[key]] + path_->keyOffsetsCm[key];
-}
-
-std::vector<Eigen::Vector3d> EditorDocument::pathTargets() const {
-    if (!path_) return {};
-    return editTargetPath(capturedTrajectory(path_->effector), path_->keyFrames, path_->keyOffsetsCm, path_->mode);
-}
-
-std::vector<Eigen::Vector3d> EditorDocument::pathCaptured() const {
-    if (!path_) return {};
-    const std::vector<Eigen::Vector3d>& c = capturedTrajectory(path_->effector);
-    return {c.begin() + path_->keyFrames.front(), c.begin() + path_->keyFrames.back() + 1};
-}
+std::string EditorDocument::beginPathEdit(Effector e) { return paths_.begin(e, frame_); }
 
 std::string EditorDocument::startRegenerate(int maxIterations) {
-    if (!path_) return "no path is being edited";
+    const std::optional<PathEdit>& path = paths_.edit();
+    if (!path) return "no path is being edited";
     const gp::ModelVersionPtr v = model();
     if (!v) return "regeneration needs a model: train one or open one first";
     const Clip& mc = v->model->clip;
@@ -755,10 +586,10 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     cancelDrag();
     MotionEditJob job;
     job.version = v;
-    job.effector = path_->effector;
-    job.keyFrames = path_->keyFrames;
-    job.keyOffsetsCm = path_->keyOffsetsCm;
-    job.mode = path_->mode;
+    job.effector = path->effector;
+    job.keyFrames = path->keyFrames;
+    job.keyOffsetsCm = path->keyOffsetsCm;
+    job.mode = path->mode;
     job.maxIterations = maxIterations;
     job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
     job.contacts = std::make_shared<const ContactSet>(contacts_);  // the user may have switched some off
@@ -800,14 +631,14 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         step.after[t] = EditRecord{job->frames[t], job->results[i].x};
     }
     // As the CLI's `edit --adaptive`: the moved keys' poses join the model, not the in-betweens.
-    if (worker_) {
+    if (models_.hasModel()) {
         for (std::size_t k = 1; k + 1 < job->keyFrames.size(); ++k) {
             if (job->keyOffsetsCm[k].isZero()) continue;
             const int t = job->keyFrames[k];
             const auto it = std::find(job->solvedFrames.begin(), job->solvedFrames.end(), t);
             const LearnedIkResult& r = job->results[static_cast<std::size_t>(it - job->solvedFrames.begin())];
             if (!r.x.allFinite() || !r.y.allFinite()) continue;
-            if (const long seq = worker_->post({r.x, r.y, t}); seq > 0) step.samples.push_back(seq);
+            if (const long seq = models_.post({r.x, r.y, t}); seq > 0) step.samples.push_back(seq);
         }
     }
     applyFrames(step.after);
@@ -818,13 +649,13 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
                   "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
                   "(captured %.1f°); %zu contact(s) held%s",
                   job->solvedFrames.size(), job->maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
-                  q.captured.maxDeg, job->held.size(), worker_ && adaptive_ ? " (adaptive update queued)" : "");
+                  q.captured.maxDeg, job->held.size(), models_.updating() ? " (adaptive update queued)" : "");
     return summary;
 }
 
 void EditorDocument::waitIdle() {
     regenerate_.join();
-    if (worker_) worker_->waitIdle();
+    models_.waitIdle();
 }
 
 }  // namespace mgp

@@ -29,9 +29,12 @@
 #include <vector>
 
 #include "edit/adaptive_worker.h"
+#include "edit/compare_mode.h"
 #include "edit/edit_history.h"
 #include "edit/edit_record.h"
+#include "edit/model_host.h"
 #include "edit/path_edit.h"
+#include "edit/path_session.h"
 #include "edit/regenerate_job.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
@@ -42,9 +45,6 @@
 
 namespace mgp {
 
-// What the compare ghost shows: the same targets solved by another solver.
-enum class CompareMode { kNone, kPlainIk, kSecondModel };
-
 // What one drag changed (returned by endDrag; the undo history keeps it as one step).
 struct DragRecord {
     int frame = 0;
@@ -52,21 +52,6 @@ struct DragRecord {
     std::optional<EditRecord> before;  // the frame's edit before the drag (none = captured pose)
     EditRecord after;
     int modelVersionBefore = 0;
-};
-
-// One adaptive update as the Model panel lists it (when, how long, how the active set changed).
-struct AdaptiveHistoryEntry {
-    std::chrono::system_clock::time_point when;  // when the update finished
-    int frame = 0;                               // the edited clip frame (0-based)
-    bool accepted = false;
-    std::string diagnostic;                      // why it was rejected ("ok" if accepted)
-    double seconds = 0.0;                        // how long the update took
-    int versionBefore = 0, versionAfter = 0;     // equal when rejected
-    int rowsAfter = 0;                           // N after the update
-    int activeSize = 0;                          // M after the update
-    int activeChanged = 0;                       // points that entered the active set
-    bool newPointActive = false;                 // the edited pose itself entered it
-    double objectiveBefore = 0.0, objectiveAfter = 0.0;  // L_GP around Step 6
 };
 
 // Readout of the latest solve.
@@ -119,15 +104,15 @@ public:
     // adaptive worker on it.
     void setModel(gp::ModelVersionPtr version, bool adoptClip);
     void clearModel();
-    gp::ModelVersionPtr model() const;  // the latest published version (null if none)
-    bool hasModel() const { return worker_ != nullptr; }
+    gp::ModelVersionPtr model() const { return models_.current(); }  // the latest version (null if none)
+    bool hasModel() const { return models_.hasModel(); }
     void setAdaptiveEnabled(bool on);
-    bool adaptiveEnabled() const { return adaptive_; }
-    int adaptivePending() const { return worker_ ? worker_->pending() : 0; }
-    std::string adaptiveStatus() const;  // last update's outcome, "" if none yet
-    int adaptiveUpdates() const;
+    bool adaptiveEnabled() const { return models_.adaptiveEnabled(); }
+    int adaptivePending() const { return models_.pending(); }
+    std::string adaptiveStatus() const { return models_.status(); }  // last update's outcome, "" if none yet
+    int adaptiveUpdates() const { return models_.updates(); }
     // Every update since the model was installed, oldest first.
-    std::vector<AdaptiveHistoryEntry> adaptiveHistory() const;
+    std::vector<AdaptiveHistoryEntry> adaptiveHistory() const { return models_.history(); }
     // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
     void setCompareModel(gp::ModelVersionPtr version) {
         compareModel_ = std::move(version);
@@ -199,18 +184,20 @@ public:
     // Starts editing `e`'s path with the default keys around the current frame; "" or why not.
     std::string beginPathEdit(Effector e);
     // Installs a whole path edit (a loaded session); "" or why not.
-    std::string setPathEdit(PathEdit path);
-    void endPathEdit();
-    const std::optional<PathEdit>& pathEdit() const { return path_; }
+    std::string setPathEdit(PathEdit path) { return paths_.set(std::move(path)); }
+    void endPathEdit() { paths_.end(); }
+    const std::optional<PathEdit>& pathEdit() const { return paths_.edit(); }
     // New key frames (0-based); keys at frames that were keys keep their offsets.
-    std::string setPathKeyFrames(std::vector<int> keyFrames);
-    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm);
+    std::string setPathKeyFrames(std::vector<int> keyFrames) { return paths_.setKeyFrames(std::move(keyFrames)); }
+    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) { return paths_.setKeyOffset(key, offsetCm); }
     // Moves a key to a world position (its offset becomes position − captured position).
-    std::string setPathKeyPosition(int key, const Eigen::Vector3d& positionCm);
-    void setPathMode(PathMode mode);
-    Eigen::Vector3d pathKeyPosition(int key) const;        // captured + offset (cm)
-    std::vector<Eigen::Vector3d> pathTargets() const;      // the edited path, frames first..last
-    std::vector<Eigen::Vector3d> pathCaptured() const;     // the captured path, frames first..last
+    std::string setPathKeyPosition(int key, const Eigen::Vector3d& positionCm) {
+        return paths_.setKeyPosition(key, positionCm);
+    }
+    void setPathMode(PathMode mode) { paths_.setMode(mode); }
+    Eigen::Vector3d pathKeyPosition(int key) const { return paths_.keyPosition(key); }  // captured + offset (cm)
+    std::vector<Eigen::Vector3d> pathTargets() const { return paths_.targets(); }     // edited, first..last key
+    std::vector<Eigen::Vector3d> pathCaptured() const { return paths_.captured(); }   // captured, first..last key
     // Solves the span between the first and last key on a background thread; "" or why not.
     std::string startRegenerate(int maxIterations = 500);
     bool regenerating() const { return regenerate_.running(); }
@@ -258,10 +245,8 @@ private:
     void finishRunningFalloff();
     void dropRunningFalloff();
     void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
-    void resolveStepModels(EditStep& step);
     void installVersion(const gp::ModelVersionPtr& version);
     void installWorker(gp::ModelVersionPtr version);
-    const std::vector<Eigen::Vector3d>& capturedTrajectory(Effector e) const;
     std::optional<EditRecord> editAt(int frame) const;
 
     Clip clip_;
@@ -272,24 +257,18 @@ private:
     std::array<Eigen::Vector3d, kEffectorCount> pinPositions_{};
     std::array<bool, kEffectorCount> contactReleased_{};  // per foot, for drags (contacts_ stays)
 
-    std::unique_ptr<AdaptiveWorker> worker_;
     gp::ModelVersionPtr compareModel_;
-    bool adaptive_ = true;
-    mutable std::mutex statusMutex_;
-    std::string adaptiveStatus_;
-    std::vector<AdaptiveHistoryEntry> adaptiveHistory_;
-    ModelVersionLog versionLog_;  // guarded by statusMutex_ (the worker's listener writes it)
     EditHistory history_;
     std::atomic<long> revision_{0};
+    // After revision_: its worker thread counts accepted updates there until it is destroyed.
+    ModelHost models_{[this] { ++revision_; }};
 
-    std::optional<PathEdit> path_;
+    PathSession paths_{clip_, [this] { ++revision_; }};
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
     int falloffRadius_ = 0;  // set by setClip
     ContactSet contacts_;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
-    mutable int trajectoryEffector_ = -1;
-    mutable std::vector<Eigen::Vector3d> trajectory_;  // captured effector positions, every frame
 
     CompareMode compare_ = CompareMode::kNone;
     std::optional<Pose> comparePose_;

@@ -21,7 +21,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-const char* const kCompareModes[] = {"none", "plain", "model"};
 constexpr int kMaxSyntheticFrames = 1000000;  // ~2.3 h at 120 fps; the editor uses 240
 
 // ---- writing -----------------------------------------------------------------------------------
@@ -211,7 +210,7 @@ SessionData readSession(const Reader& r, const json& j) {
     const json& sel = r.field(j, "selected_effector");
     s.selectedEffector = sel.is_null() ? -1 : static_cast<int>(r.effector(sel, "selected_effector"));
     s.compareMode = r.string(r.field(j, "compare_mode"), "compare_mode");
-    if (std::find(std::begin(kCompareModes), std::end(kCompareModes), s.compareMode) == std::end(kCompareModes))
+    if (CompareMode parsed; !parseCompareMode(s.compareMode, parsed))
         r.fail("compare_mode none, plain or model", describe(json(s.compareMode)));
     s.adaptiveEnabled = r.boolean(r.field(j, "adaptive_enabled"), "adaptive_enabled");
     readCamera(r, r.field(j, "camera"), s.camera);

@@ -1,0 +1,83 @@
+// The document's half of a session (core/edit/session_mapping.h), both ways, without GL.
+#include <doctest/doctest.h>
+
+#include "document_helpers.h"
+#include "edit/session_mapping.h"
+#include "io/parse_error.h"
+#include "skeleton/synthetic_clip.h"
+#include "test_support.h"
+
+using namespace mgp;
+
+TEST_CASE("session mapping: compare-mode names both ways, and only the three") {
+    for (CompareMode m : {CompareMode::kNone, CompareMode::kPlainIk, CompareMode::kSecondModel}) {
+        CompareMode back = CompareMode::kNone;
+        REQUIRE(parseCompareMode(compareModeName(m), back));
+        CHECK(back == m);
+    }
+    CHECK(std::string(compareModeName(CompareMode::kPlainIk)) == "plain");
+    CHECK(std::string(compareModeName(CompareMode::kSecondModel)) == "model");
+    CompareMode untouched = CompareMode::kPlainIk;
+    CHECK(!parseCompareMode("Plain", untouched));
+    CHECK(!parseCompareMode("", untouched));
+    CHECK(untouched == CompareMode::kPlainIk);
+}
+
+TEST_CASE("session mapping: a document's edits, frame, pins, compare mode and path survive the round trip") {
+    EditorDocument doc;
+    doc.setClip(makeSyntheticWalk(), true);
+    doc.setFrame(30);
+    test::dragBy(doc, Effector::kRHand, Eigen::Vector3d(0, 6, 0));
+    REQUIRE(doc.isEdited(30));
+    doc.setPinned(Effector::kLFoot, true);
+    doc.setCompareMode(CompareMode::kPlainIk);
+    doc.setAdaptiveEnabled(false);
+    REQUIRE(doc.beginPathEdit(Effector::kRFoot) == "");
+    REQUIRE(doc.setPathKeyOffset(1, Eigen::Vector3d(0, 3, 0)) == "");
+
+    const SessionData d = sessionFromDocument(doc);
+    CHECK(d.syntheticClip);
+    CHECK(d.clipPath.empty());
+    CHECK(d.frame == doc.frame());
+    CHECK(d.compareMode == "plain");
+    CHECK(!d.adaptiveEnabled);
+    CHECK(d.pins[static_cast<int>(Effector::kLFoot)]);
+    CHECK(!d.pins[static_cast<int>(Effector::kRHand)]);
+    CHECK(d.edits.size() == doc.edits().size());
+    REQUIRE(d.path.present);
+    CHECK(d.path.keyFrames == doc.pathEdit()->keyFrames);
+
+    // Through the file's text, as a real save and open.
+    const SessionData read = sessionFromJsonText(sessionToJsonText(d, "/tmp/x.mgsession"), "x.mgsession");
+    EditorDocument back;
+    CheckedSession checked = checkSession(read, "x.mgsession");
+    applySession(back, checked, "x.mgsession");
+    CHECK(back.synthetic());
+    CHECK(back.frame() == doc.frame());
+    CHECK(back.compareMode() == CompareMode::kPlainIk);
+    CHECK(!back.adaptiveEnabled());
+    CHECK(back.pinned(Effector::kLFoot));
+    REQUIRE(back.edits().size() == doc.edits().size());
+    for (const auto& [frame, record] : doc.edits()) {
+        REQUIRE(back.isEdited(frame));
+        CHECK(test::samePose(back.edits().at(frame).pose, record.pose));
+    }
+    REQUIRE(back.pathEdit());
+    CHECK(back.pathEdit()->keyFrames == doc.pathEdit()->keyFrames);
+    CHECK(back.pathEdit()->keyOffsetsCm[1].isApprox(doc.pathEdit()->keyOffsetsCm[1]));
+    CHECK(test::samePose(back.currentPose(), doc.currentPose()));
+}
+
+TEST_CASE("session mapping: a path outside the clip is refused before the document changes") {
+    EditorDocument doc;
+    doc.setClip(makeSyntheticWalk(), true);
+    SessionData d = sessionFromDocument(doc);
+    d.path.present = true;
+    d.path.effector = Effector::kRFoot;
+    d.path.keyFrames = {10, 20, 100000};
+    d.path.keyOffsetsCm.assign(3, Eigen::Vector3d::Zero());
+    CHECK_THROWS_AS(checkSession(d, "bad.mgsession"), ParseError);
+    d.path.keyFrames = {10, 20, 30};
+    d.path.keyOffsetsCm.assign(2, Eigen::Vector3d::Zero());
+    CHECK_THROWS_WITH_AS(checkSession(d, "bad.mgsession"), "bad.mgsession: path: expected one offset per key", ParseError);
+}

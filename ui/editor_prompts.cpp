@@ -1,0 +1,95 @@
+#include "editor_prompts.h"
+
+#include <imgui.h>
+
+#include <ctime>
+#include <filesystem>
+
+#include "input_state.h"
+
+namespace mgp::ui {
+
+void EditorPrompts::guard(bool unsaved, std::function<void()> action, std::string what) {
+    if (!unsaved) {
+        action();
+        return;
+    }
+    pending_ = std::move(action);
+    pendingWhat_ = std::move(what);
+}
+
+void EditorPrompts::draw(bool dialogOpen, const Hooks& hooks) {
+    unsavedChanges(dialogOpen, hooks);
+    restoreAutosave(dialogOpen, hooks);
+}
+
+void EditorPrompts::unsavedChanges(bool dialogOpen, const Hooks& hooks) {
+    const bool otherPopup = dialogOpen || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+    if (pending_ && !otherPopup) ImGui::OpenPopup("Unsaved changes");
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    asking_ = ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    if (!asking_) return;
+    const std::string file = std::filesystem::path(hooks.sessionPath).filename().string();
+    ImGui::Text("This session has changes that are not saved%s.", hooks.sessionPath.empty() ? "" : (" to " + file).c_str());
+    ImGui::Text("Save them before %s?", pendingWhat_.c_str());
+    if (ImGui::Button("Save", ImVec2(110, 0))) {
+        std::function<void()> action = std::exchange(pending_, nullptr);
+        if (hooks.sessionPath.empty()) {
+            hooks.askForSessionFile();  // the action runs once the file is saved
+            afterSave_ = std::move(action);
+        } else if (hooks.save(hooks.sessionPath)) {
+            action();
+        }
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Don't save", ImVec2(110, 0))) {
+        std::exchange(pending_, nullptr)();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) {
+        pending_ = nullptr;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void EditorPrompts::restoreAutosave(bool dialogOpen, const Hooks& hooks) {
+    if (!restoreOffer_.empty() && !dialogOpen && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+        ImGui::OpenPopup("Restore autosave");
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Restore autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (restoreOffer_.empty()) {  // answered elsewhere (a script, File menu)
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const AutosaveCandidate c = restoreOffer_.front();
+    ImGui::Text("MotionGP did not quit normally last time.");
+    ImGui::Text("An autosave of its work was left at\n%s", c.path.c_str());
+    const std::time_t when = static_cast<std::time_t>(c.mtimeSeconds);
+    char stamp[64];
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&when));
+    ImGui::TextDisabled("written %s by editor process %d", stamp, c.pid);
+    if (ImGui::Button("Restore", ImVec2(110, 0))) {
+        const std::string path = c.path;
+        ImGui::CloseCurrentPopup();
+        hooks.restore(path);
+        restoreOffer_.clear();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", ImVec2(110, 0))) {
+        discardAutosave(c.path);
+        restoreOffer_.erase(restoreOffer_.begin());
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Not now", ImVec2(110, 0))) {
+        restoreOffer_.clear();  // kept on disk: offered again next start
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace mgp::ui
