@@ -59,7 +59,7 @@ const BenchRegistration reg("model", "Layout quality (continuity, full-GP yardst
     for (const char* trial : {"35_01", "16_01"}) {
         const Clip clip = loadClip(dir + "/asf_amc/" + trial + ".amc");
         nlohmann::json rows = nlohmann::json::array();
-        for (gp::LatentPrior p : {gp::LatentPrior::kNone, gp::LatentPrior::kSmooth}) rows.push_back(benchClip(clip, p, ctx));
+        for (gp::LatentPrior p : {gp::LatentPrior::kNone, gp::LatentPrior::kSmooth, gp::LatentPrior::kPaced}) rows.push_back(benchClip(clip, p, ctx));
         out[trial] = rows;
     }
     return out;

@@ -1,5 +1,5 @@
 // `motiongp train CLIP [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
-//   [--scg-iters S] [--tol C] [--prior smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
+//   [--scg-iters S] [--tol C] [--prior paced|smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
 // Learns a FASGPLVM (default) or SGPLVM pose model (docs/maths.md §8) and writes the model file
 // (core/gp/model_file.h). Progress goes to stderr; --json prints one object on stdout. Timings
 // are printed, never stored in the model. Ctrl-C cancels cleanly (no model is written).
@@ -88,9 +88,9 @@ const CommandRegistration reg(
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
         sub.add_option("--prior", o->prior,
-                       std::string("Temporal prior on the latent points: smooth (second differences over time) or none "
-                                   "(the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
-        sub.add_option("--prior-weight", o->priorWeight, "Weight λ of the smooth prior (default 100)");
+                       std::string("Temporal prior on the latent points: paced (second differences over the pose's own "
+                                   "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
+        sub.add_option("--prior-weight", o->priorWeight, "Weight λ of the paced or smooth prior (default 100)");
         sub.add_option("--frames", o->frames, "Keep clip frames A..B (from 1, inclusive), e.g. 1:180");
         sub.add_option("--step", o->step, "Then keep every K-th frame (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
@@ -107,7 +107,7 @@ const CommandRegistration reg(
             if (!(o->tol > 0.0) || !std::isfinite(o->tol)) throw UsageError("expected --tol > 0, found " + std::to_string(o->tol));
             gp::LatentPrior prior;
             if (!gp::parseLatentPrior(o->prior, prior))
-                throw UsageError("expected --prior smooth or none, found '" + o->prior + "'");
+                throw UsageError("expected --prior paced, smooth or none, found '" + o->prior + "'");
             if (!(o->priorWeight >= 0.0) || !std::isfinite(o->priorWeight))
                 throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));

@@ -146,3 +146,98 @@ TEST_CASE("temporal prior: the Step-6 term on the active rows, gradient by centr
             CHECK(g(i, k) == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
         }
 }
+
+TEST_CASE("paced prior: the name parses and round-trips") {
+    LatentPrior p = LatentPrior::kNone;
+    CHECK(parseLatentPrior("paced", p));
+    CHECK(p == LatentPrior::kPaced);
+    CHECK(std::string(latentPriorName(p)) == "paced");
+    CHECK_THROWS(TemporalPrior::posePaced({0, 1, 2}, Eigen::MatrixXd::Zero(2, 3), 1.0));  // one pose row per frame
+    CHECK_THROWS(TemporalPrior::posePaced({0, 1, 2}, Eigen::MatrixXd::Zero(3, 3), -1.0));
+}
+
+TEST_CASE("paced prior: gaps are pose distances over their median, clamped") {
+    // Pose steps 1, 2, 1, 1, 0.1, 10 along one axis (median 1): h = 1, 2, 1, 1, 0.25, 4.
+    const std::vector<int> frames{0, 1, 2, 3, 4, 5, 6};
+    Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(7, 3);
+    const double steps[6] = {1.0, 2.0, 1.0, 1.0, 0.1, 10.0};
+    for (int i = 1; i < 7; ++i) Y(i, 1) = Y(i - 1, 1) + steps[i - 1];
+    const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 1.0);
+    REQUIRE(p.triples().size() == 5);
+    const double h[6] = {1.0, 2.0, 1.0, 1.0, kMinPaceGap, kMaxPaceGap};
+    for (int k = 0; k < 5; ++k) {
+        const auto& t = p.triples()[static_cast<std::size_t>(k)];
+        const double h1 = h[k], h2 = h[k + 1];
+        CHECK(t.coef[0] == doctest::Approx(2.0 / (h1 * (h1 + h2))).epsilon(1e-14));
+        CHECK(t.coef[2] == doctest::Approx(2.0 / (h2 * (h1 + h2))).epsilon(1e-14));
+        CHECK(t.coef[1] == doctest::Approx(-(t.coef[0] + t.coef[2])).epsilon(1e-14));
+    }
+    // Triple (0,1,2), h = (1, 2): a = 2/3, b = −1, c = 1/3.
+    CHECK(p.triples()[0].coef[0] == doctest::Approx(2.0 / 3.0));
+    CHECK(p.triples()[0].coef[1] == doctest::Approx(-1.0));
+    CHECK(p.triples()[0].coef[2] == doctest::Approx(1.0 / 3.0));
+    // A latent path that moves as far as the pose does (unclamped steps) costs nothing.
+    const std::vector<int> f5{0, 1, 2, 3, 4};
+    const Eigen::MatrixXd Y5 = Y.topRows(5);
+    const TemporalPrior q = TemporalPrior::posePaced(f5, Y5, 2.0);
+    Eigen::MatrixXd X(5, 2);
+    for (int i = 0; i < 5; ++i) X.row(i) << 0.5 * Y5(i, 1) - 1.0, 2.0 - 0.25 * Y5(i, 1);
+    CHECK(q.value(X) == doctest::Approx(0.0).epsilon(1e-14));
+    // The frame-spaced prior charges that path for its change of speed.
+    CHECK(TemporalPrior::secondDifference(f5, 2.0).value(X) > 0.01);
+}
+
+TEST_CASE("paced prior: same segments as the smooth prior, equal poses steps give its coefficients") {
+    const std::vector<int> frames{10, 11, 13, 14, 64, 65, 66};
+    Eigen::MatrixXd Y(7, 2);
+    for (int i = 0; i < 7; ++i) Y.row(i) << 0.7 * frames[i], 3.0;  // pose moves in step with the frames
+    const TemporalPrior s = TemporalPrior::secondDifference(frames, 1.0);
+    const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 1.0);
+    REQUIRE(p.triples().size() == s.triples().size());
+    for (std::size_t k = 0; k < s.triples().size(); ++k)
+        for (int j = 0; j < 3; ++j) {
+            CHECK(p.triples()[k].row[j] == s.triples()[k].row[j]);
+            CHECK(p.triples()[k].coef[j] == doctest::Approx(s.triples()[k].coef[j]).epsilon(1e-14));
+        }
+    // Every pose equal: no pace to follow, gaps of 1 (the plain second difference).
+    const TemporalPrior still = TemporalPrior::posePaced({0, 1, 2, 3}, Eigen::MatrixXd::Ones(4, 5), 1.0);
+    REQUIRE(still.triples().size() == 2);
+    CHECK(still.triples()[0].coef[1] == doctest::Approx(-2.0));
+}
+
+TEST_CASE("paced prior: gradients of the whole prior and of one point by central differences") {
+    const std::vector<int> frames{0, 1, 2, 4, 5, 6, 7, 30, 31, 32, 33};
+    Eigen::MatrixXd Y(11, 3);
+    for (int i = 0; i < 11; ++i) Y.row(i) << std::sin(0.4 * frames[i]), 0.3 * frames[i] * frames[i] / 10.0, std::cos(frames[i]);
+    const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 3.7);
+    const Eigen::MatrixXd X = wavy(11);
+    Eigen::MatrixXd g;
+    p.value(X, &g);
+    const double h = 1e-6;
+    for (Eigen::Index i = 0; i < X.rows(); ++i)
+        for (Eigen::Index k = 0; k < X.cols(); ++k) {
+            Eigen::MatrixXd Xp = X, Xm = X;
+            Xp(i, k) += h;
+            Xm(i, k) -= h;
+            const double fd = (p.value(Xp) - p.value(Xm)) / (2 * h);
+            CHECK(g(i, k) == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
+        }
+    for (int row : {0, 3, 5, 10}) {
+        Eigen::VectorXd x(2);
+        x << 0.4, -1.1;
+        Eigen::VectorXd gp;
+        p.pointValue(X, row, x, &gp);
+        Eigen::MatrixXd X2 = X;
+        X2.row(row) = x.transpose();
+        CHECK(p.value(X2) - p.value(X) ==
+              doctest::Approx(p.pointValue(X, row, x, nullptr) - p.pointValue(X, row, X.row(row).transpose(), nullptr))
+                  .epsilon(1e-12));
+        for (int k = 0; k < 2; ++k) {
+            Eigen::VectorXd xp = x, xm = x;
+            xp[k] += h;
+            xm[k] -= h;
+            const double fd = (p.pointValue(X, row, xp, nullptr) - p.pointValue(X, row, xm, nullptr)) / (2 * h);
+            CHECK(gp[k] == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
+        }
+    }
+}

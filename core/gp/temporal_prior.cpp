@@ -7,16 +7,34 @@
 
 namespace mgp::gp {
 
-const char* latentPriorName(LatentPrior p) { return p == LatentPrior::kSmooth ? "smooth" : "none"; }
+const char* latentPriorName(LatentPrior p) {
+    switch (p) {
+        case LatentPrior::kSmooth: return "smooth";
+        case LatentPrior::kPaced: return "paced";
+        case LatentPrior::kNone: break;
+    }
+    return "none";
+}
 
 bool parseLatentPrior(const std::string& s, LatentPrior& out) {
     if (s == "none") out = LatentPrior::kNone;
     else if (s == "smooth") out = LatentPrior::kSmooth;
+    else if (s == "paced") out = LatentPrior::kPaced;
     else return false;
     return true;
 }
 
-TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight) {
+namespace {
+
+double medianOf(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+template <class Gap>
+TemporalPrior TemporalPrior::build(const std::vector<int>& frames, double weight, Gap gap) {
     if (!(weight >= 0.0) || !std::isfinite(weight))
         throw std::invalid_argument("TemporalPrior: expected a finite weight ≥ 0, found " + std::to_string(weight));
     TemporalPrior p;
@@ -39,10 +57,15 @@ TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, do
         const int g = frames[p.order_[k]] - frames[p.order_[k - 1]];
         return g > 0 && g <= 3.0 * hbar;
     };
+    std::vector<double> h(static_cast<std::size_t>(n), 0.0);  // h[k]: spacing of order_[k−1] → order_[k]
+    std::vector<int> joinedAt;
+    for (int k = 1; k < n; ++k)
+        if (joined(k)) joinedAt.push_back(k);
+    gap(p.order_, joinedAt, hbar, frames, h);
     for (int k = 1; k + 1 < n; ++k) {
         if (!joined(k) || !joined(k + 1)) continue;
-        const double h1 = (frames[p.order_[k]] - frames[p.order_[k - 1]]) / hbar;
-        const double h2 = (frames[p.order_[k + 1]] - frames[p.order_[k]]) / hbar;
+        const double h1 = h[static_cast<std::size_t>(k)];
+        const double h2 = h[static_cast<std::size_t>(k + 1)];
         Triple t;
         t.row[0] = p.order_[k - 1];
         t.row[1] = p.order_[k];
@@ -55,6 +78,34 @@ TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, do
         for (int r : t.row) p.byRow_[static_cast<std::size_t>(r)].push_back(idx);
     }
     return p;
+}
+
+TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight) {
+    return build(frames, weight,
+                 [](const std::vector<int>& order, const std::vector<int>& joinedAt, double hbar,
+                    const std::vector<int>& fr, std::vector<double>& h) {
+                     for (int k : joinedAt) h[static_cast<std::size_t>(k)] = (fr[order[k]] - fr[order[k - 1]]) / hbar;
+                 });
+}
+
+TemporalPrior TemporalPrior::posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight) {
+    if (Y.rows() != static_cast<Eigen::Index>(frames.size()))
+        throw std::invalid_argument("TemporalPrior: expected one pose row per frame (" + std::to_string(frames.size()) +
+                                    "), found " + std::to_string(Y.rows()));
+    return build(frames, weight,
+                 [&Y](const std::vector<int>& order, const std::vector<int>& joinedAt, double, const std::vector<int>&,
+                      std::vector<double>& h) {
+                     if (joinedAt.empty()) return;
+                     std::vector<double> dist;
+                     dist.reserve(joinedAt.size());
+                     for (int k : joinedAt) dist.push_back((Y.row(order[k]) - Y.row(order[k - 1])).norm());
+                     const double med = medianOf(dist);
+                     for (std::size_t i = 0; i < joinedAt.size(); ++i) {
+                         // All poses equal along the joined pairs: no pace to follow, plain gaps of 1.
+                         const double r = med > 0.0 ? dist[i] / med : 1.0;
+                         h[static_cast<std::size_t>(joinedAt[i])] = std::clamp(r, kMinPaceGap, kMaxPaceGap);
+                     }
+                 });
 }
 
 double TemporalPrior::value(const Eigen::MatrixXd& X, Eigen::MatrixXd* grad) const {

@@ -11,15 +11,25 @@
 // frames, rows sorted by frame) is 0 or more than 3 median gaps, so separate takes or frame
 // ranges are never tied together. The prior only adds to the objectives of Steps 6 and 8
 // (core/gp/trainer.h); with LatentPrior::kNone nothing changes (the paper's model).
+//
+// kPaced (docs/maths.md §19) keeps the same segments but measures the gaps h₁, h₂ in pose distance
+// ‖y_t − y_{t−1}‖ (in units of the median step, clamped to [kMinPaceGap, kMaxPaceGap]) instead of
+// frames: a latent path whose speed follows the pose's speed costs nothing, so a jump's takeoff
+// may move fast in latent space while a still stretch is held together.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
 namespace mgp::gp {
 
-enum class LatentPrior { kNone, kSmooth };
-const char* latentPriorName(LatentPrior p);  // "none" / "smooth"
+enum class LatentPrior { kNone, kSmooth, kPaced };
+const char* latentPriorName(LatentPrior p);  // "none" / "smooth" / "paced"
 bool parseLatentPrior(const std::string& s, LatentPrior& out);
+
+// Pose-distance gaps of kPaced, in units of the median step: a still stretch (h → 0) would make
+// the coefficients ~1/h² explode and SCG stiff; a very fast step (h large) would leave it free.
+constexpr double kMinPaceGap = 0.25;
+constexpr double kMaxPaceGap = 4.0;
 
 class TemporalPrior {
 public:
@@ -31,6 +41,10 @@ public:
     TemporalPrior() = default;
     // frames: clip frame of each training row (any order); weight λ ≥ 0.
     static TemporalPrior secondDifference(const std::vector<int>& frames, double weight);
+    // kPaced: the same segments, with the gap between time-consecutive rows measured as the pose
+    // distance ‖Y.row(b) − Y.row(a)‖ over its median across the joined pairs, clamped to
+    // [kMinPaceGap, kMaxPaceGap]. Y has one row per frame entry.
+    static TemporalPrior posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight);
 
     bool empty() const { return triples_.empty() || weight_ == 0.0; }
     double weight() const { return weight_; }
@@ -45,6 +59,10 @@ public:
     double pointValue(const Eigen::MatrixXd& X, int row, const Eigen::VectorXd& x, Eigen::VectorXd* grad) const;
 
 private:
+    // Segments by frame gap; gap(a, b) gives the (positive) spacing of joined rows a → b.
+    template <class Gap>
+    static TemporalPrior build(const std::vector<int>& frames, double weight, Gap gap);
+
     double weight_ = 0.0;
     std::vector<Triple> triples_;
     std::vector<std::vector<int>> byRow_;  // triples touching each row

@@ -104,7 +104,7 @@ void TrainOptions::validate() const {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw std::invalid_argument("TrainOptions: expected a finite tolerance > 0");
     if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
-    if (prior == LatentPrior::kSmooth && (!(priorWeight >= 0.0) || !std::isfinite(priorWeight)))
+    if (prior != LatentPrior::kNone && (!(priorWeight >= 0.0) || !std::isfinite(priorWeight)))
         throw std::invalid_argument("TrainOptions: expected a finite priorWeight ≥ 0");
 }
 
@@ -115,6 +115,7 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
     if (opt_.prior == LatentPrior::kSmooth) prior_ = TemporalPrior::secondDifference(data_.frames, opt_.priorWeight);
+    if (opt_.prior == LatentPrior::kPaced) prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.priorWeight);
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
                                        objective(), false);
