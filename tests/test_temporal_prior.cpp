@@ -217,6 +217,7 @@ TEST_CASE("paced prior: gradients of the whole prior and of one point by central
     const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 3.7);
     const Eigen::MatrixXd X = wavy(11);
     checkWholePriorGradient(p, X);
+    const double h = 1e-6;
     for (int row : {0, 3, 5, 10}) {
         Eigen::VectorXd x(2);
         x << 0.4, -1.1;
