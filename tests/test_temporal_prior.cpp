@@ -93,6 +93,29 @@ static void checkWholePriorGradient(const TemporalPrior& p, const Eigen::MatrixX
         }
 }
 
+// One row's part of the prior: replacing that row changes the whole prior by exactly the change
+// of its part, and the part's gradient in x matches central differences.
+static void checkOnePointPart(const TemporalPrior& p, const Eigen::MatrixXd& X, int row) {
+    CAPTURE(row);
+    Eigen::VectorXd x(2);
+    x << 0.4, -1.1;
+    Eigen::MatrixXd X2 = X;
+    X2.row(row) = x.transpose();
+    const double whole = p.value(X2) - p.value(X);
+    const double part = p.pointValue(X, row, x, nullptr) - p.pointValue(X, row, X.row(row).transpose(), nullptr);
+    CHECK(whole == doctest::Approx(part).epsilon(1e-12));
+    Eigen::VectorXd g;
+    p.pointValue(X, row, x, &g);
+    const double h = 1e-6;
+    for (int k = 0; k < 2; ++k) {
+        Eigen::VectorXd xp = x, xm = x;
+        xp[k] += h;
+        xm[k] -= h;
+        const double fd = (p.pointValue(X, row, xp, nullptr) - p.pointValue(X, row, xm, nullptr)) / (2 * h);
+        CHECK(g[k] == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
+    }
+}
+
 TEST_CASE("temporal prior: gradient of L_smooth(X) by central differences") {
     const std::vector<int> frames{0, 1, 2, 4, 5, 6, 7, 30, 31, 32, 33};
     const TemporalPrior p = TemporalPrior::secondDifference(frames, 3.7);
@@ -104,26 +127,7 @@ TEST_CASE("temporal prior: one point's part has the whole prior's differences an
     const std::vector<int> frames{0, 1, 2, 3, 4, 5, 6, 7};
     const TemporalPrior p = TemporalPrior::secondDifference(frames, 0.8);
     const Eigen::MatrixXd X = wavy(8);
-    for (int row : {0, 1, 4, 7}) {
-        Eigen::VectorXd x(2);
-        x << 0.4, -1.1;
-        Eigen::MatrixXd X2 = X;
-        X2.row(row) = x.transpose();
-        // Changing one row changes the whole prior exactly as much as that row's part.
-        const double whole = p.value(X2) - p.value(X);
-        const double part = p.pointValue(X, row, x, nullptr) - p.pointValue(X, row, X.row(row).transpose(), nullptr);
-        CHECK(whole == doctest::Approx(part).epsilon(1e-12));
-        Eigen::VectorXd g;
-        p.pointValue(X, row, x, &g);
-        const double h = 1e-6;
-        for (int k = 0; k < 2; ++k) {
-            Eigen::VectorXd xp = x, xm = x;
-            xp[k] += h;
-            xm[k] -= h;
-            const double fd = (p.pointValue(X, row, xp, nullptr) - p.pointValue(X, row, xm, nullptr)) / (2 * h);
-            CHECK(g[k] == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
-        }
-    }
+    for (int row : {0, 1, 4, 7}) checkOnePointPart(p, X, row);
 }
 
 TEST_CASE("temporal prior: the Step-6 term on the active rows, gradient by central differences") {
@@ -217,23 +221,5 @@ TEST_CASE("paced prior: gradients of the whole prior and of one point by central
     const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 3.7);
     const Eigen::MatrixXd X = wavy(11);
     checkWholePriorGradient(p, X);
-    const double h = 1e-6;
-    for (int row : {0, 3, 5, 10}) {
-        Eigen::VectorXd x(2);
-        x << 0.4, -1.1;
-        Eigen::VectorXd gp;
-        p.pointValue(X, row, x, &gp);
-        Eigen::MatrixXd X2 = X;
-        X2.row(row) = x.transpose();
-        CHECK(p.value(X2) - p.value(X) ==
-              doctest::Approx(p.pointValue(X, row, x, nullptr) - p.pointValue(X, row, X.row(row).transpose(), nullptr))
-                  .epsilon(1e-12));
-        for (int k = 0; k < 2; ++k) {
-            Eigen::VectorXd xp = x, xm = x;
-            xp[k] += h;
-            xm[k] -= h;
-            const double fd = (p.pointValue(X, row, xp, nullptr) - p.pointValue(X, row, xm, nullptr)) / (2 * h);
-            CHECK(gp[k] == doctest::Approx(fd).epsilon(1e-6).scale(1.0));
-        }
-    }
+    for (int row : {0, 3, 5, 10}) checkOnePointPart(p, X, row);
 }

@@ -11,6 +11,13 @@
 
 namespace mgp::gp {
 
+namespace {
+// L_IK from its parts (docs/maths.md §9): E = ‖W(y − f(x))‖², s2 = σ²(x), D pose dimensions.
+double likFromResidual(double E, double s2, double D, const Eigen::VectorXd& x) {
+    return E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
+}
+}  // namespace
+
 PointModel::PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
                        const Eigen::VectorXd& mu, const Eigen::VectorXd& w)
     : kernel_(kernel), XI_(XI), mu_(mu), w_(w) {
@@ -71,7 +78,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     ws.clamped = clamped;
     ws.r = w_.cwiseProduct(y - ws.f);
     const double E = ws.r.squaredNorm();
-    const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
+    const double value = likFromResidual(E, s2, D, x);
     if (gradX) {
         ws.wr = w_.cwiseProduct(ws.r);
         ws.bwr.noalias() = B_ * ws.wr;
@@ -137,6 +144,13 @@ void PointModel::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<i
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - z.dot(v) + vB.dot(t));
 }
 
+double PointModel::evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const std::vector<int>& heldOut,
+                                      double& variance) const {
+    Eigen::VectorXd mean;
+    predictHoldingOut(x, heldOut, mean, variance);
+    return likFromResidual(w_.cwiseProduct(y - mean).squaredNorm(), variance, static_cast<double>(mu_.size()), x);
+}
+
 double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                             Eigen::VectorXd* gradY) const {
     const double D = static_cast<double>(mu_.size());
@@ -148,7 +162,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
     const Eigen::VectorXd r = w_.cwiseProduct(y - f);
     const double E = r.squaredNorm();
-    const double value = E / (2.0 * s2) + 0.5 * D * std::log(s2) + 0.5 * x.squaredNorm();
+    const double value = likFromResidual(E, s2, D, x);
     if (gradX) {
         const Eigen::MatrixXd J = kernel_.crossGradX(XI_, x);
         Eigen::VectorXd dS2 = Eigen::VectorXd::Zero(x.size());

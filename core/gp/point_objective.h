@@ -49,6 +49,9 @@ public:
     // (docs/maths-ik.md §5: what a captured pose scores when the model has not seen its moment).
     void predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
                            double& variance) const;
+    // L_IK(x, y) under that held-out prediction; its σ² goes to `variance`.
+    double evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const std::vector<int>& heldOut,
+                              double& variance) const;
 
     // L_IK(x, y); gradients are written when the pointers are non-null (sized by the callee).
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,

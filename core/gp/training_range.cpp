@@ -23,8 +23,7 @@ void heldOutMomentScores(const GpModel& model, const PointModel& point, int wind
                          std::vector<double>& lik) {
     sigma2.clear();
     lik.clear();
-    const double D = static_cast<double>(model.Y.cols());
-    Eigen::VectorXd x, y, mean;
+    Eigen::VectorXd x, y;
     std::vector<int> held;
     for (int i = 0; i < model.N(); ++i) {
         held.clear();
@@ -35,8 +34,7 @@ void heldOutMomentScores(const GpModel& model, const PointModel& point, int wind
         x = model.X.row(i).transpose();
         y = model.Y.row(i).transpose();
         double v = 0.0;
-        point.predictHoldingOut(x, held, mean, v);
-        const double l = model.w.cwiseProduct(y - mean).squaredNorm() / (2.0 * v) + 0.5 * D * std::log(v) + 0.5 * x.squaredNorm();
+        const double l = point.evaluateHoldingOut(x, y, held, v);
         if (!std::isfinite(l) || !std::isfinite(v)) continue;
         sigma2.push_back(v);
         lik.push_back(l);
