@@ -84,7 +84,7 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
             const gp::GpModel& m = *model->model;
             Eigen::VectorXd mean;
             double variance = 0.0;
-            model->point->predict(latentStartForFrame(*model, opt.frameIndex), mean, variance);
+            model->posterior->predict(latentStartForFrame(*model, opt.frameIndex), mean, variance);
             Pose reconstructed = clip.frames[opt.frameIndex];
             const Eigen::VectorXd full = m.fullPose(mean);
             PoseLayout(clip.skeleton).apply(full.data(), reconstructed);

@@ -44,9 +44,9 @@ TEST_CASE("a sample where the posterior variance beats the smallest active varia
     xFar[0] += 6.0 * std::sqrt((m0.X.col(0).array() - m0.X.col(0).mean()).square().mean());
     Eigen::VectorXd mean;
     double varFar = 0.0;
-    v0->point->predict(xFar, mean, varFar);
+    v0->posterior->predict(xFar, mean, varFar);
     double varNear = 0.0;
-    v0->point->predict(m0.X.row(m0.active[0]).transpose(), mean, varNear);
+    v0->posterior->predict(m0.X.row(m0.active[0]).transpose(), mean, varNear);
     CHECK(varFar > varNear);
     const gp::AdaptiveUpdateResult r = gp::adaptiveUpdate(*v0, xFar, m0.Y.row(0).transpose(), 0);
     REQUIRE(r.accepted);

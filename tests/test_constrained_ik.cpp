@@ -225,7 +225,7 @@ TEST_CASE("training range: the 99th percentiles of the captured frames scored as
     CHECK(r.likLimit >= r.likMedian);
     // By construction about 1 % of the held-out scores lie above each percentile.
     std::vector<double> s2, lik;
-    gp::heldOutMomentScores(*version->model, *version->point, gp::kHeldOutWindowFrames, s2, lik);
+    gp::heldOutMomentScores(*version->model, *version->posterior, gp::kHeldOutWindowFrames, s2, lik);
     REQUIRE(static_cast<int>(lik.size()) == version->model->N());
     int above = 0, aboveS2 = 0;
     for (std::size_t i = 0; i < lik.size(); ++i) {
@@ -239,12 +239,12 @@ TEST_CASE("training range: the 99th percentiles of the captured frames scored as
     gp::PointWorkspace ws;
     int inSampleBelowMedian = 0;
     for (int i = 0; i < version->model->N(); ++i)
-        inSampleBelowMedian += version->point->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(),
+        inSampleBelowMedian += version->posterior->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(),
                                                         ws, nullptr, nullptr) < r.likMedian;
     CHECK(inSampleBelowMedian >= version->model->N() * 8 / 10);
     // A window of 0 frames hides only the row itself, so the scores fall as the window shrinks.
     std::vector<double> s2Own, likOwn;
-    gp::heldOutMomentScores(*version->model, *version->point, 0, s2Own, likOwn);
+    gp::heldOutMomentScores(*version->model, *version->posterior, 0, s2Own, likOwn);
     double sumOwn = 0.0, sumWindow = 0.0;
     for (std::size_t i = 0; i < lik.size(); ++i) sumOwn += likOwn[i], sumWindow += lik[i];
     CHECK(sumOwn < sumWindow);
@@ -261,7 +261,7 @@ TEST_CASE("point model: predicting while holding out active points equals a mode
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     const Eigen::MatrixXd XI = m.activeX(), Yhat = m.activeYhat();
-    const gp::Kernel kernel = version->point->kernel();
+    const gp::Kernel kernel = version->posterior->kernel();
     const std::vector<int> heldOut = {3, 4, 5, 17, 90};
     std::vector<int> kept;
     for (int j = 0; j < XI.rows(); ++j)
@@ -271,8 +271,8 @@ TEST_CASE("point model: predicting while holding out active points equals a mode
         XK.row(static_cast<Eigen::Index>(r)) = XI.row(kept[r]);
         YK.row(static_cast<Eigen::Index>(r)) = Yhat.row(kept[r]);
     }
-    const gp::PointModel reduced(kernel, XK, YK, m.mu, m.w);
-    REQUIRE(version->point->jitter() == 0.0);
+    const gp::ActiveSetPosterior reduced(kernel, XK, YK, m.mu, m.w);
+    REQUIRE(version->posterior->jitter() == 0.0);
     REQUIRE(reduced.jitter() == 0.0);
     for (const int row : {4, 60, 200}) {
         CAPTURE(row);
@@ -281,15 +281,15 @@ TEST_CASE("point model: predicting while holding out active points equals a mode
                                            : Eigen::VectorXd(0.5 * (m.X.row(row) + m.X.row(row + 1)).transpose());
         Eigen::VectorXd meanHeld, meanReduced;
         double varHeld = 0.0, varReduced = 0.0;
-        version->point->predictHoldingOut(x, heldOut, meanHeld, varHeld);
+        version->posterior->predictHoldingOut(x, heldOut, meanHeld, varHeld);
         reduced.predict(x, meanReduced, varReduced);
         CHECK((meanHeld - meanReduced).cwiseAbs().maxCoeff() <= 1e-7 * (1.0 + meanReduced.cwiseAbs().maxCoeff()));
         CHECK(std::abs(varHeld - varReduced) <= 1e-9 * (1.0 + varReduced));
         // Holding out nothing is the plain prediction.
         Eigen::VectorXd meanAll, meanNone;
         double varAll = 0.0, varNone = 0.0;
-        version->point->predict(x, meanAll, varAll);
-        version->point->predictHoldingOut(x, {}, meanNone, varNone);
+        version->posterior->predict(x, meanAll, varAll);
+        version->posterior->predictHoldingOut(x, {}, meanNone, varNone);
         CHECK(meanNone == meanAll);
         CHECK(varNone == varAll);
     }

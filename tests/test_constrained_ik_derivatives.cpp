@@ -1,5 +1,5 @@
 // Derivatives the constrained learned IK relies on, each against central differences: the GP
-// mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (PointModel::meanVarianceJacobians), the
+// mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (ActiveSetPosterior::meanVarianceJacobians), the
 // gradient of the solver's objective F over (x, y) (targets of several strengths and the root
 // stiffness), the prior's part of its Hessian model (exact), and the contracted second
 // derivative of FK (core/skeleton/forward_kinematics.h).
@@ -22,7 +22,7 @@ ConstrainedIkRequest requestAt(const gp::ModelVersion& v, int frame) {
 
 TEST_CASE("∂f/∂x and ∂σ²/∂x match central differences (training point, far point, near the origin)") {
     const auto version = test::walkModel35();
-    const gp::PointModel& pm = *version->point;
+    const gp::ActiveSetPosterior& pm = *version->posterior;
     const gp::GpModel& m = *version->model;
     const Eigen::VectorXd y = m.Y.row(17).transpose();
     for (const Eigen::VectorXd& x : {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),

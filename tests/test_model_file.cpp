@@ -109,8 +109,8 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are ato
     // The loaded model predicts like the original.
     Eigen::VectorXd f1, f2;
     double v1 = 0, v2 = 0;
-    m.pointModel().predict(m.X.row(3).transpose(), f1, v1);
-    b.pointModel().predict(b.X.row(3).transpose(), f2, v2);
+    m.posterior().predict(m.X.row(3).transpose(), f1, v1);
+    b.posterior().predict(b.X.row(3).transpose(), f2, v2);
     CHECK(bitsEqual(f1, f2));
     CHECK(v1 == v2);
 }

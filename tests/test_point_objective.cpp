@@ -40,7 +40,7 @@ Eigen::VectorXd psiFor(KernelKind kind, double beta) {
     return psi;
 }
 
-PointModel makeModel(const Setup& s, KernelKind kind, double beta) {
+ActiveSetPosterior makeModel(const Setup& s, KernelKind kind, double beta) {
     Eigen::MatrixXd XI(s.active.size(), 2), Yhat(s.active.size(), s.data.Y.cols());
     for (std::size_t r = 0; r < s.active.size(); ++r) {
         XI.row(r) = s.X.row(s.active[r]);
@@ -49,7 +49,7 @@ PointModel makeModel(const Setup& s, KernelKind kind, double beta) {
     const Kernel k(kind, psiFor(kind, beta));
     const GpEvaluation ev = evaluateGp(k, XI, Yhat, {}, false);
     REQUIRE(ev.ok);
-    return PointModel(k, XI, Yhat, s.data.mu, ev.w);
+    return ActiveSetPosterior(k, XI, Yhat, s.data.mu, ev.w);
 }
 
 }  // namespace
@@ -57,7 +57,7 @@ PointModel makeModel(const Setup& s, KernelKind kind, double beta) {
 TEST_CASE("L_IK: gradients w.r.t. x and y match central differences (including near the origin)") {
     const Setup s = walkSetup();
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
-        const PointModel pm = makeModel(s, kind, 0.2);
+        const ActiveSetPosterior pm = makeModel(s, kind, 0.2);
         const Eigen::VectorXd y = s.data.Y.row(s.inactive[7]).transpose().array() + 3.0;
         for (const Eigen::Vector2d& xv : {Eigen::Vector2d(s.X(s.inactive[7], 0), s.X(s.inactive[7], 1)),
                                           Eigen::Vector2d(2.5, -1.0), Eigen::Vector2d(0.6e-4, -0.8e-4)}) {
@@ -90,7 +90,7 @@ TEST_CASE("L_IK: σ² ≥ 1/β holds exactly at a training active point with tin
     const Setup s = walkSetup();
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
         const double beta = std::exp(20.0);
-        const PointModel pm = makeModel(s, kind, beta);
+        const ActiveSetPosterior pm = makeModel(s, kind, beta);
         for (int i : s.active) {
             Eigen::VectorXd mean;
             double var = 0.0;
@@ -102,7 +102,7 @@ TEST_CASE("L_IK: σ² ≥ 1/β holds exactly at a training active point with tin
 
 TEST_CASE("L_IK: Step 8 gives identical bits with 1 and 2 threads, and lowers every L_IK") {
     const Setup s = walkSetup();
-    const PointModel pm = makeModel(s, KernelKind::kFas, 0.2);
+    const ActiveSetPosterior pm = makeModel(s, KernelKind::kFas, 0.2);
     ScgOptions o;
     o.maxIterations = 20;
     Eigen::MatrixXd X1 = s.X, X2 = s.X;

@@ -7,9 +7,9 @@
 
 using namespace mgp;
 
-TEST_CASE("PointModel::evaluate with a workspace equals the reference evaluation") {
+TEST_CASE("ActiveSetPosterior::evaluate with a workspace equals the reference evaluation") {
     const auto version = test::walkModel35();
-    const gp::PointModel& point = *version->point;
+    const gp::ActiveSetPosterior& point = *version->posterior;
     const gp::GpModel& m = *version->model;
     std::mt19937 rng(3);
     std::normal_distribution<double> n01;

@@ -44,7 +44,7 @@ LatentImage computeLatentImage(const gp::ModelVersion& version, int size) {
             x[0] = img.x0 + (c + 0.5) / size * (img.x1 - img.x0);
             if (x.size() > 1) x[1] = img.y1 - (r + 0.5) / size * (img.y1 - img.y0);
             double var = 0.0;
-            version.point->predict(x, mean, var);
+            version.posterior->predict(x, mean, var);
             const double lv = std::log(std::max(var, 1e-300));
             logVar[std::size_t(r) * size + c] = lv;
             if (std::isfinite(lv)) {

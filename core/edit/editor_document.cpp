@@ -90,16 +90,22 @@ void EditorDocument::clearEdit(int frame) {
 
 std::string EditorDocument::pastePose(const Pose& pose) {
     if (!hasClip()) return "no clip to paste onto";
-    if (regenerating()) return "wait for the regeneration to finish before pasting";
+    Pose pasted = pose;
+    pasted.rootCm = currentPose().rootCm;
+    return setCurrentPose(pasted, "paste pose on frame " + std::to_string(frame_ + 1));
+}
+
+std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& stepLabel) {
+    if (!hasClip()) return "no clip to edit";
+    if (regenerating()) return "wait for the regeneration to finish before editing a pose";
     if (pose.anglesDeg.size() != currentPose().anglesDeg.size())
         return "expected a pose of this clip's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) +
                " bones (copied from another clip?)";
     cancelDrag();
     EditRecord rec;
     rec.pose = pose;
-    rec.pose.rootCm = currentPose().rootCm;
     EditStep step;
-    step.label = "paste pose on frame " + std::to_string(frame_ + 1);
+    step.label = stepLabel;
     step.before[frame_] = editAt(frame_);
     step.after[frame_] = rec;
     applyFrames(step.after);
@@ -438,7 +444,7 @@ Pose EditorDocument::poseFromLatent(const Eigen::VectorXd& x, const Pose& base) 
     const gp::ModelVersionPtr v = model();
     Eigen::VectorXd mean;
     double var = 0.0;
-    v->point->predict(x, mean, var);
+    v->posterior->predict(x, mean, var);
     const Eigen::VectorXd full = v->model->fullPose(mean);
     Pose p = base;
     PoseLayout(clip_.skeleton).apply(full.data(), p);
@@ -678,14 +684,14 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     const auto it = edits_.find(frame_);
     if (it == edits_.end()) return std::nullopt;
     const EditRecord& e = it->second;
-    if (e.x.size() != v->point->latentDim() || !e.x.allFinite()) return std::nullopt;
+    if (e.x.size() != v->posterior->latentDim() || !e.x.allFinite()) return std::nullopt;
     if (v->model->clip.skeleton.jointCount() != clip_.skeleton.jointCount()) return std::nullopt;
     const PoseLayout layout(clip_.skeleton);
     const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
-    const double lik = v->point->evaluate(e.x, y, nullptr, nullptr);
+    const double lik = v->posterior->evaluate(e.x, y, nullptr, nullptr);
     Eigen::VectorXd mean;
     double sigma2 = 0.0;
-    v->point->predict(e.x, mean, sigma2);
+    v->posterior->predict(e.x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
     const bool reached = !(lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose)) || lastDrag_.reached;
     return gp::admitPose(v->range, reached, sigma2, lik);

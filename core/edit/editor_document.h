@@ -94,6 +94,9 @@ public:
     // Pastes `pose` (copied from any frame of this clip) onto the current frame as one undo step;
     // the current frame's root position is kept so the character does not jump. "" or why not.
     std::string pastePose(const Pose& pose);
+    // Replaces the current frame's pose (root included) as one undo step named `stepLabel`: the
+    // operations that compute a whole pose (mirror, rotate joint) go through here. "" or why not.
+    std::string setCurrentPose(const Pose& pose, const std::string& stepLabel);
     // Replaces every edit at once (loading a session); clears the undo history.
     void restoreEdits(std::map<int, EditRecord> edits);
     Eigen::Vector3d effectorPosition(Effector e) const;  // FK of the current pose (cm)

@@ -172,7 +172,7 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     rep.trained = model.N();
     if (heldFrames.empty() || model.N() == 0) return rep;
     const Eigen::MatrixXd poses = poseMatrix(model.clip);
-    const gp::PointModel pm = model.pointModel();
+    const gp::ActiveSetPosterior pm = model.posterior();
     // Non-root DOFs: 3..46 of the 47-vector.
     constexpr int kFirst = 3, kCount = kPoseDofs - kFirst;
     Eigen::MatrixXd trainFull(model.N(), kPoseDofs);

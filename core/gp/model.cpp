@@ -16,7 +16,7 @@ Eigen::MatrixXd GpModel::activeX() const {
     return out;
 }
 
-PointModel GpModel::pointModel() const { return PointModel(kernel(), activeX(), activeYhat(), mu, w); }
+ActiveSetPosterior GpModel::posterior() const { return ActiveSetPosterior(kernel(), activeX(), activeYhat(), mu, w); }
 
 Eigen::VectorXd GpModel::fullPose(const Eigen::VectorXd& kept) const {
     Eigen::VectorXd full = Eigen::VectorXd::Zero(kPoseDofs);

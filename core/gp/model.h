@@ -64,7 +64,7 @@ struct GpModel {
     Eigen::MatrixXd activeYhat() const;
     Eigen::MatrixXd activeX() const;
     // The §6.2 precomputation for IK and prediction.
-    PointModel pointModel() const;
+    ActiveSetPosterior posterior() const;
     // Expands kept columns to the full 47-vector (constants filled in).
     Eigen::VectorXd fullPose(const Eigen::VectorXd& kept) const;
     Eigen::VectorXd keptPose(const Eigen::VectorXd& full47) const;

@@ -6,8 +6,8 @@ std::shared_ptr<const ModelVersion> ModelVersion::make(GpModel model, int number
     auto v = std::make_shared<ModelVersion>();
     v->number = number;
     auto m = std::make_shared<const GpModel>(std::move(model));
-    v->point = std::make_shared<const PointModel>(m->pointModel());
-    v->range = computeTrainingRange(*m, *v->point);
+    v->posterior = std::make_shared<const ActiveSetPosterior>(m->posterior());
+    v->range = computeTrainingRange(*m, *v->posterior);
     v->model = std::move(m);
     return v;
 }

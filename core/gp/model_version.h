@@ -14,7 +14,7 @@ namespace mgp::gp {
 struct ModelVersion {
     int number = 0;  // 0 = as trained or loaded; +1 per accepted adaptive update
     std::shared_ptr<const GpModel> model;
-    std::shared_ptr<const PointModel> point;
+    std::shared_ptr<const ActiveSetPosterior> posterior;
     // σ² and L_IK percentiles over the training rows (what an admissible edited pose must meet).
     TrainingRange range;
 

@@ -18,13 +18,13 @@ double likFromResidual(double E, double s2, double D, const Eigen::VectorXd& x) 
 }
 }  // namespace
 
-PointModel::PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
                        const Eigen::VectorXd& mu, const Eigen::VectorXd& w)
     : kernel_(kernel), XI_(XI), mu_(mu), w_(w) {
     if (Yhat.rows() != XI.rows() || Yhat.cols() != mu.size() || w.size() != mu.size())
-        throw std::invalid_argument("PointModel: inconsistent sizes");
+        throw std::invalid_argument("ActiveSetPosterior: inconsistent sizes");
     if (!jitterCholesky(kernel_.gram(XI_), llt_, jitter_))
-        throw std::runtime_error("PointModel: the kernel matrix could not be factored");
+        throw std::runtime_error("ActiveSetPosterior: the kernel matrix could not be factored");
     Kinv_ = llt_.solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
     B_ = llt_.solve(Yhat);
     phiI_.resize(XI_.rows(), XI_.cols());
@@ -32,7 +32,7 @@ PointModel::PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Ei
         phiI_.row(j) = XI_.row(j) / std::sqrt(XI_.row(j).squaredNorm() + kAngularEps * kAngularEps);
 }
 
-double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
+double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
                             Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
     const Eigen::Index m = XI_.rows(), d = XI_.cols();
     const double D = static_cast<double>(mu_.size());
@@ -94,7 +94,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     return value;
 }
 
-void PointModel::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
+void ActiveSetPosterior::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
                                        Eigen::VectorXd& dSigma2) const {
     const Eigen::Index d = XI_.cols();
     Jf.resize(mu_.size(), d);
@@ -114,13 +114,13 @@ void PointModel::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWork
     dSigma2 += diagGrad * x;
 }
 
-void PointModel::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {
+void ActiveSetPosterior::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {
     const Eigen::VectorXd k = kernel_.cross(XI_, x);
     mean = mu_ + B_.transpose() * k;
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - k.dot(Kinv_ * k));
 }
 
-void PointModel::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
+void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
                                    double& variance) const {
     if (heldOut.empty()) return predict(x, mean, variance);
     const Eigen::Index b = static_cast<Eigen::Index>(heldOut.size());
@@ -144,14 +144,14 @@ void PointModel::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<i
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - z.dot(v) + vB.dot(t));
 }
 
-double PointModel::evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const std::vector<int>& heldOut,
+double ActiveSetPosterior::evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const std::vector<int>& heldOut,
                                       double& variance) const {
     Eigen::VectorXd mean;
     predictHoldingOut(x, heldOut, mean, variance);
     return likFromResidual(w_.cwiseProduct(y - mean).squaredNorm(), variance, static_cast<double>(mu_.size()), x);
 }
 
-double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
+double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                             Eigen::VectorXd* gradY) const {
     const double D = static_cast<double>(mu_.size());
     const Eigen::VectorXd k = kernel_.cross(XI_, x);
@@ -176,7 +176,7 @@ double PointModel::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
 
 namespace {
 
-void optimizePass(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+void optimizePass(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
                   Eigen::MatrixXd& X, const ScgOptions& options, int threads, const std::atomic<bool>* cancel,
                   const TemporalPrior* prior) {
     if (points.empty()) return;
@@ -210,7 +210,7 @@ void optimizePass(const PointModel& model, const Eigen::MatrixXd& Y, const std::
 
 }  // namespace
 
-void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+void optimizeInactivePoints(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
                             Eigen::MatrixXd& X, const ScgOptions& options, int threads,
                             const std::atomic<bool>* cancel, const TemporalPrior* prior) {
     if (points.empty()) return;

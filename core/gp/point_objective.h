@@ -5,8 +5,9 @@
 //   f(x)  = μ + Ŷᵀ K⁻¹ k(x)                (unscaled pose space, degrees, kept columns)
 //   σ²(x) = 1/β + max(0, k_f(x,x) − k(x)ᵀ K⁻¹ k(x))   (so σ² ≥ 1/β exactly)
 //
-// PointModel is the immutable precomputation of §6.2 (chol K, K⁻¹, B = K⁻¹Ŷ) for one model
-// state; evaluate() is thread-safe (const, no shared scratch). optimizeInactivePoints() runs
+// ActiveSetPosterior is the GP posterior given the active set: the immutable precomputation of
+// §6.2 (chol K, K⁻¹, B = K⁻¹Ŷ) for one model state; evaluate() is thread-safe (const, no shared
+// scratch). optimizeInactivePoints() runs
 // Step 8: an independent SCG per inactive point, in parallel, each result written to its own
 // preallocated slot, so the output is bit-identical for any thread count.
 #include <Eigen/Cholesky>
@@ -20,7 +21,7 @@
 
 namespace mgp::gp {
 
-// Scratch for the allocation-free PointModel::evaluate overload: sized on first use, reused after.
+// Scratch for the allocation-free ActiveSetPosterior::evaluate overload: sized on first use, reused after.
 struct PointWorkspace {
     Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
     Eigen::MatrixXd J;      // M×d: ∂k/∂x
@@ -28,11 +29,11 @@ struct PointWorkspace {
     bool clamped = false;   // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
 };
 
-class PointModel {
+class ActiveSetPosterior {
 public:
     // XI: active latent points (M×d); Yhat: centred active rows (M×D); mu: training mean (D);
     // w: scale weights (D). Throws std::runtime_error if K cannot be factored.
-    PointModel(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
+    ActiveSetPosterior(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
                const Eigen::VectorXd& mu, const Eigen::VectorXd& w);
 
     int latentDim() const { return static_cast<int>(XI_.cols()); }
@@ -85,7 +86,7 @@ private:
 // terms that involve it, its time neighbours held at their current values; the points go in
 // three passes by their time position mod 3 (no two points of one pass share a term), each pass
 // seeing the previous passes' results: a block Gauss-Seidel sweep, still deterministic.
-void optimizeInactivePoints(const PointModel& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
+void optimizeInactivePoints(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
                             Eigen::MatrixXd& X, const ScgOptions& options, int threads = 0,
                             const std::atomic<bool>* cancel = nullptr, const TemporalPrior* prior = nullptr);
 

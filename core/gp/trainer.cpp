@@ -171,7 +171,7 @@ void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic
     const Eigen::MatrixXd Yhat = centredRows(data_, active);
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, objective(), false);
     if (!ev.ok) return;  // cannot factor K: leave the inactive points where they are
-    const PointModel pm(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, data_.mu, ev.w);
+    const ActiveSetPosterior pm(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, data_.mu, ev.w);
     ScgOptions so;
     so.maxIterations = opt_.pointIterations;
     so.tolX = opt_.scgTolX;

@@ -19,7 +19,7 @@ double percentileOf(std::vector<double> v, double p) {
 }
 }  // namespace
 
-void heldOutMomentScores(const GpModel& model, const PointModel& point, int windowFrames, std::vector<double>& sigma2,
+void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,
                          std::vector<double>& lik) {
     sigma2.clear();
     lik.clear();
@@ -41,7 +41,7 @@ void heldOutMomentScores(const GpModel& model, const PointModel& point, int wind
     }
 }
 
-TrainingRange computeTrainingRange(const GpModel& model, const PointModel& point, double percentile) {
+TrainingRange computeTrainingRange(const GpModel& model, const ActiveSetPosterior& point, double percentile) {
     TrainingRange out;
     out.percentile = percentile;
     out.rows = model.N();

@@ -151,7 +151,7 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     ++evaluations_;
     x_ = z.head(d_);
     y_ = z.tail(D_);
-    lik_ = version_->point->evaluate(x_, y_, ws_, derivatives ? &gx_ : nullptr, derivatives ? &gy_ : nullptr);
+    lik_ = version_->posterior->evaluate(x_, y_, ws_, derivatives ? &gx_ : nullptr, derivatives ? &gy_ : nullptr);
     sigma2_ = ws_.variance;
     double F = lik_;
     const double s2 = sigma2_;
@@ -163,7 +163,7 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         // y–y: ∂²/∂y² of ‖W(y − f)‖²/(2σ²) = W²/σ².
         for (int k = 0; k < D_; ++k) H_(d_ + k, d_ + k) = m.w[k] * m.w[k] / s2;
         // x–y: ∂(W r/σ²)/∂x = −W² J_f/σ² − (W r) (∂σ²/∂x)ᵀ/σ⁴.
-        version_->point->meanVarianceJacobians(x_, ws_, Jf_, dS2_);
+        version_->posterior->meanVarianceJacobians(x_, ws_, Jf_, dS2_);
         for (int k = 0; k < D_; ++k) {
             const double wk2 = m.w[k] * m.w[k];
             const double wr = m.w[k] * ws_.r[k];
@@ -177,9 +177,9 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         for (int i = 0; i < d_; ++i) {
             xP_ = x_;
             xP_[i] += kFdStepX;
-            version_->point->evaluate(xP_, y_, wsFd_, &gxP_, &gyTmp_);
+            version_->posterior->evaluate(xP_, y_, wsFd_, &gxP_, &gyTmp_);
             xP_[i] -= 2.0 * kFdStepX;
-            version_->point->evaluate(xP_, y_, wsFd_, &gxM_, &gyTmp_);
+            version_->posterior->evaluate(xP_, y_, wsFd_, &gxM_, &gyTmp_);
             evaluations_ += 2;
             for (int j = 0; j < d_; ++j) H_(j, i) = (gxP_[j] - gxM_[j]) / (2.0 * kFdStepX);
         }

@@ -107,7 +107,7 @@ double LearnedIkSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& gra
     ++evaluations_;
     x_ = z.head(d_);
     y_ = z.tail(D_);
-    const double lik = version_->point->evaluate(x_, y_, pointWs_, &gx_, &gy_);
+    const double lik = version_->posterior->evaluate(x_, y_, pointWs_, &gx_, &gy_);
     for (int k = 0; k < D_; ++k) full_[m.keptColumns[k]] = y_[k];
     layout_.apply(full_.data(), pose_);
     forwardKinematics(m.clip.skeleton, pose_, fk_);
@@ -205,7 +205,7 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
         // constraint list came back empty and `pose` printed no target at all.
         const Eigen::VectorXd y0 = z_.tail(D_);
         result.y = y0;
-        result.lik = version_->point->evaluate(request.startX, y0, pointWs_, nullptr, nullptr);
+        result.lik = version_->posterior->evaluate(request.startX, y0, pointWs_, nullptr, nullptr);
         result.sigma2 = pointWs_.variance;
         forwardKinematics(m.clip.skeleton, request.start, fk_);
         bool tight = false;
@@ -219,7 +219,7 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     result.y = zProbe_.tail(D_);
     result.pose = pose_;
     result.sigma2 = pointWs_.variance;
-    result.lik = version_->point->evaluate(x_, y_, pointWs_, nullptr, nullptr);
+    result.lik = version_->posterior->evaluate(x_, y_, pointWs_, nullptr, nullptr);
     bool tight = true;
     fillConstraints(tight);
     result.converged = tight && result.stop == LearnedIkStop::kStalled;
@@ -245,7 +245,7 @@ Eigen::VectorXd latentStartForFrame(const gp::ModelVersion& version, int frame) 
     const PoseLayout layout(m.clip.skeleton);
     const Eigen::VectorXd y = m.keptPose(layout.extract(m.clip.frames[frame]));
     const gp::ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-        return version.point->evaluate(x, y, &g, nullptr);
+        return version.posterior->evaluate(x, y, &g, nullptr);
     };
     gp::ScgOptions options;
     options.maxIterations = 200;

@@ -63,7 +63,7 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
         if (w_.keepResidual) {
             Eigen::VectorXd mean;
             double var = 0.0;
-            version_->point->predict(xCap_[c], mean, var);
+            version_->posterior->predict(xCap_[c], mean, var);
             resid_[i] = yCap_[c] - mean;
         }
     }
@@ -117,7 +117,7 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         const int c = i + 2;
         xt_ = z.segment(i * b, d_);
         yt_ = z.segment(i * b + d_, D_) - resid_[i];
-        F += kappa_ * version_->point->evaluate(xt_, yt_, pointWs_, &gx_, &gy_);
+        F += kappa_ * version_->posterior->evaluate(xt_, yt_, pointWs_, &gx_, &gy_);
         priorGx_[i] = gx_;
         priorGy_[i] = gy_;
         priorVar_[i] = pointWs_.variance;
@@ -199,7 +199,7 @@ void SpanSolver::computeScaling() {
         const int c = i + 2;
         xt_ = z0_.segment(i * b, d_);
         yt_ = z0_.segment(i * b + d_, D_) - resid_[i];
-        version_->point->evaluate(xt_, yt_, pointWs_, nullptr, nullptr);
+        version_->posterior->evaluate(xt_, yt_, pointWs_, nullptr, nullptr);
         const double s2 = pointWs_.variance;
         gradFull_.setZero();
         if (!targetsOf_[i].empty()) {
@@ -219,9 +219,9 @@ void SpanSolver::computeScaling() {
             const double h = 1e-4;
             xp = xt_;
             xp[j] += h;
-            version_->point->evaluate(xp, yt_, pointWs_, &g1, nullptr);
+            version_->posterior->evaluate(xp, yt_, pointWs_, &g1, nullptr);
             xp[j] -= 2.0 * h;
-            version_->point->evaluate(xp, yt_, pointWs_, &g2, nullptr);
+            version_->posterior->evaluate(xp, yt_, pointWs_, &g2, nullptr);
             const double curv = kappa_ * std::abs(g1[j] - g2[j]) / (2.0 * h) + 12.0 * w_.smoothLatent + 2.0 * w_.stayLatent;
             scale_[i * b + j] = 1.0 / std::sqrt(std::max(curv, 1e-9));
         }
@@ -296,7 +296,7 @@ SpanResult SpanSolver::finish(SpanResult r, const Eigen::VectorXd& best) {
         poseOf(i, best, r.poses[i]);
         r.x[i] = best.segment(i * b, d_);
         r.y[i] = best.segment(i * b + d_, D_);
-        r.lik[i] = version_->point->evaluate(r.x[i], Eigen::VectorXd(r.y[i] - resid_[i]), nullptr, nullptr);
+        r.lik[i] = version_->posterior->evaluate(r.x[i], Eigen::VectorXd(r.y[i] - resid_[i]), nullptr, nullptr);
     }
     r.targetResidualCm.resize(targets_.size());
     for (std::size_t k = 0; k < targets_.size(); ++k) {
@@ -328,7 +328,7 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
             const double step = 1e-6 * std::max(1.0, std::abs(xt_[j]));
             xp = xt_;
             xp[j] += step;
-            version_->point->evaluate(xp, yt_, pointWs_, &gxp, &gyp);
+            version_->posterior->evaluate(xp, yt_, pointWs_, &gxp, &gyp);
             hii.col(j).head(d_) += kappa_ * (gxp - priorGx_[i]) / step;
             hii.col(j).tail(D_) += kappa_ * (gyp - priorGy_[i]) / step;
         }
