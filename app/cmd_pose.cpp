@@ -136,14 +136,7 @@ int runPose(const PoseOptions& o) {
             LearnedIkSolver solver(version);
             const LearnedIkResult r = solveWith(solver, LearnedIkRequest{});
             for (auto& c : results) c.strength = kStrengthPaper;  // the penalty form is the paper's λ
-            // JSON spells stop reasons in snake case, like the constrained solver's ikStopName.
-            switch (r.stop) {
-                case LearnedIkStop::kConverged: j["stop"] = "converged"; break;
-                case LearnedIkStop::kIterationCap: j["stop"] = "iteration_cap"; break;
-                case LearnedIkStop::kLineSearchFailed: j["stop"] = "line_search_failed"; break;
-                case LearnedIkStop::kInvalidRequest: j["stop"] = "invalid_request"; break;
-                case LearnedIkStop::kStalled: j["stop"] = "stalled"; break;
-            }
+            j["stop"] = learnedIkStopKey(r.stop);
         }
         j["x"] = std::vector<double>(x.data(), x.data() + x.size());
         j["sigma2"] = sigma2;

@@ -1,5 +1,6 @@
 // Search order for the mocap folder (docs/architecture.md §8) and the synthetic fallback.
 #include <cstdlib>
+#include <filesystem>
 
 #include "io/data_paths.h"
 #include "test_support.h"
@@ -33,4 +34,11 @@ TEST_CASE("the shipped clips: found without ../shared, the editor's fallback, ne
     const std::string shared = test::sharedMocapDir();
     CHECK(findEditorMocapFolder("", "").value() == (shared.empty() ? *shipped : shared));
     CHECK_FALSE(findEditorMocapFolder("/does/not/exist", "").has_value());
+}
+
+TEST_CASE("data paths: absolutePath makes a relative path absolute and normal, and leaves empty alone") {
+    CHECK(absolutePath("") == "");
+    const std::string cwd = std::filesystem::current_path().lexically_normal().string();
+    CHECK(absolutePath("a/./b/../c.amc") == (std::filesystem::path(cwd) / "a/c.amc").string());
+    CHECK(absolutePath("/x/y/../z.bvh") == "/x/z.bvh");
 }

@@ -168,6 +168,8 @@ TEST_CASE("learned IK: the stop reason is an enum that agrees with converged and
     CHECK(capped.stop == LearnedIkStop::kIterationCap);
     CHECK(capped.iterations == 2);
     CHECK(capped.diagnostic == "iteration cap");
+    CHECK(std::string(learnedIkStopKey(capped.stop)) == "iteration_cap");  // the JSON spelling (pose --json)
+    CHECK(std::string(learnedIkStopKey(LearnedIkStop::kLineSearchFailed)) == "line_search_failed");
     req.maxIterations = 0;
     const LearnedIkResult refused = solver.solve(req);
     CHECK(refused.stop == LearnedIkStop::kInvalidRequest);

@@ -253,12 +253,6 @@ gp::ModelVersionPtr smallModel() {
     return v;
 }
 
-bool finitePose(const Pose& p) {
-    if (!p.rootCm.allFinite()) return false;
-    for (const auto& a : p.anglesDeg)
-        if (!a.allFinite()) return false;
-    return true;
-}
 
 Eigen::Vector3d effectorOf(const Skeleton& sk, const Pose& p, Effector e) {
     FkState fk;
@@ -299,7 +293,7 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
         INFO("diagnostic: " << r.diagnostic);
         REQUIRE(r.constraints.size() == 2);  // every target and pin is reported, whatever happened
         INFO("residual " << r.constraints[0].residualCm);
-        CHECK(finitePose(r.pose));
+        CHECK(allFinite(r.pose));
         CHECK(r.x.allFinite());
         CHECK(r.y.allFinite());
         if (t.offset.norm() < 1e154) CHECK(std::isfinite(r.objective));
@@ -321,7 +315,7 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
         CHECK(solver.validate(req) == "expected a finite target for rhand, found NaN or Inf");
         // solve() itself must not throw or return NaN even if the caller skipped validate().
         const LearnedIkResult r = solver.solve(req);
-        CHECK(finitePose(r.pose));
+        CHECK(allFinite(r.pose));
         CHECK_FALSE(r.reached);
     }
 }
@@ -379,11 +373,11 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
             CHECK(std::isfinite(doc->readout().constraints[0].residualCm));
             CHECK(doc->readout().constraints[0].residualCm > 100.0);
             CHECK_FALSE(doc->readout().constraints[0].reached);
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(doc->currentPose()));
             const auto rec = doc->endDrag();
             REQUIRE(rec.has_value());
-            CHECK(finitePose(rec->after.pose));
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(rec->after.pose));
+            CHECK(allFinite(doc->currentPose()));
             CHECK(doc->effectorPosition(Effector::kRHand).x() > start.x());  // it reached towards it
             doc->waitIdle();
         }
@@ -394,9 +388,9 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
             REQUIRE(doc->beginDrag(Effector::kRHand) == "");
             doc->dragTo(start + Eigen::Vector3d(0, 1e11, 0));
             CHECK_FALSE(doc->readout().reached);
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(doc->currentPose()));
             REQUIRE(doc->endDrag().has_value());
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(doc->currentPose()));
             doc->waitIdle();
         }
         {
@@ -410,7 +404,7 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
             CHECK(doc->readout().reached);
             REQUIRE(doc->endDrag().has_value());
             CHECK((doc->effectorPosition(Effector::kRHand) - start).norm() <= kReachedToleranceCm);
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(doc->currentPose()));
             CHECK(doc->currentPose().rootCm == root);
             doc->waitIdle();
         }
@@ -424,12 +418,12 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
             doc->dragTo({nan, 0, 0});
             doc->dragTo({0, inf, 0});
             doc->dragTo({-inf, nan, inf});
-            CHECK(finitePose(doc->currentPose()));
+            CHECK(allFinite(doc->currentPose()));
             CHECK(doc->dragTarget().allFinite());
             CHECK(doc->currentPose().anglesDeg == good.anglesDeg);
             const auto rec = doc->endDrag();
             REQUIRE(rec.has_value());
-            CHECK(finitePose(rec->after.pose));
+            CHECK(allFinite(rec->after.pose));
             doc->waitIdle();
         }
     }

@@ -3,6 +3,7 @@
 // kind of damage.
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -205,8 +206,8 @@ TEST_CASE("every damaged session file gives one exact error") {
           f + ": expected \"format\": \"motiongp-session\", found \"motiongp-model\"");
     CHECK(mutated([](json& j) { j.erase("format"); }) ==
           f + ": expected \"format\": \"motiongp-session\", found no format field");
-    CHECK(mutated([](json& j) { j["version"] = 2; }) ==
-          f + ": expected session file version ≤ 1 (this build reads up to version 1), found version 2");
+    CHECK(mutated([](json& j) { j["version"] = 3; }) ==
+          f + ": expected session file version ≤ 2 (this build reads up to version 2), found version 3");
     CHECK(errorOf("") == f + ": expected a JSON session file (format motiongp-session), found an empty file");
     CHECK(errorOf("{\"format\": \"motiongp-session\", \"vers") ==
           f + ": expected a JSON session file (format motiongp-session), found damaged JSON "
@@ -304,4 +305,82 @@ TEST_CASE("missing clip, empty file, directory and missing session give clear er
     CHECK_THROWS_WITH_AS(loadSession(dir + "/none.mgsession"),
                          (dir + "/none.mgsession: expected a readable file, found none (No such file or directory)").c_str(),
                          ParseError);
+}
+
+TEST_CASE("session file: the undo history and the adaptive table round-trip bit-exactly, and version 1 still reads") {
+    const std::string amc = test::mocap("asf_amc/35_01.amc");
+    const Clip clip = loadClip(amc);
+    SessionData s = clipSession(amc);
+    s.edits[5] = nudgedEdit(clip, 5, Eigen::VectorXd());
+    EditStep drag;
+    drag.label = "drag rhand on frame 6";
+    drag.before[5] = std::nullopt;
+    drag.after[5] = nudgedEdit(clip, 5, Eigen::VectorXd());
+    EditStep regen;
+    regen.label = "regenerate rfoot, frames 8-9";
+    regen.before[7] = nudgedEdit(clip, 7, Eigen::VectorXd());
+    regen.before[8] = std::nullopt;
+    regen.after[7] = nudgedEdit(clip, 7, Eigen::VectorXd());
+    regen.after[7]->pose.rootCm.x() += 1.0 / 7.0;
+    regen.after[8] = nudgedEdit(clip, 8, Eigen::VectorXd());
+    s.undoSteps = {drag};
+    s.redoSteps = {regen};
+    AdaptiveHistoryEntry h;
+    h.when = std::chrono::system_clock::time_point(std::chrono::milliseconds(1795000000123LL));
+    h.frame = 5;
+    h.accepted = false;
+    h.diagnostic = "refused: L_IK 93.1 above the training frames' p99 65.0";
+    h.seconds = 1.0 / 3.0;
+    h.versionBefore = h.versionAfter = 2;
+    h.rowsAfter = 360;
+    h.activeSize = 200;
+    h.activeChanged = 3;
+    h.newPointActive = true;
+    h.objectiveBefore = -1234.5678901234567;
+    h.objectiveAfter = -1234.0 / 3.0;
+    s.adaptiveHistory = {h};
+
+    const std::string text = sessionToJsonText(s, "/tmp/h.mgsession");
+    const SessionData r = sessionFromJsonText(text, "h.mgsession");
+    CHECK(validateAgainstClip(r, clip) == "");
+    REQUIRE(r.undoSteps.size() == 1);
+    REQUIRE(r.redoSteps.size() == 1);
+    CHECK(r.undoSteps[0].label == drag.label);
+    CHECK_FALSE(r.undoSteps[0].before.at(5));
+    CHECK(r.undoSteps[0].after.at(5)->pose.anglesDeg == drag.after[5]->pose.anglesDeg);
+    CHECK(r.redoSteps[0].before.at(7)->pose.rootCm == regen.before[7]->pose.rootCm);
+    CHECK(r.redoSteps[0].after.at(7)->pose.rootCm == regen.after[7]->pose.rootCm);
+    CHECK_FALSE(r.redoSteps[0].before.at(8));
+    REQUIRE(r.adaptiveHistory.size() == 1);
+    const AdaptiveHistoryEntry& g = r.adaptiveHistory[0];
+    CHECK(g.when == h.when);
+    CHECK(g.frame == 5);
+    CHECK_FALSE(g.accepted);
+    CHECK(g.diagnostic == h.diagnostic);
+    CHECK(g.seconds == h.seconds);
+    CHECK((g.versionBefore == 2 && g.versionAfter == 2 && g.rowsAfter == 360 && g.activeSize == 200));
+    CHECK((g.activeChanged == 3 && g.newPointActive));
+    CHECK(g.objectiveBefore == h.objectiveBefore);
+    CHECK(g.objectiveAfter == h.objectiveAfter);
+    CHECK(sessionToJsonText(r, "/tmp/h.mgsession") == text);
+
+    // A history frame outside the clip is caught with the clip, naming the step.
+    SessionData bad = r;
+    bad.undoSteps[0].after[100000] = std::nullopt;
+    CHECK(validateAgainstClip(bad, clip) == "expected undo history frames in 0.." + std::to_string(clip.frameCount() - 1) +
+                                                " (the clip's frames), found 100000 in \"drag rhand on frame 6\"");
+    json j = json::parse(text);
+    j["history"]["undo"][0]["after"][0]["frame"] = "5";
+    CHECK_THROWS_WITH_AS(sessionFromJsonText(j.dump(), "h.mgsession"),
+                         "h.mgsession: expected history.undo[0].after[0].frame as an integer, found \"5\"", ParseError);
+
+    // A version-1 file (before the history was saved) reads with an empty history.
+    json v1 = json::parse(text);
+    v1["version"] = 1;
+    v1.erase("history");
+    v1.erase("adaptive_history");
+    const SessionData old = sessionFromJsonText(v1.dump(), "old.mgsession");
+    CHECK(old.undoSteps.empty());
+    CHECK(old.adaptiveHistory.empty());
+    CHECK(old.edits.size() == 1);
 }

@@ -6,6 +6,7 @@
 #include "io/parse_error.h"
 #include "skeleton/synthetic_clip.h"
 #include "test_support.h"
+#include "trained_model_fixture.h"
 
 using namespace mgp;
 
@@ -80,4 +81,51 @@ TEST_CASE("session mapping: a path outside the clip is refused before the docume
     d.path.keyFrames = {10, 20, 30};
     d.path.keyOffsetsCm.assign(2, Eigen::Vector3d::Zero());
     CHECK_THROWS_WITH_AS(checkSession(d, "bad.mgsession"), "bad.mgsession: path: expected one offset per key", ParseError);
+}
+
+TEST_CASE("session mapping: the undo history and the adaptive table come back with the session") {
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setFrame(40);
+    test::dragBy(doc, Effector::kRHand, Eigen::Vector3d(0, 5, 0));
+    doc.setFrame(80);
+    test::dragBy(doc, Effector::kLHand, Eigen::Vector3d(0, 4, 2));
+    doc.waitIdle();
+    doc.pollRegenerate();  // the drag's falloff joins its step (it re-solves frame 80 too)
+    REQUIRE(doc.canUndo());
+    const Pose dragged80 = doc.edits().at(80).pose;
+    REQUIRE(doc.undo() == "");  // the second drag goes to the redo stack
+    REQUIRE(doc.canRedo());
+    const std::string undoLabel = doc.undoLabel(), redoLabel = doc.redoLabel();
+    const std::vector<AdaptiveHistoryEntry> table = doc.adaptiveHistory();
+    REQUIRE_FALSE(table.empty());
+
+    const SessionData read =
+        sessionFromJsonText(sessionToJsonText(sessionFromDocument(doc), "/tmp/h.mgsession"), "h.mgsession");
+    EditorDocument back;
+    CheckedSession checked = checkSession(read, "h.mgsession");
+    applySession(back, checked, "h.mgsession");
+    CHECK(back.undoLabel() == undoLabel);
+    CHECK(back.redoLabel() == redoLabel);
+    const std::vector<AdaptiveHistoryEntry> tableBack = back.adaptiveHistory();
+    REQUIRE(tableBack.size() == table.size());
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        CHECK(tableBack[i].frame == table[i].frame);
+        CHECK(tableBack[i].accepted == table[i].accepted);
+        CHECK(tableBack[i].diagnostic == table[i].diagnostic);
+        CHECK(tableBack[i].versionAfter == table[i].versionAfter);
+    }
+    // Undo and redo act on the frames as before the save; the model stays the one the session saved.
+    const int version = back.model()->number;
+    REQUIRE(back.isEdited(40));
+    REQUIRE_FALSE(back.isEdited(80));
+    REQUIRE(back.redo() == "");
+    CHECK(back.isEdited(80));
+    CHECK(test::samePose(back.edits().at(80).pose, dragged80));
+    REQUIRE(back.undo() == "");
+    REQUIRE(back.undo() == "");
+    CHECK_FALSE(back.isEdited(40));
+    CHECK_FALSE(back.isEdited(80));
+    CHECK(back.model()->number == version);
+    CHECK(back.undo() == "nothing to undo");
 }

@@ -14,6 +14,7 @@
 #include "gp/model_file.h"
 #include "io/bvh_writer.h"
 #include "io/clip_loader.h"
+#include "io/data_paths.h"
 #include "editor_actions.h"
 #include "editor_session.h"
 #include "help_window.h"
@@ -27,12 +28,6 @@ namespace mgp::ui {
 
 namespace {
 std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
-
-std::string absolute(const std::string& path) {
-    std::error_code ec;
-    const auto p = std::filesystem::absolute(path, ec);
-    return ec ? path : p.lexically_normal().string();
-}
 
 // Adds `extension` when the user typed a name without one.
 std::string withExtension(const std::string& path, const std::string& extension) {
@@ -171,7 +166,7 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
     const std::string path = withExtension(pathIn, ".mgsession");
     return reportingErrors([&] {
         mgp::saveSession(path, editorSession(state_));
-        sessionPath_ = absolute(path);
+        sessionPath_ = absolutePath(path);
         markSaved();
         forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
@@ -209,7 +204,7 @@ std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
         applySession(state_.doc, checked, path);  // leaves the editor's half in checked.data
         applyEditorSession(state_, checked.data);
         const SessionData& d = checked.data;
-        sessionPath_ = absolute(path);
+        sessionPath_ = absolutePath(path);
         markSaved();
         forgetAutosave();
         if (addToRecent) remember(path, RecentKind::kSession);

@@ -33,6 +33,12 @@ void EditHistory::clear() {
     redo_.clear();
 }
 
+void EditHistory::restore(std::vector<EditStep> undo, std::vector<EditStep> redo) {
+    undo_ = std::move(undo);
+    redo_ = std::move(redo);
+    forgetModels();
+}
+
 void EditHistory::forgetModels() {
     for (auto* stack : {&undo_, &redo_})
         for (EditStep& s : *stack) {

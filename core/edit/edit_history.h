@@ -18,7 +18,7 @@ namespace mgp {
 
 struct EditStep {
     std::string label;  // "drag rfoot on frame 101", shown as "Undo drag rfoot on frame 101"
-    std::map<int, std::optional<EditRecord>> before, after;  // per touched frame (0-based)
+    FrameEdits before, after;  // per touched frame (0-based)
     std::vector<long> samples;                               // adaptive sample sequence numbers
     // Resolved on the first undo (the updates may still run when the step is recorded); both
     // null when the step leaves the model alone (no samples, or a model installed since).
@@ -43,6 +43,12 @@ public:
     // A new model replaced the one the steps refer to: keep their poses, stop touching the model.
     void forgetModels();
     int undoCount() const { return static_cast<int>(undo_.size()); }
+    // Both stacks, oldest first (the top of each is its last step), for saving a session.
+    const std::vector<EditStep>& undoSteps() const { return undo_; }
+    const std::vector<EditStep>& redoSteps() const { return redo_; }
+    // Replaces both stacks with steps read from a session. Model versions are not kept in a
+    // session, so these steps restore frames only (as after forgetModels).
+    void restore(std::vector<EditStep> undo, std::vector<EditStep> redo);
     // The first sample of the oldest step whose model versions are not resolved yet (what the
     // version log must still answer for); LONG_MAX when there is none.
     long oldestUnresolvedSample() const;

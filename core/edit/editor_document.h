@@ -1,22 +1,18 @@
 #pragma once
 // EditorDocument: what the interactive editor edits, with no GL or ImGui (docs/architecture.md §1). The UI
-// calls these methods; tests call them directly.
+// calls these methods; tests call them directly. It coordinates four parts, each testable alone:
 //
-//   clip            the loaded motion (angles unwrapped over time, so it matches a model's rows)
-//   frame           current frame, 0-based
-//   edits           accepted poses per frame (a frame without an edit shows the captured pose)
-//   model           the current immutable model version (an AdaptiveWorker publishes new ones
-//                   after each accepted drag; the UI never waits for it)
-//   pins            effectors held where they are while another one is dragged
-//   drag            the state machine  beginDrag(e) -> dragTo(target)* / refine()* -> endDrag()
+//   store     ClipEdits: the clip (unwrapped), accepted poses per frame, foot contacts
+//   drag      DragSession: the drag state machine  beginDrag(e) -> dragTo(target)* / refine()* -> endDrag(),
+//             and the latent drag
+//   paths     PathSession: the effector path being edited (keys, offsets, mode)
+//   models    ModelHost: the current immutable model version, the adaptive worker and its history
 //
-//   path            the effector path being edited (keys, offsets, mode) and its regeneration
-//   history         undo/redo steps; undo also restores the model version a step changed
+// and owns what ties them together: the current frame, the pins, the regeneration job, the
+// undo history (undo also restores the model version a step changed) and the revision counter.
 //
 // Units: cm, world Y up (docs/maths.md, conventions). One drag, one latent drag, one regeneration or one
 // cleared edit = one undo step.
-// Without a model, drags are solved by plain IK (damped least squares) so a clip can be posed
-// before training; the readout says which solver ran.
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -29,7 +25,9 @@
 #include <vector>
 
 #include "edit/adaptive_worker.h"
+#include "edit/clip_edits.h"
 #include "edit/compare_mode.h"
+#include "edit/drag_session.h"
 #include "edit/edit_history.h"
 #include "edit/edit_record.h"
 #include "edit/model_host.h"
@@ -38,8 +36,6 @@
 #include "edit/regenerate_job.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
-#include "ik/learned_ik.h"
-#include "ik/plain_ik.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/clip.h"
 
@@ -54,19 +50,6 @@ struct DragRecord {
     int modelVersionBefore = 0;
 };
 
-// Readout of the latest solve.
-struct SolveReadout {
-    bool valid = false;
-    bool learned = false;  // false: plain IK (no model loaded)
-    std::vector<IkConstraintResult> constraints;
-    bool reached = false;
-    double sigma2 = 0.0, lik = 0.0;
-    int iterations = 0;  // total over the drag's last target (live solve + refinements)
-    bool converged = false;
-    IkStop stop = IkStop::kInvalidRequest;  // of the last solve (learned only)
-    std::string diagnostic;
-};
-
 class EditorDocument {
 public:
     EditorDocument();
@@ -78,18 +61,18 @@ public:
     // Replaces the clip (edits, pins and drag are cleared). A model trained on another clip is
     // dropped unless `keepModel` (used by setModel, whose clip this is).
     void setClip(Clip clip, bool synthetic = false);
-    const Clip& clip() const { return clip_; }
-    bool hasClip() const { return clip_.frameCount() > 0; }
-    bool synthetic() const { return synthetic_; }
+    const Clip& clip() const { return store_.clip(); }
+    bool hasClip() const { return !store_.empty(); }
+    bool synthetic() const { return store_.synthetic(); }
     // Training needs ASF/AMC (or the synthetic clip): BVH is view-only for now.
-    bool trainable() const { return hasClip() && clip_.format != ClipFormat::kBvh; }
+    bool trainable() const { return hasClip() && clip().format != ClipFormat::kBvh; }
     int frame() const { return frame_; }
-    int frameCount() const { return clip_.frameCount(); }
+    int frameCount() const { return store_.frameCount(); }
     void setFrame(int frame);  // clamped; ends a drag in progress (accepting it)
     const Pose& currentPose() const;
-    const Pose& capturedPose() const { return clip_.frames[frame_]; }
-    bool isEdited(int frame) const { return edits_.count(frame) != 0; }
-    const std::map<int, EditRecord>& edits() const { return edits_; }
+    const Pose& capturedPose() const { return clip().frames[frame_]; }
+    bool isEdited(int frame) const { return store_.isEdited(frame); }
+    const std::map<int, EditRecord>& edits() const { return store_.edits(); }
     void clearEdit(int frame);  // one undo step
     // Pastes `pose` (copied from any frame of this clip) onto the current frame as one undo step;
     // the current frame's root position is kept so the character does not jump. "" or why not.
@@ -99,8 +82,12 @@ public:
     std::string setCurrentPose(const Pose& pose, const std::string& stepLabel);
     // Replaces every edit at once (loading a session); clears the undo history.
     void restoreEdits(std::map<int, EditRecord> edits);
+    // The undo history of a saved session (after restoreEdits). Its steps restore frames only:
+    // the model versions they once changed are not in the session (docs/architecture.md §9).
+    void restoreHistory(std::vector<EditStep> undo, std::vector<EditStep> redo);
+    const EditHistory& history() const { return history_; }
     Eigen::Vector3d effectorPosition(Effector e) const;  // FK of the current pose (cm)
-    bool hasEffector(Effector e) const { return hasClip() && clip_.skeleton.hasEffector(e); }
+    bool hasEffector(Effector e) const { return hasClip() && clip().skeleton.hasEffector(e); }
 
     // ---- model -----------------------------------------------------------------------------
     // Installs a model (its clip becomes the document's clip if `adoptClip`); restarts the
@@ -116,6 +103,7 @@ public:
     int adaptiveUpdates() const { return models_.updates(); }
     // Every update since the model was installed, oldest first.
     std::vector<AdaptiveHistoryEntry> adaptiveHistory() const { return models_.history(); }
+    void restoreAdaptiveHistory(std::vector<AdaptiveHistoryEntry> entries) { models_.restoreHistory(std::move(entries)); }
     // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
     void setCompareModel(gp::ModelVersionPtr version) {
         compareModel_ = std::move(version);
@@ -125,13 +113,13 @@ public:
     void setCompareMode(CompareMode mode);
     CompareMode compareMode() const { return compare_; }
     // The compare ghost for the current targets (none when not dragging or mode is none).
-    const std::optional<Pose>& comparePose() const { return comparePose_; }
+    const std::optional<Pose>& comparePose() const { return drag_.comparePose(); }
 
     // Latent point shown for the current frame: the drag's x, else the frame's accepted x, else
     // latentStartForFrame (cached per frame and model version). Empty without a model.
     Eigen::VectorXd currentLatent();
     // Latent points visited by the current drag (or the last one), in order.
-    const std::vector<Eigen::VectorXd>& latentPath() const { return latentPath_; }
+    const std::vector<Eigen::VectorXd>& latentPath() const { return drag_.latentPath(); }
 
     // ---- pins ------------------------------------------------------------------------------
     // A pin holds the effector at its position in the current frame's pose (re-read when the
@@ -167,10 +155,10 @@ public:
     void setDragFalloff(int frames) { falloffRadius_ = std::max(0, frames); }
     int dragFalloff() const { return falloffRadius_; }
     void cancelDrag();  // restores the pose before the drag
-    bool dragging() const { return drag_.active; }
-    Effector dragEffector() const { return drag_.effector; }
-    Eigen::Vector3d dragTarget() const { return drag_.targetCm; }
-    const SolveReadout& readout() const { return readout_; }
+    bool dragging() const { return drag_.active(); }
+    Effector dragEffector() const { return drag_.effector(); }
+    Eigen::Vector3d dragTarget() const { return drag_.target(); }
+    const SolveReadout& readout() const { return drag_.readout(); }
     // σ²(x), L_IK and the admission verdict of the current frame's solved pose against the latest
     // model version's training range: the live drag solve, else the frame's accepted edit (its x
     // and pose re-evaluated, so an update that taught the model the pose calms it). None without a
@@ -181,7 +169,7 @@ public:
     bool beginLatentDrag();
     void latentDragTo(const Eigen::VectorXd& x);
     void endLatentDrag();
-    bool latentDragging() const { return latentDrag_; }
+    bool latentDragging() const { return drag_.latentActive(); }
 
     // ---- path editing (§10) -----------------------------------------------------------------
     // Starts editing `e`'s path with the default keys around the current frame; "" or why not.
@@ -213,7 +201,7 @@ public:
     std::string pollRegenerate(std::string* error = nullptr);
     // Foot contacts of the clip (motion/foot_contacts.h), held by Regenerate and drag falloff;
     // the user can switch one off.
-    const ContactSet& contacts() const { return contacts_; }
+    const ContactSet& contacts() const { return store_.contacts(); }
     void setContactEnabled(std::size_t index, bool on);
     // The last finished regeneration's span report (eval/motion_quality.h), if any.
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
@@ -237,28 +225,23 @@ public:
     void waitIdle();
 
 private:
-    std::vector<IkConstraint> constraintsFor(const Eigen::Vector3d& target) const;
-    void solveLearned(int maxIterations, bool fromDragStart);
-    void solvePlain();
-    void solveCompare();
+    std::vector<IkConstraint> pinConstraints() const;
     void updatePinPositions();
-    Pose poseFromLatent(const Eigen::VectorXd& x, const Pose& base) const;
     void pushStep(EditStep step);
     void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);
     void finishRunningFalloff();
     void dropRunningFalloff();
-    void applyFrames(const std::map<int, std::optional<EditRecord>>& frames);
+    void stopRegeneration();
+    void applyFrames(const FrameEdits& frames);
     void installVersion(const gp::ModelVersionPtr& version);
     void installWorker(gp::ModelVersionPtr version);
-    std::optional<EditRecord> editAt(int frame) const;
+    std::string undoOrRedo(bool undo);
 
-    Clip clip_;
-    bool synthetic_ = false;
+    ClipEdits store_;
     int frame_ = 0;
-    std::map<int, EditRecord> edits_;
     std::array<bool, kEffectorCount> pins_{};
     std::array<Eigen::Vector3d, kEffectorCount> pinPositions_{};
-    std::array<bool, kEffectorCount> contactReleased_{};  // per foot, for drags (contacts_ stays)
+    std::array<bool, kEffectorCount> contactReleased_{};  // per foot, for drags (the contacts stay)
 
     gp::ModelVersionPtr compareModel_;
     EditHistory history_;
@@ -266,42 +249,23 @@ private:
     // After revision_: its worker thread counts accepted updates there until it is destroyed.
     ModelHost models_{[this] { ++revision_; }};
 
-    PathSession paths_{clip_, [this] { ++revision_; }};
+    PathSession paths_{store_.clip(), [this] { ++revision_; }};
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
     int falloffRadius_ = 0;  // set by setClip
-    ContactSet contacts_;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
 
     CompareMode compare_ = CompareMode::kNone;
-    std::optional<Pose> comparePose_;
-
-    std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;
-    ConstrainedIkRequest request_;
-    ConstrainedIkResult result_;
+    DragSession drag_;
+    std::optional<EditRecord> dragBefore_;  // the frame's edit when the drag began (none = captured)
+    int dragVersionBefore_ = 0;             // the model version when the drag began
     // Whether the last accepted drag reached its targets (constraints are not kept with an edit).
     struct {
         int frame = -1;
         Pose pose;
         bool reached = true;
     } lastDrag_;
-    SolveReadout readout_;
-
-    struct Drag {
-        bool active = false;
-        Effector effector = Effector::kRFoot;
-        Eigen::Vector3d targetCm = Eigen::Vector3d::Zero();
-        Pose startPose, pose;
-        Eigen::VectorXd startX, x;
-        std::optional<EditRecord> before;
-        int versionBefore = 0;
-        int refineBudget = 0;
-        bool converged = false;
-        std::vector<IkConstraint> contactPins;  // feet in contact, where they were when the drag began
-    } drag_;
-    bool latentDrag_ = false;
     std::optional<EditRecord> latentBefore_;
-    std::vector<Eigen::VectorXd> latentPath_;
 
     // latentStartForFrame cache
     int cacheFrame_ = -1, cacheVersion_ = -1;

@@ -110,6 +110,11 @@ void ModelHost::resolveStep(EditStep& step) {
     if (!step.modelBefore) step.modelAfter = nullptr;  // unknown: leave the model alone
 }
 
+void ModelHost::restoreHistory(std::vector<AdaptiveHistoryEntry> entries) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    history_ = std::move(entries);
+}
+
 bool ModelHost::restore(const gp::ModelVersionPtr& version) {
     if (!version || !worker_ || worker_->current() == version) return false;
     worker_->waitIdle();

@@ -59,6 +59,9 @@ public:
     std::string status() const;  // the last update's outcome, "" if none yet
     int updates() const;
     std::vector<AdaptiveHistoryEntry> history() const;  // oldest first
+    // The history of an earlier sitting (a session reopened onto the model it saved): the
+    // table lists those updates again; the status line stays empty until the next one.
+    void restoreHistory(std::vector<AdaptiveHistoryEntry> entries);
 
     // Undo support: frees versions no step can ask for any more (`oldestUnresolvedSample` from
     // EditHistory), fills a step's model before/after once its updates have published, and

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.h"
+#include "io/data_paths.h"
 #include "io/parse_error.h"
 #include "io/text_reader.h"
 
@@ -22,7 +23,6 @@ constexpr const char* kRecentFormat = "motiongp-recent";
 constexpr int kRecentVersion = 1;
 const char* const kKindNames[] = {"session", "clip", "model"};
 
-std::string absolutePath(const std::string& p) { return fs::absolute(p).lexically_normal().string(); }
 
 std::string env(const char* name) {
     const char* v = std::getenv(name);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -10,6 +11,7 @@
 #include "gp/sha256.h"
 #include "io/atomic_file.h"
 #include "io/clip_loader.h"
+#include "io/data_paths.h"
 #include "io/parse_error.h"
 #include "io/text_reader.h"
 #include "skeleton/synthetic_clip.h"
@@ -27,11 +29,29 @@ constexpr int kMaxSyntheticFrames = 1000000;  // ~2.3 h at 120 fps; the editor u
 
 json vec3Json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 
+// An edit without its frame (the caller adds "frame" where the format has it).
+json editJson(const EditRecord& rec) {
+    json angles = json::array();
+    for (const auto& a : rec.pose.anglesDeg) angles.push_back(vec3Json(a));
+    json x = json::array();
+    for (Eigen::Index i = 0; i < rec.x.size(); ++i) x.push_back(rec.x[i]);
+    return {{"root_cm", vec3Json(rec.pose.rootCm)}, {"angles_deg", angles}, {"x", x}};
+}
+
+json frameEditsJson(const FrameEdits& frames) {
+    json out = json::array();
+    for (const auto& [frame, record] : frames) out.push_back({{"frame", frame}, {"edit", record ? editJson(*record) : json(nullptr)}});
+    return out;
+}
+
+json stepJson(const EditStep& step) {
+    return {{"label", step.label}, {"before", frameEditsJson(step.before)}, {"after", frameEditsJson(step.after)}};
+}
+
 json modelJson(const std::optional<gp::GpModel>& m) {
     return m ? json::parse(gp::modelToJsonText(*m)) : json(nullptr);
 }
 
-std::string absolutePath(const std::string& p) { return p.empty() ? p : fs::absolute(p).lexically_normal().string(); }
 
 std::string relativeTo(const std::string& absPath, const fs::path& dir) {
     return absPath.empty() ? absPath : fs::path(absPath).lexically_relative(dir).string();
@@ -118,6 +138,64 @@ public:
 private:
     std::string file_;
 };
+
+EditRecord readEdit(const Reader& r, const json& e, const std::string& what);
+
+FrameEdits readFrameEdits(const Reader& r, const json& changes, const std::string& what) {
+    r.array(changes, what);
+    FrameEdits out;
+    for (std::size_t i = 0; i < changes.size(); ++i) {
+        const std::string w = what + "[" + std::to_string(i) + "]";
+        const int frame = r.integer(r.field(changes[i], "frame", w), w + ".frame");
+        if (out.count(frame)) r.fail("distinct frames in " + what, "frame " + std::to_string(frame) + " twice");
+        const json& e = r.field(changes[i], "edit", w);
+        out[frame] = e.is_null() ? std::nullopt : std::optional<EditRecord>(readEdit(r, e, w + ".edit"));
+    }
+    return out;
+}
+
+void readHistory(const Reader& r, const json& h, SessionData& s) {
+    for (auto [key, steps] : {std::pair{"undo", &s.undoSteps}, std::pair{"redo", &s.redoSteps}}) {
+        const std::string what = std::string("history.") + key;
+        const json& list = r.array(r.field(h, key, "history"), what);
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string w = what + "[" + std::to_string(i) + "]";
+            EditStep step;
+            step.label = r.string(r.field(list[i], "label", w), w + ".label");
+            step.before = readFrameEdits(r, r.field(list[i], "before", w), w + ".before");
+            step.after = readFrameEdits(r, r.field(list[i], "after", w), w + ".after");
+            steps->push_back(std::move(step));
+        }
+    }
+}
+
+void readAdaptiveHistory(const Reader& r, const json& list, SessionData& s) {
+    r.array(list, "adaptive_history");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string w = "adaptive_history[" + std::to_string(i) + "]";
+        const json& e = list[i];
+        const auto integer = [&](const char* key) { return r.integer(r.field(e, key, w), w + "." + key); };
+        const auto number = [&](const char* key) { return r.number(r.field(e, key, w), w + "." + key); };
+        const auto boolean = [&](const char* key) { return r.boolean(r.field(e, key, w), w + "." + key); };
+        AdaptiveHistoryEntry h;
+        const json& when = r.field(e, "when_unix_ms", w);
+        if (!when.is_number_integer()) r.bad(w + ".when_unix_ms", "an integer", when);
+        h.when = std::chrono::system_clock::time_point(std::chrono::milliseconds(when.get<long long>()));
+        h.frame = integer("frame");
+        h.accepted = boolean("accepted");
+        h.diagnostic = r.string(r.field(e, "diagnostic", w), w + ".diagnostic");
+        h.seconds = number("seconds");
+        h.versionBefore = integer("version_before");
+        h.versionAfter = integer("version_after");
+        h.rowsAfter = integer("rows_after");
+        h.activeSize = integer("active_size");
+        h.activeChanged = integer("active_changed");
+        h.newPointActive = boolean("new_point_active");
+        h.objectiveBefore = number("objective_before");
+        h.objectiveAfter = number("objective_after");
+        s.adaptiveHistory.push_back(std::move(h));
+    }
+}
 
 EditRecord readEdit(const Reader& r, const json& e, const std::string& what) {
     EditRecord rec;
@@ -217,6 +295,10 @@ SessionData readSession(const Reader& r, const json& j) {
     readPath(r, r.field(j, "path"), s.path);
     s.ui = r.field(j, "ui");
     if (!s.ui.is_object()) r.bad("ui", "an object", s.ui);
+    if (r.field(j, "version").get<long long>() >= 2) {  // version 1 had neither
+        readHistory(r, r.field(j, "history"), s);
+        readAdaptiveHistory(r, r.field(j, "adaptive_history"), s);
+    }
     return s;
 }
 
@@ -249,11 +331,9 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
     j["compare_model"] = modelJson(s.compareModel);
     json edits = json::array();
     for (const auto& [frame, rec] : s.edits) {
-        json angles = json::array();
-        for (const auto& a : rec.pose.anglesDeg) angles.push_back(vec3Json(a));
-        json x = json::array();
-        for (Eigen::Index i = 0; i < rec.x.size(); ++i) x.push_back(rec.x[i]);
-        edits.push_back({{"frame", frame}, {"root_cm", vec3Json(rec.pose.rootCm)}, {"angles_deg", angles}, {"x", x}});
+        json e = editJson(rec);
+        e["frame"] = frame;
+        edits.push_back(std::move(e));
     }
     j["edits"] = edits;
     j["frame"] = s.frame;
@@ -280,6 +360,22 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
         j["path"] = nullptr;
     }
     j["ui"] = s.ui;
+    json undo = json::array(), redo = json::array();
+    for (const EditStep& step : s.undoSteps) undo.push_back(stepJson(step));
+    for (const EditStep& step : s.redoSteps) redo.push_back(stepJson(step));
+    j["history"] = {{"undo", undo}, {"redo", redo}};
+    json adaptive = json::array();
+    for (const AdaptiveHistoryEntry& h : s.adaptiveHistory) {
+        const long long ms =
+            std::chrono::duration_cast<std::chrono::milliseconds>(h.when.time_since_epoch()).count();
+        adaptive.push_back({{"when_unix_ms", ms}, {"frame", h.frame}, {"accepted", h.accepted},
+                            {"diagnostic", h.diagnostic}, {"seconds", h.seconds},
+                            {"version_before", h.versionBefore}, {"version_after", h.versionAfter},
+                            {"rows_after", h.rowsAfter}, {"active_size", h.activeSize},
+                            {"active_changed", h.activeChanged}, {"new_point_active", h.newPointActive},
+                            {"objective_before", h.objectiveBefore}, {"objective_after", h.objectiveAfter}});
+    }
+    j["adaptive_history"] = adaptive;
     return j.dump(1) + "\n";
 }
 
@@ -325,6 +421,17 @@ std::string validateAgainstClip(const SessionData& s, const Clip& clip) {
     }
     for (int k : s.path.keyFrames)
         if (k < 0 || k >= n) return "expected path key frames " + range + ", found " + std::to_string(k);
+    for (const auto* steps : {&s.undoSteps, &s.redoSteps})
+        for (const EditStep& step : *steps)
+            for (const FrameEdits* side : {&step.before, &step.after})
+                for (const auto& [frame, rec] : *side) {
+                    if (frame < 0 || frame >= n)
+                        return "expected undo history frames " + range + ", found " + std::to_string(frame) + " in \"" +
+                               step.label + "\"";
+                    if (rec && static_cast<int>(rec->pose.anglesDeg.size()) != joints)
+                        return "expected " + std::to_string(joints) + " joint angles per undo history edit, found " +
+                               std::to_string(rec->pose.anglesDeg.size()) + " in \"" + step.label + "\"";
+                }
     return "";
 }
 

@@ -24,8 +24,18 @@
 //                "follow_character": bool},
 //     "path": null | {"effector": name, "key_frames": [0-based ints], "key_offsets_cm": [[3] per
 //                     key], "mode": "direct" | "displacement"},
-//     "ui": { free-form object, stored as given }
+//     "ui": { free-form object, stored as given },
+//     "history": {"undo": [step], "redo": [step]},              oldest first (version 2)
+//         step: {"label": string, "before": [change], "after": [change]}
+//         change: {"frame": 0-based int, "edit": an edit as above without "frame", or null for
+//                  the captured pose}
+//     "adaptive_history": [ {"when_unix_ms": int, "frame": int, "accepted": bool,      (version 2)
+//         "diagnostic": string, "seconds", "version_before": int, "version_after": int,
+//         "rows_after": int, "active_size": int, "active_changed": int,
+//         "new_point_active": bool, "objective_before", "objective_after"} ]
 //   }
+// The undo steps keep their frames, not the model versions they changed (one model is about the
+// size of the whole session, docs/architecture.md §9): reopened, they restore frames only.
 //
 // Units as everywhere (docs/maths.md, conventions): cm, degrees, Y up. Every number must be finite; frames
 // are 0-based, distinct and inside the clip. Doubles use nlohmann-json's shortest round-trip
@@ -50,7 +60,7 @@
 
 namespace mgp {
 
-constexpr int kSessionFileVersion = 1;
+constexpr int kSessionFileVersion = 2;  // 2: undo history and adaptive history
 constexpr const char* kSessionFileFormat = "motiongp-session";
 constexpr const char* kSessionExtension = ".mgsession";
 
@@ -86,6 +96,8 @@ struct SessionData {
     SessionCamera camera;
     SessionPathEdit path;
     nlohmann::json ui = nlohmann::json::object();  // free-form UI state, stored as given
+    std::vector<EditStep> undoSteps, redoSteps;     // oldest first; frames only (no model versions)
+    std::vector<AdaptiveHistoryEntry> adaptiveHistory;  // the Model panel's update table, oldest first
 
     // Filled on reading, never saved as such: the clip paths as stored relative to the session
     // ("" if none; saving recomputes them) and problems that did not stop the load (a changed

@@ -3,25 +3,18 @@
 #include <filesystem>
 
 #include "gp/sha256.h"
+#include "io/data_paths.h"
 #include "io/parse_error.h"
 
 namespace mgp {
-
-namespace {
-std::string absolute(const std::string& path) {
-    std::error_code ec;
-    const auto p = std::filesystem::absolute(path, ec);
-    return ec ? path : p.lexically_normal().string();
-}
-}  // namespace
 
 SessionData sessionFromDocument(const EditorDocument& doc) {
     SessionData d;
     const Clip& c = doc.clip();
     d.syntheticClip = doc.synthetic();
     if (!d.syntheticClip) {
-        d.clipPath = c.sourcePath.empty() ? "" : absolute(c.sourcePath);
-        d.skeletonPath = c.skeletonPath.empty() ? "" : absolute(c.skeletonPath);
+        d.clipPath = absolutePath(c.sourcePath);
+        d.skeletonPath = absolutePath(c.skeletonPath);
         std::error_code ec;
         if (!c.sourcePath.empty() && std::filesystem::is_regular_file(c.sourcePath, ec))
             d.clipSha256 = gp::sha256OfFile(c.sourcePath);  // warns on open if the clip changed since
@@ -32,6 +25,9 @@ SessionData sessionFromDocument(const EditorDocument& doc) {
     }
     if (const gp::ModelVersionPtr v = doc.compareModel()) d.compareModel = *v->model;
     d.edits = doc.edits();
+    d.undoSteps = doc.history().undoSteps();
+    d.redoSteps = doc.history().redoSteps();
+    d.adaptiveHistory = doc.adaptiveHistory();
     d.frame = doc.frame();
     for (int i = 0; i < kEffectorCount; ++i) d.pins[i] = doc.pinned(static_cast<Effector>(i));
     d.compareMode = compareModeName(doc.compareMode());
@@ -78,6 +74,8 @@ void applySession(EditorDocument& doc, CheckedSession& s, const std::string& fil
     CompareMode mode = CompareMode::kNone;
     parseCompareMode(d.compareMode, mode);  // checked when the file was read
     doc.setCompareMode(mode);
+    doc.restoreHistory(std::move(d.undoSteps), std::move(d.redoSteps));
+    if (doc.hasModel()) doc.restoreAdaptiveHistory(std::move(d.adaptiveHistory));
     if (d.path.present) {
         PathEdit p{d.path.effector, d.path.keyFrames, d.path.keyOffsetsCm, d.path.mode};
         if (const std::string problem = doc.setPathEdit(std::move(p)); !problem.empty())

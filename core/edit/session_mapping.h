@@ -1,6 +1,7 @@
 #pragma once
-// The document's half of a session file: which clip and models, the accepted edits, the frame,
-// pins, compare ghost, adaptive switch and path edit. The editor adds its own half (camera,
+// The document's half of a session file: which clip and models, the accepted edits, the undo
+// history (frames only), the adaptive-update table, the frame, pins, compare ghost, adaptive
+// switch and path edit. The editor adds its own half (camera,
 // selection, labels) to the same SessionData. No GL: the core tests map documents both ways.
 #include <optional>
 #include <string>

@@ -47,6 +47,17 @@ const char* learnedIkStopName(LearnedIkStop stop) {
     return "?";
 }
 
+const char* learnedIkStopKey(LearnedIkStop stop) {
+    switch (stop) {
+        case LearnedIkStop::kInvalidRequest: return "invalid_request";
+        case LearnedIkStop::kConverged: return "converged";
+        case LearnedIkStop::kStalled: return "stalled";
+        case LearnedIkStop::kIterationCap: return "iteration_cap";
+        case LearnedIkStop::kLineSearchFailed: return "line_search_failed";
+    }
+    return "?";
+}
+
 void LearnedIkSolver::computeScaling(const Eigen::VectorXd& z0) {
     const gp::GpModel& m = *version_->model;
     const LearnedIkRequest& r = *request_;

@@ -51,6 +51,9 @@ enum class LearnedIkStop {
     kLineSearchFailed,  // LBFGS++ threw; the best point seen is returned
 };
 const char* learnedIkStopName(LearnedIkStop stop);
+// The same reason as a JSON key, in snake case like ikStopName: "converged", "iteration_cap",
+// "line_search_failed", "invalid_request", "stalled".
+const char* learnedIkStopKey(LearnedIkStop stop);
 
 // The backtracking line search of LBFGS++, counting the line searches started in the objective
 // functor it is given: LBFGS++ returns no iteration count when it throws.

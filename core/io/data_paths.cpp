@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <initializer_list>
 
 namespace mgp {
@@ -62,6 +63,13 @@ std::optional<std::string> defaultClipIn(const std::string& mocapDir) {
     const std::string amc = mocapDir + "/asf_amc/10_02.amc";
     if (isFile(amc) && isFile(mocapDir + "/asf_amc/10.asf")) return amc;
     return std::nullopt;
+}
+
+std::string absolutePath(const std::string& path) {
+    if (path.empty()) return path;
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::absolute(path, ec);
+    return ec ? path : p.lexically_normal().string();
 }
 
 }  // namespace mgp

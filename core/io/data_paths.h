@@ -17,5 +17,8 @@ std::optional<std::string> findShippedMocapFolder(const std::string& exeDir);
 std::optional<std::string> findEditorMocapFolder(const std::string& cliDir, const std::string& exeDir);
 // The clip the editor opens by default (a soccer kick, 10_02.amc), if the folder has it.
 std::optional<std::string> defaultClipIn(const std::string& mocapDir);
+// `path` made absolute and lexically normal, as sessions and the recent list store paths;
+// "" stays "", and a path that cannot be resolved (no working directory) is returned as given.
+std::string absolutePath(const std::string& path);
 
 }  // namespace mgp

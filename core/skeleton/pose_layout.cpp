@@ -71,4 +71,11 @@ void PoseLayout::apply(const double* y, Pose& pose) const {
         if (joint_[i] >= 0) pose.anglesDeg[joint_[i]][axis(i)] = y[i];
 }
 
+bool allFinite(const Pose& pose) {
+    if (!pose.rootCm.allFinite()) return false;
+    for (const auto& a : pose.anglesDeg)
+        if (!a.allFinite()) return false;
+    return true;
+}
+
 }  // namespace mgp

@@ -42,6 +42,8 @@ struct Pose {
     Eigen::Vector3d rootCm = Eigen::Vector3d::Zero();
     std::vector<Eigen::Vector3d> anglesDeg;
 };
+// Whether the root translation and every angle are finite (a solve that produced NaN is dropped).
+bool allFinite(const Pose& pose);
 
 // Binds the 47-entry layout to one skeleton's joints.
 class PoseLayout {

@@ -49,8 +49,12 @@ TEST_CASE("gui session: reopening restores the camera framing and the before gho
     CHECK(s.camera.targetCm.z == doctest::Approx(saved.targetCm.z).epsilon(1e-5));
 
     CHECK(s.showBeforeGhost);
-    CHECK_FALSE(doc.canUndo());  // the history is not in the session
+    // The undo history came back with the session (frames only): the drag is still undoable.
+    REQUIRE(doc.canUndo());
+    CHECK(doc.undoLabel() == "drag rhand on frame 51");
     const std::optional<Pose> ghost = ui::beforeGhostPose(s);
     REQUIRE(ghost.has_value());
     CHECK(ghost->anglesDeg != doc.currentPose().anglesDeg);  // it shows the pose before the edit
+    REQUIRE(doc.undo() == "");
+    CHECK(ghost->anglesDeg == doc.currentPose().anglesDeg);  // undo goes back to exactly that pose
 }

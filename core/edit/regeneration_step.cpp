@@ -1,0 +1,67 @@
+#include "edit/regeneration_step.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace mgp {
+
+FrameEdits regeneratedFrames(const MotionEditJob& job) {
+    FrameEdits out;
+    for (std::size_t i = 0; i < job.solvedFrames.size(); ++i) {
+        const int t = job.solvedFrames[i];
+        out[t] = EditRecord{job.frames[t], job.results[i].x};
+    }
+    return out;
+}
+
+EditStep regenerationStep(const MotionEditJob& job, const ClipEdits& edits) {
+    EditStep step;
+    char label[96];
+    std::snprintf(label, sizeof label, "regenerate %s, frames %d-%d", effectorName(job.effector), job.keyFrames.front() + 2,
+                  job.keyFrames.back());
+    step.label = label;
+    step.after = regeneratedFrames(job);
+    step.before = edits.current(step.after);
+    return step;
+}
+
+void mergeFalloff(const MotionEditJob& job, const ClipEdits& edits, EditStep& dragStep) {
+    for (auto& [frame, record] : regeneratedFrames(job)) {
+        if (!dragStep.before.count(frame)) dragStep.before[frame] = edits.editAt(frame);
+        dragStep.after[frame] = std::move(record);
+    }
+}
+
+std::vector<AdaptiveSample> movedKeySamples(const MotionEditJob& job) {
+    std::vector<AdaptiveSample> out;
+    for (std::size_t k = 1; k + 1 < job.keyFrames.size(); ++k) {
+        if (job.keyOffsetsCm[k].isZero()) continue;
+        const int t = job.keyFrames[k];
+        const auto it = std::find(job.solvedFrames.begin(), job.solvedFrames.end(), t);
+        if (it == job.solvedFrames.end()) continue;
+        const LearnedIkResult& r = job.results[static_cast<std::size_t>(it - job.solvedFrames.begin())];
+        if (!r.x.allFinite() || !r.y.allFinite()) continue;
+        out.push_back({r.x, r.y, t});
+    }
+    return out;
+}
+
+std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
+    const SpanQuality& q = job.quality;
+    char summary[320];
+    std::snprintf(summary, sizeof summary,
+                  "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
+                  "(captured %.1f°); %zu contact(s) held%s",
+                  job.solvedFrames.size(), job.maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
+                  q.captured.maxDeg, job.held.size(), updateQueued ? " (adaptive update queued)" : "");
+    return summary;
+}
+
+std::string falloffSummary(const MotionEditJob& job, int falloffRadius) {
+    char summary[160];
+    std::snprintf(summary, sizeof summary, "drag spread over frames %d-%d (falloff %d frames)", job.keyFrames.front() + 2,
+                  job.keyFrames.back(), falloffRadius);
+    return summary;
+}
+
+}  // namespace mgp
