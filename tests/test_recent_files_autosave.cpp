@@ -74,6 +74,24 @@ TEST_CASE("the recent list is most recent first, without duplicates, at most 10,
     CHECK(fresh.entries().empty());
 }
 
+TEST_CASE("the recent list keeps one entry per real file, whatever link it was opened through") {
+    const std::string dir = test::scratchDir("recent_links");
+    test::writeText(dir + "/walk.amc", "x");
+    std::error_code ec;
+    fs::remove(dir + "/link.amc", ec);
+    fs::create_symlink(dir + "/walk.amc", dir + "/link.amc");
+    fs::remove(dir + "/linkdir", ec);
+    fs::create_directory_symlink(dir, dir + "/linkdir");
+    RecentFiles r(dir + "/recent.json");
+    r.add(dir + "/walk.amc", RecentKind::kClip);
+    r.add(dir + "/link.amc", RecentKind::kClip);
+    r.add(dir + "/linkdir/walk.amc", RecentKind::kClip);
+    REQUIRE(r.entries().size() == 1);
+    CHECK(r.entries()[0].path == fs::canonical(dir + "/walk.amc").string());
+    r.remove(dir + "/link.amc");
+    CHECK(r.entries().empty());
+}
+
 TEST_CASE("a damaged recent list is ignored with a message") {
     const std::string dir = test::scratchDir("recent_damaged");
     const std::string file = dir + "/recent.json";

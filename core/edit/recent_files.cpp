@@ -77,17 +77,26 @@ bool parseRecentKind(const std::string& name, RecentKind& out) {
     return false;
 }
 
+namespace {
+// One entry per real file: symlinks and "." / ".." resolved (as far as the path exists).
+std::string realPath(const std::string& path) {
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(absolutePath(path), ec);
+    return ec ? absolutePath(path) : real.string();
+}
+}  // namespace
+
 RecentFiles::RecentFiles(std::string file) : file_(file.empty() ? configDir() + "/recent.json" : std::move(file)) {}
 
 void RecentFiles::add(const std::string& path, RecentKind kind) {
-    const std::string abs = absolutePath(path);
+    const std::string abs = realPath(path);
     remove(abs);
     entries_.insert(entries_.begin(), RecentFile{abs, kind});
     if (entries_.size() > kMaxEntries) entries_.resize(kMaxEntries);
 }
 
 void RecentFiles::remove(const std::string& path) {
-    const std::string abs = absolutePath(path);
+    const std::string abs = realPath(path);
     entries_.erase(std::remove_if(entries_.begin(), entries_.end(), [&](const RecentFile& f) { return f.path == abs; }),
                    entries_.end());
 }
@@ -101,7 +110,7 @@ std::string RecentFiles::load() {
         if (!in || fs::is_directory(file_, ec)) throwParseError(file_, 0, "a readable file", "one that cannot be read");
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         for (const RecentFile& f : parseRecent(text, file_)) {
-            const std::string abs = absolutePath(f.path);
+            const std::string abs = realPath(f.path);
             const bool seen = std::any_of(entries_.begin(), entries_.end(), [&](const RecentFile& e) { return e.path == abs; });
             if (!seen && entries_.size() < kMaxEntries) entries_.push_back({abs, f.kind});
         }

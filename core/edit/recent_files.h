@@ -24,7 +24,7 @@ const char* recentKindName(RecentKind kind);
 bool parseRecentKind(const std::string& name, RecentKind& out);
 
 struct RecentFile {
-    std::string path;  // absolute
+    std::string path;  // absolute, symlinks resolved (one entry per real file)
     RecentKind kind = RecentKind::kSession;
 };
 
