@@ -64,66 +64,23 @@ LatentImage computeLatentImage(const gp::ModelVersion& version, int size) {
     return img;
 }
 
-LatentImageWorker::LatentImageWorker(int size) : size_(size), thread_(&LatentImageWorker::run, this) {}
-
-LatentImageWorker::~LatentImageWorker() {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        stop_ = true;
-    }
-    wake_.notify_all();
-    thread_.join();
-}
-
-void LatentImageWorker::request(gp::ModelVersionPtr version) {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        pending_ = std::move(version);
-    }
-    wake_.notify_all();
-}
+LatentImageWorker::LatentImageWorker(int size)
+    : size_(size),
+      worker_(WorkerPolicy::kLatestRequest,
+              [this](gp::ModelVersionPtr& v, const std::atomic<bool>& cancel) { return run(v, cancel); }) {}
 
 bool LatentImageWorker::take(LatentImage& out) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!ready_) return false;
-    out = std::move(done_);
-    ready_ = false;
+    std::optional<LatentImage> done = worker_.take();
+    if (!done) return false;
+    out = std::move(*done);
     return true;
 }
 
-bool LatentImageWorker::busy() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return working_ || pending_ != nullptr;
-}
-
-void LatentImageWorker::waitIdle() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    idle_.wait(lock, [&] { return !working_ && !pending_; });
-}
-
-void LatentImageWorker::run() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    for (;;) {
-        wake_.wait(lock, [&] { return stop_ || pending_; });
-        if (stop_) return;
-        gp::ModelVersionPtr v = std::move(pending_);
-        pending_.reset();
-        working_ = true;
-        lock.unlock();
-        LatentImage img;
-        try {
-            img = computeLatentImage(*v, size_);
-        } catch (const std::exception&) {
-            img = {};
-        }
-        lock.lock();
-        working_ = false;
-        if (img.size > 0) {
-            done_ = std::move(img);
-            ready_ = true;
-        }
-        idle_.notify_all();
-    }
+// A failed computation (thrown or empty) leaves the last finished image in place.
+JobOutcome<LatentImage> LatentImageWorker::run(gp::ModelVersionPtr& version, const std::atomic<bool>&) const {
+    LatentImage img = computeLatentImage(*version, size_);
+    if (img.size <= 0) return {};
+    return {std::move(img), ""};
 }
 
 }  // namespace mgp::ui

@@ -3,13 +3,11 @@
 // latent bounding box (plus a margin), coloured, computed on a worker thread (never on the UI
 // thread) and picked up by the UI when ready. No GL here: the panel uploads the pixels.
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include "gp/model_version.h"
+#include "util/background_worker.h"
 
 namespace mgp::ui {
 
@@ -33,28 +31,25 @@ void latentBox(const gp::GpModel& model, double margin, double& x0, double& y0, 
 // Computes the image synchronously (the worker calls this; tests may too).
 LatentImage computeLatentImage(const gp::ModelVersion& version, int size);
 
+// Computes images on a BackgroundWorker (core/util/background_worker.h) that keeps only the
+// latest request: a newer request replaces one not yet started.
 class LatentImageWorker {
 public:
     explicit LatentImageWorker(int size = 160);
-    ~LatentImageWorker();
+    ~LatentImageWorker() = default;  // the worker finishes the image in progress and joins
     LatentImageWorker(const LatentImageWorker&) = delete;
     LatentImageWorker& operator=(const LatentImageWorker&) = delete;
     // Asks for the image of `version` (replaces any request not yet started).
-    void request(gp::ModelVersionPtr version);
+    void request(gp::ModelVersionPtr version) { worker_.post(std::move(version)); }
     // Moves a finished image out (true once per finished image).
     bool take(LatentImage& out);
-    bool busy() const;
-    void waitIdle();
+    bool busy() const { return worker_.busy(); }
+    void waitIdle() { worker_.waitIdle(); }
 
 private:
-    void run();
+    JobOutcome<LatentImage> run(gp::ModelVersionPtr& version, const std::atomic<bool>& cancel) const;
     int size_;
-    mutable std::mutex mutex_;
-    std::condition_variable wake_, idle_;
-    gp::ModelVersionPtr pending_;
-    bool working_ = false, stop_ = false, ready_ = false;
-    LatentImage done_;
-    std::thread thread_;
+    BackgroundWorker<gp::ModelVersionPtr, LatentImage> worker_;  // last: joined before size_ goes
 };
 
 }  // namespace mgp::ui

@@ -5,17 +5,10 @@
 namespace mgp {
 
 AdaptiveWorker::AdaptiveWorker(gp::ModelVersionPtr initial, int scgIterations)
-    : current_(std::move(initial)), scgIterations_(scgIterations), thread_([this] { run(); }) {}
-
-AdaptiveWorker::~AdaptiveWorker() {
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        stop_ = true;
-        queue_.clear();
-    }
-    wake_.notify_all();
-    thread_.join();
-}
+    : current_(std::move(initial)),
+      scgIterations_(scgIterations),
+      worker_(WorkerPolicy::kEveryRequest,
+              [this](Posted& posted, const std::atomic<bool>& cancel) { return run(posted, cancel); }) {}
 
 void AdaptiveWorker::setEnabled(bool enabled) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -28,14 +21,11 @@ bool AdaptiveWorker::enabled() const {
 }
 
 long AdaptiveWorker::post(AdaptiveSample sample) {
-    long sequence = 0;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!enabled_) return 0;
-        sequence = sample.sequence = nextSequence_++;
-        queue_.push_back(std::move(sample));
-    }
-    wake_.notify_one();
+    // Numbered and queued under one lock, so sequence numbers follow the queue's order.
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!enabled_) return 0;
+    const long sequence = sample.sequence = nextSequence_++;
+    worker_.post(Posted{std::move(sample), generation_});
     return sequence;
 }
 
@@ -50,9 +40,12 @@ gp::ModelVersionPtr AdaptiveWorker::current() const {
 }
 
 void AdaptiveWorker::reset(gp::ModelVersionPtr version) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    queue_.clear();
-    current_ = std::move(version);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++generation_;
+        current_ = std::move(version);
+    }
+    worker_.dropQueued();
 }
 
 void AdaptiveWorker::setListener(std::function<void(const AdaptiveReport&)> listener) {
@@ -60,46 +53,29 @@ void AdaptiveWorker::setListener(std::function<void(const AdaptiveReport&)> list
     listener_ = std::move(listener);
 }
 
-void AdaptiveWorker::waitIdle() {
+JobOutcome<std::monostate> AdaptiveWorker::run(Posted& posted, const std::atomic<bool>&) {
+    const AdaptiveSample& sample = posted.sample;
     std::unique_lock<std::mutex> lock(mutex_);
-    idle_.wait(lock, [this] { return queue_.empty() && !busy_; });
-}
-
-int AdaptiveWorker::pending() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return static_cast<int>(queue_.size()) + (busy_ ? 1 : 0);
-}
-
-void AdaptiveWorker::run() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (true) {
-        wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
-        if (stop_) return;
-        AdaptiveSample sample = std::move(queue_.front());
-        queue_.pop_front();
-        busy_ = true;
-        const gp::ModelVersionPtr base = current_;
-        lock.unlock();
-        const auto t0 = std::chrono::steady_clock::now();
-        AdaptiveReport report;
-        report.versionBefore = base->number;
-        report.sequence = sample.sequence;
-        report.frame = sample.clipFrame;
-        report.result = gp::adaptiveUpdate(*base, sample.x, sample.yKept, sample.clipFrame, scgIterations_);
-        report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        lock.lock();
-        // Publish only if nobody replaced the version meanwhile (undo/redo, a new model).
-        if (report.result.accepted && current_ == base) current_ = report.result.version;
-        report.modelRows = current_->model->N();
-        report.published = current_;
-        const auto listener = listener_;
-        lock.unlock();
-        if (listener) listener(report);
-        lock.lock();
-        // Idle only once the listener has seen the update: waitIdle() callers rely on it.
-        busy_ = false;
-        idle_.notify_all();
-    }
+    if (posted.generation != generation_) return {};  // reset() dropped it while it was being dequeued
+    const gp::ModelVersionPtr base = current_;
+    lock.unlock();
+    const auto t0 = std::chrono::steady_clock::now();
+    AdaptiveReport report;
+    report.versionBefore = base->number;
+    report.sequence = sample.sequence;
+    report.frame = sample.clipFrame;
+    report.result = gp::adaptiveUpdate(*base, sample.x, sample.yKept, sample.clipFrame, scgIterations_);
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    lock.lock();
+    // Publish only if nobody replaced the version meanwhile (undo/redo, a new model).
+    if (report.result.accepted && current_ == base) current_ = report.result.version;
+    report.modelRows = current_->model->N();
+    report.published = current_;
+    const auto listener = listener_;
+    lock.unlock();
+    // The worker is idle only once the listener has seen the update: waitIdle() callers rely on it.
+    if (listener) listener(report);
+    return {};
 }
 
 }  // namespace mgp

@@ -3,14 +3,15 @@
 // immutable model version. Posting never blocks on the update; readers take the latest version
 // with current() (a shared_ptr copy under a short lock) and keep solving on whatever version
 // they hold. Updates run in posting order; each starts from the latest published version.
-// Disabled, it ignores posts (a static model, for comparison).
-#include <condition_variable>
-#include <deque>
+// Disabled, it ignores posts (a static model, for comparison). The thread and the FIFO are a
+// BackgroundWorker's (core/util/background_worker.h) running every request in posting order.
+#include <atomic>
 #include <functional>
 #include <mutex>
-#include <thread>
+#include <variant>
 
 #include "gp/adaptive_update.h"
+#include "util/background_worker.h"
 
 namespace mgp {
 
@@ -34,7 +35,7 @@ struct AdaptiveReport {
 class AdaptiveWorker {
 public:
     explicit AdaptiveWorker(gp::ModelVersionPtr initial, int scgIterations = 100);
-    ~AdaptiveWorker();  // finishes the update in progress, drops queued ones
+    ~AdaptiveWorker() = default;  // the worker finishes the update in progress, drops queued ones
     AdaptiveWorker(const AdaptiveWorker&) = delete;
     AdaptiveWorker& operator=(const AdaptiveWorker&) = delete;
 
@@ -49,20 +50,23 @@ public:
     // Called on the worker thread after each update (accepted or rejected).
     void setListener(std::function<void(const AdaptiveReport&)> listener);
     // Blocks until every posted update has finished (tests, batch commands).
-    void waitIdle();
-    int pending() const;
+    void waitIdle() { worker_.waitIdle(); }
+    int pending() const { return worker_.pending(); }
 
 private:
-    void run();
-    mutable std::mutex mutex_;
-    std::condition_variable wake_, idle_;
-    std::deque<AdaptiveSample> queue_;
+    struct Posted {
+        AdaptiveSample sample;
+        long generation = 0;  // reset() count at post: a sample posted before a reset never runs
+    };
+    JobOutcome<std::monostate> run(Posted& posted, const std::atomic<bool>& cancel);
+    mutable std::mutex mutex_;  // guards the members below
     gp::ModelVersionPtr current_;
     std::function<void(const AdaptiveReport&)> listener_;
     int scgIterations_;
-    bool enabled_ = true, busy_ = false, stop_ = false;
+    bool enabled_ = true;
     long nextSequence_ = 1;
-    std::thread thread_;
+    long generation_ = 0;
+    BackgroundWorker<Posted, std::monostate> worker_;  // last: joined before the members above go
 };
 
 }  // namespace mgp

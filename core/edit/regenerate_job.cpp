@@ -1,66 +1,38 @@
 #include "edit/regenerate_job.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace mgp {
 
-RegenerateJob::~RegenerateJob() {
-    cancel();
-    join();
-}
+RegenerateJob::RegenerateJob()
+    : worker_(WorkerPolicy::kLatestRequest,
+              [this](MotionEditJob& job, const std::atomic<bool>& cancel) { return run(job, cancel); },
+              "regeneration failed: ") {}
 
 std::string RegenerateJob::start(MotionEditJob job) {
-    if (running_.load()) return "a regeneration is already running";
+    static const char* const kBusy = "a regeneration is already running";
+    if (worker_.busy()) return kBusy;
     if (const std::string problem = job.validate(); !problem.empty()) return problem;
-    join();
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        result_.reset();
-        message_.clear();
-    }
-    cancel_ = false;
     done_ = 0;
     total_ = std::max(0, job.keyFrames.back() - job.keyFrames.front() - 1);
-    running_ = true;
-    thread_ = std::thread([this, job = std::move(job)]() mutable {
-        job.framesDone = &done_;
-        job.cancel = &cancel_;
-        std::string message;
-        try {
-            job.run();
-            if (job.cancelled) message = "regeneration cancelled";
-        } catch (const std::exception& e) {
-            message = std::string("regeneration failed: ") + e.what();
-        }
-        job.framesDone = nullptr;
-        job.cancel = nullptr;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            message_ = message;
-            if (message.empty()) result_ = std::move(job);
-        }
-        running_ = false;
-    });
+    if (!worker_.startIfIdle(std::move(job))) return kBusy;
     return "";
 }
 
-void RegenerateJob::cancel() { cancel_ = true; }
-
 std::optional<MotionEditJob> RegenerateJob::take() {
-    if (running_.load()) return std::nullopt;
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::optional<MotionEditJob> out = std::move(result_);
-    result_.reset();
-    return out;
+    if (running()) return std::nullopt;
+    return worker_.take();
 }
 
-std::string RegenerateJob::takeMessage() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return std::exchange(message_, std::string());
-}
-
-void RegenerateJob::join() {
-    if (thread_.joinable()) thread_.join();
+JobOutcome<MotionEditJob> RegenerateJob::run(MotionEditJob& job, const std::atomic<bool>& cancel) {
+    job.framesDone = &done_;
+    job.cancel = &cancel;
+    job.run();
+    job.framesDone = nullptr;
+    job.cancel = nullptr;
+    if (job.cancelled) return {std::nullopt, "regeneration cancelled"};
+    return {std::move(job), ""};
 }
 
 }  // namespace mgp

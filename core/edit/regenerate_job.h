@@ -1,43 +1,40 @@
 #pragma once
 // RegenerateJob: runs a MotionEditJob (per-frame learned IK along an edited path) on a
 // background thread with progress and cancellation, so the editor never blocks on it. The UI
-// polls progress every frame and takes the finished job once.
+// polls progress every frame and takes the finished job once. The thread, the cancel flag and
+// the take-once result are a BackgroundWorker's (core/util/background_worker.h), one run at a time.
 #include <atomic>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "motion/motion_edit.h"
+#include "util/background_worker.h"
 
 namespace mgp {
 
 class RegenerateJob {
 public:
-    RegenerateJob() = default;
-    ~RegenerateJob();  // cancels and joins
+    RegenerateJob();
+    ~RegenerateJob() = default;  // the worker cancels and joins
     RegenerateJob(const RegenerateJob&) = delete;
     RegenerateJob& operator=(const RegenerateJob&) = delete;
 
     // "" or why not (a job is running, the edit is invalid).
     std::string start(MotionEditJob job);
-    void cancel();
-    bool running() const { return running_.load(); }
+    void cancel() { worker_.cancel(); }
+    bool running() const { return worker_.busy(); }
     int framesDone() const { return done_.load(); }
     int framesTotal() const { return total_.load(); }
     // The finished job, once (none while running, after a cancel or an error).
     std::optional<MotionEditJob> take();
     // "" or the last job's outcome when it produced nothing (cancelled, failed), once.
-    std::string takeMessage();
-    void join();
+    std::string takeMessage() { return worker_.takeMessage(); }
+    void join() { worker_.waitIdle(); }
 
 private:
-    std::thread thread_;
-    std::atomic<bool> cancel_{false}, running_{false};
+    JobOutcome<MotionEditJob> run(MotionEditJob& job, const std::atomic<bool>& cancel);
     std::atomic<int> done_{0}, total_{0};
-    mutable std::mutex mutex_;
-    std::optional<MotionEditJob> result_;
-    std::string message_;
+    BackgroundWorker<MotionEditJob, MotionEditJob> worker_;  // last: joined before the members above go
 };
 
 }  // namespace mgp

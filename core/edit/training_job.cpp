@@ -5,37 +5,26 @@
 
 namespace mgp {
 
-TrainingJob::~TrainingJob() {
-    cancel();
-    join();
-}
-
-void TrainingJob::join() {
-    if (thread_.joinable()) thread_.join();
-}
+TrainingJob::TrainingJob()
+    : worker_(WorkerPolicy::kLatestRequest, [this](Request& r, const std::atomic<bool>& cancel) { return run(r, cancel); },
+              "training failed: ") {}
 
 std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile) {
-    if (running_.load()) return "a training run is already in progress";
+    static const char* const kBusy = "a training run is already in progress";
+    if (worker_.busy()) return kBusy;
     if (clip.format == ClipFormat::kBvh) return "BVH clips are view-only: training on BVH is not supported yet";
     if (clip.frameCount() < 3) return "expected at least 3 frames to train on, found " + std::to_string(clip.frameCount());
-    join();
-    cancel_.store(false);
-    running_.store(true);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_ = {};
         progress_.running = true;
         progress_.total = options.outerIterations;
         progress_.kernel = gp::kernelKindName(options.kind);
-        result_.reset();
-        message_.clear();
         started_ = std::chrono::steady_clock::now();
     }
-    thread_ = std::thread(&TrainingJob::run, this, clip, options, sourceFile);
+    if (!worker_.startIfIdle(Request{clip, options, sourceFile})) return kBusy;
     return "";
 }
-
-void TrainingJob::cancel() { cancel_.store(true); }
 
 TrainingProgress TrainingJob::progress() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -46,51 +35,37 @@ TrainingProgress TrainingJob::progress() const {
 }
 
 gp::ModelVersionPtr TrainingJob::take() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    gp::ModelVersionPtr r = std::move(result_);
-    result_.reset();
-    return r;
+    std::optional<gp::ModelVersionPtr> r = worker_.take();
+    return r ? std::move(*r) : nullptr;
 }
 
-std::string TrainingJob::message() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return message_;
-}
-
-void TrainingJob::run(Clip clip, gp::TrainOptions options, std::string sourceFile) {
+JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::atomic<bool>& cancel) {
     const auto t0 = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    std::string msg;
-    gp::ModelVersionPtr version;
-    try {
-        gp::TrainResult res = gp::trainOnClip(std::move(clip), options, [&](const gp::IterationLog& e) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            progress_.iteration = e.iter;
-            progress_.objective = e.L;
-            progress_.elapsedSeconds = elapsed();
-            if (e.iter > 0) progress_.etaSeconds = progress_.elapsedSeconds / e.iter * (progress_.total - e.iter);
-        }, &cancel_);
-        if (res.cancelled) {
-            msg = "training cancelled after " + std::to_string(res.log.size()) + " iterations";
-        } else {
-            res.model.sourceFile = sourceFile;
-            version = gp::ModelVersion::make(std::move(res.model));
-            char buf[160];
-            std::snprintf(buf, sizeof buf, "trained %s: %zu iterations in %.1f s%s", gp::kernelKindName(options.kind),
-                          res.log.size(), elapsed(), res.converged ? " (converged)" : "");
-            msg = buf;
+    // The progress ends "not running" however the run ends, a thrown error included.
+    struct Finish {
+        TrainingJob& job;
+        const decltype(elapsed)& seconds;
+        ~Finish() {
+            std::lock_guard<std::mutex> lock(job.mutex_);
+            job.progress_.running = false;
+            job.progress_.elapsedSeconds = seconds();
         }
-    } catch (const std::exception& e) {
-        msg = std::string("training failed: ") + e.what();
-    }
-    {
+    } finish{*this, elapsed};
+    const gp::TrainOptions& options = request.options;
+    gp::TrainResult res = gp::trainOnClip(std::move(request.clip), options, [&](const gp::IterationLog& e) {
         std::lock_guard<std::mutex> lock(mutex_);
-        result_ = version;
-        message_ = msg;
-        progress_.running = false;
+        progress_.iteration = e.iter;
+        progress_.objective = e.L;
         progress_.elapsedSeconds = elapsed();
-    }
-    running_.store(false);
+        if (e.iter > 0) progress_.etaSeconds = progress_.elapsedSeconds / e.iter * (progress_.total - e.iter);
+    }, &cancel);
+    if (res.cancelled) return {std::nullopt, "training cancelled after " + std::to_string(res.log.size()) + " iterations"};
+    res.model.sourceFile = request.sourceFile;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "trained %s: %zu iterations in %.1f s%s", gp::kernelKindName(options.kind),
+                  res.log.size(), elapsed(), res.converged ? " (converged)" : "");
+    return {gp::ModelVersion::make(std::move(res.model)), buf};
 }
 
 }  // namespace mgp

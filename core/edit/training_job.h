@@ -1,18 +1,17 @@
 #pragma once
 // TrainingJob: trains a model from a clip on a background thread, one outer iteration at a time,
 // with progress, an ETA and cancellation (docs/architecture.md §4: the app never blocks the UI on
-// training). The UI polls progress() every frame and takes the finished model once.
-// No GL or ImGui here.
-#include <atomic>
+// training). The UI polls progress() every frame and takes the finished model once. The thread,
+// the cancel flag and the take-once model are a BackgroundWorker's (core/util/background_worker.h),
+// one run at a time. No GL or ImGui here.
 #include <chrono>
-#include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 
 #include "gp/model_version.h"
 #include "gp/trainer.h"
 #include "skeleton/clip.h"
+#include "util/background_worker.h"
 
 namespace mgp {
 
@@ -28,32 +27,34 @@ struct TrainingProgress {
 
 class TrainingJob {
 public:
-    TrainingJob() = default;
-    ~TrainingJob();  // cancels and joins
+    TrainingJob();
+    ~TrainingJob() = default;  // the worker cancels and joins
     TrainingJob(const TrainingJob&) = delete;
     TrainingJob& operator=(const TrainingJob&) = delete;
 
     // Starts training on every frame of `clip` (ASF/AMC or synthetic). Returns "" or why not
     // (a job is running, BVH clip, fewer than 3 frames).
     std::string start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile = "");
-    void cancel();
-    bool running() const { return running_.load(); }
+    void cancel() { worker_.cancel(); }
+    bool running() const { return worker_.busy(); }
     TrainingProgress progress() const;
     // The finished model, once (null while running, after a cancel, or when already taken).
     gp::ModelVersionPtr take();
     // "" or the last job's outcome ("cancelled after 3 iterations", an error message, ...).
-    std::string message() const;
-    void join();
+    std::string message() const { return worker_.message(); }
+    void join() { worker_.waitIdle(); }
 
 private:
-    void run(Clip clip, gp::TrainOptions options, std::string sourceFile);
-    std::thread thread_;
-    std::atomic<bool> cancel_{false}, running_{false};
-    mutable std::mutex mutex_;
+    struct Request {
+        Clip clip;
+        gp::TrainOptions options;
+        std::string sourceFile;
+    };
+    JobOutcome<gp::ModelVersionPtr> run(Request& request, const std::atomic<bool>& cancel);
+    mutable std::mutex mutex_;  // guards progress_ and started_
     TrainingProgress progress_;
-    gp::ModelVersionPtr result_;
-    std::string message_;
     std::chrono::steady_clock::time_point started_;
+    BackgroundWorker<Request, gp::ModelVersionPtr> worker_;  // last: joined before the members above go
 };
 
 }  // namespace mgp
