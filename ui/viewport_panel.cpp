@@ -308,9 +308,10 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     }
     render::Scene scene;
     FkState fk;
-    forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
+    // A rotate-joint gesture shows its preview (EditorState::posePreview), untinted.
+    forwardKinematics(doc.clip().skeleton, s.posePreview ? *s.posePreview : doc.currentPose(), fk);
     scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
-    if (s.showRangeTint)
+    if (s.showRangeTint && !s.posePreview)
         if (const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict())
             render::applyRangeTint(scene.figures.back(), render::rangeTint(v->range, v->sigma2, v->lik));
     scene.groundHeightCm = groundHeight_;
