@@ -513,7 +513,9 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     drawMenuBar(*this, showMessages_, latent_.busy() ? "latent map..." : "");
     state_.messages.update(state_.uiSeconds, state_.doc.revision());
     layout_.draw(state_, *viewport_, latent_, timeline_, width, height);
+    if (const int picked = viewport_->takePickedJoint(); picked >= 0) jointWindow_.selectJoint(picked);
     jointWindow_.draw(*this);
+    viewport_->setJointPicking(jointWindow_.shown());
     drawHelpWindow(showHelp_, layout_.leftWidth() * 0.5f, float(height) * 0.5f, options_.autosaveSeconds);
     runRequests();
     dialogs();

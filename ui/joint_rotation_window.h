@@ -1,5 +1,6 @@
 #pragma once
-// Edit > Rotate joint: pick one joint and set its DOFs in degrees (core/edit/joint_rotation.h).
+// Edit > Rotate joint: pick one joint (the combo, or click its bone in the viewport while the
+// window is shown) and set its DOFs in degrees (core/edit/joint_rotation.h).
 // A slider gesture previews the pose in the viewport (EditorState::posePreview) and becomes one
 // undo step on release, through the `rotate-joint` action. "Follow with learned prior" re-solves
 // the rest of the pose under the model, pins and feet in contact held.

@@ -7,6 +7,7 @@
 #include <initializer_list>
 
 #include "edit/joint_rotation.h"
+#include "skeleton/forward_kinematics.h"
 #include "editor_app.h"
 #include "editor_harness.h"
 #include "gui_script.h"
@@ -125,4 +126,30 @@ TEST_CASE("gui pose tools: rotate-joint with the learned prior holds the joint's
     const std::string err = h->app->runAction({"rotate-joint", "ltibia", "10", "20"});
     CHECK(err.find("expected 1 angle for ltibia (x), found 2") != std::string::npos);
     CHECK(h->app->runAction({"rotate-joint", "nosuchbone", "1"}).find("unknown joint") != std::string::npos);
+}
+
+TEST_CASE("gui pose tools: with the Rotate joint window shown, clicking a bone in the viewport picks its joint") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    const Skeleton& sk = s.doc.clip().skeleton;
+    REQUIRE(h->app->runAction({"rotate-joint"}) == "");
+    h->frame(3);
+    for (const char* bone : {"rtibia", "lfemur"}) {
+        CAPTURE(std::string(bone));
+        const int j = sk.findBone(bone);
+        FkState fk;
+        forwardKinematics(sk, s.doc.currentPose(), fk);
+        const Eigen::Vector3d mid = 0.5 * (fk.jointCm[j] + boneEndCm(sk, fk, j));
+        glm::vec3 p;
+        REQUIRE(s.camera.project(glm::vec3(float(mid.x()), float(mid.y()), float(mid.z())), s.viewportWidth, s.viewportHeight, p));
+        h->input.mouseX = s.viewportX + p.x;
+        h->input.mouseY = s.viewportY + p.y;
+        h->frame(2);
+        h->input.setButton(0, true);
+        h->input.setButton(0, false);
+        h->frame(4);
+        CHECK(h->app->jointWindow().joint() == j);
+    }
+    CHECK_FALSE(s.doc.canUndo());  // picking is not an edit
 }
