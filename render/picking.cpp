@@ -1,5 +1,6 @@
 #include "picking.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,6 +27,34 @@ int pickHandle(const std::vector<Handle>& handles, const Ray& ray, float slackCm
         if (t >= 0.0f && t < bestT) {
             bestT = t;
             best = static_cast<int>(i);
+        }
+    }
+    return best;
+}
+
+float raySegmentDistance(const Ray& ray, const glm::vec3& a, const glm::vec3& b, float* along) {
+    // Closest points of the lines, then clamped to the segment (s in [0, 1]) and the ray (t ≥ 0).
+    const glm::vec3 u = b - a, v = ray.direction, w = a - ray.origin;
+    const float uu = glm::dot(u, u), uv = glm::dot(u, v), vv = glm::dot(v, v), uw = glm::dot(u, w), vw = glm::dot(v, w);
+    const float den = uu * vv - uv * uv;
+    float s = den > 1e-9f * uu * vv ? (uv * vw - vv * uw) / den : 0.0f;
+    s = glm::clamp(s, 0.0f, 1.0f);
+    float t = std::max(0.0f, (uv * s + vw) / vv);
+    if (uu > 0.0f) s = glm::clamp((t * uv - uw) / uu, 0.0f, 1.0f);
+    t = std::max(0.0f, (uv * s + vw) / vv);
+    if (along) *along = t;
+    return glm::length((a + s * u) - (ray.origin + t * v));
+}
+
+int pickSegment(const std::vector<Segment>& segments, const Ray& ray, float radiusCm) {
+    int best = -1;
+    float bestT = 0.0f;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        float t = 0.0f;
+        if (raySegmentDistance(ray, segments[i].a, segments[i].b, &t) > radiusCm) continue;
+        if (best < 0 || t < bestT) {
+            best = static_cast<int>(i);
+            bestT = t;
         }
     }
     return best;

@@ -14,6 +14,16 @@ float raySphere(const Ray& ray, const glm::vec3& centreCm, float radiusCm);
 // is grown by `slackCm` so small handles stay easy to grab.
 int pickHandle(const std::vector<Handle>& handles, const Ray& ray, float slackCm = 1.0f);
 
+// Distance (cm) between the ray (t ≥ 0) and the segment [a, b]; `along` gets the ray parameter of
+// the closest point.
+float raySegmentDistance(const Ray& ray, const glm::vec3& a, const glm::vec3& b, float* along = nullptr);
+// Index into `segments` (bones as start/end pairs) of the one the ray passes within radiusCm of,
+// the nearest along the ray; -1 for none.
+struct Segment {
+    glm::vec3 a, b;
+};
+int pickSegment(const std::vector<Segment>& segments, const Ray& ray, float radiusCm);
+
 // Convenience: picks under pixel (x, y) (y down) of a width×height viewport.
 int pickHandleAtPixel(const std::vector<Handle>& handles, const OrbitCamera& camera, float x, float y, int width,
                       int height, float slackCm = 1.0f);

@@ -138,6 +138,19 @@ std::vector<EditorAction> makeActions() {
     add({"paste-pose", "", "Ctrl+V", {{'V', kCtrl}}, "paste the copied pose onto the current frame (root kept), one undo step",
          [](const EditorApp& app) { return app.hasCopiedPose() && !docOf(app).regenerating(); }, true,
          [](EditorApp& app, const ActionArgs&) { return app.pastePose(); }});
+    const Enabled canPose = [](const EditorApp& app) { return docOf(app).hasClip() && !docOf(app).regenerating(); };
+    add({"mirror-pose", "", "Ctrl+Shift+M", {{'M', kCtrl | kShift}},
+         "mirror the current frame's pose left/right (root position and heading kept), one undo step", canPose, true,
+         [](EditorApp& app, const ActionArgs&) { return app.mirrorPose(); }});
+    add({"rotate-joint", "[JOINT ANGLE...]", "", {},
+         "set a joint's DOFs in degrees (one per axis it animates, x y z order), one undo step; no arguments: the Rotate joint window",
+         canPose, false, [](EditorApp& app, const ActionArgs& a) { return app.rotateJoint(a); }});
+    add({"follow-prior", "on|off", "", {}, "rotate joint: the rest of the pose follows the learned prior (pins and feet in contact held)",
+         always, false, [](EditorApp& app, const ActionArgs& a) {
+             if (a.empty() || (a[0] != "on" && a[0] != "off")) return "expected on or off, found '" + (a.empty() ? std::string() : a[0]) + "'";
+             app.jointWindow().setFollowPrior(a[0] == "on");
+             return std::string();
+         }});
     add({"pin", "EFFECTOR", "P on handle", {}, "pin or unpin an effector (lhand rhand lfoot rfoot head)", hasClip, false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;

@@ -8,8 +8,12 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
+#include "action_args.h"
+#include "edit/joint_rotation.h"
+#include "edit/mirror_edit.h"
 #include "edit/session_mapping.h"
 #include "gp/model_file.h"
 #include "io/bvh_writer.h"
@@ -365,6 +369,57 @@ std::string EditorApp::pastePose() {
     return err;
 }
 
+std::string EditorApp::mirrorPose() {
+    const std::string err = mirrorCurrentPose(state_.doc);
+    if (err.empty()) state_.setStatus("mirrored the pose of frame " + std::to_string(state_.doc.frame() + 1) + " left/right");
+    return err;
+}
+
+std::string EditorApp::rotateJoint(const std::vector<std::string>& a) {
+    if (a.empty()) {
+        jointWindow_.show();
+        return "";
+    }
+    EditorDocument& doc = state_.doc;
+    if (!doc.hasClip()) return "no clip: open one first";
+    const Skeleton& sk = doc.clip().skeleton;
+    const int joint = sk.findJoint(a[0]) >= 0 ? sk.findJoint(a[0]) : sk.findBone(a[0]);
+    if (joint < 0) return "rotate-joint: unknown joint '" + a[0] + "'";
+    const Joint& jt = sk.joints[joint];
+    std::string axes;
+    for (int k = 0; k < 3; ++k)
+        if (jt.dof[k]) axes += std::string(axes.empty() ? "" : " ") + "xyz"[k];
+    const std::size_t want = (jt.dof[0] ? 1 : 0) + (jt.dof[1] ? 1 : 0) + (jt.dof[2] ? 1 : 0);
+    if (want == 0) return "rotate-joint: " + jt.name + " has no rotation DOFs";
+    if (a.size() - 1 != want)
+        return "rotate-joint: expected " + std::to_string(want) + " angle" + (want > 1 ? "s" : "") + " for " + jt.name + " (" + axes +
+               "), found " + std::to_string(a.size() - 1);
+    JointRotation rot;
+    rot.joint = joint;
+    rot.anglesDeg = doc.currentPose().anglesDeg[joint];
+    rot.followPrior = jointWindow_.followPrior();
+    std::size_t next = 1;
+    for (int k = 0; k < 3; ++k)
+        if (jt.dof[k])
+            if (std::string err = parseFloatArg(a[next++], "an angle in degrees", rot.anglesDeg[k]); !err.empty()) return err;
+    JointRotationResult result;
+    const std::string err = applyJointRotation(doc, rot, &result);
+    if (!err.empty()) return err;
+    jointWindow_.selectJoint(joint);
+    std::string text = "rotated " + jt.name + " on frame " + std::to_string(doc.frame() + 1);
+    if (result.learned) {
+        double worst = 0.0;
+        for (const IkConstraintResult& c : result.ik.constraints) worst = std::max(worst, c.residualCm);
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)", result.ik.lik,
+                      result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst, ikStopName(result.ik.stop));
+        text += buf;
+    }
+    jointWindow_.setReadout(text);
+    state_.setStatus(text);
+    return "";
+}
+
 void EditorApp::dialogs() {
     if (auto path = dialog_.draw()) {
         switch (purpose_) {
@@ -453,6 +508,9 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     drawMenuBar(*this, showMessages_, latent_.busy() ? "latent map..." : "");
     state_.messages.update(state_.uiSeconds, state_.doc.revision());
     layout_.draw(state_, *viewport_, latent_, timeline_, width, height);
+    if (const int picked = viewport_->takePickedJoint(); picked >= 0) jointWindow_.selectJoint(picked);
+    jointWindow_.draw(*this);
+    viewport_->setJointPicking(jointWindow_.shown());
     drawHelpWindow(showHelp_, layout_.leftWidth() * 0.5f, float(height) * 0.5f, options_.autosaveSeconds);
     runRequests();
     dialogs();

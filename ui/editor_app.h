@@ -23,6 +23,7 @@
 #include "file_requests.h"
 #include "input_replay.h"
 #include "input_state.h"
+#include "joint_rotation_window.h"
 #include "latent_map_panel.h"
 #include "png_capture.h"
 #include "script_player.h"
@@ -77,6 +78,12 @@ public:
     void copyPose();          // the current frame's pose to the pose clipboard
     std::string pastePose();  // onto the current frame (root position kept), one undo step
     bool hasCopiedPose() const { return poseClipboard_.has_value(); }
+    std::string mirrorPose();  // the current frame's pose mirrored left/right, one undo step
+    // Rotate joint: no arguments shows the window; JOINT and one angle (degrees) per axis it
+    // animates, in x, y, z order, sets them as one undo step (with the window's prior option).
+    std::string rotateJoint(const std::vector<std::string>& args);
+    JointRotationWindow& jointWindow() { return jointWindow_; }
+    const JointRotationWindow& jointWindow() const { return jointWindow_; }
     void toggleHelp() { showHelp_ = !showHelp_; }
     const RecentFiles* recentFiles() const { return recent_.get(); }  // null when turned off
     void openRecent(const std::string& path);  // after asking about unsaved changes
@@ -146,6 +153,7 @@ private:
     bool showMessages_ = false;
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet
     std::optional<Pose> poseClipboard_;
+    JointRotationWindow jointWindow_;
 
     std::string sessionPath_;  // "" until saved or opened
     long savedRevision_ = 0;   // doc.revision() when last saved or opened

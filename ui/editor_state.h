@@ -42,6 +42,9 @@ struct EditorState {
     Eigen::Vector3d dragStartCm = Eigen::Vector3d::Zero();
     int dragAxis = -1;
     std::string dragReadout;
+    // Rotate joint: the pose a slider gesture would give, drawn instead of the frame's pose until
+    // the gesture ends (joint_rotation_window.h); none otherwise.
+    std::optional<Pose> posePreview;
 
     // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
     int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none

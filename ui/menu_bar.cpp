@@ -51,6 +51,10 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "revert-frame", "Revert frame to capture");
     t.menuItem(app, "copy-pose", "Copy pose");
     t.menuItem(app, "paste-pose", "Paste pose");
+    t.menuItem(app, "mirror-pose", "Mirror pose");
+    t.menuItem(app, "rotate-joint", "Rotate joint...");
+    const bool follow = app.jointWindow().followPrior();
+    t.menuItem(app, "follow-prior", "Rotate joint follows learned prior", {follow ? "off" : "on"}, follow, doc.hasModel());
     if (beginMenu("Pins", escape)) {
         for (int i = 0; i < kEffectorCount; ++i) {
             const auto e = static_cast<Effector>(i);

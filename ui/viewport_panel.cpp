@@ -233,6 +233,8 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 s.playing = false;
             } else {
                 mode_ = shift ? Mode::kPan : Mode::kOrbit;
+                pressX_ = mx;
+                pressY_ = my;
             }
         } else if (io.MouseClicked[2]) {
             mode_ = Mode::kPan;
@@ -246,8 +248,10 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
 
     switch (mode_) {
         case Mode::kOrbit:
-            if (!io.MouseDown[0]) mode_ = Mode::kNone;
-            else if (movedThisFrame_) s.camera.orbit(-dx * 0.4f, dy * 0.4f);
+            if (!io.MouseDown[0]) {
+                mode_ = Mode::kNone;
+                if (jointPicking_ && std::abs(mx - pressX_) + std::abs(my - pressY_) < 4.0f) pickedJoint_ = pickJoint(s, mx, my);
+            } else if (movedThisFrame_) s.camera.orbit(-dx * 0.4f, dy * 0.4f);
             break;
         case Mode::kPan:
             if (!io.MouseDown[0] && !io.MouseDown[2]) mode_ = Mode::kNone;
@@ -298,6 +302,23 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
     lastY_ = my;
 }
 
+int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
+    if (!s.doc.hasClip()) return -1;
+    const Skeleton& sk = s.doc.clip().skeleton;
+    FkState fk;
+    forwardKinematics(sk, s.doc.currentPose(), fk);
+    std::vector<render::Segment> bones;
+    std::vector<int> joints;
+    for (int j = 1; j < sk.jointCount(); ++j) {
+        const Joint& jt = sk.joints[j];
+        if (!(jt.dof[0] || jt.dof[1] || jt.dof[2]) || jt.tailCm.norm() < 0.1) continue;
+        bones.push_back({toGlm(fk.jointCm[j]), toGlm(boneEndCm(sk, fk, j))});
+        joints.push_back(j);
+    }
+    const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 3.0f);
+    return i < 0 ? -1 : joints[i];
+}
+
 render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     const EditorDocument& doc = s.doc;
     // Built here rather than with render::buildClipScene, which recomputes the clip's floor
@@ -308,9 +329,10 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     }
     render::Scene scene;
     FkState fk;
-    forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
+    // A rotate-joint gesture shows its preview (EditorState::posePreview), untinted.
+    forwardKinematics(doc.clip().skeleton, s.posePreview ? *s.posePreview : doc.currentPose(), fk);
     scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
-    if (s.showRangeTint)
+    if (s.showRangeTint && !s.posePreview)
         if (const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict())
             render::applyRangeTint(scene.figures.back(), render::rangeTint(v->range, v->sigma2, v->lik));
     scene.groundHeightCm = groundHeight_;

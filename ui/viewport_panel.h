@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "editor_state.h"
@@ -33,6 +34,10 @@ public:
     // The 3-D view at the viewport's size with 4× MSAA and no overlay text (File > Export PNG;
     // ui/viewport_export.cpp). Throws render::RenderError before the first draw.
     render::Image renderImage(const EditorState& state);
+    // While on (the Rotate joint window is shown), a left click on a bone that does not orbit the
+    // camera picks that bone's joint; takePickedJoint returns it once (-1 none).
+    void setJointPicking(bool on) { jointPicking_ = on; }
+    int takePickedJoint() { return std::exchange(pickedJoint_, -1); }
     long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
     const render::Scene& lastScene() const { return lastScene_; }  // as last built by draw()
 
@@ -40,6 +45,8 @@ private:
     void ensureTarget(int w, int h);
     void interact(EditorState& state, float mx, float my, bool hovered);
     render::Scene buildScene(const EditorState& state) const;
+    // The animated joint whose bone is under viewport pixel (mx, my) within 3 cm, -1 none.
+    int pickJoint(const EditorState& state, float mx, float my) const;
 
     std::unique_ptr<render::SceneRenderer> renderer_;
     std::unique_ptr<render::SceneRenderer> exportRenderer_;  // created on the first export
@@ -51,6 +58,9 @@ private:
     int dragKey_ = -1;                                        // the key of a kDragKey drag
     Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
     float lastX_ = 0, lastY_ = 0;
+    float pressX_ = 0, pressY_ = 0;  // where the left button went down (a click picks a bone)
+    bool jointPicking_ = false;
+    int pickedJoint_ = -1;
     bool movedThisFrame_ = false;
     bool followValid_ = false;
     Eigen::Vector3d followRoot_ = Eigen::Vector3d::Zero();

@@ -74,15 +74,34 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
     if (!(r.rootStiffness >= 0.0) || !std::isfinite(r.rootStiffness))
         return "expected a root stiffness ≥ 0, found " + std::to_string(r.rootStiffness);
     if (r.rootReferenceDeg && !r.rootReferenceDeg->allFinite()) return "expected a finite root reference, found NaN or Inf";
+    for (std::size_t i = 0; i < r.held.size(); ++i) {
+        const HeldDof& h = r.held[i];
+        if (h.joint < 0 || h.joint >= sk.jointCount() || h.axis < 0 || h.axis > 2)
+            return "expected a held DOF of a joint 0.." + std::to_string(sk.jointCount() - 1) + " and an axis 0..2, found joint " +
+                   std::to_string(h.joint) + " axis " + std::to_string(h.axis);
+        if (!std::isfinite(h.valueDeg)) return "expected a finite held angle, found NaN or Inf";
+        for (std::size_t k = 0; k < i; ++k)
+            if (r.held[k].joint == h.joint && r.held[k].axis == h.axis)
+                return "expected each held DOF once, found joint " + std::to_string(h.joint) + " axis " + std::to_string(h.axis) + " twice";
+    }
     return validateConstraints(sk, r.constraints);
 }
 
 void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
     request_ = &request;
     pose_ = request.start;
-    layout_.extract(request.start, full_.data());
+    for (const HeldDof& h : request.held) pose_.anglesDeg[h.joint][h.axis] = h.valueDeg;
+    layout_.extract(pose_, full_.data());
     const gp::GpModel& m = *version_->model;
     for (std::size_t k = 0; k < m.constantColumns.size(); ++k) full_[m.constantColumns[k]] = m.constantValues[k];
+    // Held DOFs keep their values even on a constant column (the prior never sees those).
+    heldY_.clear();
+    for (const HeldDof& h : request.held)
+        for (int dof = 0; dof < kPoseDofs; ++dof)
+            if (layout_.joint(dof) == h.joint && layout_.axis(dof) == h.axis) {
+                full_[dof] = h.valueDeg;
+                if (yOfDof_[dof] >= 0) heldY_.push_back(yOfDof_[dof]);
+            }
     rootRef_ = request.rootReferenceDeg ? *request.rootReferenceDeg : Eigen::Vector3d(full_[0], full_[1], full_[2]);
     pins_.clear();
     targets_.clear();
@@ -231,6 +250,7 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             effectorJacobian(sk, layout_, fk_, pose_, pc.effector, jac_);
             scatterJacobian(A_, row);
         }
+        freezeHeld(false);
         Aall_.topRows(A_.rows()) = A_;
         eAt_.head(c_.size()).setZero();  // pins are corrected back onto c = 0
         if (curvature_ && !pins_.empty()) {
@@ -242,8 +262,26 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             for (std::size_t i = 0; i < pins_.size(); ++i)
                 addConstraintCurvature(r.constraints[pins_[i]].effector, nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
         }
+        if (curvature_) freezeHeld(true);
     }
     return F;
+}
+
+void ConstrainedIkSolver::freezeHeld(bool curvature) {
+    for (int k : heldY_) {
+        const Eigen::Index i = d_ + k;
+        if (curvature) {
+            C_.row(i).setZero();
+            C_.col(i).setZero();
+            continue;
+        }
+        g_[i] = 0.0;
+        H_.row(i).setZero();
+        H_.col(i).setZero();
+        H_(i, i) = 1.0;  // δ_i = −g_i / 1 = 0, decoupled from every other unknown
+        if (A_.rows() > 0) A_.col(i).setZero();
+        if (Aall_.rows() > 0) Aall_.col(i).setZero();
+    }
 }
 
 void ConstrainedIkSolver::scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const {

@@ -18,6 +18,12 @@
 //     only as much as the targets need once the limbs alone cost more than k_root·Δ.
 //   - The root translation, the model's constant columns and DOFs outside the 47-vector stay at
 //     the start pose's (constants: the model's) values.
+//   - Held DOFs (rotate joint): each `held` entry fixes one joint angle at its value. It is
+//     removed from the unknowns (its gradient entry is 0 and its Hessian row and column are those
+//     of the identity, its Jacobian columns 0), so the step never moves it and it ends exactly at
+//     its value, while the rest of the pose is the most likely one under the prior given it
+//     (docs/maths-ik.md §7). A held DOF on a constant column or outside the 47-vector is simply
+//     set in the pose.
 //
 // Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
 //   H = ∇²L_IK (y–y and x–y blocks analytic from ∂f/∂x and ∂σ²/∂x; x–x block by central differences
@@ -77,10 +83,18 @@ const char* ikStopName(IkStop stop);  // "converged", "iteration_cap", "stalled"
 // Target weight κ for a strength in (0, 1].
 double targetWeight(double strength);
 
+// One joint angle held at a value (degrees): pose.anglesDeg[joint][axis] = valueDeg.
+struct HeldDof {
+    int joint = -1;
+    int axis = 0;  // 0, 1, 2 = x, y, z
+    double valueDeg = 0.0;
+};
+
 struct ConstrainedIkRequest {
     Pose start;                // warm start pose (root translation is kept)
     Eigen::VectorXd startX;    // warm start latent point (d)
     std::vector<IkConstraint> constraints;
+    std::vector<HeldDof> held;  // joint angles fixed at their values (none: every angle is free)
     int maxIterations = 50;
     double rootStiffness = kDefaultRootStiffness;
     std::optional<Eigen::Vector3d> rootReferenceDeg;  // r_ref; default: the start's root rotation
@@ -117,7 +131,8 @@ public:
     ConstrainedIkResult solve(const ConstrainedIkRequest& request);
 
     // F at z = (x, y) for `request` and, if `gradient` is given, its exact gradient (the tests
-    // check it against central differences). Pins are not part of F.
+    // check it against central differences). Pins are not part of F. Held DOFs' entries of the
+    // gradient are 0 (they are not unknowns).
     double objective(const ConstrainedIkRequest& request, const Eigen::VectorXd& z, Eigen::VectorXd* gradient);
     // The Hessian model H at z (after objective() at the same z with a gradient).
     const Eigen::MatrixXd& hessianModel() const { return H_; }
@@ -137,11 +152,14 @@ private:
     void scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const;
     // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
     void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
+    // Removes the held DOFs from the unknowns in g_, H_, A_ and Aall_ (and C_ when `curvature`).
+    void freezeHeld(bool curvature);
 
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     int d_ = 0, D_ = 0, n_ = 0;
     std::vector<int> yOfDof_;  // 47-index → index into y (−1 if constant)
+    std::vector<int> heldY_;   // indices into y of the request's held DOFs
     int rootY_[3] = {-1, -1, -1};
     double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)
 

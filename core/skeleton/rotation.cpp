@@ -1,5 +1,6 @@
 #include "skeleton/rotation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mgp {
@@ -35,6 +36,35 @@ Eigen::Vector3d eulerZYXFromMatrix(const Eigen::Matrix3d& r) {
         z = std::atan2(-r(0, 1), r(1, 1));
     }
     return Eigen::Vector3d(x, y, z) * kRadToDeg;
+}
+
+Eigen::Vector3d eulerFromMatrix(const Eigen::Matrix3d& r, const RotationOrder& order) {
+    // r = R_i(α) R_j(β) R_k(γ); s = +1 when (i, j, k) is cyclic (xyz, yzx, zxy), else −1.
+    const int i = order[0], j = order[1], k = order[2];
+    const double s = ((j - i + 3) % 3 == 1) ? 1.0 : -1.0;
+    const double sb = std::max(-1.0, std::min(1.0, s * r(i, k)));
+    const double beta = std::asin(sb);
+    double alpha, gamma;
+    if (std::abs(sb) < 1.0 - 1e-12) {
+        alpha = std::atan2(-s * r(j, k), r(k, k));
+        gamma = std::atan2(-s * r(i, j), r(i, i));
+    } else {  // gimbal lock: r = R_i(α) R_j(±90°) up to γ, which is set to 0
+        gamma = 0.0;
+        alpha = std::atan2(s * r(k, j), r(j, j));
+    }
+    Eigen::Vector3d out;
+    out[i] = alpha * kRadToDeg;
+    out[j] = beta * kRadToDeg;
+    out[k] = gamma * kRadToDeg;
+    return out;
+}
+
+Eigen::Vector3d eulerAlternative(const Eigen::Vector3d& anglesDeg, const RotationOrder& order) {
+    Eigen::Vector3d out = anglesDeg;
+    out[order[0]] += 180.0;
+    out[order[1]] = 180.0 - anglesDeg[order[1]];
+    out[order[2]] += 180.0;
+    return out;
 }
 
 }  // namespace mgp

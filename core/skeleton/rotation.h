@@ -24,5 +24,11 @@ Eigen::Matrix3d eulerMatrix(const Eigen::Vector3d& anglesDeg, const RotationOrde
 // Inverse of eulerMatrix for the order {Z, Y, X} (x first): returns (x, y, z) in degrees,
 // y in [-90, 90].
 Eigen::Vector3d eulerZYXFromMatrix(const Eigen::Matrix3d& r);
+// Inverse of eulerMatrix for any order of three distinct axes: returns (x, y, z) in degrees with
+// the middle axis's angle in [-90, 90] (at gimbal lock the innermost angle is 0). The other
+// solution of the same matrix is eulerAlternative of this one.
+Eigen::Vector3d eulerFromMatrix(const Eigen::Matrix3d& r, const RotationOrder& order);
+// The second Euler triple of the same rotation: outer and inner angles + 180°, middle 180° − it.
+Eigen::Vector3d eulerAlternative(const Eigen::Vector3d& anglesDeg, const RotationOrder& order);
 
 }  // namespace mgp

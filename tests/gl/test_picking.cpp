@@ -36,3 +36,22 @@ TEST_CASE("picking: the nearest handle under the pixel wins") {
     CHECK(pickHandleAtPixel(handles, cam, 5, 5, w, h) == -1);
     CHECK(pickHandle({}, cam.rayFromPixel(1, 1, w, h)) == -1);
 }
+
+TEST_CASE("picking: ray to segment distance, and the nearest bone under the ray wins") {
+    const Ray ray{glm::vec3(0, 0, 10), glm::vec3(0, 0, -1)};
+    // A segment crossing the ray 2 cm to the side, 10 cm ahead.
+    float t = -1.0f;
+    CHECK(raySegmentDistance(ray, glm::vec3(2, -5, 0), glm::vec3(2, 5, 0), &t) == doctest::Approx(2.0f).epsilon(1e-6));
+    CHECK(t == doctest::Approx(10.0f).epsilon(1e-6));
+    // Clamped to the segment's end, and to the ray's start (behind the origin does not count).
+    CHECK(raySegmentDistance(ray, glm::vec3(3, 4, 0), glm::vec3(3, 10, 0)) == doctest::Approx(5.0f).epsilon(1e-6));
+    CHECK(raySegmentDistance(ray, glm::vec3(-5, 0, 20), glm::vec3(5, 0, 20), &t) == doctest::Approx(10.0f).epsilon(1e-6));
+    CHECK(t == 0.0f);
+    // Parallel to the ray.
+    CHECK(raySegmentDistance(ray, glm::vec3(1, 0, 0), glm::vec3(1, 0, -5)) == doctest::Approx(1.0f).epsilon(1e-6));
+    const std::vector<Segment> bones{{glm::vec3(1, -5, -20), glm::vec3(1, 5, -20)},   // behind the next one
+                                             {glm::vec3(-1, -5, 0), glm::vec3(-1, 5, 0)},
+                                             {glm::vec3(8, -5, 5), glm::vec3(8, 5, 5)}};     // too far to the side
+    CHECK(pickSegment(bones, ray, 3.0f) == 1);
+    CHECK(pickSegment(bones, ray, 0.5f) == -1);
+}

@@ -1,0 +1,96 @@
+#include "edit/joint_rotation.h"
+
+namespace mgp {
+
+Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg) {
+    Pose out = pose;
+    for (int a = 0; a < 3; ++a)
+        if (skeleton.joints[joint].dof[a]) out.anglesDeg[joint][a] = anglesDeg[a];
+    return out;
+}
+
+std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg) {
+    std::vector<HeldDof> held;
+    for (int a = 0; a < 3; ++a)
+        if (skeleton.joints[joint].dof[a]) held.push_back({joint, a, anglesDeg[a]});
+    return held;
+}
+
+std::vector<IkConstraint> heldEffectors(const EditorDocument& doc) {
+    std::vector<IkConstraint> out;
+    for (int i = 0; i < kEffectorCount; ++i) {
+        const auto e = static_cast<Effector>(i);
+        if (!doc.hasEffector(e)) continue;
+        const bool foot = e == Effector::kLFoot || e == Effector::kRFoot;
+        if (!doc.pinned(e) && !(foot && doc.inContact(e) && !doc.contactReleased(e))) continue;
+        IkConstraint c;
+        c.effector = e;
+        c.pin = true;
+        c.targetCm = doc.effectorPosition(e);
+        out.push_back(c);
+    }
+    return out;
+}
+
+JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation& r, int maxIterations) {
+    JointRotationResult out;
+    if (!doc.hasClip()) {
+        out.error = "no clip: open one first";
+        return out;
+    }
+    const Skeleton& sk = doc.clip().skeleton;
+    if (r.joint < 0 || r.joint >= sk.jointCount()) {
+        out.error = "expected a joint 0.." + std::to_string(sk.jointCount() - 1) + ", found " + std::to_string(r.joint);
+        return out;
+    }
+    if (!r.anglesDeg.allFinite()) {
+        out.error = "expected finite angles, found NaN or Inf";
+        return out;
+    }
+    out.pose = rotateJoint(sk, doc.currentPose(), r.joint, r.anglesDeg);
+    if (!r.followPrior) return out;
+    const gp::ModelVersionPtr model = doc.model();
+    if (!model) {
+        out.error = "follow with the learned prior needs a model: train one or open one first";
+        return out;
+    }
+    // Warm start: the latent point that best explains the rotated pose (every DOF held, x alone
+    // free), so the solve does not start on the frame's branch of the latent space.
+    ConstrainedIkSolver solver(model);
+    ConstrainedIkRequest fit;
+    fit.start = out.pose;
+    fit.startX = doc.currentLatent();
+    for (int j = 0; j < sk.jointCount(); ++j)
+        for (int a = 0; a < 3; ++a)
+            if (sk.joints[j].dof[a]) fit.held.push_back({j, a, out.pose.anglesDeg[j][a]});
+    fit.maxIterations = maxIterations;
+    const ConstrainedIkResult fitted = solver.solve(fit);
+    ConstrainedIkRequest req;
+    req.start = out.pose;
+    req.startX = fitted.x.allFinite() && fitted.x.size() == fit.startX.size() ? fitted.x : fit.startX;
+    req.constraints = heldEffectors(doc);
+    req.held = heldDofsOf(sk, r.joint, r.anglesDeg);
+    req.maxIterations = maxIterations;
+    solver.solve(req, out.ik);
+    if (out.ik.stop == IkStop::kInvalidRequest || out.ik.stop == IkStop::kNonFinite) {
+        out.error = "the learned prior could not solve this rotation: " + out.ik.diagnostic;
+        return out;
+    }
+    out.pose = out.ik.pose;
+    out.learned = true;
+    return out;
+}
+
+std::string jointRotationLabel(const std::string& jointName, int frame) {
+    return "rotate " + jointName + " on frame " + std::to_string(frame + 1);
+}
+
+std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, JointRotationResult* result) {
+    JointRotationResult solved = solveJointRotation(doc, r);
+    if (!solved.error.empty()) return solved.error;
+    const std::string err = doc.setCurrentPose(solved.pose, jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame()));
+    if (result) *result = std::move(solved);
+    return err;
+}
+
+}  // namespace mgp

@@ -1,0 +1,48 @@
+#pragma once
+// Rotate joint: set one joint's DOFs directly, in degrees, as one undo step; optionally the rest
+// of the pose follows the learned prior (docs/maths-ik.md §7).
+//
+//   plain          only that joint's animated angles change (its subtree turns with it);
+//   follow prior   those angles are held at the user's values and the rest of the pose (latent
+//                  point and free DOFs) is re-solved to the most likely pose under the model,
+//                  min over (x, free y) of L_IK, with the pinned effectors and the feet in ground
+//                  contact held where they are on the frame (ConstrainedIkSolver with held DOFs),
+//                  warm-started at the latent point that best explains the rotated pose.
+#include <Eigen/Core>
+#include <string>
+
+#include "edit/editor_document.h"
+#include "ik/constrained_ik.h"
+
+namespace mgp {
+
+struct JointRotation {
+    int joint = -1;
+    Eigen::Vector3d anglesDeg = Eigen::Vector3d::Zero();  // (x, y, z); axes the joint lacks are ignored
+    bool followPrior = false;
+};
+
+struct JointRotationResult {
+    std::string error;       // "" when `pose` is the rotated pose
+    Pose pose;
+    bool learned = false;    // the prior re-solved the rest of the pose
+    ConstrainedIkResult ik;  // the solve, when learned
+};
+
+// `pose` with joint's animated angles set to anglesDeg (the others untouched).
+Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg);
+// The held DOFs of a rotation: one per axis the joint animates.
+std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg);
+// The document's pins and feet in contact (not released) on the current frame, at their current
+// positions: what a rotation with the prior holds.
+std::vector<IkConstraint> heldEffectors(const EditorDocument& doc);
+
+// The rotated current pose (nothing changes in the document). With followPrior and no model,
+// the error says so.
+JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation& rotation, int maxIterations = 200);
+// Solves and applies it as one undo step "rotate JOINT on frame N"; "" or why not.
+std::string applyJointRotation(EditorDocument& doc, const JointRotation& rotation, JointRotationResult* out = nullptr);
+// The undo label of a rotation of `jointName` on 0-based `frame`.
+std::string jointRotationLabel(const std::string& jointName, int frame);
+
+}  // namespace mgp

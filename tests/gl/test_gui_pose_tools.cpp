@@ -1,0 +1,155 @@
+// Mirror pose and rotate joint in the editor (label `gl`), offscreen: the shortcut, the menu's
+// action, the Rotate joint window's slider gesture (a live preview, then one undo step) and the
+// learned prior option with pinned feet.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <initializer_list>
+
+#include "edit/joint_rotation.h"
+#include "skeleton/forward_kinematics.h"
+#include "editor_app.h"
+#include "editor_harness.h"
+#include "gui_script.h"
+#include "input_state.h"
+
+using namespace mgp;
+
+namespace {
+
+using test::Harness;
+namespace key = ui::key;
+
+void tapKey(Harness& h, int k, std::initializer_list<int> mods = {}) {
+    for (int m : mods) h.input.setKey(m, true);
+    h.input.setKey(k, true);
+    h.input.setKey(k, false);
+    for (int m : mods) h.input.setKey(m, false);
+    h.frame(3);
+}
+
+}  // namespace
+
+TEST_CASE("gui pose tools: Ctrl+Shift+M mirrors the pose as one undo step, and the script action does the same") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(30);
+    h->frame(1);
+    const Pose before = doc.currentPose();
+    const Skeleton& sk = doc.clip().skeleton;
+    const int lh = sk.findBone("lhumerus"), rh = sk.findBone("rhumerus");
+    tapKey(*h, 'M', {key::kLeftCtrl, key::kLeftShift});
+    REQUIRE(doc.isEdited(30));
+    CHECK(doc.undoLabel() == "mirror pose on frame 31");
+    CHECK(doc.currentPose().anglesDeg[lh][0] == before.anglesDeg[rh][0]);
+    CHECK(doc.currentPose().anglesDeg[lh][2] == -before.anglesDeg[rh][2]);
+    REQUIRE(s.messages.current() != nullptr);
+    CHECK(s.messages.current()->text.find("mirrored the pose of frame 31") != std::string::npos);
+    tapKey(*h, 'Z', {key::kLeftCtrl});
+    CHECK_FALSE(doc.isEdited(30));
+    CHECK(h->app->runAction({"mirror-pose"}) == "");
+    CHECK(doc.undoLabel() == "mirror pose on frame 31");
+    const auto errors = h->play(ui::GuiScript::parse("1 action mirror-pose\n"));
+    REQUIRE(errors.empty());
+    for (int j = 1; j < sk.jointCount(); ++j) CHECK((doc.currentPose().anglesDeg[j] - before.anglesDeg[j]).cwiseAbs().maxCoeff() < 1e-9);
+}
+
+TEST_CASE("gui pose tools: dragging a Rotate joint slider previews, then changes only that joint's DOFs as one undo step") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(50);
+    REQUIRE(h->app->runAction({"rotate-joint"}) == "");
+    h->frame(3);
+    REQUIRE(h->app->jointWindow().shown());
+    const Skeleton& sk = doc.clip().skeleton;
+    const int j = h->app->jointWindow().joint();
+    REQUIRE(j == sk.findBone("lhumerus"));
+    REQUIRE(s.controls.count("rotate joint: rx"));
+    const auto rect = s.controls.at("rotate joint: rx");
+    REQUIRE(rect.visible);
+    const Pose before = doc.currentPose();
+    const bool couldUndo = doc.canUndo();
+    h->input.mouseX = 0.5f * (rect.x0 + rect.x1);
+    h->input.mouseY = 0.5f * (rect.y0 + rect.y1);
+    h->frame(2);
+    h->input.setButton(0, true);
+    h->frame(2);
+    h->input.mouseX += 40.0f;
+    h->frame(2);
+    h->input.mouseX += 30.0f;
+    h->frame(2);
+    // During the gesture: a preview, and nothing in the document yet.
+    CHECK(s.posePreview.has_value());
+    CHECK_FALSE(doc.isEdited(50));
+    h->input.setButton(0, false);
+    h->frame(3);
+    CHECK_FALSE(s.posePreview.has_value());
+    REQUIRE(doc.isEdited(50));
+    CHECK(doc.undoLabel() == "rotate lhumerus on frame 51");
+    const Pose& after = doc.currentPose();
+    CHECK(after.rootCm == before.rootCm);
+    CHECK(after.anglesDeg[j][0] > before.anglesDeg[j][0] + 1.0);  // dragged right: a larger angle
+    for (int k = 0; k < sk.jointCount(); ++k)
+        if (k != j) CHECK(after.anglesDeg[k] == before.anglesDeg[k]);
+    CHECK(after.anglesDeg[j][1] == before.anglesDeg[j][1]);
+    CHECK(after.anglesDeg[j][2] == before.anglesDeg[j][2]);
+    REQUIRE(doc.undo() == "");
+    CHECK_FALSE(doc.isEdited(50));
+    CHECK(doc.canUndo() == couldUndo);  // the whole gesture was one step
+}
+
+TEST_CASE("gui pose tools: rotate-joint with the learned prior holds the joint's values and the pinned feet") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    const auto errors = h->play(ui::GuiScript::parse("1 action frame 61\n2 action pin lfoot\n3 action pin rfoot\n"
+                                                     "4 action follow-prior on\n5 action rotate-joint lowerback 20 0 5\n"));
+    REQUIRE(errors.empty());
+    const Skeleton& sk = doc.clip().skeleton;
+    const int j = sk.findBone("lowerback");
+    REQUIRE(doc.isEdited(60));
+    CHECK(doc.undoLabel() == "rotate lowerback on frame 61");
+    CHECK(std::abs(doc.currentPose().anglesDeg[j][0] - 20.0) <= 1e-6);
+    CHECK(std::abs(doc.currentPose().anglesDeg[j][1]) <= 1e-6);
+    CHECK(std::abs(doc.currentPose().anglesDeg[j][2] - 5.0) <= 1e-6);
+    const Pose captured = doc.clip().frames[60];
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        CHECK((effectorCm(sk, doc.currentPose(), foot) - effectorCm(sk, captured, foot)).norm() <= 0.05);
+    REQUIRE(s.messages.current() != nullptr);
+    CHECK(s.messages.current()->text.find("the prior re-solved the rest") != std::string::npos);
+    // A wrong number of angles says how many the joint takes.
+    const std::string err = h->app->runAction({"rotate-joint", "ltibia", "10", "20"});
+    CHECK(err.find("expected 1 angle for ltibia (x), found 2") != std::string::npos);
+    CHECK(h->app->runAction({"rotate-joint", "nosuchbone", "1"}).find("unknown joint") != std::string::npos);
+}
+
+TEST_CASE("gui pose tools: with the Rotate joint window shown, clicking a bone in the viewport picks its joint") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    const Skeleton& sk = s.doc.clip().skeleton;
+    REQUIRE(h->app->runAction({"rotate-joint"}) == "");
+    h->frame(3);
+    for (const char* bone : {"rtibia", "lfemur"}) {
+        CAPTURE(std::string(bone));
+        const int j = sk.findBone(bone);
+        FkState fk;
+        forwardKinematics(sk, s.doc.currentPose(), fk);
+        const Eigen::Vector3d mid = 0.5 * (fk.jointCm[j] + boneEndCm(sk, fk, j));
+        glm::vec3 p;
+        REQUIRE(s.camera.project(glm::vec3(float(mid.x()), float(mid.y()), float(mid.z())), s.viewportWidth, s.viewportHeight, p));
+        h->input.mouseX = s.viewportX + p.x;
+        h->input.mouseY = s.viewportY + p.y;
+        h->frame(2);
+        h->input.setButton(0, true);
+        h->input.setButton(0, false);
+        h->frame(4);
+        CHECK(h->app->jointWindow().joint() == j);
+    }
+    CHECK_FALSE(s.doc.canUndo());  // picking is not an edit
+}

@@ -1,0 +1,201 @@
+// Rotate joint (docs/maths-ik.md §7) and mirror pose on the document (docs/maths.md §21): held
+// DOFs in the constrained solver (gradient against central differences), the prior's pose against
+// the plain rotation, one undo step each.
+#include <cmath>
+
+#include "edit/joint_rotation.h"
+#include "edit/mirror_edit.h"
+#include "ik/constrained_ik.h"
+#include "skeleton/pose_mirror.h"
+#include "document_helpers.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+
+// The index into z = (x, y) of pose DOF (joint, axis), −1 when it is not a kept column.
+int zIndexOf(const gp::GpModel& m, int joint, int axis) {
+    const PoseLayout layout(m.clip.skeleton);
+    for (int dof = 0; dof < kPoseDofs; ++dof)
+        if (layout.joint(dof) == joint && layout.axis(dof) == axis)
+            for (int k = 0; k < m.D(); ++k)
+                if (m.keptColumns[k] == dof) return m.latentDim() + k;
+    return -1;
+}
+
+// min over x of L_IK(x, y(pose)): every kept DOF held, only the latent point free.
+double bestLik(const gp::ModelVersionPtr& v, const Pose& pose, const Eigen::VectorXd& startX) {
+    const Skeleton& sk = v->model->clip.skeleton;
+    ConstrainedIkRequest req;
+    req.start = pose;
+    req.startX = startX;
+    for (int j = 0; j < sk.jointCount(); ++j)
+        for (int a = 0; a < 3; ++a)
+            if (sk.joints[j].dof[a]) req.held.push_back({j, a, pose.anglesDeg[j][a]});
+    req.maxIterations = 200;
+    ConstrainedIkSolver solver(v);
+    const ConstrainedIkResult r = solver.solve(req);
+    REQUIRE(r.stop != IkStop::kInvalidRequest);
+    return r.lik;
+}
+
+}  // namespace
+
+TEST_CASE("constrained IK with held DOFs: ∇F over the free unknowns matches central differences, held entries are 0") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    const Skeleton& sk = m.clip.skeleton;
+    ConstrainedIkSolver solver(version);
+    ConstrainedIkRequest req;
+    req.start = m.clip.frames[100];
+    req.startX = latentStartForFrame(*version, 100);
+    const int humerus = sk.findBone("lhumerus"), tibia = sk.findBone("rtibia");
+    req.held = {{humerus, 0, 20.0}, {humerus, 1, -10.0}, {humerus, 2, 35.0}, {tibia, 0, 40.0}};
+    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
+                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
+    Eigen::VectorXd z = solver.startPoint(req);
+    std::vector<int> held;
+    for (const HeldDof& h : req.held) {
+        const int i = zIndexOf(m, h.joint, h.axis);
+        REQUIRE(i >= 0);
+        CHECK(z[i] == h.valueDeg);  // the start point carries the held values
+        held.push_back(i);
+    }
+    const int d = m.latentDim();
+    z.head(d).array() += 0.05;
+    for (int k = d; k < z.size(); ++k) z[k] += 0.3 * std::sin(k);
+    Eigen::VectorXd g;
+    solver.objective(req, z, &g);
+    const Eigen::MatrixXd H = solver.hessianModel();
+    double worst = 0.0;
+    for (int i = 0; i < z.size(); ++i) {
+        if (std::find(held.begin(), held.end(), i) != held.end()) {
+            CHECK(g[i] == 0.0);
+            CHECK(H(i, i) == 1.0);
+            CHECK((H.row(i).cwiseAbs().sum() - 1.0) == 0.0);
+            continue;
+        }
+        const double h = 1e-6;
+        Eigen::VectorXd zp = z, zm = z;
+        zp[i] += h;
+        zm[i] -= h;
+        const double numeric = (solver.objective(req, zp, nullptr) - solver.objective(req, zm, nullptr)) / (2 * h);
+        worst = std::max(worst, std::abs(numeric - g[i]));
+    }
+    MESSAGE("∇F with held DOFs: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());
+    CHECK(worst < 1e-6 * g.cwiseAbs().maxCoeff());
+    // A held DOF named twice or out of range is refused with a message.
+    ConstrainedIkRequest bad = req;
+    bad.held.push_back(bad.held.front());
+    CHECK(solver.validate(bad).find("twice") != std::string::npos);
+    bad.held = {{sk.jointCount(), 0, 1.0}};
+    CHECK(solver.validate(bad).find("expected a held DOF") != std::string::npos);
+}
+
+TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins hold, L_IK below the plain rotation's") {
+    const auto version = test::walkModel35();
+    EditorDocument doc;
+    doc.setModel(version, true);
+    doc.setFrame(60);
+    doc.setPinned(Effector::kLFoot, true);
+    doc.setPinned(Effector::kRFoot, true);
+    const Skeleton& sk = doc.clip().skeleton;
+    const Pose before = doc.currentPose();
+    struct Case {
+        const char* bone;
+        Eigen::Vector3d delta;
+    };
+    for (const Case c : {Case{"lhumerus", {30.0, -20.0, 15.0}}, Case{"lowerback", {15.0, 0.0, 0.0}}, Case{"rfemur", {-25.0, 0.0, 0.0}}}) {
+        CAPTURE(c.bone);
+        const int j = sk.findBone(c.bone);
+        REQUIRE(j >= 0);
+        JointRotation rot;
+        rot.joint = j;
+        rot.anglesDeg = before.anglesDeg[j] + c.delta;
+        const JointRotationResult plain = solveJointRotation(doc, rot);
+        REQUIRE(plain.error.empty());
+        rot.followPrior = true;
+        const JointRotationResult prior = solveJointRotation(doc, rot);
+        REQUIRE(prior.error.empty());
+        CHECK(prior.learned);
+        double heldErr = 0.0;
+        for (int a = 0; a < 3; ++a)
+            if (sk.joints[j].dof[a]) heldErr = std::max(heldErr, std::abs(prior.pose.anglesDeg[j][a] - rot.anglesDeg[a]));
+        double pinErr = 0.0;
+        for (const IkConstraintResult& cr : prior.ik.constraints) pinErr = std::max(pinErr, cr.residualCm);
+        const Eigen::VectorXd x0 = doc.currentLatent();
+        const double likPlain = bestLik(version, plain.pose, x0);
+        double plainPinMove = 0.0;
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+            plainPinMove = std::max(plainPinMove, (effectorCm(sk, plain.pose, foot) - effectorCm(sk, before, foot)).norm());
+        MESSAGE(c.bone << " +" << c.delta.transpose() << ": held DOFs " << heldErr << " deg, pins " << pinErr
+                       << " cm, L_IK prior " << prior.ik.lik << " vs plain (best x) " << likPlain << ", " << prior.ik.iterations
+                       << " iterations, " << ikStopName(prior.ik.stop) << "; the plain rotation moves a pinned foot by " << plainPinMove << " cm");
+        CHECK(heldErr <= 1e-6);
+        CHECK(prior.ik.constraints.size() == 2);
+        CHECK(pinErr <= 0.05);
+        // Where the plain pose keeps the pins it is a candidate of the prior's problem, so the
+        // prior's pose must be at least as likely; where it moves a pinned foot (the femur) it is
+        // not, and only the pins are compared.
+        if (plainPinMove < 1e-9) CHECK(prior.ik.lik < likPlain);
+        else CHECK(plainPinMove > 1.0);
+        CHECK(prior.pose.rootCm == before.rootCm);
+    }
+    CHECK(test::samePose(doc.currentPose(), before));  // solving changes nothing in the document
+}
+
+TEST_CASE("rotate joint: the plain rotation changes exactly that joint's DOFs and is one undo step") {
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setFrame(12);
+    const Pose before = doc.currentPose();
+    const Skeleton& sk = doc.clip().skeleton;
+    const int j = sk.findBone("ltibia");
+    JointRotation rot;
+    rot.joint = j;
+    rot.anglesDeg = Eigen::Vector3d(75.0, 5.0, 5.0);  // the tibia animates x only: y and z are ignored
+    REQUIRE(applyJointRotation(doc, rot) == "");
+    const Pose& after = doc.currentPose();
+    CHECK(after.rootCm == before.rootCm);
+    for (int k = 0; k < sk.jointCount(); ++k)
+        for (int a = 0; a < 3; ++a) {
+            if (k == j && a == 0) CHECK(after.anglesDeg[k][a] == 75.0);
+            else CHECK(after.anglesDeg[k][a] == before.anglesDeg[k][a]);
+        }
+    CHECK(doc.undoLabel() == "rotate ltibia on frame 13");
+    REQUIRE(doc.undo() == "");
+    CHECK(test::samePose(doc.currentPose(), before));
+    CHECK_FALSE(doc.canUndo());
+    // Without a model the prior option says why, and nothing changes.
+    EditorDocument bare;
+    bare.setClip(doc.clip());
+    rot.followPrior = true;
+    const std::string err = applyJointRotation(bare, rot);
+    CHECK(err.find("needs a model") != std::string::npos);
+    CHECK_FALSE(bare.canUndo());
+    rot.joint = 999;
+    CHECK(applyJointRotation(bare, rot).find("expected a joint") != std::string::npos);
+}
+
+TEST_CASE("mirror pose on the document is one undo step, and mirroring twice restores the pose") {
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setFrame(40);
+    const Pose before = doc.currentPose();
+    REQUIRE(mirrorCurrentPose(doc) == "");
+    CHECK(doc.undoLabel() == "mirror pose on frame 41");
+    const Skeleton& sk = doc.clip().skeleton;
+    // The left femur now has the right femur's flexion (x kept, y and z negated: mirror-symmetric axes).
+    const int lf = sk.findBone("lfemur"), rf = sk.findBone("rfemur");
+    CHECK(doc.currentPose().anglesDeg[lf][0] == before.anglesDeg[rf][0]);
+    CHECK(doc.currentPose().anglesDeg[lf][1] == -before.anglesDeg[rf][1]);
+    REQUIRE(mirrorCurrentPose(doc) == "");
+    for (int k = 1; k < sk.jointCount(); ++k) CHECK((doc.currentPose().anglesDeg[k] - before.anglesDeg[k]).cwiseAbs().maxCoeff() < 1e-9);
+    REQUIRE(doc.undo() == "");
+    REQUIRE(doc.undo() == "");
+    CHECK(test::samePose(doc.currentPose(), before));
+    EditorDocument empty;
+    CHECK(mirrorCurrentPose(empty).find("no clip") != std::string::npos);
+}

@@ -1,0 +1,41 @@
+#pragma once
+// Edit > Rotate joint: pick one joint (the combo, or click its bone in the viewport while the
+// window is shown) and set its DOFs in degrees (core/edit/joint_rotation.h).
+// A slider gesture previews the pose in the viewport (EditorState::posePreview) and becomes one
+// undo step on release, through the `rotate-joint` action. "Follow with learned prior" re-solves
+// the rest of the pose under the model, pins and feet in contact held.
+#include <Eigen/Core>
+#include <string>
+
+namespace mgp::ui {
+
+class EditorApp;
+
+class JointRotationWindow {
+public:
+    void show() { open_ = true; }
+    bool shown() const { return open_; }
+    bool followPrior() const { return followPrior_; }
+    void setFollowPrior(bool on) { followPrior_ = on; }
+    // The joint the window edits (-1 none); selects it and shows the window.
+    void selectJoint(int joint) {
+        joint_ = joint;
+        open_ = true;
+    }
+    int joint() const { return joint_; }
+    const std::string& readout() const { return readout_; }  // the last solve, one line
+    void setReadout(std::string text) { readout_ = std::move(text); }
+
+    // Draws the window while shown.
+    void draw(EditorApp& app);
+
+private:
+    bool open_ = false;
+    bool followPrior_ = false;
+    int joint_ = -1;
+    bool gesture_ = false;  // a slider is being dragged (its preview is on screen)
+    Eigen::Vector3d values_ = Eigen::Vector3d::Zero();
+    std::string readout_;
+};
+
+}  // namespace mgp::ui
