@@ -1,10 +1,12 @@
 // `motiongp bench --only ui`: editor frame time at 1280×720 on the offscreen context (llvmpipe
 // here), the whole UI (ImGui panels, viewport without MSAA, latent map) while dragging the right
 // foot with live learned IK. Drags are released between rounds, so adaptive updates and the
-// latent-map recomputation (a 160×160 σ² image on a worker thread) run during later rounds.
+// latent-map recomputation (a 160×160 σ² image on a worker thread) run during later rounds. A
+// second pass of the same drags reports where the time goes (drag_profile_seconds).
 #include <GL/gl.h>
 
 #include <filesystem>
+#include <functional>
 
 #include "bench_registry.h"
 #include "editor_app.h"
@@ -41,25 +43,43 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     std::vector<double> idle, drag;
     for (int i = 0; i < 30; ++i) idle.push_back(secondsOf(frame));
     const int rounds = ctx.quick ? 2 : std::max(3, ctx.repeats);
-    int dragFrames = 0;
-    for (int r = 0; r < rounds; ++r) {
-        float x, y;
-        if (!app.handleScreenPosition(Effector::kRFoot, x, y)) break;
-        in.mouseX = x;
-        in.mouseY = y;
-        frame();
-        in.mouseDown[0] = true;
-        frame();
-        // Up 30 px and back in 1.5 px steps (0.25–0.5 cm per event at this zoom), like a hand on a mouse.
-        for (int k = 0; k < 40; ++k) {
-            in.mouseY += k < 20 ? -1.5f : 1.5f;
-            drag.push_back(secondsOf(frame));
-            ++dragFrames;
+    // Drags the right foot up 30 px and back in 1.5 px steps (0.25–0.5 cm per event at this zoom),
+    // like a hand on a mouse, `rounds` times; `perFrame` runs after each drag frame.
+    auto dragRounds = [&](const std::function<void(double)>& perFrame) {
+        for (int r = 0; r < rounds; ++r) {
+            float x, y;
+            if (!app.handleScreenPosition(Effector::kRFoot, x, y)) break;
+            in.mouseX = x;
+            in.mouseY = y;
+            frame();
+            in.mouseDown[0] = true;
+            frame();
+            for (int k = 0; k < 40; ++k) {
+                in.mouseY += k < 20 ? -1.5f : 1.5f;
+                perFrame(secondsOf(frame));
+            }
+            in.mouseDown[0] = false;
+            frame();
         }
-        in.mouseDown[0] = false;
-        frame();
-    }
-    app.waitIdle();
+        app.waitIdle();
+    };
+    dragRounds([&](double seconds) { drag.push_back(seconds); });
+    const int dragFrames = static_cast<int>(drag.size());
+    // The same drags again with every phase ending in glFinish (ui/frame_profile.h): where a
+    // dragging frame's time goes. The stalls make these frames a little longer than the above.
+    ui::FrameProfile& profile = app.state().profile;
+    profile.measure = true;
+    std::vector<double> pFrame, pSolve, pScene, pRender, pUpload, pRest;
+    dragRounds([&](double seconds) {
+        pFrame.push_back(seconds);
+        pSolve.push_back(profile.solveSeconds);
+        pScene.push_back(profile.sceneSeconds);
+        pRender.push_back(profile.imguiRenderSeconds);
+        pUpload.push_back(profile.latentUploadSeconds);
+        pRest.push_back(seconds - profile.solveSeconds - profile.sceneSeconds - profile.imguiRenderSeconds -
+                        profile.latentUploadSeconds);
+    });
+    profile.measure = false;
     // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
     // UI frame that is the renderer's, not the editor's.
     std::vector<double> sceneOnly;
@@ -88,6 +108,12 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     j["drag_frames"] = dragFrames;
     j["scene_only_seconds"] = summarizeSeconds(sceneOnly);
     j["scene_only_size"] = {kW - 380, kH - 123};
+    j["drag_profile_seconds"] = {{"frame", summarizeSeconds(pFrame)},
+                                 {"ik_solve", summarizeSeconds(pSolve)},
+                                 {"scene_draw", summarizeSeconds(pScene)},
+                                 {"imgui_render", summarizeSeconds(pRender)},
+                                 {"latent_upload", summarizeSeconds(pUpload)},
+                                 {"panels_and_rest", summarizeSeconds(pRest)}};
     j["adaptive_updates"] = app.state().doc.adaptiveUpdates();
     j["latent_map_texels"] = 160 * 160;
     j["target_seconds"] = 0.016;

@@ -237,3 +237,18 @@ TEST_CASE("background worker: dropQueued forgets requests not yet started, the r
     worker.waitIdle();
     CHECK(r.order() == std::vector<int>{1});
 }
+
+TEST_CASE("background worker: held, no queued request starts until released") {
+    Recorder r;
+    IntWorker worker(WorkerPolicy::kEveryRequest, jobOf(r));
+    worker.hold(true);
+    worker.post(2);
+    worker.post(3);
+    CHECK(worker.pending() == 2);
+    worker.dropQueued();  // had either started, it would have run: held, neither did
+    worker.post(4);
+    worker.hold(false);
+    worker.waitIdle();
+    CHECK(r.order() == std::vector<int>{4});
+    CHECK(worker.take() == 40);
+}

@@ -5,6 +5,7 @@
 // derivative of FK (core/skeleton/forward_kinematics.h).
 #include <cmath>
 
+#include "central_difference.h"
 #include "ik/constrained_ik.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -79,11 +80,8 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
     // Gradient: relative to |g|∞ (the exact target's κ makes it large).
     double worst = 0.0;
     for (int i = 0; i < z.size(); ++i) {
-        const double h = 1e-6;
-        Eigen::VectorXd zp = z, zm = z;
-        zp[i] += h;
-        zm[i] -= h;
-        const double numeric = (solver.objective(req, zp, nullptr) - solver.objective(req, zm, nullptr)) / (2 * h);
+        const double numeric =
+            test::centralDifference([&](const Eigen::VectorXd& v) { return solver.objective(req, v, nullptr); }, z, i);
         worst = std::max(worst, std::abs(numeric - g[i]));
     }
     MESSAGE("∇F: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());

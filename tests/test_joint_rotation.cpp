@@ -3,6 +3,7 @@
 // the plain rotation, one undo step each.
 #include <cmath>
 
+#include "central_difference.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "ik/constrained_ik.h"
@@ -77,11 +78,8 @@ TEST_CASE("constrained IK with held DOFs: ∇F over the free unknowns matches ce
             CHECK((H.row(i).cwiseAbs().sum() - 1.0) == 0.0);
             continue;
         }
-        const double h = 1e-6;
-        Eigen::VectorXd zp = z, zm = z;
-        zp[i] += h;
-        zm[i] -= h;
-        const double numeric = (solver.objective(req, zp, nullptr) - solver.objective(req, zm, nullptr)) / (2 * h);
+        const double numeric =
+            test::centralDifference([&](const Eigen::VectorXd& v) { return solver.objective(req, v, nullptr); }, z, i);
         worst = std::max(worst, std::abs(numeric - g[i]));
     }
     MESSAGE("∇F with held DOFs: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());

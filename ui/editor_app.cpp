@@ -8,11 +8,8 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 
-#include "action_args.h"
-#include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "edit/session_mapping.h"
 #include "gp/model_file.h"
@@ -380,44 +377,7 @@ std::string EditorApp::rotateJoint(const std::vector<std::string>& a) {
         jointWindow_.show();
         return "";
     }
-    EditorDocument& doc = state_.doc;
-    if (!doc.hasClip()) return "no clip: open one first";
-    const Skeleton& sk = doc.clip().skeleton;
-    const int joint = sk.findJoint(a[0]) >= 0 ? sk.findJoint(a[0]) : sk.findBone(a[0]);
-    if (joint < 0) return "rotate-joint: unknown joint '" + a[0] + "'";
-    const Joint& jt = sk.joints[joint];
-    std::string axes;
-    for (int k = 0; k < 3; ++k)
-        if (jt.dof[k]) axes += std::string(axes.empty() ? "" : " ") + "xyz"[k];
-    const std::size_t want = (jt.dof[0] ? 1 : 0) + (jt.dof[1] ? 1 : 0) + (jt.dof[2] ? 1 : 0);
-    if (want == 0) return "rotate-joint: " + jt.name + " has no rotation DOFs";
-    if (a.size() - 1 != want)
-        return "rotate-joint: expected " + std::to_string(want) + " angle" + (want > 1 ? "s" : "") + " for " + jt.name + " (" + axes +
-               "), found " + std::to_string(a.size() - 1);
-    JointRotation rot;
-    rot.joint = joint;
-    rot.anglesDeg = doc.currentPose().anglesDeg[joint];
-    rot.followPrior = jointWindow_.followPrior();
-    std::size_t next = 1;
-    for (int k = 0; k < 3; ++k)
-        if (jt.dof[k])
-            if (std::string err = parseFloatArg(a[next++], "an angle in degrees", rot.anglesDeg[k]); !err.empty()) return err;
-    JointRotationResult result;
-    const std::string err = applyJointRotation(doc, rot, &result);
-    if (!err.empty()) return err;
-    jointWindow_.selectJoint(joint);
-    std::string text = "rotated " + jt.name + " on frame " + std::to_string(doc.frame() + 1);
-    if (result.learned) {
-        double worst = 0.0;
-        for (const IkConstraintResult& c : result.ik.constraints) worst = std::max(worst, c.residualCm);
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)", result.ik.lik,
-                      result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst, ikStopName(result.ik.stop));
-        text += buf;
-    }
-    jointWindow_.setReadout(text);
-    state_.setStatus(text);
-    return "";
+    return jointWindow_.rotate(state_, a);
 }
 
 void EditorApp::dialogs() {
@@ -498,6 +458,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     in.chars.clear();
 
     state_.uiSeconds += io.DeltaTime;
+    state_.profile.beginFrame();
     pollJobs();
     if (autosave_.due(secondsNow(), dirty(), state_.doc.revision())) autosaveNow();
     TimelinePanel::advance(state_, io.DeltaTime);
@@ -523,6 +484,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const PhaseTimer timer(state_.profile, state_.profile.imguiRenderSeconds);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

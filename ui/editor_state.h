@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_profile.h"
 #include "camera.h"
 #include "edit/editor_document.h"
 #include "edit/training_job.h"
@@ -45,6 +46,7 @@ struct EditorState {
     // Rotate joint: the pose a slider gesture would give, drawn instead of the frame's pose until
     // the gesture ends (joint_rotation_window.h); none otherwise.
     std::optional<Pose> posePreview;
+    FrameProfile profile;  // where the last frame's time went (bench --only ui)
 
     // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
     int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "action_args.h"
 #include "edit/joint_rotation.h"
 #include "editor_app.h"
 
@@ -101,6 +102,47 @@ void JointRotationWindow::draw(EditorApp& app) {
         s.posePreview.reset();
         gesture_ = false;
     }
+}
+
+std::string JointRotationWindow::rotate(EditorState& state, const std::vector<std::string>& a) {
+    EditorDocument& doc = state.doc;
+    if (!doc.hasClip()) return "no clip: open one first";
+    const Skeleton& sk = doc.clip().skeleton;
+    const int joint = sk.findJoint(a[0]) >= 0 ? sk.findJoint(a[0]) : sk.findBone(a[0]);
+    if (joint < 0) return "rotate-joint: unknown joint '" + a[0] + "'";
+    const Joint& jt = sk.joints[joint];
+    std::string axes;
+    for (int k = 0; k < 3; ++k)
+        if (jt.dof[k]) axes += std::string(axes.empty() ? "" : " ") + "xyz"[k];
+    const std::size_t want = (jt.dof[0] ? 1 : 0) + (jt.dof[1] ? 1 : 0) + (jt.dof[2] ? 1 : 0);
+    if (want == 0) return "rotate-joint: " + jt.name + " has no rotation DOFs";
+    if (a.size() - 1 != want)
+        return "rotate-joint: expected " + std::to_string(want) + " angle" + (want > 1 ? "s" : "") + " for " + jt.name + " (" + axes +
+               "), found " + std::to_string(a.size() - 1);
+    JointRotation rot;
+    rot.joint = joint;
+    rot.anglesDeg = doc.currentPose().anglesDeg[joint];
+    rot.followPrior = followPrior_;
+    std::size_t next = 1;
+    for (int k = 0; k < 3; ++k)
+        if (jt.dof[k])
+            if (std::string err = parseFloatArg(a[next++], "an angle in degrees", rot.anglesDeg[k]); !err.empty()) return err;
+    JointRotationResult result;
+    const std::string err = applyJointRotation(doc, rot, &result);
+    if (!err.empty()) return err;
+    selectJoint(joint);
+    std::string text = "rotated " + jt.name + " on frame " + std::to_string(doc.frame() + 1);
+    if (result.learned) {
+        double worst = 0.0;
+        for (const IkConstraintResult& c : result.ik.constraints) worst = std::max(worst, c.residualCm);
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)", result.ik.lik,
+                      result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst, ikStopName(result.ik.stop));
+        text += buf;
+    }
+    readout_ = text;
+    state.setStatus(text);
+    return "";
 }
 
 }  // namespace mgp::ui

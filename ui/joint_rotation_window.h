@@ -6,10 +6,12 @@
 // the rest of the pose under the model, pins and feet in contact held.
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace mgp::ui {
 
 class EditorApp;
+struct EditorState;
 
 class JointRotationWindow {
 public:
@@ -28,6 +30,10 @@ public:
 
     // Draws the window while shown.
     void draw(EditorApp& app);
+    // The `rotate-joint JOINT ANGLE...` action: one angle per DOF the joint has (degrees, strict
+    // parsing), applied as one undo step, with the prior when the window's option is on.
+    // "" or why not.
+    std::string rotate(EditorState& state, const std::vector<std::string>& args);
 
 private:
     bool open_ = false;

@@ -60,6 +60,7 @@ void LatentMapPanel::draw(EditorState& s) {
     prefetch(s);
     LatentImage fresh;
     if (worker_.take(fresh)) {
+        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
         if (!texture_) glGenTextures(1, &texture_);
         glBindTexture(GL_TEXTURE_2D, texture_);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

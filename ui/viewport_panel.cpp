@@ -273,8 +273,10 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 Eigen::Vector3d hit;
                 const bool ok = s.dragAxis >= 0 ? dragAxisPoint(s.camera, mx, my, width_, height_, s.dragStartCm, s.dragAxis, hit)
                                                 : dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit);
+                const PhaseTimer timer(s.profile, s.profile.solveSeconds);
                 if (ok) doc.dragTo(hit, 50);
             } else {
+                const PhaseTimer timer(s.profile, s.profile.solveSeconds);
                 doc.refine(50);  // the user holds still: keep converging
             }
             break;
@@ -480,6 +482,7 @@ void ViewportPanel::draw(EditorState& s) {
         sig.push_back(scene.groundHeightCm);
         lastScene_ = scene;
         if (sig != lastSignature_) {
+            const PhaseTimer timer(s.profile, s.profile.sceneSeconds);
             renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             lastSignature_ = std::move(sig);

@@ -51,6 +51,8 @@ public:
     void setListener(std::function<void(const AdaptiveReport&)> listener);
     // Blocks until every posted update has finished (tests, batch commands).
     void waitIdle() { worker_.waitIdle(); }
+    // Holds queued updates back (tests: an update that is still pending, deterministically).
+    void hold(bool on) { worker_.hold(on); }
     int pending() const { return worker_.pending(); }
 
 private:

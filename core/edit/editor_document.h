@@ -99,6 +99,8 @@ public:
     void setAdaptiveEnabled(bool on);
     bool adaptiveEnabled() const { return models_.adaptiveEnabled(); }
     int adaptivePending() const { return models_.pending(); }
+    // Holds posted adaptive updates back until released (tests: "update running" without a race).
+    void holdAdaptiveUpdates(bool on) { models_.holdUpdates(on); }
     std::string adaptiveStatus() const { return models_.status(); }  // last update's outcome, "" if none yet
     int adaptiveUpdates() const { return models_.updates(); }
     // Every update since the model was installed, oldest first.

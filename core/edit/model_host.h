@@ -71,6 +71,10 @@ public:
     bool restore(const gp::ModelVersionPtr& version);
 
     void waitIdle();  // every posted update finished
+    // Holds posted updates back until released (tests; see BackgroundWorker::hold).
+    void holdUpdates(bool on) {
+        if (worker_) worker_->hold(on);
+    }
 
 private:
     std::function<void()> onAccepted_;

@@ -96,6 +96,16 @@ public:
         cancel_.store(true);
     }
 
+    // While held, queued requests wait and none starts (the running one finishes); waitIdle()
+    // would then wait for the release. Tests use it to look at a state that is otherwise a race.
+    void hold(bool on) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            held_ = on;
+        }
+        wake_.notify_all();
+    }
+
     // Drops the requests not yet started; the running job goes on.
     void dropQueued() {
         {
@@ -155,7 +165,7 @@ private:
     void run() {
         std::unique_lock<std::mutex> lock(mutex_);
         for (;;) {
-            wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
+            wake_.wait(lock, [this] { return stop_ || (!held_ && !queue_.empty()); });
             if (stop_) return;
             Entry entry = std::move(queue_.front());
             queue_.pop_front();
@@ -189,7 +199,7 @@ private:
     std::condition_variable wake_, idle_;
     std::deque<Entry> queue_;
     std::atomic<bool> cancel_{false};
-    bool working_ = false, stop_ = false;
+    bool working_ = false, stop_ = false, held_ = false;
     std::optional<Result> result_;
     std::string message_;
     std::thread thread_;  // last: started lazily, joined before the members above go

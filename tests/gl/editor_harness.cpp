@@ -64,4 +64,12 @@ std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel) {
     return h;
 }
 
+void tapKey(Harness& h, int k, std::initializer_list<int> mods) {
+    for (int m : mods) h.input.setKey(m, true);
+    h.input.setKey(k, true);
+    h.input.setKey(k, false);
+    for (int m : mods) h.input.setKey(m, false);
+    h.frame(3);
+}
+
 }  // namespace mgp::test

@@ -4,6 +4,7 @@
 // and, unless told not to, the committed model tests/fixtures/walk35_fas_m100_t3.model (FASGPLVM,
 // M = 100, T = 3): a model file, not a model trained at test time, so the pictures that show it are
 // the same on every CPU.
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,10 @@ struct Harness {
     // A second editor on the same context (e.g. "after a restart"); the first one is destroyed.
     void restartApp(ui::EditorOptions options = {});
 };
+
+// Presses and releases key `k` (with modifiers `mods` held) within one frame, as `xdotool key`
+// does, then runs 3 frames: the input replay spreads the events over them.
+void tapKey(Harness& h, int k, std::initializer_list<int> mods = {});
 
 // nullptr (the test is then reported skipped, with the reason: the caller returns) when no
 // offscreen context can be made, or when llvmpipeOnly and the context is not llvmpipe.

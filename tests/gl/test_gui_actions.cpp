@@ -12,6 +12,7 @@
 #include "io/parse_error.h"
 
 using namespace mgp;
+using test::tapKey;
 
 namespace {
 std::string readmeSection() {
@@ -25,14 +26,6 @@ std::string readmeSection() {
     return text.substr(b + begin.size(), e - b - begin.size());
 }
 
-// As test_gui_input.cpp: the replay spreads the events over the next frames.
-void tapKey(test::Harness& h, int k, std::initializer_list<int> mods = {}) {
-    for (int m : mods) h.input.setKey(m, true);
-    h.input.setKey(k, true);
-    h.input.setKey(k, false);
-    for (int m : mods) h.input.setKey(m, false);
-    h.frame(3);
-}
 }  // namespace
 
 TEST_CASE("gui actions: the README's action table is the one the editor runs") {

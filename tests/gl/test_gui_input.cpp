@@ -16,20 +16,12 @@
 #include "skip.h"
 
 using namespace mgp;
+using test::tapKey;
 
 namespace {
 
 using test::Harness;
 namespace key = ui::key;
-
-// Press and release within one frame, as `xdotool key` or a quick click does.
-void tapKey(Harness& h, int k, std::initializer_list<int> mods = {}) {
-    for (int m : mods) h.input.setKey(m, true);
-    h.input.setKey(k, true);
-    h.input.setKey(k, false);
-    for (int m : mods) h.input.setKey(m, false);
-    h.frame(3);
-}
 
 void clickAt(Harness& h, float x, float y) {
     h.input.mouseX = x;
@@ -150,11 +142,15 @@ TEST_CASE("gui input: status messages follow the state they describe and stay in
     // "accepted … (adaptive update running)" becomes "… done" once the update has finished.
     REQUIRE(doc.undo() == "");
     doc.setDragFalloff(0);  // this frame only: no spread job posts its own message
+    doc.holdAdaptiveUpdates(true);  // the update stays pending until released below
     const auto errors = h->play(ui::GuiScript::parse("2 hover rhand\n4 down left\n6 moveby 0 -4\n8 moveby 0 -4\n10 up left\n"));
     REQUIRE(errors.empty());
     const std::string during = s.messages.latestText();
     INFO("after the release: " << during << "  adaptive: " << doc.adaptiveStatus());
     CHECK(during == "accepted pose for frame 41 (adaptive update running)");
+    h->frame(3);
+    CHECK(s.messages.latestText() == "accepted pose for frame 41 (adaptive update running)");  // still pending
+    doc.holdAdaptiveUpdates(false);
     h->app->waitIdle();
     h->frame(2);
     REQUIRE(s.messages.current() != nullptr);

@@ -14,19 +14,12 @@
 #include "input_state.h"
 
 using namespace mgp;
+using test::tapKey;
 
 namespace {
 
 using test::Harness;
 namespace key = ui::key;
-
-void tapKey(Harness& h, int k, std::initializer_list<int> mods = {}) {
-    for (int m : mods) h.input.setKey(m, true);
-    h.input.setKey(k, true);
-    h.input.setKey(k, false);
-    for (int m : mods) h.input.setKey(m, false);
-    h.frame(3);
-}
 
 }  // namespace
 
