@@ -485,6 +485,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const PhaseTimer timer(state_.profile, state_.profile.imguiRenderSeconds);
+    viewport_->presentTo(height);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

@@ -135,6 +135,16 @@ ViewportPanel::~ViewportPanel() {
     if (depth_) glDeleteRenderbuffers(1, &depth_);
 }
 
+void ViewportPanel::presentTo(int windowHeight) const {
+    if (!fbo_ || presentW_ <= 0) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int y0 = windowHeight - presentY_ - presentH_;  // GL counts rows from the bottom
+    glBlitFramebuffer(0, 0, rw_, rh_, presentX_, y0, presentX_ + presentW_, y0 + presentH_, GL_COLOR_BUFFER_BIT,
+                      rw_ == presentW_ && rh_ == presentH_ ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 void ViewportPanel::ensureTarget(int w, int h) {
     if (w == width_ && h == height_ && fbo_) return;
     if (!fbo_) {
@@ -490,8 +500,7 @@ void ViewportPanel::draw(EditorState& s) {
         }
     }
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(colour_)), origin,
-                 ImVec2(origin.x + w, origin.y + h), ImVec2(0, float(rh_) / float(h)), ImVec2(float(rw_) / float(w), 0));
+    presentX_ = int(origin.x), presentY_ = int(origin.y), presentW_ = w, presentH_ = h;  // presentTo() copies the scene there
     // Overlay: what the mouse does.
     const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
                        : mode_ == Mode::kDragKey  ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"

@@ -38,6 +38,11 @@ public:
     // camera picks that bone's joint; takePickedJoint returns it once (-1 none).
     void setJointPicking(bool on) { jointPicking_ = on; }
     int takePickedJoint() { return std::exchange(pickedJoint_, -1); }
+    // Copies the scene into the window's framebuffer where the panel is, scaled up from the part
+    // drawn while moving. Call after the window is cleared and before ImGui renders its draw
+    // lists, which then lay the overlays on top: on llvmpipe a blit costs a fraction of a
+    // blended, textured ImGui quad the size of the viewport (docs/architecture.md §3).
+    void presentTo(int windowHeight) const;
     long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
     const render::Scene& lastScene() const { return lastScene_; }  // as last built by draw()
 
@@ -53,6 +58,7 @@ private:
     unsigned fbo_ = 0, colour_ = 0, depth_ = 0;
     int width_ = 0, height_ = 0;
     int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
+    int presentX_ = 0, presentY_ = 0, presentW_ = 0, presentH_ = 0;  // where draw() put the panel (0 wide: nowhere)
     static constexpr float kMovingScale = 0.7f;
     enum class Mode { kNone, kOrbit, kPan, kDragHandle, kDragKey } mode_ = Mode::kNone;
     int dragKey_ = -1;                                        // the key of a kDragKey drag
