@@ -12,7 +12,7 @@ struct FrameProfile {
     double solveSeconds = 0.0;         // learned IK: dragTo / refine in the viewport
     double sceneSeconds = 0.0;         // the 3-D scene into the viewport's texture (0 when not redrawn)
     double latentUploadSeconds = 0.0;  // a new σ² image uploaded to its texture
-    double imguiRenderSeconds = 0.0;   // the panels' draw lists rendered to the window
+    double imguiRenderSeconds = 0.0;   // the viewport's blit and the panels' draw lists, to the window
     void beginFrame() { solveSeconds = sceneSeconds = latentUploadSeconds = imguiRenderSeconds = 0.0; }
 };
 

@@ -1,6 +1,6 @@
 #pragma once
-// The 3-D viewport: draws the scene into an offscreen texture shown as an ImGui image and maps
-// the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
+// The 3-D viewport: draws the scene into an offscreen texture, copied into the window under the
+// ImGui overlays (presentTo), and maps the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
 // zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left
 // drag moves it on a camera-facing plane, Shift on a horizontal plane; right-click or P pins).
 // While an effector path is edited it also shows the edited path, its keys (dragged like handles;
