@@ -105,7 +105,7 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         const char* bone;
         Eigen::Vector3d delta;
     };
-    for (const Case c : {Case{"lhumerus", {30.0, -20.0, 15.0}}, Case{"lowerback", {15.0, 0.0, 0.0}}, Case{"rfemur", {-25.0, 0.0, 0.0}}}) {
+    for (const Case& c : {Case{"lhumerus", {30.0, -20.0, 15.0}}, Case{"lowerback", {15.0, 0.0, 0.0}}, Case{"rfemur", {-25.0, 0.0, 0.0}}}) {
         CAPTURE(c.bone);
         const int j = sk.findBone(c.bone);
         REQUIRE(j >= 0);
