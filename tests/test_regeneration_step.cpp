@@ -25,8 +25,10 @@ MotionEditJob finishedJob(const Clip& clip) {
         job.results.push_back(r);
     }
     job.maxResidualCm = 0.0126;
-    job.quality.edited = {1.26, 3.5};
-    job.quality.captured = {1.0, 3.0};
+    job.quality.edited.p95Deg = 1.26;
+    job.quality.edited.maxDeg = 3.5;
+    job.quality.captured.p95Deg = 1.0;
+    job.quality.captured.maxDeg = 3.0;
     job.held.resize(2);
     return job;
 }
