@@ -37,8 +37,7 @@ void DragSession::begin(const Skeleton& skeleton, Effector e, const Pose& start,
     converged_ = false;
     pins_ = std::move(pins);
     contactPins_ = std::move(contactPins);
-    startX_ = model_ ? std::move(startX) : Eigen::VectorXd();
-    x_ = startX_;
+    x_ = model_ ? std::move(startX) : Eigen::VectorXd();
     if (model_ && (!solver_ || solver_->version() != model_)) solver_ = std::make_unique<ConstrainedIkSolver>(model_);
     latentPath_.clear();
     if (x_.size() > 0) latentPath_.push_back(x_);

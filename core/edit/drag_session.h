@@ -106,7 +106,7 @@ private:
     Effector effector_ = Effector::kRFoot;
     Eigen::Vector3d targetCm_ = Eigen::Vector3d::Zero();
     Pose startPose_, pose_;
-    Eigen::VectorXd startX_, x_;
+    Eigen::VectorXd x_;
     int refineBudget_ = 0;
     bool converged_ = false;
     std::vector<IkConstraint> pins_, contactPins_;
