@@ -5,6 +5,7 @@
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_mirror.h"
+#include "skeleton/rotation.h"
 #include "skeleton/synthetic_clip.h"
 #include "test_support.h"
 
@@ -18,7 +19,7 @@ double angleDistanceMod360(const Pose& a, const Pose& b) {
     for (std::size_t j = 0; j < a.anglesDeg.size(); ++j)
         for (int k = 0; k < 3; ++k) {
             const double d = a.anglesDeg[j][k] - b.anglesDeg[j][k];
-            worst = std::max(worst, std::abs(d - 360.0 * std::round(d / 360.0)));
+            worst = std::max(worst, std::abs(wrap180(d)));
         }
     return worst;
 }

@@ -4,13 +4,9 @@
 #include <cmath>
 
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
 
 namespace mgp {
-namespace {
-
-double wrap180(double a) { return a - 360.0 * std::round(a / 360.0); }
-
-}  // namespace
 
 double percentile(std::vector<double> values, double q) {
     if (values.empty()) return 0.0;

@@ -5,10 +5,9 @@
 #include <limits>
 
 #include "skeleton/pose_layout.h"
+#include "skeleton/rotation.h"
 
 namespace mgp {
-
-double wrap180(double a) { return a - 360.0 * std::round(a / 360.0); }
 
 double nearestPoseRmsDeg(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates) {
     double best = std::numeric_limits<double>::infinity();

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
 
 namespace mgp {
 
@@ -51,12 +52,8 @@ std::vector<std::pair<int, int>> pairsBy(const Skeleton& sk, Key key) {
     return pairs;
 }
 
-double wrapNear(double angle, double reference) {
-    return angle + 360.0 * std::round((reference - angle) / 360.0);
-}
-
 Eigen::Vector3d wrapNear(const Eigen::Vector3d& a, const Eigen::Vector3d& ref) {
-    return {wrapNear(a[0], ref[0]), wrapNear(a[1], ref[1]), wrapNear(a[2], ref[2])};
+    return {mgp::wrapNear(a[0], ref[0]), mgp::wrapNear(a[1], ref[1]), mgp::wrapNear(a[2], ref[2])};
 }
 
 // Maximises tr(qᵀ E(θ)) over the animated axes one at a time (each step exact), from `start`.
@@ -73,7 +70,7 @@ Eigen::Vector3d ascend(const Eigen::Matrix3d& q, const RotationOrder& order, con
             // tr(qᵀ A R_a B) = tr(M R_a), M = B qᵀ A; its maximum over θ is at atan2(M_bc − M_cb, M_bb + M_cc).
             const Eigen::Matrix3d m = inner * q.transpose() * outer;
             const int b = (a + 1) % 3, c = (a + 2) % 3;
-            const double best = wrapNear(std::atan2(m(b, c) - m(c, b), m(b, b) + m(c, c)) * kRadToDeg, theta[a]);
+            const double best = mgp::wrapNear(std::atan2(m(b, c) - m(c, b), m(b, b) + m(c, c)) * kRadToDeg, theta[a]);
             change = std::max(change, std::abs(best - theta[a]));
             theta[a] = best;
         }

@@ -67,4 +67,8 @@ Eigen::Vector3d eulerAlternative(const Eigen::Vector3d& anglesDeg, const Rotatio
     return out;
 }
 
+double wrapNear(double angleDeg, double referenceDeg) {
+    return angleDeg - 360.0 * std::round((angleDeg - referenceDeg) / 360.0);
+}
+
 }  // namespace mgp

@@ -30,5 +30,9 @@ Eigen::Vector3d eulerZYXFromMatrix(const Eigen::Matrix3d& r);
 Eigen::Vector3d eulerFromMatrix(const Eigen::Matrix3d& r, const RotationOrder& order);
 // The second Euler triple of the same rotation: outer and inner angles + 180°, middle 180° − it.
 Eigen::Vector3d eulerAlternative(const Eigen::Vector3d& anglesDeg, const RotationOrder& order);
+// `angleDeg` moved by whole turns to within 180° of `referenceDeg`: angle − 360·round((angle − reference)/360).
+double wrapNear(double angleDeg, double referenceDeg);
+// An angle difference wrapped into [−180, 180]: wrapNear(angleDeg, 0).
+inline double wrap180(double angleDeg) { return wrapNear(angleDeg, 0.0); }
 
 }  // namespace mgp
