@@ -212,6 +212,13 @@ void EditorDocument::updatePinPositions() {
 
 // ---- drag ----------------------------------------------------------------------------------
 
+std::vector<IkConstraint> EditorDocument::contactHolds() const {
+    std::vector<IkConstraint> out;
+    for (Effector f : {Effector::kLFoot, Effector::kRFoot})
+        if (hasEffector(f) && !contactReleased(f) && inContact(f)) out.push_back({f, effectorPosition(f), true});
+    return out;
+}
+
 bool EditorDocument::inContact(Effector foot) const {
     if (!hasClip() || (foot != Effector::kLFoot && foot != Effector::kRFoot)) return false;
     // A contact the user switched off on the timeline is not held by a drag either.
@@ -234,13 +241,8 @@ std::string EditorDocument::beginDrag(Effector e) {
     dragVersionBefore_ = v ? v->number : 0;
     const Pose start = currentPose();
     updatePinPositions();
-    std::vector<IkConstraint> contactPins;
-    for (Effector f : {Effector::kLFoot, Effector::kRFoot})
-        if (f != e && hasEffector(f) && !contactReleased(f) && inContact(f))
-            contactPins.push_back({f, effectorCm(clip().skeleton, start, f), true});
     drag_.setCompare(compare_, compareModel_, frame_);
-    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), pinConstraints(),
-                std::move(contactPins));
+    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), pinConstraints(), contactHolds());
     return "";
 }
 

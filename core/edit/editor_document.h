@@ -135,6 +135,10 @@ public:
     // until set back, on every frame).
     bool inContact(Effector foot) const;
     void setContactReleased(Effector foot, bool released);
+    // What an edit of the current frame holds in place: every pin at its pin position, and every
+    // foot in contact that is not released, where it is (a drag leaves out its own effector).
+    std::vector<IkConstraint> pinConstraints() const;
+    std::vector<IkConstraint> contactHolds() const;
     bool contactReleased(Effector foot) const { return contactReleased_[static_cast<int>(foot)]; }
 
     // ---- drag ------------------------------------------------------------------------------
@@ -227,7 +231,6 @@ public:
     void waitIdle();
 
 private:
-    std::vector<IkConstraint> pinConstraints() const;
     void updatePinPositions();
     void pushStep(EditStep step);
     void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);

@@ -17,18 +17,9 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
 }
 
 std::vector<IkConstraint> heldEffectors(const EditorDocument& doc) {
-    std::vector<IkConstraint> out;
-    for (int i = 0; i < kEffectorCount; ++i) {
-        const auto e = static_cast<Effector>(i);
-        if (!doc.hasEffector(e)) continue;
-        const bool foot = e == Effector::kLFoot || e == Effector::kRFoot;
-        if (!doc.pinned(e) && !(foot && doc.inContact(e) && !doc.contactReleased(e))) continue;
-        IkConstraint c;
-        c.effector = e;
-        c.pin = true;
-        c.targetCm = doc.effectorPosition(e);
-        out.push_back(c);
-    }
+    std::vector<IkConstraint> out = doc.pinConstraints();
+    for (const IkConstraint& c : doc.contactHolds())
+        if (!doc.pinned(c.effector)) out.push_back(c);  // a pinned foot is held once, by its pin
     return out;
 }
 
