@@ -118,6 +118,7 @@ public:
     const EditorState& state() const { return state_; }
     const ViewportPanel& viewport() const { return *viewport_; }
     bool latentMapUpToDate() const { return latent_.upToDate(state_); }
+    int latentMapLayerRenders() const { return latent_.layerRenders(); }
     // Window pixel of an effector handle (as last drawn).
     bool handleScreenPosition(Effector e, float& x, float& y) const;
     bool keyScreenPosition(int key, float& x, float& y) const;  // path key (0-based), as last drawn

@@ -11,7 +11,7 @@ struct FrameProfile {
     bool measure = false;
     double solveSeconds = 0.0;         // learned IK: dragTo / refine in the viewport
     double sceneSeconds = 0.0;         // the 3-D scene into the viewport's texture (0 when not redrawn)
-    double latentUploadSeconds = 0.0;  // a new σ² image uploaded to its texture
+    double latentUploadSeconds = 0.0;  // a new σ² image uploaded, the latent map's static layer redrawn
     double imguiRenderSeconds = 0.0;   // the viewport's blit and the panels' draw lists, to the window
     void beginFrame() { solveSeconds = sceneSeconds = latentUploadSeconds = imguiRenderSeconds = 0.0; }
 };

@@ -78,8 +78,9 @@ void LatentMapPanel::draw(EditorState& s) {
     // Geometry: a square map, the colour bar below it.
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float barBlock = 84.0f;
-    const float side = std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f));
-    const ImVec2 cur = ImGui::GetCursorScreenPos();
+    // Whole pixels, so that the static layer's texels land on screen pixels one to one.
+    const float side = std::floor(std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f)));
+    const ImVec2 cur(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
     const ImVec2 p0(cur.x + 16.0f, cur.y), p1(p0.x + side, p0.y + side);
     double bx0, by0, bx1, by1;
     if (shown_.size > 0) {
@@ -102,48 +103,57 @@ void LatentMapPanel::draw(EditorState& s) {
     s.recordControl("latent map");
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->PushClipRect(p0, p1, true);
-    if (shown_.size > 0 && texture_)
-        dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), p0, p1);
-    else
-        dl->AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
-
-    // The training frames joined in time order (thin line under the dots): a continuous layout
-    // is one curve per motion, a fragmented one shows long jumps across the map.
-    if (pairsModel_.lock() != v->model) {
-        pairs_ = model.trainingFrames.size() == static_cast<std::size_t>(model.N())
-                     ? eval::timeConsecutivePairs(model.trainingFrames)
-                     : std::vector<std::pair<int, int>>{};
-        pairsModel_ = v->model;
-    }
-    if (showTrajectory_)
-        for (const auto& [a, b] : pairs_)
-            dl->AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
-                        toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
-                        IM_COL32(235, 235, 240, 120), 1.0f);
-
-    // Training points coloured by frame, active set ringed.
     const int frames = std::max(1, doc.frameCount() - 1);
+    auto frameOfRow = [&](int i) { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; };
+
+    // What changes only with the model, the σ² image or the map's size is drawn once into a
+    // texture (the static layer); each frame adds the moving parts on top.
+    const StaticLayerKey key{v->model.get(), v->number, shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
+                             side, showTrajectory_, frames};
+    if (!(key == layerKey_) || layer_.empty()) {
+        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
+        layer_.render(p0, ImVec2(side, side), [&](ImDrawList& dl) {
+            if (key.hasImage)
+                dl.AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), p0, p1);
+            else
+                dl.AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
+            // The training frames joined in time order (thin line under the dots): a continuous
+            // layout is one curve per motion, a fragmented one shows long jumps across the map.
+            if (showTrajectory_)
+                for (const auto& [a, b] : model.trainingFrames.size() == static_cast<std::size_t>(model.N())
+                                              ? eval::timeConsecutivePairs(model.trainingFrames)
+                                              : std::vector<std::pair<int, int>>{})
+                    dl.AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
+                               toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
+                               IM_COL32(235, 235, 240, 120), 1.0f);
+            // Training points coloured by frame, active set ringed.
+            for (int i = 0; i < model.N(); ++i)
+                dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f,
+                                   frameColour(double(frameOfRow(i)) / frames));
+            for (int i : model.active) {
+                if (i < 0 || i >= model.N()) continue;
+                dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
+                             IM_COL32(255, 255, 255, 170), 10, 1.0f);
+            }
+        });
+        layerKey_ = key;
+        ++layerRenders_;
+    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    layer_.draw(*dl, p0, p1);
+    dl->PushClipRect(p0, p1, true);
+
     int nearest = -1;
     float nearestD2 = 7.0f * 7.0f;
-    for (int i = 0; i < model.N(); ++i) {
-        const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
-        const int frame = i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0;
-        dl->AddCircleFilled(p, 2.3f, frameColour(double(frame) / frames));
-        if (hovered) {
+    if (hovered)
+        for (int i = 0; i < model.N(); ++i) {
+            const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
             const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
             if (d2 < nearestD2) {
                 nearestD2 = d2;
                 nearest = i;
             }
         }
-    }
-    for (int i : model.active) {
-        if (i < 0 || i >= model.N()) continue;
-        dl->AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
-                      IM_COL32(255, 255, 255, 170), 10, 1.0f);
-    }
     // Path of the current/last drag and the current latent point.
     const auto& path = doc.latentPath();
     for (std::size_t k = 1; k < path.size(); ++k)

@@ -5,12 +5,9 @@
 // drag, and (toggle "time path", on by default) each clip's training frames joined in time order by
 // a thin line, so fragments and loops of the layout show. Hover names the nearest training frame; clicking a training point jumps the timeline
 // there; dragging the current point poses the character from the model mean f(x).
+#include "draw_list_texture.h"
 #include "editor_state.h"
 #include "latent_map_image.h"
-
-#include <memory>
-#include <utility>
-#include <vector>
 
 namespace mgp::ui {
 
@@ -27,6 +24,9 @@ public:
     void waitIdle() { worker_.waitIdle(); }
     // Whether the texture shows the state's current model version.
     bool upToDate(const EditorState& state) const;
+    // How many times the static layer (σ² image, time path, dots, rings) has been drawn: once per
+    // model version, σ² image, map size or time-path toggle, never once per frame.
+    int layerRenders() const { return layerRenders_; }
 
 private:
     LatentImageWorker worker_;
@@ -36,9 +36,24 @@ private:
     int requestedVersion_ = -1;
     bool dragging_ = false;
     bool showTrajectory_ = true;
-    // Time-consecutive training rows of the drawn model (recomputed when the model changes).
-    std::weak_ptr<const gp::GpModel> pairsModel_;
-    std::vector<std::pair<int, int>> pairs_;
+    // What the static layer (σ² image, time path, dots, rings) was drawn for.
+    struct StaticLayerKey {
+        const void* model = nullptr;
+        int version = -1;
+        const void* imageModel = nullptr;
+        int imageVersion = -1;
+        bool hasImage = false;
+        float side = 0.0f;
+        bool trajectory = false;
+        int frames = 0;
+        bool operator==(const StaticLayerKey& o) const {
+            return model == o.model && version == o.version && imageModel == o.imageModel && imageVersion == o.imageVersion &&
+                   hasImage == o.hasImage && side == o.side && trajectory == o.trajectory && frames == o.frames;
+        }
+    };
+    StaticLayerKey layerKey_;
+    int layerRenders_ = 0;
+    DrawListTexture layer_;
 };
 
 }  // namespace mgp::ui

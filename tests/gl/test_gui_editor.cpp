@@ -177,6 +177,50 @@ TEST_CASE("gui golden: latent map and timeline panels") {
     compareGolden("ui_timeline", crop(img, 0, kH - 104, kW - 380, 104));
 }
 
+TEST_CASE("gui: the latent map's static layer is drawn once per model version, not once per frame") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    EditorDocument& doc = h->app->state().doc;
+    doc.setFrame(99);
+    h->frame(3);
+    REQUIRE(h->app->latentMapUpToDate());
+    const int settled = h->app->latentMapLayerRenders();
+    CHECK(settled >= 1);
+    h->frame(5);
+    CHECK(h->app->latentMapLayerRenders() == settled);  // nothing changed: no redraw
+
+    // A drag moves the current latent point every frame but leaves the layer alone.
+    ui::GuiScript script;
+    script.add(0, "hover", {"rfoot"});
+    script.add(2, "down", {"left"});
+    for (int k = 0; k < 6; ++k) script.add(4 + k, "moveby", {"0", "-4"});
+    script.add(12, "up", {"left"});
+    ui::ScriptPlayer player(script);
+    std::vector<std::string> shots;
+    int dragFrames = 0;
+    for (int i = 0; i <= 12; ++i) {
+        player.apply(i, h->input, *h->app, shots);
+        h->frame();
+        if (!doc.dragging()) continue;
+        ++dragFrames;
+        CHECK(h->app->latentMapLayerRenders() == settled);
+    }
+    CHECK(dragFrames >= 6);
+    // A new model (here: retrained) redraws it once its σ² image is in.
+    h->app->waitIdle();
+    h->frame();
+    const int beforeTraining = h->app->latentMapLayerRenders();
+    const gp::GpModel* oldModel = doc.model()->model.get();
+    REQUIRE(h->app->runAction({"train", "fas", "50", "1"}).empty());
+    for (int i = 0; i < 20 && (doc.model()->model.get() == oldModel || !h->app->latentMapUpToDate()); ++i) {
+        h->app->waitIdle();
+        h->frame();
+    }
+    REQUIRE(doc.model()->model.get() != oldModel);
+    REQUIRE(h->app->latentMapUpToDate());
+    CHECK(h->app->latentMapLayerRenders() > beforeTraining);
+}
+
 TEST_CASE("gui: several hundred random input events on a real clip stay finite and do not crash") {
     auto h = makeHarness(false);
     if (!h) return;
