@@ -101,7 +101,7 @@ std::vector<EditorAction> makeActions() {
          plain([](EditorApp& app) { app.askForFile(FileKind::kSaveSession); })});
     add({"open-session", "PATH", "", {}, "open a session", always, false,
          [](EditorApp& app, const ActionArgs& a) { return a.empty() ? std::string("expected open-session PATH") : app.openSession(a[0]); }});
-    add({"open-model", "[PATH]", "Ctrl+M", {{'M', kCtrl}}, "open a saved model (its clip comes with it); no PATH: the Open dialog",
+    add({"open-model", "[PATH]", "Ctrl+M", {{'M', kCtrl}}, "open a saved model with its clip (asks first if that is not the open clip); no PATH: the Open dialog",
          always, false, pathOrDialog([](EditorApp& app, const std::string& p) { return app.openModel(p); },
                                      [](EditorApp& app) { app.askForFile(FileKind::kModel, "opening a model"); })});
     add({"save-model", "[PATH]", "", {}, "save the current model; no PATH: the Save dialog", hasModel, false,

@@ -11,11 +11,6 @@
 #include <filesystem>
 
 #include "edit/mirror_edit.h"
-#include "edit/session_mapping.h"
-#include "gp/model_file.h"
-#include "io/bvh_writer.h"
-#include "io/clip_loader.h"
-#include "io/data_paths.h"
 #include "editor_actions.h"
 #include "editor_session.h"
 #include "help_window.h"
@@ -23,17 +18,12 @@
 #include "menu_bar.h"
 #include "messages_window.h"
 #include "shortcuts.h"
-#include "skeleton/synthetic_clip.h"
+#include "skeleton/clip_match.h"
 
 namespace mgp::ui {
 
 namespace {
 std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
-
-// Adds `extension` when the user typed a name without one.
-std::string withExtension(const std::string& path, const std::string& extension) {
-    return std::filesystem::path(path).has_extension() ? path : path + extension;
-}
 
 double secondsNow() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -76,63 +66,6 @@ std::string EditorApp::reportingErrors(const std::function<void()>& work) {
     }
 }
 
-std::string EditorApp::openClip(const std::string& path) {
-    return reportingErrors([&] {
-        Clip clip = loadClip(path);
-        state_.training.cancel();
-        state_.doc.setClip(std::move(clip), false);
-        state_.clipLabel = baseName(path);
-        state_.modelLabel.clear();
-        state_.cameraNeedsFraming = true;
-        state_.playing = false;
-        std::error_code ec;
-        const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
-        state_.setStatus("opened " + (ec ? path : shown) +
-                         (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
-        sessionPath_.clear();
-        markSaved();
-        remember(path, RecentKind::kClip);
-    });
-}
-
-void EditorApp::openSyntheticClip(const std::string& why) {
-    state_.doc.setClip(makeSyntheticWalk(), true);
-    state_.clipLabel = "synthetic demo clip";
-    state_.modelLabel.clear();
-    state_.cameraNeedsFraming = true;
-    state_.setStatus(why.empty() ? "synthetic demo clip" : why);
-    sessionPath_.clear();
-    markSaved();
-}
-
-std::string EditorApp::openModel(const std::string& path) {
-    return reportingErrors([&] {
-        gp::ModelVersionPtr v = gp::ModelVersion::make(gp::loadModel(path));
-        state_.doc.setModel(v, true);
-        state_.clipLabel = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
-        state_.modelLabel = baseName(path);
-        state_.cameraNeedsFraming = true;
-        state_.setStatus("opened model " + path);
-        sessionPath_.clear();
-        markSaved();
-        remember(path, RecentKind::kModel);
-    });
-}
-
-std::string EditorApp::saveModel(const std::string& path) {
-    const gp::ModelVersionPtr v = state_.doc.model();
-    if (!v) {
-        state_.setStatus("no model to save", true);
-        return "no model to save";
-    }
-    return reportingErrors([&] {
-        gp::saveModel(path, *v->model);
-        state_.modelLabel = baseName(path);
-        state_.setStatus("saved model " + path);
-        remember(path, RecentKind::kModel);
-    });
-}
-
 std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
     const std::string err =
@@ -148,38 +81,6 @@ std::string EditorApp::startTraining() {
 }
 
 // Also called whenever a clip, model or session replaced the document: forget per-document UI.
-void EditorApp::markSaved() {
-    savedRevision_ = state_.doc.revision();
-    state_.selectedKey = state_.hoveredKey = -1;
-}
-
-void EditorApp::remember(const std::string& path, RecentKind kind) {
-    if (!recent_) return;
-    recent_->add(path, kind);
-    try {
-        recent_->save();
-    } catch (const std::exception&) {
-        // The list is a convenience: a read-only config folder must not turn an open into an error.
-    }
-}
-
-std::string EditorApp::saveSession(const std::string& pathIn) {
-    const std::string path = withExtension(pathIn, ".mgsession");
-    return reportingErrors([&] {
-        mgp::saveSession(path, editorSession(state_));
-        sessionPath_ = absolutePath(path);
-        markSaved();
-        forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
-        remember(path, RecentKind::kSession);
-        state_.setStatus("saved session " + path);
-    });
-}
-
-void EditorApp::saveSessionOrAsk() {
-    if (sessionPath_.empty()) openDialog(FileKind::kSaveSession);
-    else saveSession(sessionPath_);
-}
-
 std::string EditorApp::autosaveNow() {
     if (!state_.doc.hasClip()) return "nothing to autosave";
     try {
@@ -193,36 +94,6 @@ std::string EditorApp::autosaveNow() {
 }
 
 void EditorApp::forgetAutosave() { autosave_.forget(secondsNow(), state_.doc.revision()); }
-
-std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
-    bool replaced = false;  // whether the document was already changed when something failed
-    try {
-        // Everything that can still fail is checked before the document changes.
-        CheckedSession checked = checkSession(mgp::loadSession(path), path);
-        replaced = true;
-        state_.training.cancel();
-        state_.compareTraining.cancel();
-        applySession(state_.doc, checked, path);  // leaves the editor's half in checked.data
-        applyEditorSession(state_, checked.data);
-        const SessionData& d = checked.data;
-        sessionPath_ = absolutePath(path);
-        markSaved();
-        forgetAutosave();
-        if (addToRecent) remember(path, RecentKind::kSession);
-        std::string status = "opened session " + path;
-        for (const std::string& w : d.warnings) status += "  (" + w + ")";
-        state_.setStatus(status, !d.warnings.empty());
-        return "";
-    } catch (const std::exception& e) {
-        if (replaced) {
-            // Half-loaded: never let Ctrl+S write it over the previous session's file.
-            sessionPath_.clear();
-            savedRevision_ = -1;
-        }
-        state_.setStatus(e.what(), true);
-        return e.what();
-    }
-}
 
 std::string EditorApp::restoreAutosave(const std::string& path) {
     std::string file = path;
@@ -244,36 +115,13 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
     return "";
 }
 
-std::string EditorApp::exportBvh(const std::string& pathIn) {
-    const std::string path = withExtension(pathIn, ".bvh");
-    if (!state_.doc.hasClip()) return "no clip to export";
-    return reportingErrors([&] {
-        Clip edited = state_.doc.clip();
-        for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
-        writeBvh(edited, path);
-        state_.setStatus("exported " + std::to_string(edited.frameCount()) + " frames (" +
-                         std::to_string(state_.doc.edits().size()) + " edited) to " + path);
-    });
-}
-
-std::string EditorApp::exportPng(const std::string& pathIn) {
-    const std::string path = withExtension(pathIn, ".png");
-    if (!state_.doc.hasClip()) return "no clip to draw";
-    return reportingErrors([&] {
-        render::writePng(viewport_->renderImage(state_), path);
-        state_.setStatus("exported the viewport to " + path);
-    });
-}
-
 void EditorApp::pollJobs() {
     std::string regenerateError;
     const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
     if (!regenerated.empty()) state_.setStatus(regenerated);
     else if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
     if (gp::ModelVersionPtr v = state_.training.take()) {
-        const Clip& c = v->model->clip;
-        const bool same = state_.doc.hasClip() && c.name == state_.doc.clip().name &&
-                          c.frameCount() == state_.doc.frameCount();
+        const bool same = state_.doc.hasClip() && sameCapture(state_.doc.clip(), v->model->clip);
         state_.doc.setModel(v, !same);
         state_.modelLabel = std::string("trained ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
         state_.setStatus(state_.training.message());
@@ -417,17 +265,6 @@ bool EditorApp::popupOpen() const {
 
 void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
     prompts_.guard(dirty(), std::move(action), std::move(what));
-}
-
-void EditorApp::openRecent(const std::string& path) {
-    guardUnsaved([this, path] { openAny(path); }, "opening another file");
-}
-
-std::string EditorApp::openAny(const std::string& path) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext == ".mgsession") return openSession(path);
-    if (ext == ".json" || ext == ".model") return openModel(path);
-    return openClip(path);
 }
 
 void EditorApp::prompts() {

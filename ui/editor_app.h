@@ -56,6 +56,8 @@ public:
     // Each returns "" or the error (also shown in the status line). Nothing here throws.
     std::string openClip(const std::string& path);
     void openSyntheticClip(const std::string& why);
+    // Opens a model with the clip it was trained on. When that is not the open clip, it asks
+    // first (Open its clip, or Cancel) and returns "" while the question is up.
     std::string openModel(const std::string& path);
     std::string saveModel(const std::string& path);
     std::string startTraining();         // on the open clip with state().trainOptions
@@ -92,6 +94,7 @@ public:
 
     bool dirty() const { return state_.doc.revision() != savedRevision_; }
     bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
+    bool askingAboutModelClip() const { return prompts_.askingModelClip(); }  // the modal is up
     const FileDialog& fileDialog() const { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
     bool messagesShown() const { return showMessages_; }   // View > Messages
@@ -131,6 +134,7 @@ private:
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
     void markSaved();
+    void installModel(gp::ModelVersionPtr version, const std::string& path);  // with its clip
     void remember(const std::string& path, RecentKind kind);
     std::string openAny(const std::string& path);  // by extension: session, model or clip
     void openDialog(FileKind kind);

@@ -19,8 +19,34 @@ void EditorPrompts::guard(bool unsaved, std::function<void()> action, std::strin
 }
 
 void EditorPrompts::draw(bool dialogOpen, const Hooks& hooks) {
+    modelClip(dialogOpen);
     unsavedChanges(dialogOpen, hooks);
     restoreAutosave(dialogOpen, hooks);
+}
+
+void EditorPrompts::askModelClip(std::vector<std::string> lines, std::function<void()> openIt) {
+    modelClipLines_ = std::move(lines);
+    openModelClip_ = std::move(openIt);
+}
+
+void EditorPrompts::modelClip(bool dialogOpen) {
+    const char* title = "Model trained on another clip";
+    if (openModelClip_ && !dialogOpen && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::OpenPopup(title);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    askingModelClip_ = ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    if (!askingModelClip_) return;
+    for (const std::string& line : modelClipLines_) ImGui::TextUnformatted(line.c_str());
+    if (ImGui::Button("Open with its clip", ImVec2(160, 0)) || ImGui::IsKeyPressed(key::kEnter, false)) {
+        std::function<void()> openIt = std::exchange(openModelClip_, nullptr);
+        ImGui::CloseCurrentPopup();
+        openIt();  // may ask about unsaved changes next
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) {
+        openModelClip_ = nullptr;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
 }
 
 void EditorPrompts::unsavedChanges(bool dialogOpen, const Hooks& hooks) {

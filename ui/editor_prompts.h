@@ -1,6 +1,7 @@
 #pragma once
 // The editor's modal questions: unsaved changes before quitting or replacing the document
-// ("Save them before opening a model?"), and restoring an autosave a crashed editor left behind.
+// ("Save them before opening a model?"), opening a model trained on another clip than the open
+// one, and restoring an autosave a crashed editor left behind.
 // One modal at a time: a question waits while another popup or the file dialog is open.
 #include <functional>
 #include <utility>
@@ -28,6 +29,11 @@ public:
     void draw(bool dialogOpen, const Hooks& hooks);
     bool askingUnsaved() const { return asking_; }  // the modal is up (as of the last draw)
 
+    // A model whose clip is not the open clip: `lines` say which clips and how they differ;
+    // "Open with its clip" (Enter) runs `openIt`, Cancel (Esc) drops it.
+    void askModelClip(std::vector<std::string> lines, std::function<void()> openIt);
+    bool askingModelClip() const { return askingModelClip_; }  // the modal is up (as of the last draw)
+
     // "Save" on a session without a file asks for one: the action waits for that save.
     std::function<void()> takeAfterSave() { return std::exchange(afterSave_, nullptr); }
     void dropAfterSave() { afterSave_ = nullptr; }
@@ -39,10 +45,14 @@ public:
 private:
     void unsavedChanges(bool dialogOpen, const Hooks& hooks);
     void restoreAutosave(bool dialogOpen, const Hooks& hooks);
+    void modelClip(bool dialogOpen);
 
     std::function<void()> pending_, afterSave_;
     std::string pendingWhat_;
     bool asking_ = false;
+    std::vector<std::string> modelClipLines_;
+    std::function<void()> openModelClip_;
+    bool askingModelClip_ = false;
     std::vector<AutosaveCandidate> restoreOffer_;
 };
 

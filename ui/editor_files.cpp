@@ -1,0 +1,199 @@
+// EditorApp's file operations: open a clip, model or session, save a model or session, export
+// BVH and PNG, and the recent-files list they feed. Every one reports errors on the status line
+// and returns them; a model trained on another clip than the open one asks before replacing it.
+#include "editor_app.h"
+
+#include <filesystem>
+
+#include "edit/session_mapping.h"
+#include "editor_session.h"
+#include "gp/model_file.h"
+#include "io/bvh_writer.h"
+#include "io/clip_loader.h"
+#include "io/data_paths.h"
+#include "skeleton/clip_match.h"
+#include "skeleton/synthetic_clip.h"
+
+namespace mgp::ui {
+
+namespace {
+std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+// Adds `extension` when the user typed a name without one.
+std::string withExtension(const std::string& path, const std::string& extension) {
+    return std::filesystem::path(path).has_extension() ? path : path + extension;
+}
+}  // namespace
+
+std::string EditorApp::openClip(const std::string& path) {
+    return reportingErrors([&] {
+        Clip clip = loadClip(path);
+        state_.training.cancel();
+        state_.doc.setClip(std::move(clip), false);
+        state_.clipLabel = baseName(path);
+        state_.modelLabel.clear();
+        state_.cameraNeedsFraming = true;
+        state_.playing = false;
+        std::error_code ec;
+        const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
+        state_.setStatus("opened " + (ec ? path : shown) +
+                         (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
+        sessionPath_.clear();
+        markSaved();
+        remember(path, RecentKind::kClip);
+    });
+}
+
+void EditorApp::openSyntheticClip(const std::string& why) {
+    state_.doc.setClip(makeSyntheticWalk(), true);
+    state_.clipLabel = "synthetic demo clip";
+    state_.modelLabel.clear();
+    state_.cameraNeedsFraming = true;
+    state_.setStatus(why.empty() ? "synthetic demo clip" : why);
+    sessionPath_.clear();
+    markSaved();
+}
+
+std::string EditorApp::openModel(const std::string& path) {
+    gp::ModelVersionPtr v;
+    const std::string err = reportingErrors([&] { v = gp::ModelVersion::make(gp::loadModel(path)); });
+    if (!err.empty()) return err;
+    // A model brings the clip it was trained on. When that is not the open clip, ask before
+    // replacing it (the open clip and its edits would go).
+    std::string difference;
+    if (state_.doc.hasClip() && !sameCapture(state_.doc.clip(), v->model->clip, &difference)) {
+        const std::string modelClip = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
+        prompts_.askModelClip(
+            {baseName(path) + " was trained on " + modelClip + " (" + std::to_string(v->model->clip.frameCount()) +
+                 " frames).",
+             "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
+                 " frames): " + difference + ".",
+             "Opening the model replaces the open clip with " + modelClip + "."},
+            [this, v, path] { guardUnsaved([this, v, path] { installModel(v, path); }, "opening the model's clip"); });
+        state_.setStatus("the model was trained on " + modelClip + ", not on the open clip: asking first");
+        return "";
+    }
+    installModel(std::move(v), path);
+    return "";
+}
+
+void EditorApp::installModel(gp::ModelVersionPtr v, const std::string& path) {
+    state_.doc.setModel(v, true);
+    state_.clipLabel = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
+    state_.modelLabel = baseName(path);
+    state_.cameraNeedsFraming = true;
+    state_.setStatus("opened model " + path);
+    sessionPath_.clear();
+    markSaved();
+    remember(path, RecentKind::kModel);
+}
+
+std::string EditorApp::saveModel(const std::string& path) {
+    const gp::ModelVersionPtr v = state_.doc.model();
+    if (!v) {
+        state_.setStatus("no model to save", true);
+        return "no model to save";
+    }
+    return reportingErrors([&] {
+        gp::saveModel(path, *v->model);
+        state_.modelLabel = baseName(path);
+        state_.setStatus("saved model " + path);
+        remember(path, RecentKind::kModel);
+    });
+}
+
+void EditorApp::markSaved() {
+    savedRevision_ = state_.doc.revision();
+    state_.selectedKey = state_.hoveredKey = -1;
+}
+
+void EditorApp::remember(const std::string& path, RecentKind kind) {
+    if (!recent_) return;
+    recent_->add(path, kind);
+    try {
+        recent_->save();
+    } catch (const std::exception&) {
+        // The list is a convenience: a read-only config folder must not turn an open into an error.
+    }
+}
+
+std::string EditorApp::saveSession(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".mgsession");
+    return reportingErrors([&] {
+        mgp::saveSession(path, editorSession(state_));
+        sessionPath_ = absolutePath(path);
+        markSaved();
+        forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
+        remember(path, RecentKind::kSession);
+        state_.setStatus("saved session " + path);
+    });
+}
+
+void EditorApp::saveSessionOrAsk() {
+    if (sessionPath_.empty()) openDialog(FileKind::kSaveSession);
+    else saveSession(sessionPath_);
+}
+
+std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
+    bool replaced = false;  // whether the document was already changed when something failed
+    try {
+        // Everything that can still fail is checked before the document changes.
+        CheckedSession checked = checkSession(mgp::loadSession(path), path);
+        replaced = true;
+        state_.training.cancel();
+        state_.compareTraining.cancel();
+        applySession(state_.doc, checked, path);  // leaves the editor's half in checked.data
+        applyEditorSession(state_, checked.data);
+        const SessionData& d = checked.data;
+        sessionPath_ = absolutePath(path);
+        markSaved();
+        forgetAutosave();
+        if (addToRecent) remember(path, RecentKind::kSession);
+        std::string status = "opened session " + path;
+        for (const std::string& w : d.warnings) status += "  (" + w + ")";
+        state_.setStatus(status, !d.warnings.empty());
+        return "";
+    } catch (const std::exception& e) {
+        if (replaced) {
+            // Half-loaded: never let Ctrl+S write it over the previous session's file.
+            sessionPath_.clear();
+            savedRevision_ = -1;
+        }
+        state_.setStatus(e.what(), true);
+        return e.what();
+    }
+}
+
+std::string EditorApp::exportBvh(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".bvh");
+    if (!state_.doc.hasClip()) return "no clip to export";
+    return reportingErrors([&] {
+        Clip edited = state_.doc.clip();
+        for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
+        writeBvh(edited, path);
+        state_.setStatus("exported " + std::to_string(edited.frameCount()) + " frames (" +
+                         std::to_string(state_.doc.edits().size()) + " edited) to " + path);
+    });
+}
+
+std::string EditorApp::exportPng(const std::string& pathIn) {
+    const std::string path = withExtension(pathIn, ".png");
+    if (!state_.doc.hasClip()) return "no clip to draw";
+    return reportingErrors([&] {
+        render::writePng(viewport_->renderImage(state_), path);
+        state_.setStatus("exported the viewport to " + path);
+    });
+}
+
+void EditorApp::openRecent(const std::string& path) {
+    guardUnsaved([this, path] { openAny(path); }, "opening another file");
+}
+
+std::string EditorApp::openAny(const std::string& path) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext == ".mgsession") return openSession(path);
+    if (ext == ".json" || ext == ".model") return openModel(path);
+    return openClip(path);
+}
+
+}  // namespace mgp::ui
