@@ -18,6 +18,7 @@
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
+#include "eval/nearest_pose.h"
 #include "ik_cli.h"
 #include "motion/foot_contacts.h"
 
@@ -163,6 +164,9 @@ int runPose(const PoseOptions& o) {
     j["pins"] = constraintsJson(results, true);
     const Eigen::VectorXd y47 = PoseLayout(clip.skeleton).extract(pose);
     j["pose_deg"] = std::vector<double>(y47.data(), y47.data() + y47.size());
+    // Where the solved pose is in the data: the nearest captured frame of the model's clip.
+    const NearestPose nearest = nearestPose(y47, poseMatrix(clip));
+    j["nearest"] = {{"clip", clip.name}, {"frame", nearest.row + 1}, {"rms_deg", nearest.rmsDeg}};
     Clip solved = clip;
     solved.frames = {pose};
     j["positions_cm"] = effectorPositionsJson(solved, 0);
@@ -174,6 +178,8 @@ int runPose(const PoseOptions& o) {
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
                       << r.residualCm << " cm" << (r.reached ? "" : "  (not reached)") << "\n";
+        std::cout << "nearest captured frame: " << clip.name << " frame " << nearest.row + 1 << " ("
+                  << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
         if (j.contains("adaptive")) {
             if (j["adaptive"]["refused"].get<bool>())
                 std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()

@@ -4,6 +4,7 @@
 #include "gp/model_file.h"
 #include "io/bvh_reader.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -36,6 +37,34 @@ TEST_CASE("motiongp pose --json: learned and plain solvers, pins, offsets from t
     CHECK(j["x"].is_null());
     CHECK(j["sigma2"].is_null());
     CHECK(j["L_IK"].is_null());
+}
+
+TEST_CASE("motiongp pose --json: nearest names the captured frame closest to the solved pose") {
+    const std::string model = test::walkModelPath();
+    const auto r = test::runCli("pose '" + model + "' --frame 61 --target rhand=0,0,0 --json");
+    REQUIRE(r.exitCode == 0);
+    const json j = json::parse(r.out);
+    REQUIRE(j.contains("nearest"));
+    CHECK(j["nearest"]["clip"] == "35_01");
+    const int frame = j["nearest"]["frame"].get<int>();  // counted from 1, as --frame
+    const double rms = j["nearest"]["rms_deg"].get<double>();
+    // The hand stays where it is: the solve stays next to frame 61 of the capture.
+    CHECK(std::abs(frame - 61) <= 2);
+    CHECK(rms <= 0.5);
+    // Recomputed from pose_deg against every captured frame: that frame, that distance, and none nearer.
+    const Clip clip = gp::loadModel(model).clip;
+    const Eigen::MatrixXd captured = poseMatrix(clip);
+    const std::vector<double> y = j["pose_deg"].get<std::vector<double>>();
+    auto rmsTo = [&](int row) {
+        double sum = 0.0;
+        for (int k = 3; k < kPoseDofs; ++k) sum += std::pow(wrap180(y[k] - captured(row, k)), 2);
+        return std::sqrt(sum / (kPoseDofs - 3));
+    };
+    CHECK(rmsTo(frame - 1) == doctest::Approx(rms).epsilon(1e-9));
+    for (int row = 0; row < captured.rows(); ++row) CHECK(rmsTo(row) >= rms - 1e-12);
+    // The text output says the same.
+    const auto text = test::runCli("pose '" + model + "' --frame 61 --target rhand=0,0,0");
+    CHECK(text.out.find("nearest captured frame: 35_01 frame " + std::to_string(frame)) != std::string::npos);
 }
 
 TEST_CASE("motiongp pose: an unreachable target is a result, bad options are errors") {

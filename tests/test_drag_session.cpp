@@ -60,6 +60,7 @@ TEST_CASE("drag session: without a model a drag is plain IK that holds the pins"
     CHECK((effectorCm(clip.skeleton, drag.pose(), Effector::kRHand) - target).norm() <= kReachedToleranceCm);
     CHECK(distance(clip.skeleton, drag.pose(), pin) <= kReachedToleranceCm);
     CHECK(drag.x().size() == 0);
+    CHECK(r.nearest.row == -1);  // no model: no captured data to compare with
     CHECK_FALSE(drag.refine(50));  // nothing to refine for plain IK
     drag.finish();
     CHECK_FALSE(drag.active());
@@ -95,6 +96,12 @@ TEST_CASE("drag session: a learned drag reaches its target with the pins held an
     CHECK(drag.latentPath().size() >= 2);
     CHECK(drag.keptPose().size() == v->model->Y.cols());
     CHECK(drag.model() == v);
+    // Where the pose is in the data: the nearest captured frame of the model's clip.
+    CHECK(r.nearestClip == "35_01");
+    const NearestPose expected = nearestPose(PoseLayout(clip.skeleton).extract(drag.pose()), poseMatrix(clip));
+    CHECK(r.nearest.row == expected.row);
+    CHECK(r.nearest.rmsDeg == expected.rmsDeg);
+    CHECK(r.nearest.rmsDeg < 10.0);  // an 11 cm hand move stays close to captured poses (walk: any cycle)
     // The compare ghost: the same targets solved by plain IK from the start pose.
     REQUIRE(drag.comparePose());
     CHECK((effectorCm(clip.skeleton, *drag.comparePose(), Effector::kRHand) - target).norm() <= kReachedToleranceCm);

@@ -159,6 +159,15 @@ TEST_CASE("nearest-pose RMS: wrapped differences over the 44 non-root DOFs, the 
     candidates(1, 10) = 358.0 + 44.0;  // one DOF at 44 + (−2) → sqrt((43·4 + 42²)/44)
     CHECK(nearestPoseRmsDeg(pose, candidates) == doctest::Approx(std::sqrt((43.0 * 4.0 + 42.0 * 42.0) / 44.0)));
     CHECK(std::isinf(nearestPoseRmsDeg(pose, Eigen::MatrixXd(0, kPoseDofs))));
+    // Which row: the nearest one (row 1 here), the first of equals, none without candidates.
+    const NearestPose n = nearestPose(pose, candidates);
+    CHECK(n.row == 1);
+    CHECK(n.rmsDeg == doctest::Approx(std::sqrt((43.0 * 4.0 + 42.0 * 42.0) / 44.0)));
+    Eigen::MatrixXd twins(3, kPoseDofs);
+    twins << candidates.row(0), candidates.row(0) * 0.5, candidates.row(0) * 0.5;
+    CHECK(nearestPose(pose, twins).row == 1);
+    CHECK(nearestPose(pose, twins).rmsDeg == doctest::Approx(5.0));
+    CHECK(nearestPose(pose, Eigen::MatrixXd(0, kPoseDofs)).row == -1);
 }
 
 TEST_CASE("clip segments: joined in order, and a segment past the trial's end is a clear error") {

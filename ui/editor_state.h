@@ -53,6 +53,7 @@ struct EditorState {
     int selectedKey = -1;           // path key last dragged or picked, -1 none
     bool showCapturedPath = true;   // the captured path beside the edited one
     bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
+    bool showNearestGhost = false;  // the captured frame nearest to the last learned solve
     // View > Pose range: tint the figure by σ²(x) against the model's training range, with a legend
     // (render/range_tint.h). Only a solved pose is tinted (a drag, an edited frame) and only with a model.
     bool showRangeTint = true;

@@ -389,6 +389,17 @@ void drawIkReadout(EditorState& s) {
         ImGui::EndTable();
     }
     if (r.learned) ImGui::Text("sigma^2(x) %.4g   L_IK %.4g   %d it", r.sigma2, r.lik, r.iterations);
+    if (r.nearest.row >= 0) {
+        ImGui::Checkbox("##nearestghost", &s.showNearestGhost);
+        s.recordControl("nearest ghost");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show that captured pose as a green ghost at the current root");
+        ImGui::SameLine();
+        ImGui::Text("nearest captured: %s frame %d (%.2f deg RMS)", r.nearestClip.c_str(), r.nearest.row + 1,
+                    r.nearest.rmsDeg);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The captured frame of the model's clip closest to this pose in joint angles "
+                              "(RMS over the non-root DOFs): where the pose is in the data. Tick to see it as a ghost.");
+    }
     ImGui::TextDisabled("%s", r.diagnostic.c_str());
 }
 

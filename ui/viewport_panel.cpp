@@ -65,6 +65,18 @@ const char* dragAxisLabel(int axis) {
 
 }  // namespace
 
+// The captured frame nearest to the last learned solve (SolveReadout::nearest), with the current
+// pose's root position and rotation, so that only the body's shape is compared.
+std::optional<Pose> nearestGhostPose(const EditorState& s) {
+    const SolveReadout& r = s.doc.readout();
+    if (!r.valid || r.nearest.row < 0 || r.nearest.row >= s.doc.frameCount()) return std::nullopt;
+    Pose pose = s.doc.clip().frames[r.nearest.row];
+    const Pose& current = s.doc.currentPose();
+    pose.rootCm = current.rootCm;
+    if (!pose.anglesDeg.empty() && !current.anglesDeg.empty()) pose.anglesDeg[0] = current.anglesDeg[0];
+    return pose;
+}
+
 std::optional<Pose> beforeGhostPose(const EditorState& s) {
     if (std::optional<Pose> before = s.doc.beforeGhost()) return before;
     // No undo step for this frame (e.g. a reopened session, whose history is not saved): an
@@ -354,26 +366,22 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
         if (h.id == s.hoveredHandle) h.state = render::HandleState::kHover;
         if (doc.dragging() && h.id == static_cast<int>(doc.dragEffector())) h.state = render::HandleState::kSelected;
     }
-    if (doc.comparePose()) {
-        FkState fk;
-        forwardKinematics(doc.clip().skeleton, *doc.comparePose(), fk);
-        render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
+    auto addGhost = [&](const Pose& pose, std::optional<glm::vec3> tint) {
+        FkState ghostFk;
+        forwardKinematics(doc.clip().skeleton, pose, ghostFk);
+        render::Figure ghost = render::makeFigure(doc.clip().skeleton, ghostFk);
         ghost.ghost = true;
+        if (tint) ghost.ghostTint = *tint;
         ghost.castsShadow = false;
         scene.figures.push_back(std::move(ghost));
-    }
-    if (s.showBeforeGhost) {
-        if (const std::optional<Pose> before = beforeGhostPose(s)) {
-            FkState fk;
-            forwardKinematics(doc.clip().skeleton, *before, fk);
-            render::Figure ghost = render::makeFigure(doc.clip().skeleton, fk);
-            ghost.ghost = true;
-            // Violet: distinct from the blue compare ghost and from the warm right-side bones.
-            ghost.ghostTint = {0.78f, 0.38f, 1.0f};
-            ghost.castsShadow = false;
-            scene.figures.push_back(std::move(ghost));
-        }
-    }
+    };
+    if (doc.comparePose()) addGhost(*doc.comparePose(), std::nullopt);
+    // Violet: distinct from the blue compare ghost and from the warm right-side bones.
+    if (s.showBeforeGhost)
+        if (const std::optional<Pose> before = beforeGhostPose(s)) addGhost(*before, glm::vec3(0.78f, 0.38f, 1.0f));
+    // Green: the captured frame nearest to the last solve, laid over the current pose's root.
+    if (s.showNearestGhost)
+        if (const std::optional<Pose> nearest = nearestGhostPose(s)) addGhost(*nearest, glm::vec3(0.3f, 0.9f, 0.5f));
     if (doc.pathEdit() && s.showCapturedPath) {
         // Fainter and thinner than the edited path, which covers it where the two agree.
         render::Path captured;

@@ -5,6 +5,7 @@
 
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
+#include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
@@ -122,6 +123,12 @@ void DragSession::solveLearned(int maxIterations) {
     readout_.converged = result_.converged;
     readout_.stop = result_.stop;
     readout_.diagnostic = result_.diagnostic;
+    if (capturedPosesOf_ != model_->model) {
+        capturedPoses_ = poseMatrix(model_->model->clip);
+        capturedPosesOf_ = model_->model;
+    }
+    readout_.nearestClip = model_->model->clip.name;
+    readout_.nearest = nearestPose(PoseLayout(*skeleton_).extract(pose_), capturedPoses_);
 }
 
 void DragSession::solvePlain() {

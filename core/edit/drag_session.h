@@ -17,6 +17,7 @@
 
 #include "edit/compare_mode.h"
 #include "gp/model_version.h"
+#include "eval/nearest_pose.h"
 #include "ik/constrained_ik.h"
 #include "skeleton/skeleton.h"
 
@@ -33,6 +34,10 @@ struct SolveReadout {
     bool converged = false;
     IkStop stop = IkStop::kInvalidRequest;  // of the last solve (learned only)
     std::string diagnostic;
+    // Where the pose is in the data (learned only): the captured frame of the model's clip
+    // nearest to it, and how far (eval/nearest_pose.h; row -1 otherwise).
+    std::string nearestClip;
+    NearestPose nearest;
 };
 
 class DragSession {
@@ -112,6 +117,8 @@ private:
     std::vector<IkConstraint> pins_, contactPins_;
     std::vector<Eigen::VectorXd> latentPath_;
     SolveReadout readout_;
+    Eigen::MatrixXd capturedPoses_;             // poseMatrix of the model's clip (the nearest-frame candidates)
+    std::shared_ptr<const gp::GpModel> capturedPosesOf_;  // the model they were taken from
 
     std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;
     ConstrainedIkRequest request_;

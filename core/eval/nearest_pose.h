@@ -4,12 +4,19 @@
 // difference wrapped to ±180°, to the nearest of a set of candidate poses.
 #include <Eigen/Core>
 
+#include <limits>
+
 namespace mgp {
 
-// a wrapped to [−180, 180] (degrees).
-double wrap180(double a);
+// Which candidate row is nearest and how far (degrees, RMS over the non-root DOFs).
+struct NearestPose {
+    int row = -1;  // -1 when there are no candidates
+    double rmsDeg = std::numeric_limits<double>::infinity();
+};
 
-// pose: 47 DOFs (degrees); candidates: one pose per row. +∞ when there are no candidates.
+// pose: 47 DOFs (degrees); candidates: one pose per row (the first row wins a tie).
+NearestPose nearestPose(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates);
+// Its distance alone: +∞ when there are no candidates.
 double nearestPoseRmsDeg(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates);
 
 }  // namespace mgp
