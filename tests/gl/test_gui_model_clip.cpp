@@ -15,6 +15,17 @@ namespace key = ui::key;
 
 namespace {
 std::string kickModelPath() { return std::string(MOTIONGP_TEST_FIXTURES) + "/kick10_03_fas_m100_t3.model"; }
+
+// Opens the kick model (trained on 10_03) and answers its question with `answer` (Enter: open
+// with its clip, Esc: cancel); the question must be up first and gone after.
+void openKickModelAnswering(test::Harness& h, int answer) {
+    REQUIRE(h.app->runAction({"open-model", kickModelPath()}) == "");
+    h.frame(2);
+    REQUIRE(h.app->askingAboutModelClip());
+    tapKey(h, answer);
+    h.frame(2);
+    CHECK_FALSE(h.app->askingAboutModelClip());
+}
 }  // namespace
 
 TEST_CASE("gui: a model of another clip asks before replacing the open clip") {
@@ -24,15 +35,7 @@ TEST_CASE("gui: a model of another clip asks before replacing the open clip") {
     REQUIRE(doc.clip().name == "35_01");
 
     // Cancel (Esc): nothing changes.
-    REQUIRE(h->app->runAction({"open-model", kickModelPath()}) == "");
-    h->frame(2);
-    REQUIRE(h->app->askingAboutModelClip());
-    CHECK(doc.clip().name == "35_01");
-    CHECK_FALSE(doc.hasModel());
-    tapKey(*h, key::kEscape);
-    CHECK_FALSE(h->app->askingAboutModelClip());
-    h->frame(2);
-    CHECK_FALSE(h->app->askingAboutModelClip());
+    openKickModelAnswering(*h, key::kEscape);
     CHECK(doc.clip().name == "35_01");
     CHECK(doc.frameCount() == 358);
     CHECK_FALSE(doc.hasModel());
@@ -42,12 +45,7 @@ TEST_CASE("gui: a model of another clip asks before replacing the open clip") {
     doc.setFrame(40);
     REQUIRE(doc.pastePose(doc.clip().frames[10]) == "");
     REQUIRE(h->app->dirty());
-    REQUIRE(h->app->runAction({"open-model", kickModelPath()}) == "");
-    h->frame(2);
-    REQUIRE(h->app->askingAboutModelClip());
-    tapKey(*h, key::kEnter);
-    h->frame(2);
-    CHECK_FALSE(h->app->askingAboutModelClip());
+    openKickModelAnswering(*h, key::kEnter);
     REQUIRE(h->app->askingAboutUnsavedChanges());
     tapKey(*h, key::kEscape);
     h->frame(1);
@@ -61,12 +59,7 @@ TEST_CASE("gui: a model of another clip asks before replacing the open clip") {
     h->frame(2);
     EditorDocument& fresh = h->app->state().doc;
     REQUIRE_FALSE(h->app->dirty());
-    REQUIRE(h->app->runAction({"open-model", kickModelPath()}) == "");
-    h->frame(2);
-    REQUIRE(h->app->askingAboutModelClip());
-    tapKey(*h, key::kEnter);
-    h->frame(2);
-    CHECK_FALSE(h->app->askingAboutModelClip());
+    openKickModelAnswering(*h, key::kEnter);
     CHECK_FALSE(h->app->askingAboutUnsavedChanges());
     REQUIRE(fresh.hasModel());
     CHECK(fresh.clip().name == "10_03");
