@@ -5,10 +5,15 @@
 //    iterations (tolerances off), the work README compares with GPc (measured elsewhere);
 //  - scaling: one outer iteration at N = 600, 2 400, 9 600 rows of concatenated real clips,
 //    M = 200 (Step 8 dominates and must grow linearly in N);
+//  - training_10000: a whole quick run (T = 10, M = 200, no temporal prior: the clips are joined
+//    end to end) on 10 000 rows of concatenated real clips, measured once, with the process's
+//    peak resident memory against what one N×N matrix of doubles would take;
 //  - paper_training_180: the whole paper-setting run (T = 100, S = 100, C = 0.01, no temporal
 //    prior) on the 180-frame clip, measured once; paper_training_180_smooth the same with the
 //    smooth prior (the training default).
 // Medians over ctx.repeats; the large sizes use fewer repeats (stated in the output).
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <thread>
 
@@ -120,6 +125,27 @@ const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal
         scaling.push_back(j);
     }
     out["scaling"] = scaling;
+
+    {
+        const int n = ctx.quick ? 600 : 10000;
+        const Concatenated c = concatenated(ctx, n);
+        const gp::TrainingData data = dataOf(c.poses);
+        gp::TrainOptions o;
+        o.prior = gp::LatentPrior::kNone;
+        o.activeSize = 200;
+        o.outerIterations = 10;
+        gp::TrainResult r;
+        const double sec = secondsOf([&] { r = gp::train(data, o); });
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        const double mb = 1024.0 * 1024.0;
+        out["training_10000"] = {{"N", n}, {"M", o.activeSize}, {"T", o.outerIterations}, {"clips", c.clips},
+                                 {"synthetic_rows", c.syntheticRows}, {"seconds", sec}, {"iterations", r.log.size()},
+                                 {"target_seconds", 60.0}, {"measured_once", true},
+                                 {"peak_rss_mb", usage.ru_maxrss / 1024.0},
+                                 {"one_N_by_M_matrix_mb", 8.0 * n * o.activeSize / mb},
+                                 {"one_N_by_N_matrix_mb", 8.0 * n * n / mb}};
+    }
     out["scaling_clips"] = "each size's clips field: trials concatenated in order, then a synthetic walk if they run out";
 
     {
