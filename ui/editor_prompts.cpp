@@ -36,13 +36,16 @@ void EditorPrompts::modelClip(bool dialogOpen) {
     askingModelClip_ = ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     if (!askingModelClip_) return;
     for (const std::string& line : modelClipLines_) ImGui::TextUnformatted(line.c_str());
-    if (ImGui::Button("Open with its clip", ImVec2(160, 0)) || ImGui::IsKeyPressed(key::kEnter, false)) {
+    // Keys answer only once the question has been on screen: the Enter that confirmed the file
+    // dialog is still down on the frame the question appears.
+    const bool keys = !ImGui::IsWindowAppearing();
+    if (ImGui::Button("Open with its clip", ImVec2(160, 0)) || (keys && ImGui::IsKeyPressed(key::kEnter, false))) {
         std::function<void()> openIt = std::exchange(openModelClip_, nullptr);
         ImGui::CloseCurrentPopup();
         openIt();  // may ask about unsaved changes next
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(key::kEscape, false)) {
+    if (ImGui::Button("Cancel", ImVec2(110, 0)) || (keys && ImGui::IsKeyPressed(key::kEscape, false))) {
         openModelClip_ = nullptr;
         ImGui::CloseCurrentPopup();
     }

@@ -66,6 +66,28 @@ TEST_CASE("gui: a model of another clip asks before replacing the open clip") {
     CHECK(fresh.frameCount() == fresh.model()->model->clip.frameCount());
 }
 
+TEST_CASE("gui: the Enter that opens a model in the file dialog does not also answer the question") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    REQUIRE(h->app->runAction({"open-model"}) == "");  // no PATH: the Open dialog
+    h->frame(2);
+    REQUIRE(h->app->fileDialog().isOpen());
+    const std::string path = kickModelPath();
+    h->input.chars.assign(path.begin(), path.end());
+    h->frame(2);
+    REQUIRE(std::string(h->app->fileDialog().typedPath()) == path);
+    tapKey(*h, key::kEnter);
+    h->frame(3);
+    CHECK_FALSE(h->app->fileDialog().isOpen());
+    REQUIRE(h->app->askingAboutModelClip());  // still asking: that Enter was the dialog's
+    CHECK(h->app->state().doc.clip().name == "35_01");
+    CHECK_FALSE(h->app->state().doc.hasModel());
+    tapKey(*h, key::kEscape);
+    h->frame(2);
+    CHECK_FALSE(h->app->askingAboutModelClip());
+    CHECK(h->app->state().doc.clip().name == "35_01");
+}
+
 TEST_CASE("gui: a model of the open clip opens without a question") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
