@@ -394,8 +394,7 @@ void drawIkReadout(EditorState& s) {
         s.recordControl("nearest ghost");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show that captured pose as a green ghost at the current root");
         ImGui::SameLine();
-        ImGui::Text("nearest captured: %s frame %d (%.2f deg RMS)", r.nearestClip.c_str(), r.nearest.row + 1,
-                    r.nearest.rmsDeg);
+        ImGui::Text("nearest: %s frame %d, %.1f deg RMS", r.nearestClip.c_str(), r.nearest.row + 1, r.nearest.rmsDeg);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The captured frame of the model's clip closest to this pose in joint angles "
                               "(RMS over the non-root DOFs): where the pose is in the data. Tick to see it as a ghost.");
