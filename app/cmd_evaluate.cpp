@@ -135,7 +135,8 @@ const CommandRegistration reg(
                                    {"train_seconds", h.trainSeconds[k]}});
                     trainSeconds += h.trainSeconds[k];
                 }
-                // The top-level numbers are the means over the offsets (one offset: its values).
+                // The top-level RMS values are the means over the offsets (one offset: its values);
+                // the counts are the first offset's, every offset's are in per_offset.
                 j["heldout"] = {{"every", o->every}, {"offsets", h.offsets}, {"held_out", h.perOffset[0].heldOut},
                                 {"trained", h.perOffset[0].trained}, {"outer_iterations", opt.outerIterations},
                                 {"rms_deg", h.rmsDeg.mean}, {"nearest_frame_rms_deg", h.nearestRmsDeg.mean},
