@@ -1,13 +1,18 @@
-// `motiongp evaluate MODEL [--heldout] [--every K] [--heldout-iters T] [--no-yardstick] [--json]`
+// `motiongp evaluate MODEL [--heldout] [--every K] [--heldout-offsets O1,O2,...] [--heldout-iters T]
+//   [--threads N] [--no-yardstick] [--json]`
 // Layout quality of a trained model (core/eval/layout_quality.h, docs/maths.md §20):
 //  - continuity: consecutive-frame latent step p50/p90/p99 over the median pair distance;
 //  - yardstick: full-GP log marginal likelihood per value at the model's X and at its PCA start
 //    (RBF + bias + white re-fitted; only for N ≤ 2000);
-//  - with --heldout: retrains with the model's own settings on its training frames minus every
-//    K-th one (default 10), places each left-out frame by L_IK from its pose and reports the RMS
+//  - with --heldout: retrains with the model's own settings on its training frames minus one in
+//    K (default 10), places each left-out frame by L_IK from its pose and reports the RMS
 //    reconstruction error (degrees, non-root DOFs) next to the nearest-training-frame baseline.
-#include <chrono>
+//    --heldout-offsets (implies --heldout) repeats that for several disjoint splits (positions
+//    ≡ offset mod K) and reports each one and the mean, sd, min and max: one split alone moves
+//    the RMS by more than the gap between training options.
+#include <algorithm>
 #include <iostream>
+#include <sstream>
 
 #include "cli_common.h"
 #include "command_registry.h"
@@ -27,25 +32,60 @@ nlohmann::json scoreJson(const eval::FullGpScore& s) {
             {"bias", s.bias}, {"noise_variance", s.noiseVariance}};
 }
 
+nlohmann::json spreadJson(const eval::Spread& s) {
+    return {{"mean", s.mean}, {"sd", s.sd}, {"min", s.min}, {"max", s.max}, {"count", s.count}};
+}
+
+// "0,3,6" → {0, 3, 6}: integers in [0, every), no repeats.
+std::vector<int> parseOffsets(const std::string& text, int every) {
+    std::vector<int> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        std::size_t used = 0;
+        int v = -1;
+        try {
+            v = std::stoi(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || v < 0 || v >= every)
+            throw UsageError("expected --heldout-offsets as integers in [0, " + std::to_string(every) +
+                             ") separated by commas, found '" + text + "'");
+        if (std::find(out.begin(), out.end(), v) != out.end())
+            throw UsageError("expected distinct --heldout-offsets, found " + std::to_string(v) + " twice in '" + text + "'");
+        out.push_back(v);
+    }
+    if (out.empty()) throw UsageError("expected at least one offset in --heldout-offsets, found '" + text + "'");
+    return out;
+}
+
 const CommandRegistration reg(
     "evaluate", "Layout quality of a model: latent continuity, full-GP yardstick, held-out reconstruction",
     [](CLI::App& sub) -> CommandRunner {
         struct Opts {
             std::string model;
             bool heldout = false, noYardstick = false, json = false;
-            int every = 10, heldoutIters = 0;
+            int every = 10, heldoutIters = 0, threads = 0;
+            std::string offsets;
         };
         auto o = std::make_shared<Opts>();
         sub.add_option("model", o->model, "Model file")->required();
         sub.add_flag("--heldout", o->heldout,
                      "Also retrain without every K-th frame (the model's own settings) and score the reconstruction");
         sub.add_option("--every", o->every, "Hold out every K-th training frame (default 10)");
+        sub.add_option("--heldout-offsets", o->offsets,
+                       "Held-out splits to average, e.g. 0,3,6: positions ≡ offset mod K (0 = every K-th; implies --heldout)");
+        sub.add_option("--threads", o->threads, "Threads for Step 8 of the held-out retraining (default: all cores)");
         sub.add_option("--heldout-iters", o->heldoutIters, "Outer iterations of the held-out retraining (default: the model's T)");
         sub.add_flag("--no-yardstick", o->noYardstick, "Skip the full-GP yardstick");
         sub.add_flag("--json", o->json, "Print one JSON object");
         return [o]() {
             if (o->every < 2) throw UsageError("expected --every ≥ 2, found " + std::to_string(o->every));
             if (o->heldoutIters < 0) throw UsageError("expected --heldout-iters ≥ 1, found " + std::to_string(o->heldoutIters));
+            if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
+            const std::vector<int> offsets = o->offsets.empty() ? std::vector<int>{0} : parseOffsets(o->offsets, o->every);
+            if (!o->offsets.empty()) o->heldout = true;
             const gp::GpModel model = gp::loadModel(o->model);
             nlohmann::json j;
             j["model"] = o->model;
@@ -76,22 +116,36 @@ const CommandRegistration reg(
                                                                       : nlohmann::json(nullptr)}};
             }
             if (o->heldout) {
-                const eval::HeldOutSplit split = eval::everyNthHeldOut(model.trainingFrames, o->every);
-                if (split.trainFrames.size() < 3 || split.heldFrames.empty())
-                    throw UsageError("expected at least 3 training and 1 held-out frame with --every " +
-                                     std::to_string(o->every) + ", found " + std::to_string(split.trainFrames.size()) +
-                                     " and " + std::to_string(split.heldFrames.size()));
                 gp::TrainOptions opt = eval::trainOptionsOf(model);
                 if (o->heldoutIters > 0) opt.outerIterations = o->heldoutIters;
-                const auto t0 = std::chrono::steady_clock::now();
-                gp::TrainResult r = gp::train(gp::trainingDataFromClip(model.clip, split.trainFrames), opt);
-                r.model.clip = model.clip;
-                const double trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                const eval::HeldOutReport h = eval::heldOutReconstruction(r.model, split.heldFrames);
-                j["heldout"] = {{"every", o->every}, {"held_out", h.heldOut}, {"trained", h.trained},
-                                {"outer_iterations", opt.outerIterations}, {"rms_deg", h.rmsDeg},
-                                {"nearest_frame_rms_deg", h.nearestRmsDeg}, {"inbetween_rms_deg", h.timeRmsDeg},
-                                {"inbetween_frames", h.timeCount}, {"train_seconds", trainSeconds}};
+                opt.threads = o->threads;
+                eval::HeldOutOffsetsReport h;
+                try {
+                    h = eval::heldOutOverOffsets(model, opt, o->every, offsets);
+                } catch (const std::invalid_argument& e) {
+                    throw UsageError(std::string("with --every ") + std::to_string(o->every) + ": " + e.what());
+                }
+                nlohmann::json per = nlohmann::json::array();
+                double trainSeconds = 0.0;
+                for (std::size_t k = 0; k < h.perOffset.size(); ++k) {
+                    const eval::HeldOutReport& r = h.perOffset[k];
+                    per.push_back({{"offset", h.offsets[k]}, {"held_out", r.heldOut}, {"trained", r.trained},
+                                   {"rms_deg", r.rmsDeg}, {"nearest_frame_rms_deg", r.nearestRmsDeg},
+                                   {"inbetween_rms_deg", r.timeRmsDeg}, {"inbetween_frames", r.timeCount},
+                                   {"train_seconds", h.trainSeconds[k]}});
+                    trainSeconds += h.trainSeconds[k];
+                }
+                // The top-level RMS values are the means over the offsets (one offset: its values);
+                // the counts are the first offset's, every offset's are in per_offset.
+                j["heldout"] = {{"every", o->every}, {"offsets", h.offsets}, {"held_out", h.perOffset[0].heldOut},
+                                {"trained", h.perOffset[0].trained}, {"outer_iterations", opt.outerIterations},
+                                {"rms_deg", h.rmsDeg.mean}, {"nearest_frame_rms_deg", h.nearestRmsDeg.mean},
+                                {"inbetween_rms_deg", h.timeRmsDeg.mean},
+                                {"inbetween_frames", h.perOffset[0].timeCount}, {"train_seconds", trainSeconds},
+                                {"spread", {{"rms_deg", spreadJson(h.rmsDeg)},
+                                            {"nearest_frame_rms_deg", spreadJson(h.nearestRmsDeg)},
+                                            {"inbetween_rms_deg", spreadJson(h.timeRmsDeg)}}},
+                                {"per_offset", per}};
             } else {
                 j["heldout"] = nullptr;
             }
@@ -106,11 +160,16 @@ const CommandRegistration reg(
             if (j["yardstick"].is_object() && j["yardstick"].contains("final"))
                 std::cout << "  full-GP yardstick (log-likelihood per value): final " << j["yardstick"]["final"]["per_value"]
                           << ", PCA start " << j["yardstick"]["pca_start"]["per_value"] << "\n";
-            if (j["heldout"].is_object())
-                std::cout << "  held-out reconstruction (every " << o->every << "th frame): RMS "
-                          << j["heldout"]["rms_deg"] << " deg, nearest training frame "
-                          << j["heldout"]["nearest_frame_rms_deg"] << " deg, in-betweened from time neighbours "
-                          << j["heldout"]["inbetween_rms_deg"] << " deg\n";
+            if (j["heldout"].is_object()) {
+                const auto& h = j["heldout"];
+                std::cout << "  held-out reconstruction (one frame in " << o->every << ", offsets " << h["offsets"].dump()
+                          << "): RMS " << h["rms_deg"] << " deg (sd " << h["spread"]["rms_deg"]["sd"]
+                          << "), nearest training frame " << h["nearest_frame_rms_deg"]
+                          << " deg, in-betweened from time neighbours " << h["inbetween_rms_deg"] << " deg\n";
+                for (const auto& r : h["per_offset"])
+                    std::cout << "    offset " << r["offset"] << ": RMS " << r["rms_deg"] << ", nearest "
+                              << r["nearest_frame_rms_deg"] << ", in-between " << r["inbetween_rms_deg"] << " deg\n";
+            }
             return 0;
         };
     });

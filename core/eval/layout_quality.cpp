@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -157,14 +158,64 @@ FullGpScore fitFullGp(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, int ma
     return best;
 }
 
-HeldOutSplit everyNthHeldOut(std::vector<int> frames, int every) {
+HeldOutSplit everyNthHeldOut(std::vector<int> frames, int every, int offset) {
     if (every < 2) throw std::invalid_argument("everyNthHeldOut: expected every ≥ 2, found " + std::to_string(every));
+    if (offset < 0 || offset >= every)
+        throw std::invalid_argument("everyNthHeldOut: expected 0 ≤ offset < " + std::to_string(every) + ", found " +
+                                    std::to_string(offset));
     std::sort(frames.begin(), frames.end());
     frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
     HeldOutSplit s;
-    for (std::size_t k = 0; k < frames.size(); ++k)
-        ((k + 1) % static_cast<std::size_t>(every) == 0 ? s.heldFrames : s.trainFrames).push_back(frames[k]);
+    const auto e = static_cast<std::size_t>(every), o = static_cast<std::size_t>(offset);
+    for (std::size_t k = 0; k < frames.size(); ++k) ((k + 1) % e == o ? s.heldFrames : s.trainFrames).push_back(frames[k]);
     return s;
+}
+
+Spread spreadOf(const std::vector<double>& values) {
+    Spread s;
+    s.count = static_cast<int>(values.size());
+    if (values.empty()) return s;
+    double sum = 0.0;
+    for (double v : values) sum += v;
+    s.mean = sum / s.count;
+    double ss = 0.0;
+    for (double v : values) ss += (v - s.mean) * (v - s.mean);
+    s.sd = s.count > 1 ? std::sqrt(ss / (s.count - 1)) : 0.0;
+    s.min = *std::min_element(values.begin(), values.end());
+    s.max = *std::max_element(values.begin(), values.end());
+    return s;
+}
+
+void summarizeHeldOut(HeldOutOffsetsReport& report) {
+    std::vector<double> rms, nearest, time;
+    for (const HeldOutReport& h : report.perOffset) {
+        rms.push_back(h.rmsDeg);
+        nearest.push_back(h.nearestRmsDeg);
+        if (h.timeCount > 0) time.push_back(h.timeRmsDeg);
+    }
+    report.rmsDeg = spreadOf(rms);
+    report.nearestRmsDeg = spreadOf(nearest);
+    report.timeRmsDeg = spreadOf(time);
+}
+
+HeldOutOffsetsReport heldOutOverOffsets(const gp::GpModel& model, const gp::TrainOptions& options, int every,
+                                        const std::vector<int>& offsets) {
+    HeldOutOffsetsReport rep;
+    rep.offsets = offsets;
+    for (int offset : offsets) {
+        const HeldOutSplit split = everyNthHeldOut(model.trainingFrames, every, offset);
+        if (split.trainFrames.size() < 3 || split.heldFrames.empty())
+            throw std::invalid_argument("heldOutOverOffsets: expected at least 3 training and 1 held-out frame at offset " +
+                                        std::to_string(offset) + ", found " + std::to_string(split.trainFrames.size()) +
+                                        " and " + std::to_string(split.heldFrames.size()));
+        const auto t0 = std::chrono::steady_clock::now();
+        gp::TrainResult r = gp::train(gp::trainingDataFromClip(model.clip, split.trainFrames), options);
+        rep.trainSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        r.model.clip = model.clip;
+        rep.perOffset.push_back(heldOutReconstruction(r.model, split.heldFrames));
+    }
+    summarizeHeldOut(rep);
+    return rep;
 }
 
 HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames, int iterations) {

@@ -55,8 +55,11 @@ constexpr int kYardstickMaxRows = 2000;
 struct HeldOutSplit {
     std::vector<int> trainFrames, heldFrames;  // clip frames, ascending
 };
-// Every `every`-th frame (the every-th, 2·every-th, … in time order) of `frames` is held out.
-HeldOutSplit everyNthHeldOut(std::vector<int> frames, int every = 10);
+// One frame in `every` of `frames` is held out: the frames at 1-based positions p ≡ offset
+// (mod every) in time order. offset 0 (the default) holds out the every-th, 2·every-th, …;
+// offset k ∈ [1, every) the k-th, (every+k)-th, …, so different offsets give disjoint held-out
+// sets. Duplicates are dropped first.
+HeldOutSplit everyNthHeldOut(std::vector<int> frames, int every = 10, int offset = 0);
 
 struct HeldOutReport {
     int heldOut = 0, trained = 0;
@@ -71,6 +74,27 @@ struct HeldOutReport {
 // `model` was trained without heldFrames; its clip supplies the true poses.
 HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames,
                                     int iterations = 200);
+
+// Mean and spread of one measure over several held-out splits (offsets). sd is the sample
+// standard deviation (n − 1; 0 for one value): how far one retraining on one split can move it.
+struct Spread {
+    int count = 0;
+    double mean = 0.0, sd = 0.0, min = 0.0, max = 0.0;
+};
+Spread spreadOf(const std::vector<double>& values);
+
+// The held-out protocol over several offsets: per offset, the model's frames minus that
+// offset's split, retrained with `options`, scored by heldOutReconstruction.
+struct HeldOutOffsetsReport {
+    std::vector<int> offsets;
+    std::vector<HeldOutReport> perOffset;
+    std::vector<double> trainSeconds;  // wall time of each retraining
+    Spread rmsDeg, nearestRmsDeg, timeRmsDeg;
+};
+// Summaries of per-offset reports (the Spread fields; offsets/trainSeconds are left as given).
+void summarizeHeldOut(HeldOutOffsetsReport& report);
+HeldOutOffsetsReport heldOutOverOffsets(const gp::GpModel& model, const gp::TrainOptions& options, int every,
+                                        const std::vector<int>& offsets);
 
 // The options a model was trained with (kind and settings), for retraining on a split.
 gp::TrainOptions trainOptionsOf(const gp::GpModel& model);
