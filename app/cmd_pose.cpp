@@ -12,13 +12,13 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "eval/nearest_pose.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
-#include "eval/nearest_pose.h"
 #include "ik_cli.h"
 #include "motion/foot_contacts.h"
 
