@@ -19,7 +19,6 @@
 namespace mgp::ui {
 
 namespace {
-glm::vec3 toGlm(const Eigen::Vector3d& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
 Eigen::Vector3d toEigen(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 // Ray-plane intersection; false if parallel or behind the eye.
@@ -61,48 +60,6 @@ bool dragAxisPoint(const render::OrbitCamera& camera, float mx, float my, int wi
 
 const char* dragAxisLabel(int axis) {
     return axis == 0 ? "along X" : axis == 1 ? "along Y" : axis == 2 ? "along Z" : "free";
-}
-
-}  // namespace
-
-// The captured frame nearest to the last learned solve (SolveReadout::nearest), with the current
-// pose's root position and rotation, so that only the body's shape is compared.
-std::optional<Pose> nearestGhostPose(const EditorState& s) {
-    const SolveReadout& r = s.doc.readout();
-    if (!r.valid || r.nearest.row < 0 || r.nearest.row >= s.doc.frameCount()) return std::nullopt;
-    Pose pose = s.doc.clip().frames[r.nearest.row];
-    const Pose& current = s.doc.currentPose();
-    pose.rootCm = current.rootCm;
-    if (!pose.anglesDeg.empty() && !current.anglesDeg.empty()) pose.anglesDeg[0] = current.anglesDeg[0];
-    return pose;
-}
-
-std::optional<Pose> beforeGhostPose(const EditorState& s) {
-    if (std::optional<Pose> before = s.doc.beforeGhost()) return before;
-    // No undo step for this frame (e.g. a reopened session, whose history is not saved): an
-    // edited frame's "before" is its captured pose.
-    if (s.doc.hasClip() && s.doc.isEdited(s.doc.frame())) return s.doc.capturedPose();
-    return std::nullopt;
-}
-
-namespace {
-
-// The edited path with its keys (what the viewport draws and where keys are picked), or
-// nullopt when no path is being edited.
-std::optional<render::Path> editedPath(const EditorState& s) {
-    const auto& path = s.doc.pathEdit();
-    if (!path) return std::nullopt;
-    render::Path p;
-    for (const Eigen::Vector3d& v : s.doc.pathTargets()) p.pointsCm.push_back(toGlm(v));
-    const int keys = static_cast<int>(path->keyFrames.size());
-    for (int k = 0; k < keys; ++k) p.keysCm.push_back(toGlm(s.doc.pathKeyPosition(k)));
-    p.colour = {0.20f, 0.55f, 0.95f};
-    p.radiusCm = 0.7f;
-    const int first = path->keyFrames.front(), last = path->keyFrames.back();
-    if (s.doc.frame() >= first && s.doc.frame() <= last) p.currentPoint = s.doc.frame() - first;
-    p.hoveredKey = s.hoveredKey < keys ? s.hoveredKey : -1;
-    p.selectedKey = s.selectedKey < keys ? s.selectedKey : -1;
-    return p;
 }
 
 // Path keys as pickable spheres (id = key index), the size they are drawn, nearest in time to
@@ -341,70 +298,6 @@ int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
     }
     const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 3.0f);
     return i < 0 ? -1 : joints[i];
-}
-
-render::Scene ViewportPanel::buildScene(const EditorState& s) const {
-    const EditorDocument& doc = s.doc;
-    // Built here rather than with render::buildClipScene, which recomputes the clip's floor
-    // height (FK over every frame) on each call; the floor is cached per clip.
-    if (groundClip_ != doc.clip().name + "#" + std::to_string(doc.frameCount())) {
-        groundClip_ = doc.clip().name + "#" + std::to_string(doc.frameCount());
-        groundHeight_ = render::clipGroundHeight(doc.clip());
-    }
-    render::Scene scene;
-    FkState fk;
-    // A rotate-joint gesture shows its preview (EditorState::posePreview), untinted.
-    forwardKinematics(doc.clip().skeleton, s.posePreview ? *s.posePreview : doc.currentPose(), fk);
-    scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
-    if (s.showRangeTint && !s.posePreview)
-        if (const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict())
-            render::applyRangeTint(scene.figures.back(), render::rangeTint(v->range, v->sigma2, v->lik));
-    scene.groundHeightCm = groundHeight_;
-    scene.groundCentreCm = toGlm(fk.jointCm[0]);
-    scene.handles = render::effectorHandles(doc.clip().skeleton, fk);
-    for (render::Handle& h : scene.handles) {
-        if (h.id == s.hoveredHandle) h.state = render::HandleState::kHover;
-        if (doc.dragging() && h.id == static_cast<int>(doc.dragEffector())) h.state = render::HandleState::kSelected;
-    }
-    auto addGhost = [&](const Pose& pose, std::optional<glm::vec3> tint) {
-        FkState ghostFk;
-        forwardKinematics(doc.clip().skeleton, pose, ghostFk);
-        render::Figure ghost = render::makeFigure(doc.clip().skeleton, ghostFk);
-        ghost.ghost = true;
-        if (tint) ghost.ghostTint = *tint;
-        ghost.castsShadow = false;
-        scene.figures.push_back(std::move(ghost));
-    };
-    if (doc.comparePose()) addGhost(*doc.comparePose(), std::nullopt);
-    // Violet: distinct from the blue compare ghost and from the warm right-side bones.
-    if (s.showBeforeGhost)
-        if (const std::optional<Pose> before = beforeGhostPose(s)) addGhost(*before, glm::vec3(0.78f, 0.38f, 1.0f));
-    // Green: the captured frame nearest to the last solve, laid over the current pose's root.
-    if (s.showNearestGhost)
-        if (const std::optional<Pose> nearest = nearestGhostPose(s)) addGhost(*nearest, glm::vec3(0.3f, 0.9f, 0.5f));
-    if (doc.pathEdit() && s.showCapturedPath) {
-        // Fainter and thinner than the edited path, which covers it where the two agree.
-        render::Path captured;
-        for (const Eigen::Vector3d& v : doc.pathCaptured()) captured.pointsCm.push_back(toGlm(v));
-        captured.colour = {0.62f, 0.64f, 0.70f};
-        captured.radiusCm = 0.35f;
-        scene.paths.push_back(std::move(captured));
-    }
-    if (auto p = editedPath(s)) scene.paths.push_back(std::move(*p));
-    if (doc.dragging()) {
-        render::Target t;
-        t.positionCm = toGlm(doc.dragTarget());
-        t.hasFrom = true;
-        t.fromCm = toGlm(doc.effectorPosition(doc.dragEffector()));
-        t.reached = doc.readout().valid && doc.readout().reached;
-        scene.targets.push_back(t);
-    }
-    for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
-    // Feet planted on this frame that a drag or Regenerate holds (not switched off, not released).
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (doc.hasEffector(foot) && doc.inContact(foot) && !doc.contactReleased(foot))
-            scene.footprints.push_back({toGlm(doc.effectorPosition(foot))});
-    return scene;
 }
 
 void ViewportPanel::draw(EditorState& s) {

@@ -79,12 +79,17 @@ private:
     mutable float groundHeight_ = 0.0f;
 };
 
+// A core point (cm, world Y up) as the renderer takes it: the same axes, in float.
+inline glm::vec3 toGlm(const Eigen::Vector3d& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
 // Window pixel of a world point (cm) in the viewport as last drawn (EditorState::viewport*);
 // false when behind the camera or outside the viewport. Usable without the panel (scripts, tests).
 bool viewportWindowPosition(const EditorState& state, const Eigen::Vector3d& pointCm, float& x, float& y);
 // The pose the "Before ghost" shows on the current frame: the pose before the last undoable step
 // that touched it, else (no such step) the captured pose of an edited frame; none otherwise.
 std::optional<Pose> beforeGhostPose(const EditorState& state);
+// The edited path with its keys (what the viewport draws and where keys are picked), or nullopt
+// when no path is being edited.
+std::optional<render::Path> editedPath(const EditorState& state);
 // Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
 bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
 
