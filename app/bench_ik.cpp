@@ -22,6 +22,7 @@
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
+#include "ik_cli.h"
 #include "io/clip_loader.h"
 #include "motion/foot_contacts.h"
 #include "motion/motion_edit.h"
@@ -207,8 +208,8 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
                 req.start = clip.frames[frame];
                 req.startX = latentStartForFrame(*version, frame);
                 req.constraints = {{e, effectorCm(clip.skeleton, fk, e) + mv, false}};
-                for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-                    if (foot != e && contacts.at(foot, frame)) req.constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+                for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, req.constraints))
+                    req.constraints.push_back(pin);
                 req.maxIterations = kEventCap;
                 solver.solve(req, res);
                 req.maxIterations = 500;

@@ -79,14 +79,9 @@ int runPose(const PoseOptions& o) {
     }
     nlohmann::json j;
     j["contact_pins"] = nlohmann::json::array();
-    const ContactSet contacts = detectFootContacts(clip);
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
-        if (!clip.skeleton.hasEffector(foot) || released[static_cast<int>(foot)] || !contacts.at(foot, frame)) continue;
-        bool constrained = false;
-        for (const IkConstraint& c : constraints) constrained |= c.effector == foot;
-        if (constrained) continue;
-        constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
-        j["contact_pins"].push_back(effectorName(foot));
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), frame, constraints, released)) {
+        constraints.push_back(pin);
+        j["contact_pins"].push_back(effectorName(pin.effector));
     }
     Pose pose;
     std::vector<IkConstraintResult> results;

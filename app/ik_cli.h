@@ -6,6 +6,8 @@
 
 #include "gp/model_version.h"
 #include "ik/ik_types.h"
+#include "motion/foot_contacts.h"
+#include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {
 
@@ -25,6 +27,11 @@ Effector parseEffectorOption(const std::string& text, const std::string& option)
 std::vector<int> parseFrameList(const std::string& text, const std::string& option);
 // Loads a model file as version 0 (throws ParseError for a bad file).
 gp::ModelVersionPtr loadModelVersion(const std::string& path);
+// The feet `pose` holds by default on `frame`: each foot in ground contact there (`contacts`, the
+// rule of core/motion/foot_contacts.h), not released and not already in `constraints`, as a pin
+// where it stands (`fk` of that frame). `released` is indexed by Effector (null: none released).
+std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,
+                                        const std::vector<IkConstraint>& constraints, const bool* released = nullptr);
 // One entry per constraint of that kind: effector, residual_cm, reached (targets also strength).
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins);
 
