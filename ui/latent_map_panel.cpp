@@ -110,7 +110,7 @@ void LatentMapPanel::draw(EditorState& s) {
     // texture (the static layer); each frame adds the moving parts on top.
     const StaticLayerKey key{v->model.get(), v->number, shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
                              side, showTrajectory_, frames};
-    if (!(key == layerKey_) || layer_.empty()) {
+    if (!(key == layerKey_)) {
         const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
         layer_.render(p0, ImVec2(side, side), [&](ImDrawList& dl) {
             if (key.hasImage)

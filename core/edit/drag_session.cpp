@@ -27,6 +27,7 @@ DragSession::~DragSession() = default;
 void DragSession::begin(const Skeleton& skeleton, Effector e, const Pose& start, gp::ModelVersionPtr model,
                         Eigen::VectorXd startX, std::vector<IkConstraint> pins, std::vector<IkConstraint> contactPins) {
     skeleton_ = &skeleton;
+    layout_.emplace(skeleton);
     model_ = std::move(model);
     active_ = true;
     latent_ = false;
@@ -128,7 +129,7 @@ void DragSession::solveLearned(int maxIterations) {
         capturedPosesOf_ = model_->model;
     }
     readout_.nearestClip = model_->model->clip.name;
-    readout_.nearest = nearestPose(PoseLayout(*skeleton_).extract(pose_), capturedPoses_);
+    readout_.nearest = nearestPose(layout_->extract(pose_), capturedPoses_);
 }
 
 void DragSession::solvePlain() {
@@ -188,6 +189,7 @@ void DragSession::solveCompare() {
 
 void DragSession::beginLatent(const Skeleton& skeleton, gp::ModelVersionPtr model, Eigen::VectorXd x, const Pose& pose) {
     skeleton_ = &skeleton;
+    layout_.emplace(skeleton);
     model_ = std::move(model);
     active_ = false;
     latent_ = true;
@@ -204,7 +206,7 @@ bool DragSession::latentTo(const Eigen::VectorXd& x, const Pose& base) {
     double variance = 0.0;
     model_->posterior->predict(x, mean, variance);
     Pose p = base;
-    PoseLayout(*skeleton_).apply(model_->model->fullPose(mean).data(), p);
+    layout_->apply(model_->model->fullPose(mean).data(), p);
     if (!allFinite(p)) return false;
     x_ = x;
     pose_ = p;

@@ -16,9 +16,10 @@
 #include <vector>
 
 #include "edit/compare_mode.h"
-#include "gp/model_version.h"
 #include "eval/nearest_pose.h"
+#include "gp/model_version.h"
 #include "ik/constrained_ik.h"
+#include "skeleton/pose_layout.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp {
@@ -106,6 +107,7 @@ private:
     void solveCompare();
 
     const Skeleton* skeleton_ = nullptr;
+    std::optional<PoseLayout> layout_;  // of *skeleton_, bound once per drag, not once per event
     gp::ModelVersionPtr model_;
     bool active_ = false, latent_ = false;
     Effector effector_ = Effector::kRFoot;
