@@ -161,7 +161,7 @@ const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal
         const double secSmooth = secondsOf([&] { r = gp::train(d180, o); });
         out["paper_training_180_smooth"] = {{"seconds", secSmooth}, {"iterations", r.log.size()},
                                             {"converged", r.converged}, {"T", o.outerIterations},
-                                            {"prior_weight", o.priorWeight}, {"measured_once", true}};
+                                            {"prior_weight", o.resolvedPriorWeight()}, {"measured_once", true}};
     }
     return out;
 });

@@ -74,7 +74,8 @@ const CommandRegistration reg(
     "train", "Learn a FASGPLVM or SGPLVM pose model from an ASF/AMC clip", [](CLI::App& sub) -> CommandRunner {
         struct Opts {
             std::string clip, skel, model = "fas", frames, out, prior = gp::latentPriorName(gp::TrainOptions{}.prior);
-            double priorWeight = gp::kDefaultSmoothWeight;
+            double priorWeight = 0.0;
+            CLI::Option* priorWeightOption = nullptr;  // unset: gp::defaultPriorWeight(T)
             int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
             double tol = 0.01;
             bool json = false;
@@ -90,7 +91,8 @@ const CommandRegistration reg(
         sub.add_option("--prior", o->prior,
                        std::string("Temporal prior on the latent points: paced (second differences over the pose's own "
                                    "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
-        sub.add_option("--prior-weight", o->priorWeight, "Weight λ of the paced or smooth prior (default 100)");
+        o->priorWeightOption = sub.add_option("--prior-weight", o->priorWeight,
+                                              "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 100, log-linear between)");
         sub.add_option("--frames", o->frames, "Keep clip frames A..B (from 1, inclusive), e.g. 1:180");
         sub.add_option("--step", o->step, "Then keep every K-th frame (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
@@ -108,7 +110,8 @@ const CommandRegistration reg(
             gp::LatentPrior prior;
             if (!gp::parseLatentPrior(o->prior, prior))
                 throw UsageError("expected --prior paced, smooth or none, found '" + o->prior + "'");
-            if (!(o->priorWeight >= 0.0) || !std::isfinite(o->priorWeight))
+            const bool weightGiven = o->priorWeightOption->count() > 0;
+            if (weightGiven && (!(o->priorWeight >= 0.0) || !std::isfinite(o->priorWeight)))
                 throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
 
@@ -137,7 +140,7 @@ const CommandRegistration reg(
             opt.tolerance = o->tol;
             opt.threads = o->threads;
             opt.prior = prior;
-            opt.priorWeight = o->priorWeight;
+            if (weightGiven) opt.priorWeight = o->priorWeight;
 
             const bool tty = ::isatty(2) != 0;
             const auto t0 = std::chrono::steady_clock::now();
@@ -171,7 +174,7 @@ const CommandRegistration reg(
             nlohmann::json j;
             j["model"] = gp::kernelKindName(kind);
             j["prior"] = gp::latentPriorName(prior);
-            if (prior != gp::LatentPrior::kNone) j["prior_weight"] = o->priorWeight;
+            if (prior != gp::LatentPrior::kNone) j["prior_weight"] = opt.resolvedPriorWeight();
             j["N"] = model.N();
             j["D"] = model.D();
             j["M"] = static_cast<int>(model.active.size());

@@ -152,7 +152,7 @@ TEST_CASE("smooth prior: training on the walk makes the latent path continuous a
     o.prior = gp::LatentPrior::kNone;
     const gp::TrainResult none = gp::trainOnClip(clip, o);
     o.prior = gp::LatentPrior::kSmooth;
-    o.priorWeight = gp::kDefaultSmoothWeight;
+    o.priorWeight = 100.0;
     const gp::TrainResult smooth = gp::trainOnClip(clip, o);
     const eval::ContinuityReport cn = eval::latentContinuity(none.model.X, none.model.trainingFrames);
     const eval::ContinuityReport cs = eval::latentContinuity(smooth.model.X, smooth.model.trainingFrames);
@@ -166,7 +166,7 @@ TEST_CASE("smooth prior: training on the walk makes the latent path continuous a
     CHECK(smooth.model.settings.prior == gp::LatentPrior::kSmooth);
     const gp::GpModel back = gp::modelFromJsonText(gp::modelToJsonText(smooth.model), "mem");
     CHECK(back.settings.prior == gp::LatentPrior::kSmooth);
-    CHECK(back.settings.priorWeight == gp::kDefaultSmoothWeight);
+    CHECK(back.settings.priorWeight == 100.0);
     CHECK(gp::modelToJsonText(none.model).find("\"prior\"") == std::string::npos);
     CHECK(eval::trainOptionsOf(back).prior == gp::LatentPrior::kSmooth);
 }

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <thread>
 #include <filesystem>
 #include <fstream>
@@ -147,4 +148,36 @@ TEST_CASE("trainer: the objective history is L_init then L_GP after each iterati
     for (std::size_t t = 0; t < r.log.size(); ++t) CHECK(h[t + 1] == r.log[t].L);
     CHECK(h.back() == r.log.back().L);
     CHECK(h.back() < h.front());
+}
+
+TEST_CASE("trainer: the default prior weight follows the budget T (100 up to T = 10, 30 from T = 100)") {
+    CHECK(defaultPriorWeight(1) == kQuickPriorWeight);
+    CHECK(defaultPriorWeight(10) == kQuickPriorWeight);
+    CHECK(defaultPriorWeight(100) == doctest::Approx(kFullPriorWeight).epsilon(1e-12));
+    CHECK(defaultPriorWeight(1000) == doctest::Approx(kFullPriorWeight).epsilon(1e-12));
+    // Log-linear in T between: T = 20 gives 100 · 0.3^(log10 20 − 1).
+    CHECK(defaultPriorWeight(20) > defaultPriorWeight(30));
+    const double mid = 100.0 * std::pow(0.3, std::log10(20.0) - 1.0);  // 69.598…
+    CHECK(defaultPriorWeight(20) == doctest::Approx(mid).epsilon(1e-12));
+    CHECK(mid == doctest::Approx(69.5982).epsilon(1e-5));
+
+    TrainOptions o;
+    CHECK(o.resolvedPriorWeight() == doctest::Approx(kFullPriorWeight).epsilon(1e-12));  // T = 100
+    o.outerIterations = 3;
+    CHECK(o.resolvedPriorWeight() == kQuickPriorWeight);
+    o.priorWeight = 7.0;  // given: used whatever T
+    CHECK(o.resolvedPriorWeight() == 7.0);
+    o.prior = LatentPrior::kNone;
+    CHECK(o.resolvedPriorWeight() == 0.0);
+    o.prior = LatentPrior::kSmooth;
+    o.priorWeight = -1.0;
+    CHECK_THROWS_AS(o.validate(), std::invalid_argument);
+
+    // A run without a given weight records the λ it used, so a retraining reproduces it.
+    const mgp::Clip clip = mgp::loadClip(kClip);
+    TrainOptions small = smallOptions(KernelKind::kFas, 1);
+    small.outerIterations = 1;
+    const TrainResult r = train(smallData(clip, 8), small);
+    CHECK(r.model.settings.prior == LatentPrior::kSmooth);
+    CHECK(r.model.settings.priorWeight == kQuickPriorWeight);
 }

@@ -269,7 +269,9 @@ void drawModelPanel(EditorState& s) {
         ImGui::InputDouble("C", &o.tolerance, 0, 0, "%.3g");
         ImGui::PopItemWidth();
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance");
+            ImGui::SetTooltip("M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
+                              "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
+                              gp::latentPriorName(o.prior), o.resolvedPriorWeight());
         o.activeSize = std::clamp(o.activeSize, 3, 5000);
         o.outerIterations = std::clamp(o.outerIterations, 1, 1000);
         o.scgIterations = std::clamp(o.scgIterations, 1, 10000);

@@ -96,6 +96,18 @@ Eigen::VectorXd rawParams(const Eigen::VectorXd& psi) {
 
 }  // namespace
 
+double defaultPriorWeight(int outerIterations) {
+    constexpr double kQuickT = 10.0, kFullT = 100.0;
+    const double t = std::clamp(static_cast<double>(outerIterations), kQuickT, kFullT);
+    const double s = std::log(t / kQuickT) / std::log(kFullT / kQuickT);  // 0 at T ≤ 10, 1 at T ≥ 100
+    return kQuickPriorWeight * std::pow(kFullPriorWeight / kQuickPriorWeight, s);
+}
+
+double TrainOptions::resolvedPriorWeight() const {
+    if (prior == LatentPrior::kNone) return 0.0;
+    return priorWeight ? *priorWeight : defaultPriorWeight(outerIterations);
+}
+
 void TrainOptions::validate() const {
     if (activeSize < 1) throw std::invalid_argument("TrainOptions: expected activeSize ≥ 1");
     if (outerIterations < 0) throw std::invalid_argument("TrainOptions: expected outerIterations ≥ 0");
@@ -104,7 +116,7 @@ void TrainOptions::validate() const {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw std::invalid_argument("TrainOptions: expected a finite tolerance > 0");
     if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
-    if (prior != LatentPrior::kNone && (!(priorWeight >= 0.0) || !std::isfinite(priorWeight)))
+    if (priorWeight && (!(*priorWeight >= 0.0) || !std::isfinite(*priorWeight)))
         throw std::invalid_argument("TrainOptions: expected a finite priorWeight ≥ 0");
 }
 
@@ -114,8 +126,8 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
-    if (opt_.prior == LatentPrior::kSmooth) prior_ = TemporalPrior::secondDifference(data_.frames, opt_.priorWeight);
-    if (opt_.prior == LatentPrior::kPaced) prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.priorWeight);
+    if (opt_.prior == LatentPrior::kSmooth) prior_ = TemporalPrior::secondDifference(data_.frames, opt_.resolvedPriorWeight());
+    if (opt_.prior == LatentPrior::kPaced) prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.resolvedPriorWeight());
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
                                        objective(), false);
@@ -286,7 +298,7 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.settings.pointIterations = options.pointIterations;
     m.settings.tolerance = options.tolerance;
     m.settings.prior = options.prior;
-    m.settings.priorWeight = options.prior == LatentPrior::kNone ? 0.0 : options.priorWeight;
+    m.settings.priorWeight = options.resolvedPriorWeight();
     m.iterations = static_cast<int>(res.log.size());
     m.converged = res.converged;
     m.objectiveHistory = trainer.objectiveHistory();

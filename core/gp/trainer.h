@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "gp/gp_objective.h"
@@ -29,8 +30,14 @@ namespace mgp::gp {
 
 enum class ConvergenceTest { kRaw, kLog };
 
-// λ of the smoothness prior when none is given (docs/maths.md §19 says how it was chosen).
-constexpr double kDefaultSmoothWeight = 100.0;
+// λ of the temporal prior when none is given, by the outer-iteration budget T (docs/maths.md §19
+// says how it was chosen): kQuickPriorWeight for T ≤ 10, kFullPriorWeight for T ≥ 100, and
+// log-linear in T between. A short run starts from the PCA layout's fragments and needs the
+// stronger pull to join them within its few iterations; a long run joins them with the weaker
+// prior, which leaves the GP likelihood more say (better held-out reconstruction).
+constexpr double kQuickPriorWeight = 100.0;
+constexpr double kFullPriorWeight = 30.0;
+double defaultPriorWeight(int outerIterations);
 
 struct TrainOptions {
     KernelKind kind = KernelKind::kFas;
@@ -50,9 +57,11 @@ struct TrainOptions {
     // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model (table1,
     // table2 and the committed fixtures use it); kSmooth, the default (README "Training
     // defaults" says why), adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8,
-    // λ = priorWeight.
+    // λ = priorWeight, or defaultPriorWeight(outerIterations) when it is not set.
     LatentPrior prior = LatentPrior::kSmooth;
-    double priorWeight = kDefaultSmoothWeight;
+    std::optional<double> priorWeight;
+    // The λ a run with these options uses (0 with LatentPrior::kNone).
+    double resolvedPriorWeight() const;
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;
