@@ -12,7 +12,6 @@
 //    the RMS by more than the gap between training options.
 #include <algorithm>
 #include <iostream>
-#include <sstream>
 
 #include "cli_common.h"
 #include "command_registry.h"
@@ -20,6 +19,7 @@
 #include "gp/model_file.h"
 #include "gp/pca_init.h"
 #include "gp/trainer.h"
+#include "io/text_reader.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp::app {
@@ -38,25 +38,16 @@ nlohmann::json spreadJson(const eval::Spread& s) {
 
 // "0,3,6" → {0, 3, 6}: integers in [0, every), no repeats.
 std::vector<int> parseOffsets(const std::string& text, int every) {
+    std::vector<long long> values;
+    if (!parseIntList(text, 0, every - 1, values))
+        throw UsageError("expected --heldout-offsets as integers in [0, " + std::to_string(every) +
+                         ") separated by commas, found '" + text + "'");
     std::vector<int> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        std::size_t used = 0;
-        int v = -1;
-        try {
-            v = std::stoi(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != item.size() || v < 0 || v >= every)
-            throw UsageError("expected --heldout-offsets as integers in [0, " + std::to_string(every) +
-                             ") separated by commas, found '" + text + "'");
+    for (long long v : values) {
         if (std::find(out.begin(), out.end(), v) != out.end())
             throw UsageError("expected distinct --heldout-offsets, found " + std::to_string(v) + " twice in '" + text + "'");
-        out.push_back(v);
+        out.push_back(static_cast<int>(v));
     }
-    if (out.empty()) throw UsageError("expected at least one offset in --heldout-offsets, found '" + text + "'");
     return out;
 }
 

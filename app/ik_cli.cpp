@@ -55,15 +55,11 @@ TargetSpec parseTargetWithStrength(const std::string& text) {
 }
 
 std::vector<int> parseFrameList(const std::string& text, const std::string& option) {
+    std::vector<long long> frames;
+    if (!parseIntList(text, 1, 100000000, frames))
+        throw UsageError("expected " + option + " as frame numbers counted from 1 (e.g. 89,103,117,131), found '" + text + "'");
     std::vector<int> out;
-    std::stringstream ss(text);
-    std::string part;
-    while (std::getline(ss, part, ',')) {
-        long long v = 0;
-        if (!parseInt(trim(part), v) || v < 1 || v > 100000000)
-            throw UsageError("expected " + option + " as frame numbers counted from 1 (e.g. 89,103,117,131), found '" + text + "'");
-        out.push_back(static_cast<int>(v - 1));
-    }
+    for (long long f : frames) out.push_back(static_cast<int>(f - 1));
     return out;
 }
 

@@ -167,6 +167,21 @@ bool parseInt(std::string_view token, long long& out) {
     return true;
 }
 
+bool parseIntList(std::string_view text, long long lo, long long hi, std::vector<long long>& out) {
+    out.clear();
+    if (text.empty()) return false;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        long long v = 0;
+        const std::string_view item = text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+        if (!parseInt(trim(item), v) || v < lo || v > hi) return false;
+        out.push_back(v);
+        if (comma == std::string_view::npos) return true;
+        start = comma + 1;
+    }
+}
+
 std::string fileStem(const std::string& path) {
     const std::size_t slash = path.find_last_of('/');
     const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);

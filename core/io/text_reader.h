@@ -46,6 +46,9 @@ std::string toLower(std::string_view s);
 // Strict parsers: the whole token must be a number; returns false otherwise (NaN/Inf rejected).
 bool parseDouble(std::string_view token, double& out);
 bool parseInt(std::string_view token, long long& out);
+// "3, 5,8": comma-separated integers, each trimmed and parsed by parseInt, each in [lo, hi];
+// false (out unspecified) if any item is not, or the text is empty.
+bool parseIntList(std::string_view text, long long lo, long long hi, std::vector<long long>& out);
 // "dir/35_01.amc" → "35_01" and "amc" (lower case).
 std::string fileStem(const std::string& path);
 std::string fileExtension(const std::string& path);
