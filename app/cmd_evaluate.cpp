@@ -123,6 +123,8 @@ const CommandRegistration reg(
                     per.push_back({{"offset", h.offsets[k]}, {"held_out", r.heldOut}, {"trained", r.trained},
                                    {"rms_deg", r.rmsDeg}, {"nearest_frame_rms_deg", r.nearestRmsDeg},
                                    {"inbetween_rms_deg", r.timeRmsDeg}, {"inbetween_frames", r.timeCount},
+                                   {"median_frame_rms_deg", r.medianFrameRmsDeg},
+                                   {"worst_frame", {{"frame", r.worstFrame + 1}, {"rms_deg", r.worstFrameRmsDeg}}},
                                    {"train_seconds", h.trainSeconds[k]}});
                     trainSeconds += h.trainSeconds[k];
                 }
@@ -158,8 +160,10 @@ const CommandRegistration reg(
                           << "), nearest training frame " << h["nearest_frame_rms_deg"]
                           << " deg, in-betweened from time neighbours " << h["inbetween_rms_deg"] << " deg\n";
                 for (const auto& r : h["per_offset"])
-                    std::cout << "    offset " << r["offset"] << ": RMS " << r["rms_deg"] << ", nearest "
-                              << r["nearest_frame_rms_deg"] << ", in-between " << r["inbetween_rms_deg"] << " deg\n";
+                    std::cout << "    offset " << r["offset"] << ": RMS " << r["rms_deg"] << " (median frame "
+                              << r["median_frame_rms_deg"] << ", worst frame " << r["worst_frame"]["frame"] << " at "
+                              << r["worst_frame"]["rms_deg"] << "), nearest " << r["nearest_frame_rms_deg"]
+                              << ", in-between " << r["inbetween_rms_deg"] << " deg\n";
             }
             return 0;
         };

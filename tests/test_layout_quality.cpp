@@ -113,6 +113,15 @@ TEST_CASE("layout quality: held-out reconstruction of a training frame is close,
     CHECK(r.heldOut == 2);
     CHECK(r.nearestRmsDeg < 1e-9);  // the frame's own row (fullPose rounding only)
     CHECK(r.rmsDeg < 5.0);
+    // The split's RMS is the root mean of the two frames' squares, so the worst frame is at or
+    // above it and the median (of two: their mean) at or below the worst.
+    CHECK((r.worstFrame == 100 || r.worstFrame == 200));
+    CHECK(r.worstFrameRmsDeg >= r.rmsDeg);
+    CHECK(r.medianFrameRmsDeg <= r.worstFrameRmsDeg);
+    const eval::HeldOutReport one = eval::heldOutReconstruction(m, {r.worstFrame});
+    CHECK(one.rmsDeg == doctest::Approx(r.worstFrameRmsDeg).epsilon(1e-12));
+    CHECK(one.worstFrameRmsDeg == one.rmsDeg);
+    CHECK(one.medianFrameRmsDeg == one.rmsDeg);
 }
 
 TEST_CASE("layout quality: a frame left out of the model is placed, reconstructed and in-betweened") {

@@ -240,6 +240,7 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     const double hbar = gaps.empty() ? 1.0 : percentile(gaps, 0.5);
     gp::ScgOptions so;
     so.maxIterations = iterations;
+    std::vector<double> frameRms;
     for (int f : heldFrames) {
         if (f < 0 || f >= model.clip.frameCount())
             throw std::invalid_argument("heldOutReconstruction: frame " + std::to_string(f) + " outside the clip");
@@ -272,7 +273,13 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
         double var = 0.0;
         pm.predict(bestX, mean, var);
         const Eigen::VectorXd pred = model.fullPose(mean);
-        sse += (pred.tail(kCount) - truth.tail(kCount)).squaredNorm();
+        const double frameSse = (pred.tail(kCount) - truth.tail(kCount)).squaredNorm();
+        sse += frameSse;
+        frameRms.push_back(std::sqrt(frameSse / kCount));
+        if (frameRms.back() > rep.worstFrameRmsDeg) {
+            rep.worstFrameRmsDeg = frameRms.back();
+            rep.worstFrame = f;
+        }
         // In-betweening from the time neighbours (within 3 median gaps on each side).
         const auto after = std::upper_bound(byFrame.begin(), byFrame.end(), std::make_pair(f, model.N()));
         if (after != byFrame.end() && after != byFrame.begin()) {
@@ -291,6 +298,7 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     const double count = static_cast<double>(heldFrames.size()) * kCount;
     rep.heldOut = static_cast<int>(heldFrames.size());
     rep.rmsDeg = std::sqrt(sse / count);
+    rep.medianFrameRmsDeg = percentile(frameRms, 0.5);
     rep.nearestRmsDeg = std::sqrt(sseNearest / count);
     rep.timeRmsDeg = rep.timeCount > 0 ? std::sqrt(sseTime / (static_cast<double>(rep.timeCount) * kCount)) : 0.0;
     return rep;

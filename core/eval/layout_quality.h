@@ -70,6 +70,10 @@ struct HeldOutReport {
     // pose information used; f(x) against the true pose.
     double timeRmsDeg = 0.0;
     int timeCount = 0;
+    // The held-out frame f(x*) reconstructs worst (clip frame, 0-based) and its RMS, and the
+    // median frame's: one misplaced frame can carry a split's RMS.
+    int worstFrame = -1;
+    double worstFrameRmsDeg = 0.0, medianFrameRmsDeg = 0.0;
 };
 // `model` was trained without heldFrames; its clip supplies the true poses.
 HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames,
