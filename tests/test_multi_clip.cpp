@@ -235,6 +235,21 @@ TEST_CASE("multi-clip: motiongp train on two kicks, pose --clip on the second, c
     CHECK(jp["targets"][0]["residual_cm"].get<double>() < 0.1);
     CHECK(jp["nearest"]["clip"] == "10_03");
 
+    // edit --clip: the keys are frames of 10_03, the BVH is 10_03, and the adaptive model keeps
+    // the file's clip order with the new rows marked as 10_03's.
+    const std::string bvh = dir + "/e.bvh", model2 = dir + "/e.model";
+    const test::CliResult e = test::runCli("edit " + model + " --clip 10_03 --effector rhand --keys 10,14,18,22 --offset 0,5,0 "
+                                           "--adaptive --out-model " + model2 + " --out " + bvh);
+    REQUIRE_MESSAGE(e.exitCode == 0, e.err);
+    const GpModel edited = loadModel(model2);
+    CHECK(edited.clipName(0) == "10_02");
+    CHECK(edited.clipName(1) == "10_03");
+    REQUIRE(edited.N() == 42);
+    CHECK(edited.rowClip(40) == 1);
+    CHECK(edited.rowClip(41) == 1);
+    CHECK(edited.trainingFrames[40] == 13);  // key 14, counted from 1
+    CHECK(loadClip(bvh).frameCount() == edited.clipAt(1).frameCount());
+
     const test::CliResult u = test::runCli("pose " + model + " --clip 10_06 --frame 31 --target rhand=0,20,0");
     CHECK(u.exitCode == 2);
     CHECK(u.err.find("10_02, 10_03") != std::string::npos);
