@@ -1,7 +1,7 @@
 // `motiongp edit MODEL --effector EFF --keys 89,103,117,131 --offset dx,dy,dz
-//  [--mode direct|displacement] [--solver span|per-frame] [--pin EFF]... [--adaptive --out-model MODEL2]
+//  [--clip NAME] [--mode direct|displacement] [--solver span|per-frame] [--pin EFF]... [--adaptive --out-model MODEL2]
 //  --out OUT.bvh [--json]`:
-// moves the middle keys by the offset, regenerates the span and writes the whole clip as BVH
+// moves the middle keys (frames of --clip NAME, the model clip's file stem; default the first) by the offset, regenerates the span and writes the whole clip as BVH
 // (edited frames replaced). `span` (default) solves the span as one problem with smoothness and
 // held contacts (motion/span_solver.h); `per-frame` is the paper's independent per-frame IK.
 #include <chrono>
@@ -20,7 +20,7 @@ namespace mgp::app {
 namespace {
 
 struct EditOptions {
-    std::string model, effector, keys, offset, mode = "direct", solver = "span", out, outModel;
+    std::string model, effector, keys, offset, mode = "direct", solver = "span", out, outModel, clip;
     std::vector<std::string> pins;
     bool adaptive = false, json = false, noContacts = false;
     int iterations = 500;
@@ -34,7 +34,8 @@ int runEdit(const EditOptions& o) {
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     const auto t0 = std::chrono::steady_clock::now();
     MotionEditJob job;
-    job.version = loadModelVersion(o.model);
+    int clipIndex = 0;
+    job.version = loadModelVersion(o.model, o.clip, &clipIndex);
     job.effector = parseEffectorOption(o.effector, "--effector");
     job.keyFrames = parseFrameList(o.keys, "--keys");
     const Eigen::Vector3d offset = parseOffset(o.offset, "--offset");
@@ -68,7 +69,7 @@ int runEdit(const EditOptions& o) {
             version = u.version;
             ++added;
         }
-        gp::saveModel(o.outModel, *version->model);
+        gp::saveModel(o.outModel, gp::withPrimaryClip(*version->model, clipIndex));  // the file's clip order
         j["adaptive"] = {{"samples_added", added}, {"rows", version->model->N()}, {"out_model", o.outModel}};
     }
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -87,7 +88,8 @@ const CommandRegistration reg("edit", "Edit an effector path (Hermite keys) and 
     auto o = std::make_shared<EditOptions>();
     sub.add_option("model", o->model, "Model file")->required();
     sub.add_option("--effector", o->effector, "lhand, rhand, lfoot, rfoot or head")->required();
-    sub.add_option("--keys", o->keys, "Key frames counted from 1, e.g. 89,103,117,131")->required();
+    sub.add_option("--clip", o->clip, "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
+    sub.add_option("--keys", o->keys, "Key frames of that clip counted from 1, e.g. 89,103,117,131")->required();
     sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
     sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
     sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");

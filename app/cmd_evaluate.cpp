@@ -78,6 +78,10 @@ const CommandRegistration reg(
             const std::vector<int> offsets = o->offsets.empty() ? std::vector<int>{0} : parseOffsets(o->offsets, o->every);
             if (!o->offsets.empty()) o->heldout = true;
             const gp::GpModel model = gp::loadModel(o->model);
+            // Its held-out retraining and continuity measure read one clip's frame numbers.
+            if (model.clipCount() > 1)
+                throw UsageError("expected a single-clip model (evaluate does not handle multi-clip models yet), found " +
+                                 std::to_string(model.clipCount()) + " clips (" + model.clipNames() + ") in " + o->model);
             nlohmann::json j;
             j["model"] = o->model;
             j["kernel"] = gp::kernelKindName(model.kind);

@@ -1,6 +1,7 @@
 // `motiongp pose MODEL --frame T --target EFF=dx,dy,dz[@STRENGTH] ... [--pin EFF ...]
 //  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--json]`:
-// one IK solve on a frame of the model's source clip. Offsets are cm from the effector's position
+// one IK solve on a frame of one of the model's source clips (--clip NAME, default the first; --frame
+// counts within it). Offsets are cm from the effector's position
 // in that frame. An unreachable target is a result (reached: false, exit 0), not an error; so is
 // an adaptive update the admission rule refuses (adaptive.refused: true, with the reason).
 //
@@ -26,7 +27,7 @@ namespace mgp::app {
 namespace {
 
 struct PoseOptions {
-    std::string model, solver = "learned", outModel;
+    std::string model, solver = "learned", outModel, clip;
     long long frame = 1;
     std::vector<std::string> targets, pins, releases;
     bool adaptive = false, json = false;
@@ -53,7 +54,8 @@ int runPose(const PoseOptions& o) {
     if (o.adaptive && o.solver == "plain") throw UsageError("expected --solver learned with --adaptive, found plain");
     if (o.targets.empty() && o.pins.empty()) throw UsageError("expected at least one --target or --pin, found none");
     const auto t0 = std::chrono::steady_clock::now();
-    const gp::ModelVersionPtr version = loadModelVersion(o.model);
+    int clipIndex = 0;
+    const gp::ModelVersionPtr version = loadModelVersion(o.model, o.clip, &clipIndex);
     const gp::GpModel& m = *version->model;
     const Clip& clip = m.clip;
     const int frame = frameIndexFromCli(clip, o.frame);
@@ -145,7 +147,7 @@ int runPose(const PoseOptions& o) {
             } else {
                 const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, x, y, frame);
                 if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
-                gp::saveModel(o.outModel, *u.version->model);
+                gp::saveModel(o.outModel, gp::withPrimaryClip(*u.version->model, clipIndex));  // the file's clip order
                 j["adaptive"] = {{"refused", false},
                                  {"rows", u.version->model->N()},
                                  {"new_point_active", u.newPointActive},
@@ -159,9 +161,13 @@ int runPose(const PoseOptions& o) {
     j["pins"] = constraintsJson(results, true);
     const Eigen::VectorXd y47 = PoseLayout(clip.skeleton).extract(pose);
     j["pose_deg"] = std::vector<double>(y47.data(), y47.data() + y47.size());
-    // Where the solved pose is in the data: the nearest captured frame of the model's clip.
-    const NearestPose nearest = nearestPose(y47, poseMatrix(clip));
-    j["nearest"] = {{"clip", clip.name}, {"frame", nearest.row + 1}, {"rms_deg", nearest.rmsDeg}};
+    // Where the solved pose is in the data: the nearest captured frame over every source clip.
+    std::vector<Eigen::MatrixXd> clipPoses;
+    for (int c = 0; c < m.clipCount(); ++c) clipPoses.push_back(poseMatrix(m.clipAt(c)));
+    const NearestFrame nearest = nearestFrame(y47, clipPoses);
+    const std::string nearestClip = m.clipName(nearest.clip);
+    j["clip"] = clip.name;
+    j["nearest"] = {{"clip", nearestClip}, {"frame", nearest.frame + 1}, {"rms_deg", nearest.rmsDeg}};
     Clip solved = clip;
     solved.frames = {pose};
     j["positions_cm"] = effectorPositionsJson(solved, 0);
@@ -173,7 +179,7 @@ int runPose(const PoseOptions& o) {
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
                       << r.residualCm << " cm" << (r.reached ? "" : "  (not reached)") << "\n";
-        std::cout << "nearest captured frame: " << clip.name << " frame " << nearest.row + 1 << " ("
+        std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " ("
                   << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
         if (j.contains("adaptive")) {
             if (j["adaptive"]["refused"].get<bool>())
@@ -191,7 +197,8 @@ const CommandRegistration reg("pose", "Solve IK on one frame of a model's clip (
                               [](CLI::App& sub) -> CommandRunner {
     auto o = std::make_shared<PoseOptions>();
     sub.add_option("model", o->model, "Model file (motiongp train --out)")->required();
-    sub.add_option("--frame", o->frame, "Clip frame, counted from 1")->required();
+    sub.add_option("--clip", o->clip, "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
+    sub.add_option("--frame", o->frame, "Frame of that clip, counted from 1")->required();
     sub.add_option("--target", o->targets,
                    "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact (default), paper "
                    "(0.999) or a number in (0, 1] (repeatable)");

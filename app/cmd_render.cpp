@@ -1,7 +1,8 @@
-// `motiongp render (CLIP [--skel ASF] | MODEL) --frame T --out FILE.png [--size WxH]
+// `motiongp render (CLIP [--skel ASF] | MODEL [--clip NAME]) --frame T --out FILE.png [--size WxH]
 //  [--camera front|side|three-quarter] [--ghost-captured] [--path EFFECTOR]... [--select EFFECTOR]
 //  [--no-handles]`: draws one frame offscreen (EGL surfaceless, no display) and writes a PNG.
-// The MODEL form (a trained model file) draws the model's source clip with the model's own
+// The MODEL form (a trained model file) draws one of the model's source clips (--clip NAME, its
+// file stem; default the first; --frame counts within it) with the model's own
 // reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
 // --ghost-captured shows the captured pose beside what the model makes of it.
 #include <algorithm>
@@ -49,10 +50,12 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
     auto ghost = std::make_shared<bool>(false);
     auto paths = std::make_shared<std::vector<std::string>>();
     auto select = std::make_shared<std::string>();
+    auto clipName = std::make_shared<std::string>();
     auto noHandles = std::make_shared<bool>(false);
     sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (a file written by `motiongp train`)")
         ->required();
     sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
+    sub.add_option("--clip", *clipName, "NAME: with a MODEL, which of its clips (file stem; default: the first)");
     sub.add_option("--frame", *frame, "Frame, counted from 1")->required();
     sub.add_option("--out", *out, "PNG file to write (atomically)")->required();
     sub.add_option("--size", *size, "Image size WxH (default 1280x720)");
@@ -77,7 +80,8 @@ const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no d
             throw UsageError("expected --out in an existing folder, found '" + *out + "'");
         render::ClipSceneOptions opt;
         gp::ModelVersionPtr model;
-        if (!isClipPath(*input)) model = loadModelVersion(*input);  // a clear error if it is not a model file
+        if (!isClipPath(*input)) model = loadModelVersion(*input, *clipName);  // a clear error if it is not a model file
+        else if (!clipName->empty()) throw UsageError("expected --clip only with a MODEL, found it with the clip '" + *input + "'");
         const Clip clip = model ? model->model->clip : loadClip(*input, *skel);
         opt.frameIndex = frameIndexFromCli(clip, *frame);
         if (model) {

@@ -1,7 +1,10 @@
-// `motiongp train CLIP [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
+// `motiongp train CLIP [CLIP ...] [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
 //   [--scg-iters S] [--tol C] [--prior paced|smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
 // Learns a FASGPLVM (default) or SGPLVM pose model (docs/maths.md §8) and writes the model file
-// (core/gp/model_file.h). Progress goes to stderr; --json prints one object on stdout. Timings
+// (core/gp/model_file.h). Several clips train one model when they share one skeleton
+// (sameSkeleton, skeleton/clip_match.h); otherwise exit 2 naming the first mismatch. --frames and
+// --step apply to each clip on its own (frame numbers count within each clip). Retargeting
+// between skeletons is out of scope. Progress goes to stderr; --json prints one object on stdout. Timings
 // are printed, never stored in the model. Ctrl-C cancels cleanly (no model is written).
 #include <unistd.h>
 
@@ -19,6 +22,7 @@
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
+#include "skeleton/clip_match.h"
 
 namespace mgp::app {
 
@@ -73,7 +77,8 @@ void printBar(int iter, int total, double L, double elapsed, bool tty) {
 const CommandRegistration reg(
     "train", "Learn a FASGPLVM or SGPLVM pose model from an ASF/AMC clip", [](CLI::App& sub) -> CommandRunner {
         struct Opts {
-            std::string clip, skel, model = "fas", frames, out, prior = gp::latentPriorName(gp::TrainOptions{}.prior);
+            std::vector<std::string> clips;
+            std::string skel, model = "fas", frames, out, prior = gp::latentPriorName(gp::TrainOptions{}.prior);
             double priorWeight = 0.0;
             CLI::Option* priorWeightOption = nullptr;  // unset: gp::defaultPriorWeight(T)
             int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
@@ -81,7 +86,9 @@ const CommandRegistration reg(
             bool json = false;
         };
         auto o = std::make_shared<Opts>();
-        sub.add_option("clip", o->clip, "AMC file (BVH is not supported for training yet)")->required();
+        sub.add_option("clip", o->clips,
+                       "AMC file(s) of one skeleton, e.g. 10_02.amc 10_03.amc (BVH is not supported for training yet)")
+            ->required();
         sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
         sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
         sub.add_option("--active", o->active, "Active set size M (default 200; M ≥ N uses every frame)");
@@ -93,8 +100,8 @@ const CommandRegistration reg(
                                    "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
         o->priorWeightOption = sub.add_option("--prior-weight", o->priorWeight,
                                               "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 100, log-linear between)");
-        sub.add_option("--frames", o->frames, "Keep clip frames A..B (from 1, inclusive), e.g. 1:180");
-        sub.add_option("--step", o->step, "Then keep every K-th frame (default 1)");
+        sub.add_option("--frames", o->frames, "Keep frames A..B (from 1, inclusive) of each clip, e.g. 1:180");
+        sub.add_option("--step", o->step, "Then keep every K-th frame of each clip (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
         sub.add_option("--out", o->out, "Model file to write")->required();
         sub.add_flag("--json", o->json, "Print one JSON object");
@@ -115,21 +122,45 @@ const CommandRegistration reg(
                 throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
 
-            Clip clip = loadClip(o->clip, o->skel);
-            if (clip.format == ClipFormat::kBvh)
-                throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + o->clip + "')");
-            const FrameRange range = parseFrames(o->frames, clip.frameCount());
-            unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
-            std::vector<int> frames;
-            for (int f = range.first; f <= range.last; f += o->step) frames.push_back(f - 1);
-            if (frames.size() < 3)
-                throw UsageError("expected at least 3 training frames after --frames/--step, found " +
-                                 std::to_string(frames.size()));
+            // Every clip is loaded and checked before training starts. One range for all clips: each
+            // clip's own frame count bounds it.
+            std::vector<Clip> clips;
+            std::vector<std::vector<int>> frames;
+            FrameRange range, firstRange;  // the model's settings record the first clip's range
+            std::size_t rows = 0;
+            for (const std::string& path : o->clips) {
+                Clip clip = loadClip(path, o->skel);
+                if (clip.format == ClipFormat::kBvh)
+                    throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + path + "')");
+                if (!clips.empty()) {
+                    std::string difference;
+                    if (!sameSkeleton(clips.front().skeleton, clip.skeleton, &difference))
+                        throw UsageError("expected clips of one skeleton (retargeting is not supported), found " + path +
+                                         " against " + o->clips.front() + ": " + difference);
+                }
+                for (const Clip& c : clips)
+                    if (c.name == clip.name)
+                        throw UsageError("expected clips with distinct names (file stems), found " + clip.name + " twice");
+                range = parseFrames(o->frames, clip.frameCount());
+                if (clips.empty()) firstRange = range;
+                unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
+                std::vector<int> f;
+                for (int t = range.first; t <= range.last; t += o->step) f.push_back(t - 1);
+                rows += f.size();
+                frames.push_back(std::move(f));
+                clips.push_back(std::move(clip));
+            }
+            if (rows < 3)
+                throw UsageError("expected at least 3 training frames after --frames/--step, found " + std::to_string(rows));
             gp::TrainingData data;
             try {
-                data = gp::trainingDataFromClip(clip, frames);
+                std::vector<const Clip*> ptrs;
+                for (const Clip& c : clips) ptrs.push_back(&c);
+                data = gp::trainingDataFromClips(ptrs, frames);
             } catch (const std::invalid_argument& e) {  // degenerate data (NaN, nothing varies): bad input
-                throw ParseError(o->clip + ": " + e.what());
+                std::string names;
+                for (const std::string& p : o->clips) names += (names.empty() ? "" : ", ") + p;
+                throw ParseError(names + ": " + e.what());
             }
 
             gp::TrainOptions opt;
@@ -145,8 +176,10 @@ const CommandRegistration reg(
             const bool tty = ::isatty(2) != 0;
             const auto t0 = std::chrono::steady_clock::now();
             auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-            std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clip.name << ", N = " << frames.size()
-                      << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(frames.size()))
+            std::string clipList;
+            for (const Clip& c : clips) clipList += (clipList.empty() ? "" : " + ") + c.name;
+            std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clipList << ", N = " << rows
+                      << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(rows))
                       << ", T = " << o->iters << ", prior " << gp::latentPriorName(prior) << "\n";
             gCancel.store(false);
             auto previous = std::signal(SIGINT, onSigint);
@@ -162,11 +195,13 @@ const CommandRegistration reg(
             const double seconds = elapsed();
 
             gp::GpModel& model = res.model;
-            model.clip = std::move(clip);
-            model.sourceFile = baseName(o->clip);
-            model.sourceSha256 = gp::sha256OfFile(o->clip);
-            model.settings.frameFirst = range.first;
-            model.settings.frameLast = range.last;
+            model.clip = std::move(clips.front());
+            model.sourceFile = baseName(o->clips.front());
+            model.sourceSha256 = gp::sha256OfFile(o->clips.front());
+            for (std::size_t c = 1; c < clips.size(); ++c)
+                model.moreClips.push_back({baseName(o->clips[c]), gp::sha256OfFile(o->clips[c]), std::move(clips[c])});
+            model.settings.frameFirst = firstRange.first;
+            model.settings.frameLast = firstRange.last;
             model.settings.frameStep = o->step;
             gp::saveModel(o->out, model);
 
@@ -176,6 +211,12 @@ const CommandRegistration reg(
             j["prior"] = gp::latentPriorName(prior);
             if (prior != gp::LatentPrior::kNone) j["prior_weight"] = opt.resolvedPriorWeight();
             j["N"] = model.N();
+            nlohmann::json clipsJson = nlohmann::json::array();
+            for (int c = 0; c < model.clipCount(); ++c)
+                clipsJson.push_back({{"name", model.clipName(c)},
+                                     {"frames", frames[static_cast<std::size_t>(c)].size()},
+                                     {"sha256", model.clipSha256(c)}});
+            j["clips"] = clipsJson;
             j["D"] = model.D();
             j["M"] = static_cast<int>(model.active.size());
             j["iterations"] = model.iterations;
@@ -195,7 +236,7 @@ const CommandRegistration reg(
             if (o->json) {
                 printJson(j);
             } else {
-                std::cout << "trained " << gp::kernelKindName(kind) << " on " << model.clip.name << ": N = " << model.N()
+                std::cout << "trained " << gp::kernelKindName(kind) << " on " << clipList << ": N = " << model.N()
                           << ", D = " << model.D() << ", M = " << model.active.size() << ", " << model.iterations
                           << " iterations (" << (res.converged ? "converged" : "not converged") << "), L_GP "
                           << res.lInit << " -> " << (res.log.empty() ? res.lInit : res.log.back().L) << ", alpha "

@@ -86,6 +86,23 @@ gp::ModelVersionPtr loadModelVersion(const std::string& path) {
     }
 }
 
+gp::ModelVersionPtr loadModelVersion(const std::string& path, const std::string& clipName, int* clipIndex) {
+    gp::GpModel model = gp::loadModel(path);
+    int index = 0;
+    if (!clipName.empty()) {
+        index = model.findClip(clipName);
+        if (index < 0)
+            throw UsageError("expected --clip one of the model's clips (" + model.clipNames() + "), found '" + clipName + "'");
+    }
+    if (clipIndex) *clipIndex = index;
+    model = gp::withPrimaryClip(std::move(model), index);
+    try {
+        return gp::ModelVersion::make(std::move(model));
+    } catch (const std::runtime_error&) {
+        throwParseError(path, 0, "a model whose kernel matrix K is positive definite", "a K that cannot be factored");
+    }
+}
+
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : results)

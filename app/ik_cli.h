@@ -27,6 +27,11 @@ Effector parseEffectorOption(const std::string& text, const std::string& option)
 std::vector<int> parseFrameList(const std::string& text, const std::string& option);
 // Loads a model file as version 0 (throws ParseError for a bad file).
 gp::ModelVersionPtr loadModelVersion(const std::string& path);
+// The same with the clip named `clipName` (--clip NAME, a file stem; "" = the first clip) as the
+// primary clip (gp::withPrimaryClip), so --frame counts within it. An unknown name is a
+// UsageError listing the model's clips. clipIndex (if given) receives the clip's index in the
+// file: withPrimaryClip(model, *clipIndex) restores the file's clip order before saving.
+gp::ModelVersionPtr loadModelVersion(const std::string& path, const std::string& clipName, int* clipIndex = nullptr);
 // The feet `pose` holds by default on `frame`: each foot in ground contact there (`contacts`, the
 // rule of core/motion/foot_contacts.h), not released and not already in `constraints`, as a pin
 // where it stands (`fk` of that frame). `released` is indexed by Effector (null: none released).

@@ -418,7 +418,7 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     modelCase("unknown format", "format.json", mutated([&](nlohmann::json& j) { j["format"] = "motiongp-session"; }),
               P("format.json") + ": expected \"format\": \"motiongp-model\", found \"motiongp-session\"");
     modelCase("future version", "version.json", mutated([&](nlohmann::json& j) { j["version"] = 99; }),
-              P("version.json") + ": expected model file version ≤ 1 (this build reads up to version 1), found version 99");
+              P("version.json") + ": expected model file version ≤ 2 (this build reads up to version 2), found version 99");
     modelCase("1e308 angle in the clip", "pose.json", mutated([&](nlohmann::json& j) { j["clip"]["poses_deg"][0][3] = 1e308; }),
               P("pose.json") + ": expected angles within ±1e10 degrees in clip frame 1, found 1e+308");
     modelCase("a BVH passed as the model", "notjson.json", kBvh, "",

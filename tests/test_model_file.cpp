@@ -130,8 +130,12 @@ TEST_CASE("model_file: newer versions, other formats, truncated and empty files 
         }
     };
     std::string newer = text;
-    newer.replace(newer.find("\"version\": 1"), std::strlen("\"version\": 1"), "\"version\": 2");
-    expectError(newer, "version 2");
+    newer.replace(newer.find("\"version\": 1"), std::strlen("\"version\": 1"), "\"version\": 3");
+    expectError(newer, "version 3");
+    // Version 2 (several clips) needs its clip list.
+    std::string v2 = text;
+    v2.replace(v2.find("\"version\": 1"), std::strlen("\"version\": 1"), "\"version\": 2");
+    expectError(v2, "'more_clips'");
     expectError(text.substr(0, text.size() / 2), "damaged JSON");
     expectError("", "empty file");
     expectError("{\"format\": \"something-else\", \"version\": 1}", "something-else");

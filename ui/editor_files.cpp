@@ -58,14 +58,26 @@ std::string EditorApp::openModel(const std::string& path) {
     gp::ModelVersionPtr v;
     const std::string err = reportingErrors([&] { v = gp::ModelVersion::make(gp::loadModel(path)); });
     if (!err.empty()) return err;
-    // A model brings the clip it was trained on. When that is not the open clip, ask before
-    // replacing it (the open clip and its edits would go).
+    // A model brings the clips it was trained on. When the open clip is one of them, that clip
+    // becomes the model's primary clip (gp::withPrimaryClip; editing, the latent map's frames and
+    // adaptive updates follow it). When it is none of them, ask before replacing it with the
+    // model's first clip (the open clip and its edits would go).
     std::string difference;
-    if (state_.doc.hasClip() && !sameCapture(state_.doc.clip(), v->model->clip, &difference)) {
+    const int openIndex = state_.doc.hasClip() ? gp::findCapture(*v->model, state_.doc.clip(), &difference) : 0;
+    if (openIndex > 0) {
+        try {
+            v = gp::ModelVersion::make(gp::withPrimaryClip(*v->model, openIndex));
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+    }
+    if (openIndex < 0) {
         const std::string modelClip = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
+        const std::string trainedOn =
+            v->model->clipCount() > 1 ? std::to_string(v->model->clipCount()) + " clips (" + v->model->clipNames() + ")"
+                                      : modelClip + " (" + std::to_string(v->model->clip.frameCount()) + " frames)";
         prompts_.askModelClip(
-            {baseName(path) + " was trained on " + modelClip + " (" + std::to_string(v->model->clip.frameCount()) +
-                 " frames).",
+            {baseName(path) + " was trained on " + trainedOn + ".",
              "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
                  " frames): " + difference + ".",
              "Opening the model replaces the open clip with " + modelClip + "."},

@@ -25,6 +25,19 @@ ImU32 frameColour(double t) {
     ImGui::ColorConvertHSVtoRGB(float(0.60 - 0.50 * std::clamp(t, 0.0, 1.0)), 0.65f, 1.0f, r, g, b);
     return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1.0f));
 }
+// The time path's pairs over the open clip's rows only (rows of other clips are never joined).
+std::vector<std::pair<int, int>> openClipPairs(const gp::GpModel& model) {
+    if (model.clipCount() == 1) return eval::timeConsecutivePairs(model.trainingFrames);
+    std::vector<int> rows, frames;
+    for (int i = 0; i < model.N(); ++i)
+        if (model.rowClip(i) == 0) {
+            rows.push_back(i);
+            frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
+        }
+    std::vector<std::pair<int, int>> pairs = eval::timeConsecutivePairs(frames);
+    for (auto& [a, b] : pairs) a = rows[static_cast<std::size_t>(a)], b = rows[static_cast<std::size_t>(b)];
+    return pairs;
+}
 }  // namespace
 
 LatentMapPanel::LatentMapPanel() = default;
@@ -105,6 +118,9 @@ void LatentMapPanel::draw(EditorState& s) {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const int frames = std::max(1, doc.frameCount() - 1);
     auto frameOfRow = [&](int i) { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; };
+    // A multi-clip model: only rows of the open clip (the model's primary clip, clip 0) are frames
+    // of the open clip; the other clips' rows are drawn grey and are not hovered, clicked or joined.
+    auto openClipRow = [&](int i) { return i < int(model.trainingFrames.size()) && model.rowClip(i) == 0; };
 
     // What changes only with the model, the σ² image or the map's size is drawn once into a
     // texture (the static layer); each frame adds the moving parts on top.
@@ -121,7 +137,7 @@ void LatentMapPanel::draw(EditorState& s) {
             // layout is one curve per motion, a fragmented one shows long jumps across the map.
             if (showTrajectory_)
                 for (const auto& [a, b] : model.trainingFrames.size() == static_cast<std::size_t>(model.N())
-                                              ? eval::timeConsecutivePairs(model.trainingFrames)
+                                              ? openClipPairs(model)
                                               : std::vector<std::pair<int, int>>{})
                     dl.AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
                                toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
@@ -129,7 +145,7 @@ void LatentMapPanel::draw(EditorState& s) {
             // Training points coloured by frame, active set ringed.
             for (int i = 0; i < model.N(); ++i)
                 dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f,
-                                   frameColour(double(frameOfRow(i)) / frames));
+                                   openClipRow(i) ? frameColour(double(frameOfRow(i)) / frames) : IM_COL32(150, 150, 155, 200));
             for (int i : model.active) {
                 if (i < 0 || i >= model.N()) continue;
                 dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
@@ -147,6 +163,7 @@ void LatentMapPanel::draw(EditorState& s) {
     float nearestD2 = 7.0f * 7.0f;
     if (hovered)
         for (int i = 0; i < model.N(); ++i) {
+            if (!openClipRow(i)) continue;
             const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
             const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
             if (d2 < nearestD2) {
@@ -234,6 +251,7 @@ void LatentMapPanel::draw(EditorState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
     ImGui::SameLine();
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
+    else if (model.clipCount() > 1) ImGui::TextDisabled("bright: confident  rings: active  grey: other clips");
     else ImGui::TextDisabled("bright: confident  rings: active");
 }
 

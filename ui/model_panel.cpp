@@ -303,6 +303,13 @@ void drawModelPanel(EditorState& s) {
         ImGui::TextDisabled("%s, version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", v->number);
         ImGui::TextDisabled("N = %d  active M = %zu  D = %d  latent d = %d", m.N(), m.active.size(), m.D(),
                             m.latentDim());
+        if (m.clipCount() > 1) {  // the training clips; the open one (the model's primary clip) first
+            std::vector<int> rows(static_cast<std::size_t>(m.clipCount()), 0);
+            for (int i = 0; i < m.N(); ++i) ++rows[static_cast<std::size_t>(m.rowClip(i))];
+            for (int c = 0; c < m.clipCount(); ++c)
+                ImGui::TextDisabled("  %s %s: %d of %d frames%s", c == 0 ? "*" : " ", m.clipName(c).c_str(),
+                                    rows[static_cast<std::size_t>(c)], m.clipAt(c).frameCount(), c == 0 ? " (open)" : "");
+        }
         bool adaptive = doc.adaptiveEnabled();
         if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
         const int pending = doc.adaptivePending();

@@ -125,11 +125,14 @@ void DragSession::solveLearned(int maxIterations) {
     readout_.stop = result_.stop;
     readout_.diagnostic = result_.diagnostic;
     if (capturedPosesOf_ != model_->model) {
-        capturedPoses_ = poseMatrix(model_->model->clip);
+        capturedPoses_.clear();
+        for (int c = 0; c < model_->model->clipCount(); ++c) capturedPoses_.push_back(poseMatrix(model_->model->clipAt(c)));
         capturedPosesOf_ = model_->model;
     }
-    readout_.nearestClip = model_->model->clip.name;
-    readout_.nearest = nearestPose(layout_->extract(pose_), capturedPoses_);
+    // Every source clip is searched; the readout names the clip the nearest frame belongs to.
+    const NearestFrame nearest = nearestFrame(layout_->extract(pose_), capturedPoses_);
+    readout_.nearestClip = nearest.clip >= 0 ? model_->model->clipName(nearest.clip) : model_->model->clip.name;
+    readout_.nearest = {nearest.frame, nearest.rmsDeg};
 }
 
 void DragSession::solvePlain() {

@@ -119,7 +119,7 @@ private:
     std::vector<IkConstraint> pins_, contactPins_;
     std::vector<Eigen::VectorXd> latentPath_;
     SolveReadout readout_;
-    Eigen::MatrixXd capturedPoses_;             // poseMatrix of the model's clip (the nearest-frame candidates)
+    std::vector<Eigen::MatrixXd> capturedPoses_;  // poseMatrix of each model clip (the nearest-frame candidates)
     std::shared_ptr<const gp::GpModel> capturedPosesOf_;  // the model they were taken from
 
     std::unique_ptr<ConstrainedIkSolver> solver_, compareSolver_;

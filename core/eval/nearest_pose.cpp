@@ -19,6 +19,15 @@ NearestPose nearestPose(const Eigen::VectorXd& pose, const Eigen::MatrixXd& cand
     return best;
 }
 
+NearestFrame nearestFrame(const Eigen::VectorXd& pose, const std::vector<Eigen::MatrixXd>& clipPoses) {
+    NearestFrame best;
+    for (std::size_t c = 0; c < clipPoses.size(); ++c) {
+        const NearestPose n = nearestPose(pose, clipPoses[c]);
+        if (n.row >= 0 && n.rmsDeg < best.rmsDeg) best = {static_cast<int>(c), n.row, n.rmsDeg};
+    }
+    return best;
+}
+
 double nearestPoseRmsDeg(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates) {
     return nearestPose(pose, candidates).rmsDeg;
 }

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <vector>
 
 namespace mgp {
 
@@ -16,6 +17,15 @@ struct NearestPose {
 
 // pose: 47 DOFs (degrees); candidates: one pose per row (the first row wins a tie).
 NearestPose nearestPose(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates);
+// The nearest captured frame over several clips' pose matrices (clipPoses[c]: one 47-DOF pose per
+// frame of clip c): which clip, which frame of it, how far. Ties go to the earlier clip, then the
+// earlier frame. clip = row = −1 when there are no frames.
+struct NearestFrame {
+    int clip = -1;
+    int frame = -1;
+    double rmsDeg = std::numeric_limits<double>::infinity();
+};
+NearestFrame nearestFrame(const Eigen::VectorXd& pose, const std::vector<Eigen::MatrixXd>& clipPoses);
 // Its distance alone: +∞ when there are no candidates.
 double nearestPoseRmsDeg(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates);
 

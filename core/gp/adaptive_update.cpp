@@ -29,6 +29,7 @@ AdaptiveUpdateResult adaptiveUpdate(const ModelVersion& current, const Eigen::Ve
     m.Y.conservativeResize(n + 1, Eigen::NoChange);
     m.Y.row(n) = yKept.transpose();
     m.trainingFrames.push_back(clipFrame);
+    if (!m.trainingClips.empty()) m.trainingClips.push_back(0);  // a frame of the primary (open) clip
 
     const Kernel kernel = m.kernel();
     m.active = selectActiveSet(kernel, m.X, m.settings.activeSize).active;

@@ -1,5 +1,9 @@
 #include "gp/model.h"
 
+#include <stdexcept>
+#include <utility>
+
+#include "skeleton/clip_match.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp::gp {
@@ -29,6 +33,37 @@ Eigen::VectorXd GpModel::keptPose(const Eigen::VectorXd& full47) const {
     Eigen::VectorXd kept(keptColumns.size());
     for (std::size_t k = 0; k < keptColumns.size(); ++k) kept[k] = full47[keptColumns[k]];
     return kept;
+}
+
+int GpModel::findClip(const std::string& name) const {
+    for (int i = 0; i < clipCount(); ++i)
+        if (clipName(i) == name) return i;
+    return -1;
+}
+
+std::string GpModel::clipNames() const {
+    std::string out;
+    for (int i = 0; i < clipCount(); ++i) out += (i ? ", " : "") + clipName(i);
+    return out;
+}
+
+int findCapture(const GpModel& model, const Clip& open, std::string* difference) {
+    for (int i = 0; i < model.clipCount(); ++i)
+        if (sameCapture(open, model.clipAt(i), i == 0 ? difference : nullptr)) return i;
+    return -1;
+}
+
+GpModel withPrimaryClip(GpModel model, int index) {
+    if (index < 0 || index >= model.clipCount())
+        throw std::out_of_range("withPrimaryClip: expected a clip index in 0.." + std::to_string(model.clipCount() - 1) +
+                                ", found " + std::to_string(index));
+    if (index == 0) return model;
+    SourceClip& other = model.moreClips[static_cast<std::size_t>(index - 1)];
+    std::swap(model.clip, other.clip);
+    std::swap(model.sourceFile, other.file);
+    std::swap(model.sourceSha256, other.sha256);
+    for (int& c : model.trainingClips) c = c == 0 ? index : c == index ? 0 : c;
+    return model;
 }
 
 }  // namespace mgp::gp

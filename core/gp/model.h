@@ -1,6 +1,14 @@
 #pragma once
 // A trained GPLVM pose model (FASGPLVM or SGPLVM) plus everything `pose`, `edit` and `render`
-// need: the whole source clip, the training rows and their clip frame numbers.
+// need: the whole source clips, the training rows and each row's clip and frame.
+//
+// Source clips: a model learns from one clip or from several clips of one skeleton (app `train`
+// checks sameSkeleton, skeleton/clip_match.h). Clip 0, the PRIMARY clip, lives in `clip`,
+// `sourceFile` and `sourceSha256` (every single-clip user reads these); clips 1..K−1 live in
+// `moreClips`. The primary clip is the one `pose`, `edit`, `render` and the editor work on:
+// withPrimaryClip(model, i) makes clip i primary (a relabelling; X, Y and θ are untouched).
+// `trainingClips` holds each row's clip index; it is EMPTY for a single-clip model (every row is
+// clip 0), so a single-clip model and its file are exactly as before multi-clip training.
 //
 // Units and conventions: poses in DEGREES in the §2.3 order; Y and μ hold only the kept
 // (non-constant) columns, in ascending order of their index into the 47-vector; constant columns
@@ -30,6 +38,13 @@ struct TrainingSettings {
     double priorWeight = 0.0;                // its λ (0 with kNone)
 };
 
+// A source clip other than the primary one.
+struct SourceClip {
+    std::string file;    // file name (no directory), provenance only
+    std::string sha256;  // SHA-256 of the source file
+    Clip clip;           // the whole clip (unwrapped, like the primary one); clip.name is its file stem
+};
+
 struct GpModel {
     KernelKind kind = KernelKind::kFas;
     Eigen::VectorXd logParams;  // ψ = ln θ in the Kernel order (α, γ, β[, η])
@@ -41,11 +56,13 @@ struct GpModel {
     std::vector<int> keptColumns;      // D indices into the 47-vector
     std::vector<int> constantColumns;  // removed indices into the 47-vector
     Eigen::VectorXd constantValues;    // their values (column means)
-    std::vector<int> trainingFrames;   // clip frame index (0-based) of each training row
+    std::vector<int> trainingFrames;   // frame index (0-based) of each training row within its clip
+    std::vector<int> trainingClips;    // clip index of each training row; empty = all clip 0
 
-    Clip clip;                  // the whole source clip (47-DOF poses, root translations, bones)
-    std::string sourceFile;     // file name of the source clip (no directory), provenance only
+    Clip clip;                  // the primary source clip (47-DOF poses, root translations, bones)
+    std::string sourceFile;     // file name of the primary clip (no directory), provenance only
     std::string sourceSha256;   // SHA-256 of the source file ("" for a synthetic clip)
+    std::vector<SourceClip> moreClips;  // clips 1..K−1 (empty for a single-clip model)
 
     TrainingSettings settings;
     int iterations = 0;         // outer iterations run
@@ -57,6 +74,20 @@ struct GpModel {
     std::vector<double> objectiveHistory;
 
     int N() const { return static_cast<int>(X.rows()); }
+    // Source clips: K = clipCount() ≥ 1; clip i's data, file and name (its file stem, clip.name).
+    int clipCount() const { return 1 + static_cast<int>(moreClips.size()); }
+    const Clip& clipAt(int i) const { return i == 0 ? clip : moreClips[static_cast<std::size_t>(i - 1)].clip; }
+    const std::string& clipFile(int i) const { return i == 0 ? sourceFile : moreClips[static_cast<std::size_t>(i - 1)].file; }
+    const std::string& clipSha256(int i) const {
+        return i == 0 ? sourceSha256 : moreClips[static_cast<std::size_t>(i - 1)].sha256;
+    }
+    const std::string& clipName(int i) const { return clipAt(i).name; }
+    // The index of the clip named `name` (file stem), or −1.
+    int findClip(const std::string& name) const;
+    // "10_02, 10_03": every clip name in order, for messages.
+    std::string clipNames() const;
+    // Clip index of training row r (0 for a single-clip model).
+    int rowClip(int r) const { return trainingClips.empty() ? 0 : trainingClips[static_cast<std::size_t>(r)]; }
     int D() const { return static_cast<int>(mu.size()); }
     int latentDim() const { return static_cast<int>(X.cols()); }
     Kernel kernel() const { return Kernel(kind, logParams); }
@@ -69,5 +100,13 @@ struct GpModel {
     Eigen::VectorXd fullPose(const Eigen::VectorXd& kept) const;
     Eigen::VectorXd keptPose(const Eigen::VectorXd& full47) const;
 };
+
+// The first of the model's clips that holds the same capture as `open` (sameCapture,
+// skeleton/clip_match.h), or −1; then `difference` says how `open` differs from the first clip.
+int findCapture(const GpModel& model, const Clip& open, std::string* difference = nullptr);
+
+// The same model with clip `index` as its primary clip (swapped with clip 0; rows keep their data
+// and follow their clip). withPrimaryClip(m, 0) is m. Throws std::out_of_range for a bad index.
+GpModel withPrimaryClip(GpModel model, int index);
 
 }  // namespace mgp::gp

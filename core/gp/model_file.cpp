@@ -17,6 +17,7 @@
 #include "io/clip_json.h"
 #include "io/parse_error.h"
 #include "io/text_reader.h"
+#include "skeleton/clip_match.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp::gp {
@@ -80,12 +81,41 @@ std::vector<int> readInts(const json& j, const std::string& file, const char* wh
     return out;
 }
 
+// Version 2: the clips after the primary one and each row's clip index.
+void readMoreClips(const json& j, const std::string& file, int n, GpModel& m) {
+    const json& more = need(j, "more_clips", file);
+    if (!more.is_array() || more.empty())
+        throwParseError(file, 0, "more_clips as a non-empty array (a version-2 model has 2 or more clips)",
+                        more.is_array() ? "[]" : more.type_name());
+    for (const json& e : more) {
+        SourceClip c;
+        c.file = need(e, "file", file).get<std::string>();
+        c.sha256 = need(e, "sha256", file).get<std::string>();
+        c.clip = clipFromJson(need(e, "clip", file), file);
+        // Rows of every clip share one pose vector, and IK runs on the primary clip's bones.
+        std::string difference;
+        if (!sameSkeleton(m.clip.skeleton, c.clip.skeleton, &difference))
+            throwParseError(file, 0, "clips of one skeleton", "clip " + c.clip.name + ": " + difference);
+        m.moreClips.push_back(std::move(c));
+    }
+    for (int a = 0; a < m.clipCount(); ++a)
+        for (int b = 0; b < a; ++b)
+            if (m.clipName(a) == m.clipName(b)) throwParseError(file, 0, "distinct clip names", m.clipName(a) + " twice");
+    m.trainingClips = readInts(need(j, "training_clips", file), file, "training_clips");
+    if (static_cast<int>(m.trainingClips.size()) != n)
+        throwParseError(file, 0, std::to_string(n) + " training clips", std::to_string(m.trainingClips.size()));
+    for (int c : m.trainingClips)
+        if (c < 0 || c >= m.clipCount())
+            throwParseError(file, 0, "training clips in 0.." + std::to_string(m.clipCount() - 1), std::to_string(c));
+}
+
 }  // namespace
 
 std::string modelToJsonText(const GpModel& m) {
     json j;
     j["format"] = kModelFileFormat;
-    j["version"] = kModelFileVersion;
+    // A single-clip model is written as version 1, byte for byte as before multi-clip models.
+    j["version"] = m.clipCount() > 1 ? kModelFileVersion : kSingleClipModelFileVersion;
     j["kernel"] = kernelKindName(m.kind);
     j["log_params"] = vecJson(m.logParams);
     const Kernel k = m.kernel();
@@ -102,6 +132,13 @@ std::string modelToJsonText(const GpModel& m) {
     j["constant_columns"] = m.constantColumns;
     j["constant_values"] = vecJson(m.constantValues);
     j["training_frames"] = m.trainingFrames;
+    if (m.clipCount() > 1) {
+        json clips = json::array();
+        for (const SourceClip& c : m.moreClips)
+            clips.push_back({{"file", c.file}, {"sha256", c.sha256}, {"clip", clipToJson(c.clip)}});
+        j["more_clips"] = clips;
+        j["training_clips"] = m.trainingClips.empty() ? std::vector<int>(static_cast<std::size_t>(m.N()), 0) : m.trainingClips;
+    }
     const TrainingSettings& s = m.settings;
     j["training"] = {{"active_size", s.activeSize}, {"outer_iterations", s.outerIterations},
                      {"scg_iterations", s.scgIterations}, {"point_iterations", s.pointIterations},
@@ -116,12 +153,14 @@ std::string modelToJsonText(const GpModel& m) {
     // Y is not stored: a row is the clip's pose at its training frame. A row an adaptive update
     // added holds the ACCEPTED pose, not the captured one, so those rows are written out (only
     // when there are any: a freshly trained model's file is unchanged).
-    const Eigen::MatrixXd poses = poseMatrix(m.clip);
+    std::vector<Eigen::MatrixXd> poses;
+    for (int c = 0; c < m.clipCount(); ++c) poses.push_back(poseMatrix(m.clipAt(c)));
     json edited = json::array();
     for (Eigen::Index r = 0; r < m.Y.rows(); ++r) {
         const int f = m.trainingFrames[static_cast<std::size_t>(r)];
-        bool same = f >= 0 && f < m.clip.frameCount();
-        for (int k = 0; same && k < m.D(); ++k) same = m.Y(r, k) == poses(f, m.keptColumns[k]);
+        const int c = m.rowClip(static_cast<int>(r));
+        bool same = c >= 0 && c < m.clipCount() && f >= 0 && f < m.clipAt(c).frameCount();
+        for (int k = 0; same && k < m.D(); ++k) same = m.Y(r, k) == poses[static_cast<std::size_t>(c)](f, m.keptColumns[k]);
         if (!same) edited.push_back({{"row", r}, {"y", vecJson(m.Y.row(r).transpose())}});
     }
     if (!edited.empty()) j["edited_rows"] = edited;
@@ -236,14 +275,18 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.sourceFile = need(src, "file", file).get<std::string>();
         m.sourceSha256 = need(src, "sha256", file).get<std::string>();
         m.clip = clipFromJson(need(j, "clip", file), file);
-        // Training rows: the clip's poses at the training frames, kept columns.
-        const Eigen::MatrixXd poses = poseMatrix(m.clip);
+        if (ver.get<long long>() >= 2) readMoreClips(j, file, n, m);
+        // Training rows: each row's clip's pose at its training frame, kept columns.
+        std::vector<Eigen::MatrixXd> poses;
+        for (int c = 0; c < m.clipCount(); ++c) poses.push_back(poseMatrix(m.clipAt(c)));
         m.Y.resize(n, D);
         for (int r = 0; r < n; ++r) {
             const int f = m.trainingFrames[r];
-            if (f < 0 || f >= m.clip.frameCount())
-                throwParseError(file, 0, "training frames in 0.." + std::to_string(m.clip.frameCount() - 1), std::to_string(f));
-            for (int k = 0; k < D; ++k) m.Y(r, k) = poses(f, m.keptColumns[k]);
+            const Clip& c = m.clipAt(m.rowClip(r));
+            if (f < 0 || f >= c.frameCount())
+                throwParseError(file, 0, "training frames of clip " + c.name + " in 0.." + std::to_string(c.frameCount() - 1),
+                                std::to_string(f));
+            for (int k = 0; k < D; ++k) m.Y(r, k) = poses[static_cast<std::size_t>(m.rowClip(r))](f, m.keptColumns[k]);
         }
         if (j.contains("edited_rows")) {  // rows added by adaptive updates (absent in older files)
             const json& edited = j["edited_rows"];

@@ -2,7 +2,7 @@
 // The model file: one self-contained JSON document (UTF-8), written atomically.
 //
 //   {
-//     "format": "motiongp-model",  "version": 1,
+//     "format": "motiongp-model",  "version": 1 (one source clip) or 2 (several),
 //     "kernel": "fas" | "sgplvm",
 //     "log_params": [ln α, ln γ, ln β(, ln η)],      authoritative θ (Kernel order)
 //     "params": {"alpha", "beta", "gamma", "eta"},  exp(log_params), for readers (eta null for SGPLVM)
@@ -11,19 +11,24 @@
 //     "X": [[d] × N],                               latent points, one per training row
 //     "active": [M],                                active-set row indices (0-based)
 //     "kept_columns": [D], "constant_columns": [..], "constant_values": [..]   (indices into the 47-vector)
-//     "training_frames": [N],                       clip frame index (0-based) of each training row
+//     "training_frames": [N],                       frame index (0-based) of each training row in its clip
+//     "training_clips": [N],                        version 2 only: clip index of each row (0 = "clip")
 //     "training": {"active_size", "outer_iterations", "scg_iterations", "point_iterations",
 //                  "tolerance", "frame_first", "frame_last", "frame_step", "iterations", "converged",
 //                  "objective_history": [L_init, L_1, …, L_T]},   optional (older files: absent,
 //                                                  read as empty); finite numbers; see GpModel
-//     "source": {"file": name without directory, "sha256": hex},   provenance only
+//     "source": {"file": name without directory, "sha256": hex},   provenance only (clip 0)
 //     "clip": { see io/clip_json.h: skeleton bones, 47-DOF poses of every frame, root translations }
+//     "more_clips": [{"file", "sha256", "clip"}],  version 2 only: clips 1..K−1, one skeleton
+//                                                  (sameSkeleton), distinct names (clip.name = stem)
 //   }
 //
-// The training rows Y are not stored twice: they are the clip's poses at training_frames,
-// kept columns. Doubles use nlohmann-json's shortest round-trip form (bit-exact on reading).
+// The training rows Y are not stored twice: they are each row's clip's poses at its
+// training_frames entry, kept columns. Doubles use nlohmann-json's shortest round-trip form (bit-exact on reading).
 // No wall-clock data is written, so identical runs give byte-identical files.
-// Version policy: a reader accepts versions ≤ its own; anything else, or a damaged file, is a
+// Version policy: a model of one clip is written as version 1, byte for byte as before version 2
+// existed (older builds still read it); a model of several clips as version 2. A reader accepts
+// versions ≤ its own; anything else, or a damaged file, is a
 // ParseError "file: expected ..., found ...".
 #include <string>
 
@@ -31,7 +36,9 @@
 
 namespace mgp::gp {
 
-constexpr int kModelFileVersion = 1;
+constexpr int kModelFileVersion = 2;
+// Single-clip models are still written as version 1 (unchanged bytes; older builds read them).
+constexpr int kSingleClipModelFileVersion = 1;
 constexpr const char* kModelFileFormat = "motiongp-model";
 
 std::string modelToJsonText(const GpModel& model);

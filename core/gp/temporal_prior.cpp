@@ -34,28 +34,35 @@ double medianOf(std::vector<double> v) {
 }  // namespace
 
 template <class Gap>
-TemporalPrior TemporalPrior::build(const std::vector<int>& frames, double weight, Gap gap) {
+TemporalPrior TemporalPrior::build(const std::vector<int>& frames, const std::vector<int>& clips, double weight, Gap gap) {
     if (!(weight >= 0.0) || !std::isfinite(weight))
         throw std::invalid_argument("TemporalPrior: expected a finite weight ≥ 0, found " + std::to_string(weight));
+    if (!clips.empty() && clips.size() != frames.size())
+        throw std::invalid_argument("TemporalPrior: expected one clip index per frame (" + std::to_string(frames.size()) +
+                                    "), found " + std::to_string(clips.size()));
     TemporalPrior p;
     p.weight_ = weight;
     const int n = static_cast<int>(frames.size());
+    auto clipOf = [&](int row) { return clips.empty() ? 0 : clips[static_cast<std::size_t>(row)]; };
     p.byRow_.assign(static_cast<std::size_t>(n), {});
     p.order_.resize(static_cast<std::size_t>(n));
     std::iota(p.order_.begin(), p.order_.end(), 0);
-    std::stable_sort(p.order_.begin(), p.order_.end(), [&](int a, int b) { return frames[a] < frames[b]; });
+    std::stable_sort(p.order_.begin(), p.order_.end(), [&](int a, int b) {
+        return clipOf(a) != clipOf(b) ? clipOf(a) < clipOf(b) : frames[a] < frames[b];
+    });
     if (n < 3) return p;
+    auto sameClip = [&](int k) { return clipOf(p.order_[k]) == clipOf(p.order_[k - 1]); };
     std::vector<int> gaps;
     for (int k = 1; k < n; ++k) {
         const int g = frames[p.order_[k]] - frames[p.order_[k - 1]];
-        if (g > 0) gaps.push_back(g);
+        if (g > 0 && sameClip(k)) gaps.push_back(g);
     }
     if (gaps.empty()) return p;
     std::nth_element(gaps.begin(), gaps.begin() + static_cast<long>(gaps.size() / 2), gaps.end());
     const double hbar = gaps[gaps.size() / 2];
     auto joined = [&](int k) {  // rows order_[k−1] and order_[k] belong to one segment
         const int g = frames[p.order_[k]] - frames[p.order_[k - 1]];
-        return g > 0 && g <= 3.0 * hbar;
+        return sameClip(k) && g > 0 && g <= 3.0 * hbar;
     };
     std::vector<double> h(static_cast<std::size_t>(n), 0.0);  // h[k]: spacing of order_[k−1] → order_[k]
     std::vector<int> joinedAt;
@@ -80,19 +87,20 @@ TemporalPrior TemporalPrior::build(const std::vector<int>& frames, double weight
     return p;
 }
 
-TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight) {
-    return build(frames, weight,
+TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight, const std::vector<int>& clips) {
+    return build(frames, clips, weight,
                  [](const std::vector<int>& order, const std::vector<int>& joinedAt, double hbar,
                     const std::vector<int>& fr, std::vector<double>& h) {
                      for (int k : joinedAt) h[static_cast<std::size_t>(k)] = (fr[order[k]] - fr[order[k - 1]]) / hbar;
                  });
 }
 
-TemporalPrior TemporalPrior::posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight) {
+TemporalPrior TemporalPrior::posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight,
+                                       const std::vector<int>& clips) {
     if (Y.rows() != static_cast<Eigen::Index>(frames.size()))
         throw std::invalid_argument("TemporalPrior: expected one pose row per frame (" + std::to_string(frames.size()) +
                                     "), found " + std::to_string(Y.rows()));
-    return build(frames, weight,
+    return build(frames, clips, weight,
                  [&Y](const std::vector<int>& order, const std::vector<int>& joinedAt, double, const std::vector<int>&,
                       std::vector<double>& h) {
                      if (joinedAt.empty()) return;

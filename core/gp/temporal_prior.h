@@ -9,7 +9,9 @@
 // divided second difference a = 2/(h₁(h₁+h₂)), c = 2/(h₂(h₁+h₂)), b = −(a + c), which still
 // annihilates constant and linear motion. A segment breaks where the gap to the next row (in clip
 // frames, rows sorted by frame) is 0 or more than 3 median gaps, so separate takes or frame
-// ranges are never tied together. The prior only adds to the objectives of Steps 6 and 8
+// ranges are never tied together. With several source clips (core/gp/model.h) rows are ordered
+// by (clip, frame) and a segment also breaks wherever the clip changes: rows of different clips
+// are never joined, whatever their frame numbers. The prior only adds to the objectives of Steps 6 and 8
 // (core/gp/trainer.h); with LatentPrior::kNone nothing changes (the paper's model).
 //
 // kPaced (docs/maths.md §19) keeps the same segments but measures the gaps h₁, h₂ in pose distance
@@ -39,12 +41,15 @@ public:
     };
 
     TemporalPrior() = default;
-    // frames: clip frame of each training row (any order); weight λ ≥ 0.
-    static TemporalPrior secondDifference(const std::vector<int>& frames, double weight);
+    // frames: clip frame of each training row (any order); weight λ ≥ 0; clips: each row's clip
+    // index (empty: all one clip).
+    static TemporalPrior secondDifference(const std::vector<int>& frames, double weight,
+                                          const std::vector<int>& clips = {});
     // kPaced: the same segments, with the gap between time-consecutive rows measured as the pose
     // distance ‖Y.row(b) − Y.row(a)‖ over its median across the joined pairs, clamped to
     // [kMinPaceGap, kMaxPaceGap]. Y has one row per frame entry.
-    static TemporalPrior posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight);
+    static TemporalPrior posePaced(const std::vector<int>& frames, const Eigen::MatrixXd& Y, double weight,
+                                   const std::vector<int>& clips = {});
 
     bool empty() const { return triples_.empty() || weight_ == 0.0; }
     double weight() const { return weight_; }
@@ -61,7 +66,7 @@ public:
 private:
     // Segments by frame gap; gap(a, b) gives the (positive) spacing of joined rows a → b.
     template <class Gap>
-    static TemporalPrior build(const std::vector<int>& frames, double weight, Gap gap);
+    static TemporalPrior build(const std::vector<int>& frames, const std::vector<int>& clips, double weight, Gap gap);
 
     double weight_ = 0.0;
     std::vector<Triple> triples_;

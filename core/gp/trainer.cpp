@@ -126,8 +126,10 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
-    if (opt_.prior == LatentPrior::kSmooth) prior_ = TemporalPrior::secondDifference(data_.frames, opt_.resolvedPriorWeight());
-    if (opt_.prior == LatentPrior::kPaced) prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.resolvedPriorWeight());
+    if (opt_.prior == LatentPrior::kSmooth)
+        prior_ = TemporalPrior::secondDifference(data_.frames, opt_.resolvedPriorWeight(), data_.clips);
+    if (opt_.prior == LatentPrior::kPaced)
+        prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.resolvedPriorWeight(), data_.clips);
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
                                        objective(), false);
@@ -252,6 +254,30 @@ TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& fram
     return prepareTrainingData(rows, frames);
 }
 
+TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const std::vector<std::vector<int>>& frames) {
+    if (clips.empty() || clips.size() != frames.size())
+        throw std::invalid_argument("trainingDataFromClips: expected one frame list per clip (at least one clip)");
+    if (clips.size() == 1) return trainingDataFromClip(*clips[0], frames[0]);
+    std::size_t n = 0;
+    for (const auto& f : frames) n += f.size();
+    Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), kPoseDofs);
+    std::vector<int> allFrames, clipOf;
+    for (std::size_t c = 0; c < clips.size(); ++c) {
+        const Eigen::MatrixXd all = poseMatrix(*clips[c]);
+        for (int f : frames[c]) {
+            if (f < 0 || f >= clips[c]->frameCount())
+                throw std::invalid_argument("trainingDataFromClips: frame " + std::to_string(f) + " outside clip " +
+                                            clips[c]->name);
+            rows.row(static_cast<Eigen::Index>(allFrames.size())) = all.row(f);
+            allFrames.push_back(f);
+            clipOf.push_back(static_cast<int>(c));
+        }
+    }
+    TrainingData out = prepareTrainingData(rows, allFrames);
+    out.clips = std::move(clipOf);
+    return out;
+}
+
 TrainResult trainOnClip(Clip clip, const TrainOptions& options, const std::function<void(const IterationLog&)>& progress,
                         const std::atomic<bool>* cancel) {
     unwrapClip(clip);
@@ -292,6 +318,7 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.constantColumns = trainer.data().constantColumns;
     m.constantValues = trainer.data().constantValues;
     m.trainingFrames = trainer.data().frames;
+    m.trainingClips = trainer.data().clips;
     m.settings.activeSize = options.activeSize;
     m.settings.outerIterations = options.outerIterations;
     m.settings.scgIterations = options.scgIterations;

@@ -73,12 +73,16 @@ struct TrainingData {
     Eigen::VectorXd mu;                // D
     std::vector<int> keptColumns, constantColumns;
     Eigen::VectorXd constantValues;
-    std::vector<int> frames;           // clip frame index of each row
+    std::vector<int> frames;           // frame index of each row within its clip
+    std::vector<int> clips;            // clip index of each row (empty: all one clip, clip 0)
 };
 // poses47: N×47 (unwrapped); frames: clip frame index of each row (size N).
 TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames);
 // The rows of the clip's unwrapped pose matrix at `frames` (clip indices, 0-based).
 TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& frames);
+// Several clips of one skeleton: the rows of clips[c] at frames[c], clip after clip, with
+// TrainingData::clips set (one clip gives exactly trainingDataFromClip).
+TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const std::vector<std::vector<int>>& frames);
 
 struct IterationLog {
     int iter = 0;

@@ -28,7 +28,8 @@ void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, 
     for (int i = 0; i < model.N(); ++i) {
         held.clear();
         for (std::size_t a = 0; a < model.active.size(); ++a)
-            if (std::abs(model.trainingFrames[static_cast<std::size_t>(model.active[a])] -
+            if (model.rowClip(model.active[a]) == model.rowClip(i) &&
+                std::abs(model.trainingFrames[static_cast<std::size_t>(model.active[a])] -
                          model.trainingFrames[static_cast<std::size_t>(i)]) <= windowFrames)
                 held.push_back(static_cast<int>(a));
         x = model.X.row(i).transpose();

@@ -4,7 +4,7 @@
 //
 // The reference is the captured motion scored as NEW poses: for every training row i, the GP
 // conditioned on the active points except those within ±kHeldOutWindowFrames clip frames of row
-// i predicts at x_i (ActiveSetPosterior::predictHoldingOut), giving σ²_i and
+// i (rows of the same source clip only: another clip's frame numbers say nothing) predicts at x_i (ActiveSetPosterior::predictHoldingOut), giving σ²_i and
 //   L_IK,i = ‖W(y_i − f_{−i}(x_i))‖² / (2σ²_i) + (D/2) ln σ²_i + ½‖x_i‖²,
 // what a natural pose from a moment the model has not seen scores (docs/maths-ik.md §5). Scored
 // in-sample instead, a row sits at σ² ≈ 1/β and L_IK far below anything an edit can reach, so
