@@ -107,7 +107,7 @@ TEST_CASE("constrained IK: a cold start that crawls converges within 50 iteratio
     // 35_01 fixture, frame 150, left hand moved (−30, 0, 30) cm, the feet in ground contact held
     // as pins (what `motiongp pose` does). Without the crawl rules of docs/maths-ik.md §3 (the
     // shift bracketed, the latent trust radius) this move stops at the cap with F 2473.72 and
-    // converges only after 51 trial steps; with them it converges in 39.
+    // converges only after 51 trial steps; with them it converges in 47.
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     const int frame = 149;

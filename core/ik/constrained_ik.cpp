@@ -18,11 +18,12 @@ constexpr double kMaxStepDeg = 20.0;        // longest change of one angle in on
 // corrections of a long step have not brought them back yet; the next KKT step restores them.
 constexpr double kPinSlackCm = 1e-3;
 // A solve still running after this many trial steps is crawling (a drag event needs at most 5 at
-// its p99): from then on the shift is sized to within 2× of the smallest that factorises, and the
+// its p99): from then on the shift is sized to 4× the smallest that factorises, and the
 // latent step bound becomes a trust radius that grows after good steps it cut (docs/maths-ik.md §3).
 // Solves that stop earlier take exactly the steps they took without these rules.
 constexpr int kCrawlIterations = 20;
 constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
+constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
 constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
 }  // namespace
 
@@ -404,7 +405,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         }
         // τ grows tenfold per try, so it can end up to 10× larger than needed; τ on every unknown
         // then freezes x and the free DOFs for many steps. A crawling solve brackets the smallest
-        // factorising τ (between the last failure and the success) and takes twice that.
+        // factorising τ (between the last failure and the success) and takes four times that
+        // (closer to it, the barely positive model's steps were often rejected).
         const double firstShift = kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
         if (crawling && llt_.info() == Eigen::Success && shift > firstShift) {
             const double succeeded = shift;
@@ -416,7 +418,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
                 llt_.compute(Hd_);
                 (llt_.info() == Eigen::Success ? hi : lo) = mid;
             }
-            const double use = std::min(2.0 * hi, succeeded);
+            const double use = std::min(kShiftMargin * hi, succeeded);
             Hd_.diagonal().array() += use - shift;
             shift = use;
             llt_.compute(Hd_);
@@ -523,6 +525,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             }
             nuLm = 2.0;
             lastAccepted = true;
+        } else if (crawling && latentBound > latentStepBound_ && latentScale < 1.0 && latentScale <= scale) {
+            // The grown radius, not the damping, made the step too long: the halved radius above
+            // shortens the retry, and μ stays where the gain ratio put it.
+            lastAccepted = false;
         } else {
             lastAccepted = false;
             mu *= nuLm;
