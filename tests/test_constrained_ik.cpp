@@ -10,6 +10,7 @@
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
+#include "motion/foot_contacts.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -100,6 +101,37 @@ TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose
     CHECK(reachedAt50 >= solves - 1);
     CHECK(converged300 >= solves - 3);
     CHECK(reached300 >= solves - 1);
+}
+
+TEST_CASE("constrained IK: a cold start that crawls converges within 50 iterations, at the minimum a 500-iteration solve finds") {
+    // 35_01 fixture, frame 150, left hand moved (−30, 0, 30) cm, the feet in ground contact held
+    // as pins (what `motiongp pose` does). Without the crawl rules of docs/maths-ik.md §3 (the
+    // shift bracketed, the latent trust radius) this move stops at the cap with F 2473.72 and
+    // converges only after 51 trial steps; with them it converges in 47.
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int frame = 149;
+    ConstrainedIkRequest req = captured(*version, frame);
+    FkState fk;
+    forwardKinematics(clip.skeleton, req.start, fk);
+    req.constraints = {{Effector::kLHand, effectorCm(clip.skeleton, fk, Effector::kLHand) + Eigen::Vector3d(-30, 0, 30), false}};
+    const ContactSet contacts = detectFootContacts(clip);
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        if (contacts.at(foot, frame)) req.constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+    REQUIRE(req.constraints.size() >= 2);  // at least one foot is pinned
+    ConstrainedIkSolver solver(version);
+    const ConstrainedIkResult at50 = solver.solve(req);
+    req.maxIterations = 500;
+    const ConstrainedIkResult full = solver.solve(req);
+    MESSAGE("at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations << ", F " << at50.objective
+                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F " << full.objective);
+    CHECK(at50.converged);
+    CHECK(at50.iterations <= 50);
+    CHECK(at50.reached);
+    for (const auto& c : at50.constraints) CHECK(c.residualCm <= (c.pin ? 1e-5 : 0.05));
+    // The same minimum as the long solve: the rules make the crawl faster, not go elsewhere.
+    REQUIRE(full.converged);
+    CHECK(at50.objective == doctest::Approx(full.objective).epsilon(1e-6));
 }
 
 TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keeps the feet, reached:false, refused") {

@@ -17,6 +17,14 @@ constexpr double kMaxStepDeg = 20.0;        // longest change of one angle in on
 // A trial may leave the pins by at most this much (cm; 1/50 of the reached tolerance) when the
 // corrections of a long step have not brought them back yet; the next KKT step restores them.
 constexpr double kPinSlackCm = 1e-3;
+// A solve still running after this many trial steps is crawling (a drag event needs at most 5 at
+// its p99): from then on the shift is sized to 4× the smallest that factorises, and the
+// latent step bound becomes a trust radius that grows after good steps it cut (docs/maths-ik.md §3).
+// Solves that stop earlier take exactly the steps they took without these rules.
+constexpr int kCrawlIterations = 20;
+constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
+constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
+constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -364,7 +372,9 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     IkStop stop = IkStop::kIterationCap;
     int it = 0;
     bool lastAccepted = false;
+    double latentRadius = latentStepBound_;  // grows only once the solve is crawling
     while (true) {
+        const bool crawling = it >= kCrawlIterations;
         // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
         // Lagrangian Hessian) once the iteration is in its Newton regime; see the header.
         const bool newton = lastAccepted && curvature_;
@@ -392,6 +402,26 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             shift = next;
             llt_.compute(Hd_);
             if (shift > kMaxDamping) break;
+        }
+        // τ grows tenfold per try, so it can end up to 10× larger than needed; τ on every unknown
+        // then freezes x and the free DOFs for many steps. A crawling solve brackets the smallest
+        // factorising τ (between the last failure and the success) and takes four times that
+        // (closer to it, the barely positive model's steps were often rejected).
+        const double firstShift = kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+        if (crawling && llt_.info() == Eigen::Success && shift > firstShift) {
+            const double succeeded = shift;
+            double lo = shift / 10.0, hi = shift;  // lo failed, hi factorises
+            for (int b = 0; b < kShiftBisections; ++b) {
+                const double mid = std::sqrt(lo * hi);
+                Hd_.diagonal().array() += mid - shift;
+                shift = mid;
+                llt_.compute(Hd_);
+                (llt_.info() == Eigen::Success ? hi : lo) = mid;
+            }
+            const double use = std::min(kShiftMargin * hi, succeeded);
+            Hd_.diagonal().array() += use - shift;
+            shift = use;
+            llt_.compute(Hd_);
         }
         if (llt_.info() != Eigen::Success) {
             stop = IkStop::kStalled;
@@ -426,8 +456,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // Step bound: the linearisation of FK and of the prior does not reach further than about
         // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
         // (same direction) rather than left to the damping, which would also slow every later step.
-        const double scale = std::min({1.0, latentStepBound_ / std::max(1e-300, delta_.head(d_).norm()),
-                                       kMaxStepDeg / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff())});
+        // A crawling solve uses the latent trust radius instead of the fixed bound.
+        const double latentBound = crawling ? latentRadius : latentStepBound_;
+        const double latentScale = latentBound / std::max(1e-300, delta_.head(d_).norm());
+        const double scale = std::min({1.0, latentScale, kMaxStepDeg / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff())});
         double stepDecrease = modelDecrease;
         if (scale < 1.0) {
             delta_ *= scale;
@@ -472,7 +504,16 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // tolerance or where they are (a projection that could not return, e.g. at a straight leg)
         // is rejected, so μ shrinks the step.
         const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
-        if (std::isfinite(Ft) && pinsHeld && gain > 1e-4) {
+        const bool accepted = std::isfinite(Ft) && pinsHeld && gain > 1e-4;
+        if (crawling) {
+            // Trust radius: doubled after a good step that the latent bound cut (the model
+            // predicted it well, so the bound, not the model, limited it), halved on rejection.
+            if (accepted && gain > 0.75 && latentScale < 1.0 && latentScale <= scale)
+                latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
+            else if (!accepted)
+                latentRadius = std::max(latentStepBound_, 0.5 * latentRadius);
+        }
+        if (accepted) {
             z_ = zTrial_;
             mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
@@ -484,6 +525,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             }
             nuLm = 2.0;
             lastAccepted = true;
+        } else if (crawling && latentBound > latentStepBound_ && latentScale < 1.0 && latentScale <= scale) {
+            // The grown radius, not the damping, made the step too long: the halved radius above
+            // shortens the retry, and μ stays where the gain ratio put it.
+            lastAccepted = false;
         } else {
             lastAccepted = false;
             mu *= nuLm;

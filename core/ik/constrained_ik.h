@@ -42,7 +42,10 @@
 // target manifold to every step along it and the iteration converges only linearly. Steps are
 // accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
 // tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
-// 1e-3 cm (the next step restores them).
+// 1e-3 cm (the next step restores them). A solve still running after 20 trial steps is crawling:
+// from then on the shift is 4× the smallest that factorises (bracketed) and the latent
+// bound becomes a trust radius (up to 16×; a step it made too long does not raise μ); earlier
+// steps are untouched (docs/maths-ik.md §3).
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
