@@ -59,8 +59,8 @@ ImU32 clipColour(int colourIndex, double t, bool open) {
     const float hue = std::fmod(kHues[colourIndex % 8] + 0.04f * float(colourIndex / 8), 1.0f);
     const float u = float(std::clamp(t, 0.0, 1.0));
     float r, g, b;
-    ImGui::ColorConvertHSVtoRGB(hue, open ? 0.75f : 0.45f, open ? 0.65f + 0.35f * u : 0.55f + 0.25f * u, r, g, b);
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, open ? 1.0f : 0.75f));
+    ImGui::ColorConvertHSVtoRGB(hue, open ? 0.8f : 0.55f, open ? 0.65f + 0.35f * u : 0.5f + 0.3f * u, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, open ? 1.0f : 0.85f));
 }
 std::string hexColour(ImU32 c) {
     char buf[8];
@@ -339,7 +339,6 @@ void LatentMapPanel::draw(EditorState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
     ImGui::SameLine();
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
-    else if (clips > 1) ImGui::TextDisabled("bright: confident  rings: active  pale: other clips");
     else ImGui::TextDisabled("bright: confident  rings: active");
 }
 
