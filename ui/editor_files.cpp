@@ -126,7 +126,8 @@ std::string EditorApp::openModelClip(const std::string& name, int frame) {
             }
             const gp::ModelVersionPtr relabelled = i == 0 ? now : gp::ModelVersion::make(gp::withPrimaryClip(*now->model, i));
             const std::string before = state_.clipLabel;
-            state_.training.cancel();
+            state_.training.cancel();  // a training of the old clip must not land on this one
+            state_.compareTraining.cancel();
             state_.doc.setModel(relabelled, true);
             state_.doc.setFrame(frame);
             state_.clipLabel = relabelled->model->sourceFile.empty() ? name : relabelled->model->sourceFile;
