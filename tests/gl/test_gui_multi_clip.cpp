@@ -208,6 +208,14 @@ TEST_CASE("gui: clicking a dot of the model's other clip opens that clip at that
     h->frame(3);
     CHECK(h->app->state().clipLegend.find("10_02 #") == 0);
     CHECK(h->app->state().clipLegend.find("(open)") < h->app->state().clipLegend.find("10_03"));
+    // The action behind the click names what is wrong with a bad clip or frame, and changes nothing.
+    CHECK(h->app->runAction({"model-clip", "10_09"}) == "the model has no clip '10_09'; its clips: 10_02, 10_03");
+    CHECK(h->app->runAction({"model-clip", "10_03", "9999"}) == "expected a frame in 1..362 of 10_03, found 9999");
+    CHECK(doc.clip().name == "10_02");
+    // Back to 10_03 by the action: frame counted within that clip.
+    REQUIRE(h->app->runAction({"model-clip", "10_03", "7"}) == "");
+    CHECK(doc.clip().name == "10_03");
+    CHECK(doc.frame() == 6);
     std::filesystem::remove_all(std::filesystem::path(model).parent_path());
 }
 
