@@ -104,6 +104,14 @@ std::vector<EditorAction> makeActions() {
     add({"open-model", "[PATH]", "Ctrl+M", {{'M', kCtrl}}, "open a saved model with its clip (asks first if that is not the open clip); no PATH: the Open dialog",
          always, false, pathOrDialog([](EditorApp& app, const std::string& p) { return app.openModel(p); },
                                      [](EditorApp& app) { app.askForFile(FileKind::kModel, "opening a model"); })});
+    add({"model-clip", "NAME [N]", "", {}, "make the model's training clip NAME the open clip at frame N (default 1), the model staying; asks about unsaved changes",
+         hasModel, false, [](EditorApp& app, const ActionArgs& a) {
+             if (a.empty()) return std::string("expected model-clip NAME [N]");
+             int n = 1;
+             if (a.size() > 1)
+                 if (std::string err = parseIntArg(a[1], "a frame number N", n); !err.empty()) return err;
+             return app.openModelClip(a[0], n - 1);
+         }});
     add({"save-model", "[PATH]", "", {}, "save the current model; no PATH: the Save dialog", hasModel, false,
          pathOrDialog([](EditorApp& app, const std::string& p) { return app.saveModel(p); },
                       [](EditorApp& app) { app.askForFile(FileKind::kSaveModel); })});

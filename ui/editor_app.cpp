@@ -179,6 +179,17 @@ bool EditorApp::handleScreenPosition(Effector e, float& x, float& y) const {
     return viewport_->handleScreenPosition(state_, e, x, y);
 }
 
+bool EditorApp::latentDotScreenPosition(const std::string& clip, int frame, float& x, float& y) const {
+    const gp::ModelVersionPtr v = state_.doc.model();
+    if (!v) return false;
+    const gp::GpModel& m = *v->model;
+    const int c = m.findClip(clip);
+    for (int i = 0; c >= 0 && i < m.N() && i < int(m.trainingFrames.size()); ++i)
+        if (m.rowClip(i) == c && m.trainingFrames[static_cast<std::size_t>(i)] == frame)
+            return latent_.dotPosition(state_, i, x, y);
+    return false;
+}
+
 bool EditorApp::keyScreenPosition(int key, float& x, float& y) const {
     return viewport_->keyScreenPosition(state_, key, x, y);
 }
@@ -193,10 +204,10 @@ void EditorApp::shortcuts() {
 }
 
 void EditorApp::runRequests() {
-    const std::vector<std::string> requests = std::exchange(state_.requests, {});
-    for (const std::string& name : requests) {
+    const std::vector<std::vector<std::string>> requests = std::exchange(state_.requests, {});
+    for (const std::vector<std::string>& args : requests) {
         const long before = state_.messages.postCount();
-        const std::string err = runAction({name});
+        const std::string err = runAction(args);
         if (!err.empty() && state_.messages.postCount() == before) state_.setStatus(err, true);
     }
 }

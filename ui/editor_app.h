@@ -60,6 +60,9 @@ public:
     // first (Open its clip, or Cancel) and returns "" while the question is up.
     std::string openModel(const std::string& path);
     std::string saveModel(const std::string& path);
+    // Makes the model's training clip `name` the open clip at `frame` (0-based), the model staying
+    // (gp::withPrimaryClip); asks about unsaved changes first. "" or the error.
+    std::string openModelClip(const std::string& name, int frame);
     std::string startTraining();         // on the open clip with state().trainOptions
     std::string startCompareTraining();  // the compare model: the other kernel, same options
     // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
@@ -125,6 +128,8 @@ public:
     // Window pixel of an effector handle (as last drawn).
     bool handleScreenPosition(Effector e, float& x, float& y) const;
     bool keyScreenPosition(int key, float& x, float& y) const;  // path key (0-based), as last drawn
+    // Window pixel of the latent map's dot of clip `clip` frame `frame` (0-based), as last drawn.
+    bool latentDotScreenPosition(const std::string& clip, int frame, float& x, float& y) const;
     // Runs a named action (editor_actions.h; args[0] is the name): "" or the error.
     std::string runAction(const std::vector<std::string>& args);
 

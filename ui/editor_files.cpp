@@ -100,6 +100,48 @@ void EditorApp::installModel(gp::ModelVersionPtr v, const std::string& path) {
     remember(path, RecentKind::kModel);
 }
 
+std::string EditorApp::openModelClip(const std::string& name, int frame) {
+    const gp::ModelVersionPtr v = state_.doc.model();
+    if (!v) return "no model: open or train one first";
+    const int index = v->model->findClip(name);
+    if (index < 0) return "the model has no clip '" + name + "'; its clips: " + v->model->clipNames();
+    const int frames = v->model->clipAt(index).frameCount();
+    if (frame < 0 || frame >= frames)
+        return "expected a frame in 1.." + std::to_string(frames) + " of " + name + ", found " + std::to_string(frame + 1);
+    const std::string where = name + " frame " + std::to_string(frame + 1);
+    if (index == 0) {
+        state_.doc.setFrame(frame);
+        state_.setStatus("jumped to " + where);
+        return "";
+    }
+    // The open clip and its edits go (the model stays): ask about unsaved changes first. The clip
+    // is looked up again when the answer comes, by name, in the model of that moment.
+    guardUnsaved(
+        [this, name, frame, where] {
+            const gp::ModelVersionPtr now = state_.doc.model();
+            const int i = now ? now->model->findClip(name) : -1;
+            if (i < 0) {
+                state_.setStatus("the model no longer has clip " + name, true);
+                return;
+            }
+            const gp::ModelVersionPtr relabelled = i == 0 ? now : gp::ModelVersion::make(gp::withPrimaryClip(*now->model, i));
+            const std::string before = state_.clipLabel;
+            state_.training.cancel();  // a training of the old clip must not land on this one
+            state_.compareTraining.cancel();
+            state_.doc.setModel(relabelled, true);
+            state_.doc.setFrame(frame);
+            state_.clipLabel = relabelled->model->sourceFile.empty() ? name : relabelled->model->sourceFile;
+            state_.playing = false;
+            state_.cameraNeedsFraming = true;
+            sessionPath_.clear();  // the session file holds the other clip
+            markSaved();
+            state_.setStatus("switched from " + before + " to " + where + " (same model)");
+        },
+        "switching to clip " + name);
+    if (dirty()) state_.setStatus("switching to " + where + ": asking about unsaved changes first");
+    return "";
+}
+
 std::string EditorApp::saveModel(const std::string& path) {
     const gp::ModelVersionPtr v = state_.doc.model();
     if (!v) {

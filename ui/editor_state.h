@@ -37,6 +37,9 @@ struct EditorState {
     int hoveredHandle = -1;  // Effector under the mouse in the viewport, -1 none
     std::optional<Effector> selected;
     int hoveredTrainingRow = -1;  // latent map hover
+    // The latent map's clip legend as last drawn (a model of several clips): one line per clip,
+    // "NAME #RRGGBB" and " (open)" on the open clip; "" for a single-clip model.
+    std::string clipLegend;
 
     // A handle drag: where the handle started (cm), the axis it is held to (-1 free, 0 X, 1 Y,
     // 2 Z; X/Y/Z keys) and the offset readout the viewport shows ("" when not dragging).
@@ -79,8 +82,12 @@ struct EditorState {
 
     // The one way a panel asks the app for something: an action of the action table by name
     // (editor_actions.h: "train", "open-model", ...), run by the app later in the same frame.
-    std::vector<std::string> requests;
-    void request(std::string action) { requests.push_back(std::move(action)); }
+    // Each request is the action's name followed by its arguments.
+    std::vector<std::vector<std::string>> requests;
+    void request(std::string action, std::vector<std::string> args = {}) {
+        args.insert(args.begin(), std::move(action));
+        requests.push_back(std::move(args));
+    }
     // Set by the frame-camera action: the viewport frames the character on its next draw.
     bool requestFrameCamera = false;
 

@@ -72,11 +72,13 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             if (!isNumber(args[0]) || !isNumber(args[1]))
                 throwParseError(file, lineNo, "two numbers", "'" + args[0] + " " + args[1] + "'");
         } else if (verb == "hover") {
-            need(1, "an effector (lhand rhand lfoot rfoot head) or key:N");
+            need(1, "an effector (lhand rhand lfoot rfoot head), key:N or dot:CLIP:N");
             Effector e;
             const bool key = args[0].rfind("key:", 0) == 0 && isCount(args[0].substr(4), 1);
-            if (!key && !parseEffector(args[0], e))
-                throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head or key:N", "'" + args[0] + "'");
+            const std::size_t colon = args[0].rfind(':');
+            const bool dot = args[0].rfind("dot:", 0) == 0 && colon > 4 && isCount(args[0].substr(colon + 1), 1);
+            if (!key && !dot && !parseEffector(args[0], e))
+                throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head, key:N or dot:CLIP:N", "'" + args[0] + "'");
         } else if (verb == "down" || verb == "up") {
             need(1, "a button (left, right, middle)");
             if (args[0] != "left" && args[0] != "right" && args[0] != "middle")

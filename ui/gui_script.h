@@ -10,6 +10,7 @@
 //   hover EFFECTOR         mouse onto an effector handle's current screen position
 //                          (lhand rhand lfoot rfoot head), resolved when the event runs
 //   hover key:N            mouse onto key N (1-based) of the path being edited
+//   hover dot:CLIP:N       mouse onto the latent map's dot of frame N (1-based) of training clip CLIP
 //   down BUTTON            press a mouse button: left | right | middle
 //   up BUTTON              release it
 //   wheel DY               scroll (positive zooms in)

@@ -25,18 +25,47 @@ ImU32 frameColour(double t) {
     ImGui::ColorConvertHSVtoRGB(float(0.60 - 0.50 * std::clamp(t, 0.0, 1.0)), 0.65f, 1.0f, r, g, b);
     return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1.0f));
 }
-// The time path's pairs over the open clip's rows only (rows of other clips are never joined).
-std::vector<std::pair<int, int>> openClipPairs(const gp::GpModel& model) {
+// The time path's pairs: each clip's rows joined in its own frame order, never across clips.
+std::vector<std::pair<int, int>> clipPairs(const gp::GpModel& model) {
     if (model.clipCount() == 1) return eval::timeConsecutivePairs(model.trainingFrames);
-    std::vector<int> rows, frames;
-    for (int i = 0; i < model.N(); ++i)
-        if (model.rowClip(i) == 0) {
-            rows.push_back(i);
-            frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
-        }
-    std::vector<std::pair<int, int>> pairs = eval::timeConsecutivePairs(frames);
-    for (auto& [a, b] : pairs) a = rows[static_cast<std::size_t>(a)], b = rows[static_cast<std::size_t>(b)];
-    return pairs;
+    std::vector<std::pair<int, int>> all;
+    for (int c = 0; c < model.clipCount(); ++c) {
+        std::vector<int> rows, frames;
+        for (int i = 0; i < model.N(); ++i)
+            if (model.rowClip(i) == c) {
+                rows.push_back(i);
+                frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
+            }
+        for (auto [a, b] : eval::timeConsecutivePairs(frames))
+            all.emplace_back(rows[static_cast<std::size_t>(a)], rows[static_cast<std::size_t>(b)]);
+    }
+    return all;
+}
+// A model of several clips: each clip's colour index is its name's rank among the clips' names,
+// so a clip keeps its colour when another one becomes the open (primary) clip.
+std::vector<int> clipColourIndices(const gp::GpModel& model) {
+    std::vector<int> order(static_cast<std::size_t>(model.clipCount()));
+    for (int c = 0; c < model.clipCount(); ++c) order[static_cast<std::size_t>(c)] = c;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return model.clipName(a) < model.clipName(b); });
+    std::vector<int> index(order.size());
+    for (std::size_t r = 0; r < order.size(); ++r) index[static_cast<std::size_t>(order[r])] = int(r);
+    return index;
+}
+// Clip colours: well separated hues (blue, orange, green, magenta, yellow, cyan, red, violet,
+// then the same shifted); the frame within the clip brightens the dot from its first frame to its
+// last. The open clip's dots are saturated and opaque, the other clips' paler and translucent.
+ImU32 clipColour(int colourIndex, double t, bool open) {
+    static const float kHues[] = {0.58f, 0.07f, 0.33f, 0.85f, 0.15f, 0.48f, 0.0f, 0.72f};
+    const float hue = std::fmod(kHues[colourIndex % 8] + 0.04f * float(colourIndex / 8), 1.0f);
+    const float u = float(std::clamp(t, 0.0, 1.0));
+    float r, g, b;
+    ImGui::ColorConvertHSVtoRGB(hue, open ? 0.8f : 0.55f, open ? 0.65f + 0.35f * u : 0.5f + 0.3f * u, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, open ? 1.0f : 0.85f));
+}
+std::string hexColour(ImU32 c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", unsigned(c & 0xFF), unsigned((c >> 8) & 0xFF), unsigned((c >> 16) & 0xFF));
+    return buf;
 }
 }  // namespace
 
@@ -44,6 +73,15 @@ LatentMapPanel::LatentMapPanel() = default;
 
 LatentMapPanel::~LatentMapPanel() {
     if (texture_) glDeleteTextures(1, &texture_);
+}
+
+bool LatentMapPanel::dotPosition(const EditorState& s, int row, float& x, float& y) const {
+    const gp::ModelVersionPtr v = s.doc.model();
+    if (!v || v->model.get() != drawn_.model || row < 0 || row >= v->model->N()) return false;
+    const gp::GpModel& m = *v->model;
+    x = float(drawn_.x0 + (m.X(row, 0) - drawn_.bx0) / (drawn_.bx1 - drawn_.bx0) * drawn_.side);
+    y = float(drawn_.y0 + (drawn_.by1 - (m.latentDim() > 1 ? m.X(row, 1) : 0.0)) / (drawn_.by1 - drawn_.by0) * drawn_.side);
+    return true;
 }
 
 bool LatentMapPanel::upToDate(const EditorState& s) const {
@@ -88,9 +126,32 @@ void LatentMapPanel::draw(EditorState& s) {
         shown_ = std::move(fresh);
     }
 
-    // Geometry: a square map, the colour bar below it.
+    // A model of several clips: a legend (a swatch and the clip's name per clip, flowed into rows)
+    // goes under the colour bar; the map gives up the legend's height.
+    const int clips = model.clipCount();
+    const std::vector<int> colourIndex = clipColourIndices(model);
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float barBlock = 84.0f;
+    const float lineH = ImGui::GetTextLineHeight();
+    struct LegendEntry {
+        std::string name, label;
+        ImU32 colour;
+        float width;
+    };
+    std::vector<LegendEntry> legend;
+    int legendRows = 0;
+    if (clips > 1) {
+        float x = 0.0f;
+        legendRows = 1;
+        for (int c = 0; c < clips; ++c) {
+            LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""), clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
+            e.width = lineH + 4.0f + ImGui::CalcTextSize(e.label.c_str()).x + 14.0f;
+            if (x > 0.0f && x + e.width > avail.x) ++legendRows, x = 0.0f;
+            x += e.width;
+            legend.push_back(std::move(e));
+        }
+    }
+    // Geometry: a square map, the colour bar below it (and the clip legend under that).
+    const float barBlock = 84.0f + float(legendRows) * (lineH + 4.0f);
     // Whole pixels, so that the static layer's texels land on screen pixels one to one.
     const float side = std::floor(std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f)));
     const ImVec2 cur(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
@@ -118,9 +179,15 @@ void LatentMapPanel::draw(EditorState& s) {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const int frames = std::max(1, doc.frameCount() - 1);
     auto frameOfRow = [&](int i) { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; };
-    // A multi-clip model: only rows of the open clip (the model's primary clip, clip 0) are frames
-    // of the open clip; the other clips' rows are drawn grey and are not hovered, clicked or joined.
-    auto openClipRow = [&](int i) { return i < int(model.trainingFrames.size()) && model.rowClip(i) == 0; };
+    // A multi-clip model: rows of the open clip (the model's primary clip, clip 0) are frames of
+    // the open clip; every clip's dots take that clip's colour, its frame within the clip
+    // brightening it (clipColour).
+    const bool rowsKnown = model.trainingFrames.size() == static_cast<std::size_t>(model.N());
+    auto dotColour = [&](int i) {
+        if (clips == 1) return frameColour(double(frameOfRow(i)) / frames);
+        const int c = rowsKnown ? model.rowClip(i) : 0;
+        return clipColour(colourIndex[std::size_t(c)], double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
+    };
 
     // What changes only with the model, the σ² image or the map's size is drawn once into a
     // texture (the static layer); each frame adds the moving parts on top.
@@ -136,16 +203,19 @@ void LatentMapPanel::draw(EditorState& s) {
             // The training frames joined in time order (thin line under the dots): a continuous
             // layout is one curve per motion, a fragmented one shows long jumps across the map.
             if (showTrajectory_)
-                for (const auto& [a, b] : model.trainingFrames.size() == static_cast<std::size_t>(model.N())
-                                              ? openClipPairs(model)
-                                              : std::vector<std::pair<int, int>>{})
+                for (const auto& [a, b] : rowsKnown ? clipPairs(model) : std::vector<std::pair<int, int>>{})
                     dl.AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
                                toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
                                IM_COL32(235, 235, 240, 120), 1.0f);
-            // Training points coloured by frame, active set ringed.
+            // Training points coloured by frame (several clips: by clip), active set ringed. The
+            // other clips' dots go first and smaller, so the open clip's stay on top.
+            if (clips > 1)
+                for (int i = 0; i < model.N(); ++i)
+                    if (rowsKnown && model.rowClip(i) != 0)
+                        dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 1.9f, dotColour(i));
             for (int i = 0; i < model.N(); ++i)
-                dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f,
-                                   openClipRow(i) ? frameColour(double(frameOfRow(i)) / frames) : IM_COL32(150, 150, 155, 200));
+                if (clips == 1 || !rowsKnown || model.rowClip(i) == 0)
+                    dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f, dotColour(i));
             for (int i : model.active) {
                 if (i < 0 || i >= model.N()) continue;
                 dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
@@ -157,13 +227,13 @@ void LatentMapPanel::draw(EditorState& s) {
     }
     ImDrawList* dl = ImGui::GetWindowDrawList();
     layer_.draw(*dl, p0, p1);
+    drawn_ = {v->model.get(), p0.x, p0.y, side, bx0, by0, bx1, by1};
     dl->PushClipRect(p0, p1, true);
 
     int nearest = -1;
     float nearestD2 = 7.0f * 7.0f;
     if (hovered)
         for (int i = 0; i < model.N(); ++i) {
-            if (!openClipRow(i)) continue;
             const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
             const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
             if (d2 < nearestD2) {
@@ -199,8 +269,13 @@ void LatentMapPanel::draw(EditorState& s) {
             dragging_ = true;
             s.playing = false;
         } else if (nearest >= 0 && nearest < int(model.trainingFrames.size())) {
-            doc.setFrame(model.trainingFrames[nearest]);
-            s.setStatus("jumped to frame " + std::to_string(model.trainingFrames[nearest] + 1));
+            const int c = model.rowClip(nearest);
+            if (c == 0) {
+                doc.setFrame(model.trainingFrames[nearest]);
+                s.setStatus("jumped to frame " + std::to_string(model.trainingFrames[nearest] + 1));
+            } else {  // another clip: the app switches clips (asking first about unsaved changes)
+                s.request("model-clip", {model.clipName(c), std::to_string(model.trainingFrames[nearest] + 1)});
+            }
         }
     }
     if (dragging_) {
@@ -215,11 +290,13 @@ void LatentMapPanel::draw(EditorState& s) {
     if (nearest >= 0 && !dragging_) {
         s.hoveredTrainingRow = nearest;
         const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
-        ImGui::SetTooltip("Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: go to this frame",
-                          model.clip.name.c_str(), frame + 1,
+        const int c = model.rowClip(nearest);
+        ImGui::SetTooltip("Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: %s",
+                          model.clipName(c).c_str(), frame + 1,
                           model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
                           std::find(model.active.begin(), model.active.end(), nearest) != model.active.end()
-                              ? "  [active set]" : "");
+                              ? "  [active set]" : "",
+                          c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
     } else if (hovered && dc2 <= 81.0f && !dragging_) {
         ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
     }
@@ -242,16 +319,26 @@ void LatentMapPanel::draw(EditorState& s) {
     dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
     const char* cap = "predictive variance sigma^2(x), log scale";
     const float capW = ImGui::CalcTextSize(cap).x;
-    const float lineH = ImGui::GetTextLineHeight();
     // Centred under the bar, but never left of the panel's content edge (the caption is wider).
     const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
     dl->AddText(ImVec2(capX, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
-    ImGui::SetCursorScreenPos(ImVec2(cur.x, b1.y + 4.0f + 2.0f * lineH));
+    // The clip legend: a swatch in the clip's colour and its name, the open clip marked.
+    s.clipLegend.clear();
+    float lx = cur.x, ly = b1.y + 4.0f + 2.0f * lineH;
+    for (const LegendEntry& e : legend) {
+        if (lx > cur.x && lx + e.width > cur.x + avail.x) lx = cur.x, ly += lineH + 4.0f;
+        dl->AddRectFilled(ImVec2(lx, ly + 1.0f), ImVec2(lx + lineH, ly + 1.0f + lineH), e.colour);
+        dl->AddText(ImVec2(lx + lineH + 4.0f, ly + 1.0f), IM_COL32(210, 210, 215, 255), e.label.c_str());
+        s.controls["clip legend " + e.name] = {lx, ly + 1.0f, lx + lineH, ly + 1.0f + lineH, true};
+        s.clipLegend += e.name + " " + hexColour(e.colour) + (e.label.size() > e.name.size() ? " (open)" : "") + "\n";
+        lx += e.width;
+    }
+    if (legendRows > 0) ly += lineH + 4.0f;
+    ImGui::SetCursorScreenPos(ImVec2(cur.x, ly));
     ImGui::Checkbox("time path", &showTrajectory_);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
     ImGui::SameLine();
     if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
-    else if (model.clipCount() > 1) ImGui::TextDisabled("bright: confident  rings: active  grey: other clips");
     else ImGui::TextDisabled("bright: confident  rings: active");
 }
 

@@ -3,8 +3,11 @@
 // thread after every model change), a colour bar saying what the colour means, the training
 // points coloured by frame, the active set ringed, the current latent point and its path during a
 // drag, and (toggle "time path", on by default) each clip's training frames joined in time order by
-// a thin line, so fragments and loops of the layout show. Hover names the nearest training frame; clicking a training point jumps the timeline
-// there; dragging the current point poses the character from the model mean f(x).
+// a thin line, so fragments and loops of the layout show. A model of several clips colours its
+// dots by clip (the open clip's strong, the others' pale) with a legend under the map. Hover names
+// the nearest training frame and its clip; clicking one jumps the timeline there, or (another clip)
+// asks the app to make that clip the open one; dragging the current point poses the character
+// from the model mean f(x).
 #include "draw_list_texture.h"
 #include "editor_state.h"
 #include "latent_map_image.h"
@@ -27,6 +30,9 @@ public:
     // How many times the static layer (σ² image, time path, dots, rings) has been drawn: once per
     // model version, σ² image, map size or time-path toggle, never once per frame.
     int layerRenders() const { return layerRenders_; }
+    // Window pixel of training row `row`'s dot as last drawn (false: the map has not drawn the
+    // state's current model).
+    bool dotPosition(const EditorState& state, int row, float& x, float& y) const;
 
 private:
     LatentImageWorker worker_;
@@ -36,7 +42,8 @@ private:
     int requestedVersion_ = -1;
     bool dragging_ = false;
     bool showTrajectory_ = true;
-    // What the static layer (σ² image, time path, dots, rings) was drawn for.
+    // What the static layer (σ² image, time path, dots, rings) was drawn for. The model pointer
+    // also fixes the clip colours: making another clip the working one makes a new model.
     struct StaticLayerKey {
         const void* model = nullptr;
         int version = -1;
@@ -52,6 +59,12 @@ private:
         }
     };
     StaticLayerKey layerKey_;
+    // Where the map was last drawn: window pixel of its top-left corner, its side and latent box.
+    struct DrawnMap {
+        const void* model = nullptr;
+        float x0 = 0, y0 = 0, side = 0;
+        double bx0 = 0, by0 = 0, bx1 = 1, by1 = 1;
+    } drawn_;
     int layerRenders_ = 0;
     DrawListTexture layer_;
 };

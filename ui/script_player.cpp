@@ -42,7 +42,15 @@ std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorApp& 
         if (std::string err = need(1); !err.empty()) return err;
         float x = 0, y = 0;
         bool onScreen = false;
-        if (a[0].rfind("key:", 0) == 0) {
+        if (a[0].rfind("dot:", 0) == 0) {  // dot:CLIP:N, the latent map's dot of clip CLIP frame N
+            const std::string spec = a[0].substr(4);
+            const std::size_t colon = spec.rfind(':');
+            int frame = 0;
+            if (colon == std::string::npos) return "expected dot:CLIP:N, found '" + a[0] + "'";
+            if (std::string err = parseIntArg(spec.substr(colon + 1), "a frame number after 'dot:CLIP:'", frame); !err.empty())
+                return err;
+            onScreen = app.latentDotScreenPosition(spec.substr(0, colon), frame - 1, x, y);
+        } else if (a[0].rfind("key:", 0) == 0) {
             int key = 0;
             if (std::string err = parseIntArg(a[0].substr(4), "a path key number after 'key:'", key); !err.empty()) return err;
             onScreen = app.keyScreenPosition(key - 1, x, y);

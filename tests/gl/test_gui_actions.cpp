@@ -60,6 +60,10 @@ TEST_CASE("gui actions: scripts parse action names from the table and refuse mis
     CHECK_THROWS_AS(ui::GuiScript::parse("1.5 move 1 2\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 move 12abc 5\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 hover key:2x\n"), ParseError);
+    CHECK_NOTHROW(ui::GuiScript::parse("1 hover dot:10_02:41\n2 action model-clip 10_02 41\n"));
+    CHECK_THROWS_AS(ui::GuiScript::parse("1 hover dot:10_02\n"), ParseError);
+    CHECK_THROWS_AS(ui::GuiScript::parse("1 hover dot::4\n"), ParseError);
+    CHECK_THROWS_AS(ui::GuiScript::parse("1 hover dot:10_02:0\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 key F1x\n"), ParseError);
 }
 

@@ -1,10 +1,16 @@
 // A model of several clips in the editor (label `gl`, offscreen): the open clip, when it is any of
 // the model's clips, opens without a question and becomes the model's working clip; otherwise the
 // question comes and "Open with its clip" opens the first clip. A tiny model trained here (two
-// kicks of subject 10, 20 rows each, M = 15, T = 1) keeps the test cheap.
+// kicks of subject 10, 20 rows each, M = 15, T = 1) keeps the test cheap. The latent map colours
+// the dots by clip with a legend, and clicking a dot of the other clip opens that clip there
+// (after the unsaved-changes question when there are edits).
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <map>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -14,6 +20,7 @@
 #include "gp/trainer.h"
 #include "input_state.h"
 #include "io/clip_loader.h"
+#include "script_player.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -79,5 +86,160 @@ TEST_CASE("gui: a multi-clip model opens on whichever of its clips is open") {
     REQUIRE(after.hasModel());
     CHECK(after.clip().name == "10_02");
     CHECK(after.model()->model->clip.name == "10_02");
+    std::filesystem::remove_all(std::filesystem::path(model).parent_path());
+}
+
+namespace {
+// Opens 10_03 and the two-kick model (10_03 becomes its working clip) and lets the map settle.
+void openTwoKicks(test::Harness& h, const std::string& model) {
+    REQUIRE(h.app->openClip(test::mocapDir() + "/asf_amc/10_03.amc") == "");
+    h.frame(2);
+    REQUIRE(h.app->runAction({"open-model", model}) == "");
+    for (int i = 0; i < 10 && !h.app->latentMapUpToDate(); ++i) {
+        h.app->waitIdle();
+        h.frame();
+    }
+    h.frame(2);
+    REQUIRE(h.app->latentMapUpToDate());
+}
+
+// The training frame (0-based) of clip 10_02 whose dot is farthest from every other dot, so a
+// click there picks it; its window pixel in x, y.
+int loneDotOf1002(test::Harness& h, float& x, float& y) {
+    int best = -1;
+    float bestD2 = -1.0f;
+    for (int f = 0; f < 60; f += 3) {
+        float fx = 0, fy = 0;
+        REQUIRE(h.app->latentDotScreenPosition("10_02", f, fx, fy));
+        float nearest = 1e30f;
+        for (const char* clip : {"10_02", "10_03"})
+            for (int g = 0; g < 60; g += 3) {
+                float gx = 0, gy = 0;
+                if ((clip == std::string("10_02") && g == f) || !h.app->latentDotScreenPosition(clip, g, gx, gy)) continue;
+                nearest = std::min(nearest, (gx - fx) * (gx - fx) + (gy - fy) * (gy - fy));
+            }
+        if (nearest > bestD2) bestD2 = nearest, best = f, x = fx, y = fy;
+    }
+    INFO("the lone 10_02 dot is " << std::sqrt(bestD2) << " px from the next");
+    CHECK(bestD2 >= 9.0f);  // a click there reaches it (hover picks within 7 px, the nearest)
+    return best;
+}
+
+void click(test::Harness& h, float x, float y) {
+    ui::GuiScript script;
+    script.add(0, "move", {std::to_string(x), std::to_string(y)});
+    script.add(2, "down", {"left"});
+    script.add(4, "up", {"left"});
+    ui::ScriptPlayer player(script);
+    std::vector<std::string> shots;
+    for (int i = 0; i <= 6; ++i) {
+        player.apply(i, h.input, *h.app, shots);
+        h.frame();
+    }
+}
+}  // namespace
+
+TEST_CASE("gui: the latent map of a two-clip model colours its dots by clip, with a legend") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string model = twoKickModel();
+    openTwoKicks(*h, model);
+    const ui::EditorState& s = h->app->state();
+    // One legend line per clip, "NAME #RRGGBB", the open clip marked.
+    std::istringstream lines(s.clipLegend);
+    std::string name, colour, open;
+    std::map<std::string, std::string> colours;
+    std::string openClip;
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::istringstream in(line);
+        in >> name >> colour;
+        open.clear();
+        in >> open;
+        colours[name] = colour;
+        if (open == "(open)") openClip = name;
+    }
+    REQUIRE(colours.size() == 2);
+    CHECK(openClip == "10_03");
+    REQUIRE(colours.count("10_02") == 1);
+    CHECK(colours["10_02"] != colours["10_03"]);
+    // The swatches are drawn in those colours.
+    const render::Image img = h->app->capture(test::kGuiWidth, test::kGuiHeight);
+    for (const auto& [clip, hex] : colours) {
+        const auto& r = s.controls.at("clip legend " + clip);
+        REQUIRE(r.visible);
+        const int px = int((r.x0 + r.x1) / 2), py = int((r.y0 + r.y1) / 2);
+        const std::uint8_t* p = &img.rgba[4 * (std::size_t(py) * std::size_t(img.width) + std::size_t(px))];
+        char seen[8];
+        std::snprintf(seen, sizeof seen, "#%02X%02X%02X", p[0], p[1], p[2]);
+        INFO(clip << " swatch at " << px << "," << py);
+        CHECK(std::string(seen) == hex);
+    }
+    // A single-clip model has no legend.
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/35_01.amc") == "");
+    REQUIRE(h->app->runAction({"open-model", test::fixtureModelPath()}) == "");
+    h->frame(3);
+    CHECK(s.clipLegend.empty());
+    std::filesystem::remove_all(std::filesystem::path(model).parent_path());
+}
+
+TEST_CASE("gui: clicking a dot of the model's other clip opens that clip at that frame, the model staying") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string model = twoKickModel();
+    openTwoKicks(*h, model);
+    EditorDocument& doc = h->app->state().doc;
+    const gp::GpModel* before = doc.model()->model.get();
+    const int rows = before->N();
+    float x = 0, y = 0;
+    const int frame = loneDotOf1002(*h, x, y);
+    REQUIRE(frame >= 0);
+    click(*h, x, y);
+    CHECK_FALSE(h->app->askingAboutUnsavedChanges());  // nothing unsaved: no question
+    CHECK(doc.clip().name == "10_02");
+    CHECK(doc.frame() == frame);
+    REQUIRE(doc.hasModel());
+    const gp::GpModel& m = *doc.model()->model;
+    CHECK(m.N() == rows);  // the same model, relabelled
+    CHECK(m.clip.name == "10_02");
+    CHECK(m.clipName(1) == "10_03");
+    CHECK(h->app->state().messages.latestText().find("10_02 frame " + std::to_string(frame + 1)) != std::string::npos);
+    CHECK_FALSE(h->app->dirty());
+    h->frame(3);
+    CHECK(h->app->state().clipLegend.find("10_02 #") == 0);
+    CHECK(h->app->state().clipLegend.find("(open)") < h->app->state().clipLegend.find("10_03"));
+    // The action behind the click names what is wrong with a bad clip or frame, and changes nothing.
+    CHECK(h->app->runAction({"model-clip", "10_09"}) == "the model has no clip '10_09'; its clips: 10_02, 10_03");
+    CHECK(h->app->runAction({"model-clip", "10_03", "9999"}) == "expected a frame in 1..362 of 10_03, found 9999");
+    CHECK(doc.clip().name == "10_02");
+    // Back to 10_03 by the action: frame counted within that clip.
+    REQUIRE(h->app->runAction({"model-clip", "10_03", "7"}) == "");
+    CHECK(doc.clip().name == "10_03");
+    CHECK(doc.frame() == 6);
+    std::filesystem::remove_all(std::filesystem::path(model).parent_path());
+}
+
+TEST_CASE("gui: with unsaved edits, clicking another clip's dot asks first and Cancel keeps the clip and edits") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string model = twoKickModel();
+    openTwoKicks(*h, model);
+    EditorDocument& doc = h->app->state().doc;
+    doc.setFrame(40);
+    REQUIRE(doc.pastePose(doc.clip().frames[10]) == "");
+    REQUIRE(h->app->dirty());
+    h->frame(2);
+    float x = 0, y = 0;
+    REQUIRE(loneDotOf1002(*h, x, y) >= 0);
+    click(*h, x, y);
+    REQUIRE(h->app->askingAboutUnsavedChanges());
+    CHECK(doc.clip().name == "10_03");  // nothing happens before the answer
+    tapKey(*h, key::kEscape);
+    h->frame(1);
+    CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+    CHECK(doc.clip().name == "10_03");
+    CHECK(doc.isEdited(40));
+    CHECK(doc.model()->model->clip.name == "10_03");
+    CHECK(h->app->dirty());
     std::filesystem::remove_all(std::filesystem::path(model).parent_path());
 }
