@@ -79,8 +79,9 @@ const CommandRegistration reg(
             if (!o->offsets.empty()) o->heldout = true;
             const gp::GpModel model = gp::loadModel(o->model);
             // Its held-out retraining and continuity measure read one clip's frame numbers.
-            if (model.clipCount() > 1)
-                throw UsageError("expected a single-clip model (evaluate does not handle multi-clip models yet), found " +
+            if (model.clipCount() > 1 && o->heldout)
+                throw UsageError("expected a single-clip model for --heldout (the held-out retraining does not handle "
+                                 "multi-clip models yet), found " +
                                  std::to_string(model.clipCount()) + " clips (" + model.clipNames() + ") in " + o->model);
             nlohmann::json j;
             j["model"] = o->model;
@@ -91,11 +92,15 @@ const CommandRegistration reg(
             j["M"] = static_cast<int>(model.active.size());
             j["iterations"] = model.iterations;
 
-            // One clip per model file: the continuity list has one entry.
-            const eval::ContinuityReport c = eval::latentContinuity(model.X, model.trainingFrames);
-            j["continuity"] = nlohmann::json::array({{{"clip", model.clip.name}, {"steps", c.steps},
-                                                      {"median_pair_distance", c.medianPairDistance}, {"p50", c.p50},
-                                                      {"p90", c.p90}, {"p99", c.p99}, {"max", c.max}}});
+            // One entry per source clip, each over its own rows.
+            const std::vector<eval::ContinuityReport> perClip = eval::latentContinuityPerClip(model);
+            j["continuity"] = nlohmann::json::array();
+            for (int k = 0; k < model.clipCount(); ++k) {
+                const eval::ContinuityReport& c = perClip[static_cast<std::size_t>(k)];
+                j["continuity"].push_back({{"clip", model.clipName(k)}, {"steps", c.steps},
+                                           {"median_pair_distance", c.medianPairDistance}, {"p50", c.p50},
+                                           {"p90", c.p90}, {"p99", c.p99}, {"max", c.max}});
+            }
             if (o->noYardstick) {
                 j["yardstick"] = nullptr;
             } else if (model.N() > eval::kYardstickMaxRows) {
@@ -152,8 +157,11 @@ const CommandRegistration reg(
             }
             std::cout << o->model << ": " << j["kernel"].get<std::string>() << ", prior " << j["prior"].get<std::string>()
                       << ", N = " << model.N() << "\n";
-            std::cout << "  continuity (step / median pair distance): p50 " << c.p50 << ", p90 " << c.p90 << ", p99 "
-                      << c.p99 << " over " << c.steps << " steps\n";
+            for (int k = 0; k < model.clipCount(); ++k) {
+                const eval::ContinuityReport& c = perClip[static_cast<std::size_t>(k)];
+                std::cout << "  continuity of " << model.clipName(k) << " (step / median pair distance): p50 " << c.p50
+                          << ", p90 " << c.p90 << ", p99 " << c.p99 << " over " << c.steps << " steps\n";
+            }
             if (j["yardstick"].is_object() && j["yardstick"].contains("final"))
                 std::cout << "  full-GP yardstick (log-likelihood per value): final " << j["yardstick"]["final"]["per_value"]
                           << ", PCA start " << j["yardstick"]["pca_start"]["per_value"] << "\n";

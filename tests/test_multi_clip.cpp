@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "eval/layout_quality.h"
 #include "eval/nearest_pose.h"
 #include "gp/model_file.h"
 #include "gp/sha256.h"
@@ -262,4 +263,37 @@ TEST_CASE("multi-clip: motiongp train on two kicks, pose --clip on the second, c
     CHECK(x.err.find("35_01.amc against") != std::string::npos);
     CHECK(x.err.find("joint ") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir + "/x.model"));
+}
+
+TEST_CASE("multi-clip: continuity is measured per clip on its own rows, and evaluate lists every clip") {
+    const GpModel& m = twoKicks();
+    const std::vector<eval::ContinuityReport> per = eval::latentContinuityPerClip(m);
+    REQUIRE(per.size() == 2u);
+    for (int c = 0; c < 2; ++c) {
+        // The same numbers as latentContinuity on that clip's rows alone (rows 0..19, 20..39).
+        const Eigen::MatrixXd X = m.X.middleRows(20 * c, 20);
+        const std::vector<int> frames(m.trainingFrames.begin() + 20 * c, m.trainingFrames.begin() + 20 * (c + 1));
+        const eval::ContinuityReport alone = eval::latentContinuity(X, frames);
+        CHECK(per[static_cast<std::size_t>(c)].steps == 19);  // 20 rows every 3rd frame: one segment
+        CHECK(per[static_cast<std::size_t>(c)].p90 == alone.p90);
+        CHECK(per[static_cast<std::size_t>(c)].medianPairDistance == alone.medianPairDistance);
+    }
+    // Measured over both clips at once, frames 0..57 of the two clips would be joined as one time
+    // line: the per-clip steps must not include such cross-clip pairs.
+    CHECK(eval::latentContinuity(m.X, m.trainingFrames).steps != per[0].steps + per[1].steps);
+
+    const std::string dir = test::scratchDir("multi_clip_evaluate");
+    std::filesystem::create_directories(dir);
+    const std::string path = dir + "/two.model";
+    saveModel(path, m);
+    const test::CliResult e = test::runCli("evaluate " + path + " --no-yardstick --json");
+    REQUIRE_MESSAGE(e.exitCode == 0, e.err);
+    const auto j = nlohmann::json::parse(e.out);
+    REQUIRE(j["continuity"].size() == 2u);
+    CHECK(j["continuity"][0]["clip"] == "10_02");
+    CHECK(j["continuity"][1]["clip"] == "10_03");
+    CHECK(j["continuity"][1]["p90"].get<double>() == per[1].p90);
+    const test::CliResult h = test::runCli("evaluate " + path + " --heldout --no-yardstick");
+    CHECK(h.exitCode == 2);
+    CHECK(h.err.find("--heldout") != std::string::npos);
 }

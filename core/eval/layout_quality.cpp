@@ -68,6 +68,23 @@ ContinuityReport latentContinuity(const Eigen::MatrixXd& X, const std::vector<in
     return r;
 }
 
+std::vector<ContinuityReport> latentContinuityPerClip(const gp::GpModel& model) {
+    std::vector<ContinuityReport> out;
+    for (int c = 0; c < model.clipCount(); ++c) {
+        std::vector<int> rows;
+        for (int r = 0; r < model.N(); ++r)
+            if (model.rowClip(r) == c) rows.push_back(r);
+        Eigen::MatrixXd X(static_cast<Eigen::Index>(rows.size()), model.latentDim());
+        std::vector<int> frames;
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            X.row(static_cast<Eigen::Index>(k)) = model.X.row(rows[k]);
+            frames.push_back(model.trainingFrames[static_cast<std::size_t>(rows[k])]);
+        }
+        out.push_back(latentContinuity(X, frames));
+    }
+    return out;
+}
+
 double fullGpNegLogLikelihood(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Ys, const Eigen::Vector4d& psiIn,
                               Eigen::Vector4d* grad) {
     const double inf = std::numeric_limits<double>::infinity();

@@ -35,6 +35,9 @@ struct ContinuityReport {
     double p50 = 0.0, p90 = 0.0, p99 = 0.0, max = 0.0;  // step / medianPairDistance
 };
 ContinuityReport latentContinuity(const Eigen::MatrixXd& X, const std::vector<int>& frames);
+// latentContinuity of each source clip of `model` on its own rows (in clip order): a clip's steps
+// over the median pair distance of that clip's latent points.
+std::vector<ContinuityReport> latentContinuityPerClip(const gp::GpModel& model);
 
 struct FullGpScore {
     bool ok = false;
