@@ -78,7 +78,7 @@ const CommandRegistration reg(
             const std::vector<int> offsets = o->offsets.empty() ? std::vector<int>{0} : parseOffsets(o->offsets, o->every);
             if (!o->offsets.empty()) o->heldout = true;
             const gp::GpModel model = gp::loadModel(o->model);
-            // Its held-out retraining and continuity measure read one clip's frame numbers.
+            // The held-out retraining reads one clip's frame numbers (continuity is measured per clip).
             if (model.clipCount() > 1 && o->heldout)
                 throw UsageError("expected a single-clip model for --heldout (the held-out retraining does not handle "
                                  "multi-clip models yet), found " +

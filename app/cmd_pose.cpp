@@ -162,9 +162,7 @@ int runPose(const PoseOptions& o) {
     const Eigen::VectorXd y47 = PoseLayout(clip.skeleton).extract(pose);
     j["pose_deg"] = std::vector<double>(y47.data(), y47.data() + y47.size());
     // Where the solved pose is in the data: the nearest captured frame over every source clip.
-    std::vector<Eigen::MatrixXd> clipPoses;
-    for (int c = 0; c < m.clipCount(); ++c) clipPoses.push_back(poseMatrix(m.clipAt(c)));
-    const NearestFrame nearest = nearestFrame(y47, clipPoses);
+    const NearestFrame nearest = nearestFrame(y47, m.clipPoseMatrices());
     const std::string nearestClip = m.clipName(nearest.clip);
     j["clip"] = clip.name;
     j["nearest"] = {{"clip", nearestClip}, {"frame", nearest.frame + 1}, {"rms_deg", nearest.rmsDeg}};

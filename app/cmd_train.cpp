@@ -126,7 +126,7 @@ const CommandRegistration reg(
             // clip's own frame count bounds it.
             std::vector<Clip> clips;
             std::vector<std::vector<int>> frames;
-            FrameRange range, firstRange;  // the model's settings record the first clip's range
+            FrameRange firstRange;  // the model's settings record the first clip's range
             std::size_t rows = 0;
             for (const std::string& path : o->clips) {
                 Clip clip = loadClip(path, o->skel);
@@ -141,7 +141,7 @@ const CommandRegistration reg(
                 for (const Clip& c : clips)
                     if (c.name == clip.name)
                         throw UsageError("expected clips with distinct names (file stems), found " + clip.name + " twice");
-                range = parseFrames(o->frames, clip.frameCount());
+                const FrameRange range = parseFrames(o->frames, clip.frameCount());
                 if (clips.empty()) firstRange = range;
                 unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
                 std::vector<int> f;

@@ -30,12 +30,9 @@ std::vector<std::pair<int, int>> clipPairs(const gp::GpModel& model) {
     if (model.clipCount() == 1) return eval::timeConsecutivePairs(model.trainingFrames);
     std::vector<std::pair<int, int>> all;
     for (int c = 0; c < model.clipCount(); ++c) {
-        std::vector<int> rows, frames;
-        for (int i = 0; i < model.N(); ++i)
-            if (model.rowClip(i) == c) {
-                rows.push_back(i);
-                frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
-            }
+        const std::vector<int> rows = model.rowsOfClip(c);
+        std::vector<int> frames;
+        for (int i : rows) frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
         for (auto [a, b] : eval::timeConsecutivePairs(frames))
             all.emplace_back(rows[static_cast<std::size_t>(a)], rows[static_cast<std::size_t>(b)]);
     }

@@ -125,8 +125,7 @@ void DragSession::solveLearned(int maxIterations) {
     readout_.stop = result_.stop;
     readout_.diagnostic = result_.diagnostic;
     if (capturedPosesOf_ != model_->model) {
-        capturedPoses_.clear();
-        for (int c = 0; c < model_->model->clipCount(); ++c) capturedPoses_.push_back(poseMatrix(model_->model->clipAt(c)));
+        capturedPoses_ = model_->model->clipPoseMatrices();
         capturedPosesOf_ = model_->model;
     }
     // Every source clip is searched; the readout names the clip the nearest frame belongs to.

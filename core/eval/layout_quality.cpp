@@ -71,9 +71,7 @@ ContinuityReport latentContinuity(const Eigen::MatrixXd& X, const std::vector<in
 std::vector<ContinuityReport> latentContinuityPerClip(const gp::GpModel& model) {
     std::vector<ContinuityReport> out;
     for (int c = 0; c < model.clipCount(); ++c) {
-        std::vector<int> rows;
-        for (int r = 0; r < model.N(); ++r)
-            if (model.rowClip(r) == c) rows.push_back(r);
+        const std::vector<int> rows = model.rowsOfClip(c);
         Eigen::MatrixXd X(static_cast<Eigen::Index>(rows.size()), model.latentDim());
         std::vector<int> frames;
         for (std::size_t k = 0; k < rows.size(); ++k) {

@@ -47,6 +47,19 @@ std::string GpModel::clipNames() const {
     return out;
 }
 
+std::vector<int> GpModel::rowsOfClip(int c) const {
+    std::vector<int> rows;
+    for (int r = 0; r < N(); ++r)
+        if (rowClip(r) == c) rows.push_back(r);
+    return rows;
+}
+
+std::vector<Eigen::MatrixXd> GpModel::clipPoseMatrices() const {
+    std::vector<Eigen::MatrixXd> poses;
+    for (int c = 0; c < clipCount(); ++c) poses.push_back(poseMatrix(clipAt(c)));
+    return poses;
+}
+
 int findCapture(const GpModel& model, const Clip& open, std::string* difference) {
     for (int i = 0; i < model.clipCount(); ++i)
         if (sameCapture(open, model.clipAt(i), i == 0 ? difference : nullptr)) return i;

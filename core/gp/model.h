@@ -88,6 +88,10 @@ struct GpModel {
     std::string clipNames() const;
     // Clip index of training row r (0 for a single-clip model).
     int rowClip(int r) const { return trainingClips.empty() ? 0 : trainingClips[static_cast<std::size_t>(r)]; }
+    // The training rows of clip c, in row order.
+    std::vector<int> rowsOfClip(int c) const;
+    // poseMatrix of every source clip, in clip order (one 47-DOF pose per frame).
+    std::vector<Eigen::MatrixXd> clipPoseMatrices() const;
     int D() const { return static_cast<int>(mu.size()); }
     int latentDim() const { return static_cast<int>(X.cols()); }
     Kernel kernel() const { return Kernel(kind, logParams); }

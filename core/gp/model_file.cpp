@@ -153,8 +153,7 @@ std::string modelToJsonText(const GpModel& m) {
     // Y is not stored: a row is the clip's pose at its training frame. A row an adaptive update
     // added holds the ACCEPTED pose, not the captured one, so those rows are written out (only
     // when there are any: a freshly trained model's file is unchanged).
-    std::vector<Eigen::MatrixXd> poses;
-    for (int c = 0; c < m.clipCount(); ++c) poses.push_back(poseMatrix(m.clipAt(c)));
+    const std::vector<Eigen::MatrixXd> poses = m.clipPoseMatrices();
     json edited = json::array();
     for (Eigen::Index r = 0; r < m.Y.rows(); ++r) {
         const int f = m.trainingFrames[static_cast<std::size_t>(r)];
@@ -277,8 +276,7 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.clip = clipFromJson(need(j, "clip", file), file);
         if (ver.get<long long>() >= 2) readMoreClips(j, file, n, m);
         // Training rows: each row's clip's pose at its training frame, kept columns.
-        std::vector<Eigen::MatrixXd> poses;
-        for (int c = 0; c < m.clipCount(); ++c) poses.push_back(poseMatrix(m.clipAt(c)));
+        const std::vector<Eigen::MatrixXd> poses = m.clipPoseMatrices();
         m.Y.resize(n, D);
         for (int r = 0; r < n; ++r) {
             const int f = m.trainingFrames[r];
