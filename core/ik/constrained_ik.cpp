@@ -25,6 +25,9 @@ constexpr int kCrawlIterations = 20;
 constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
 constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
 constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
+constexpr int kDirectTrials = 5;             // trials before the latent refinement starts
+constexpr int kLatentRefinements = 3;        // Newton steps in x per trial point (variable projection)
+constexpr int kRefineBacktracks = 5;         // halvings of one such step before it is given up
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -62,8 +65,11 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     gxM_.resize(d_);
     gyTmp_.resize(D_);
     xP_.resize(d_);
+    for (Eigen::VectorXd* v : {&xR_, &gR_, &sR_, &xRt_, &gRt_}) v->resize(d_);
+    HR_.resize(d_, d_);
+    eigR_ = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d_);
     jac_.resize(3, kPoseDofs);
-    for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &delta_, &tmp_, &rhs_}) v->resize(n_);
+    for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &zSoc_, &delta_, &deltaT_, &tmp_, &rhs_}) v->resize(n_);
     for (Eigen::MatrixXd* m : {&H_, &C_, &Hm_, &Hd_}) m->resize(n_, n_);
     hc_.resize(kPoseDofs, kPoseDofs);
 }
@@ -135,6 +141,7 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
     c_.resize(p);
     cTrial_.resize(p);
     nu_.resize(p);
+    nuT_.resize(p);
     HinvAt_.resize(n_, p);
     S_.resize(p, p);
 }
@@ -273,6 +280,49 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         if (curvature_) freezeHeld(true);
     }
     return F;
+}
+
+void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
+    const gp::ActiveSetPosterior& post = *version_->posterior;
+    y_ = z.tail(D_);
+    xR_ = z.head(d_);
+    double L = post.evaluate(xR_, y_, wsFd_, &gR_, &gyTmp_);
+    ++evaluations_;
+    for (int step = 0; step < kLatentRefinements; ++step) {
+        for (int i = 0; i < d_; ++i) {
+            xRt_ = xR_;
+            xRt_[i] += kFdStepX;
+            post.evaluate(xRt_, y_, wsFd_, &gxP_, &gyTmp_);
+            xRt_[i] -= 2.0 * kFdStepX;
+            post.evaluate(xRt_, y_, wsFd_, &gxM_, &gyTmp_);
+            evaluations_ += 2;
+            HR_.col(i) = (gxP_ - gxM_) / (2.0 * kFdStepX);
+        }
+        HR_ = (0.5 * (HR_ + HR_.transpose())).eval();
+        // |λ|: a direction of negative curvature is followed downhill, not uphill.
+        eigR_.compute(HR_);
+        const double largest = std::max(1.0, eigR_.eigenvalues().cwiseAbs().maxCoeff());
+        sR_ = eigR_.eigenvectors().transpose() * gR_;
+        for (int i = 0; i < d_; ++i) sR_[i] /= std::max(std::abs(eigR_.eigenvalues()[i]), 1e-6 * largest);
+        sR_ = -(eigR_.eigenvectors() * sR_).eval();
+        const double length = sR_.norm();
+        if (length > latentStepBound_) sR_ *= latentStepBound_ / length;
+        if (sR_.norm() < 1e-6 * latentStepBound_) break;  // x is already optimal for this pose
+        bool lowered = false;
+        for (int b = 0; b < kRefineBacktracks && !lowered; ++b, sR_ *= 0.5) {
+            xRt_ = xR_ + sR_;
+            const double Lt = post.evaluate(xRt_, y_, wsFd_, &gRt_, &gyTmp_);
+            ++evaluations_;
+            if (Lt < L) {
+                xR_ = xRt_;
+                gR_ = gRt_;
+                L = Lt;
+                lowered = true;
+            }
+        }
+        if (!lowered) break;
+    }
+    z.head(d_) = xR_;
 }
 
 void ConstrainedIkSolver::freezeHeld(bool curvature) {
@@ -443,8 +493,15 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double pinWorst = p > 0 ? c_.cwiseAbs().maxCoeff() : 0.0;
         // Model decrease of F along δ (the pins' linearisation is met by δ).
         const double modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
-        // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδ − ½δᵀHdδ.
-        const double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
+        // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδₜ − ½δₜᵀHdδₜ
+        // with Aδₜ = 0 (δ itself also restores the pins, which near a solution can cost more F
+        // than is left to gain, so its decrement can be negative at a stationary point).
+        double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
+        if (p > 0) {
+            nuT_ = sLdlt_.solve(-(A_ * tmp_));
+            deltaT_ = -tmp_ - HinvAt_ * nuT_;
+            decrement = -(g_.dot(deltaT_) + 0.5 * deltaT_.dot(Hd_ * deltaT_));
+        }
         result.decrement = decrement;
         if (pinWorst <= request.pinToleranceCm && mu <= kConvergedDamping && shift == 0.0 &&
             std::abs(decrement) <= request.stationarityAbsolute + request.stationarityRelative * std::abs(F)) {
@@ -482,16 +539,32 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             Sall_.noalias() = Aall_ * HinvAll_;
             Sall_.diagonal().array() += 1e-12 * std::max(1.0, Sall_.diagonal().maxCoeff());
             sAllLdlt_.compute(Sall_);
-            for (int k = 0; k < kProjections; ++k) {
+            double lastWorst = std::numeric_limits<double>::infinity();
+            for (int k = 0; k <= kProjections; ++k) {
                 const double pinWorstTrial = correctionResidual(zTrial_, rAll_);
+                const double worst = rAll_.cwiseAbs().maxCoeff();
+                if (!(worst <= lastWorst)) {
+                    // Diverging (B H⁻¹Bᵀ nearly singular, e.g. a straight arm): keep the last point
+                    // that was closer; the gain ratio judges it.
+                    zTrial_ = zSoc_;
+                    break;
+                }
                 const double targetWorst = q > p ? rAll_.tail(q - p).cwiseAbs().maxCoeff() : 0.0;
-                if (pinWorstTrial <= 0.01 * request.pinToleranceCm && targetWorst <= 0.01 * request.pinToleranceCm) break;
+                if (k == kProjections ||
+                    (pinWorstTrial <= 0.01 * request.pinToleranceCm && targetWorst <= 0.01 * request.pinToleranceCm))
+                    break;
+                lastWorst = worst;
+                zSoc_ = zTrial_;
                 zTrial_.noalias() -= HinvAll_ * sAllLdlt_.solve(rAll_);
             }
             correctionResidual(zTrial_, rAll_);
             cTrial_ = rAll_.head(p);
             trialPinNorm = cTrial_.lpNorm<1>();
         }
+        // From the sixth trial on: a drag event converges within five (its p99), so drags keep
+        // their cost and their steps; a long solve gets x re-fitted to each trial pose
+        // (docs/maths-ik.md §3).
+        if (it > kDirectTrials) refineLatent(zTrial_);
         const double Ft = evaluate(zTrial_, false);
         // Both points on the pins (to a tenth of the tolerance): compare F itself, so round-off in
         // c times a large ν cannot mask progress. Otherwise the ℓ1 merit.

@@ -42,7 +42,12 @@
 // target manifold to every step along it and the iteration converges only linearly. Steps are
 // accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
 // tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
-// 1e-3 cm (the next step restores them). A solve still running after 20 trial steps is crawling:
+// 1e-3 cm (the next step restores them). Before a trial point is scored, its latent point is
+// re-optimised for its pose: up to three Newton steps on L_IK over x alone (y fixed; x–x Hessian by
+// central differences, eigenvalues taken in absolute value, the same latent bound, halving
+// backtracking). F depends on x only through L_IK, so this is exact block elimination of x
+// (variable projection): the outer step no longer has to drag x along behind y, which the
+// indefinite x–x block made slow (docs/maths-ik.md §3). A solve still running after 20 trial steps is crawling:
 // from then on the shift is 4× the smallest that factorises (bracketed) and the latent
 // bound becomes a trust radius (up to 16×; a step it made too long does not raise μ); earlier
 // steps are untouched (docs/maths-ik.md §3).
@@ -57,6 +62,7 @@
 // request (the previous event's (x, pose)). solve() never throws.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <optional>
 #include <string>
 #include <vector>
@@ -155,6 +161,8 @@ private:
     void scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const;
     // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
     void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
+    // Lowers L_IK over the latent part of z with its pose fixed (the trial's variable projection).
+    void refineLatent(Eigen::VectorXd& z);
     // Removes the held DOFs from the unknowns in g_, H_, A_ and Aall_ (and C_ when `curvature`).
     void freezeHeld(bool curvature);
 
@@ -176,10 +184,13 @@ private:
     Pose pose_;
     FkState fk_;
     Eigen::VectorXd full_, x_, y_, gx_, gy_, gxP_, gxM_, gyTmp_, dS2_, xP_;
+    Eigen::VectorXd xR_, gR_, sR_, xRt_, gRt_, nuT_, deltaT_;  // latent refinement, tangent decrement
+    Eigen::MatrixXd HR_;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigR_;
     Eigen::MatrixXd Jf_;
     gp::PointWorkspace ws_, wsFd_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
-    Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, delta_, tmp_, nu_, rhs_;
+    Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, zSoc_, delta_, tmp_, nu_, rhs_;
     Eigen::MatrixXd H_, C_, Hm_, Hd_, A_, HinvAt_, S_, hc_;
     Eigen::LLT<Eigen::MatrixXd> llt_;
     Eigen::LDLT<Eigen::MatrixXd> sLdlt_, sAllLdlt_;
