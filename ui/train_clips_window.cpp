@@ -19,6 +19,13 @@ constexpr const char* kTitle = "Train on clips";
 bool names(const TrainingCandidate& c, const std::string& name) {
     return c.name == name || (!c.path.empty() && std::filesystem::path(c.path).filename().string() == name);
 }
+
+// The refusal in a few words beside the name (the whole reason is the row's tooltip).
+const char* shortReason(const std::string& reason) {
+    if (reason.rfind("BVH", 0) == 0) return "BVH: not supported yet";
+    if (reason.rfind("another skeleton", 0) == 0) return "other skeleton";
+    return "cannot be used (hover: why)";
+}
 }  // namespace
 
 void TrainClipsWindow::show(EditorApp& app) {
@@ -85,9 +92,10 @@ std::string TrainClipsWindow::check(const std::string& name, bool on) {
 
 std::string TrainClipsWindow::addFile(const std::string& path) {
     if (candidates_.empty()) return "no clip open";
-    for (const TrainingCandidate& c : candidates_)
-        if (!c.path.empty() && std::filesystem::exists(path) && std::filesystem::equivalent(c.path, path))
-            return check(c.name, true);
+    for (const TrainingCandidate& c : candidates_) {
+        std::error_code ec;  // a path that does not exist is no error here: it is refused below
+        if (!c.path.empty() && std::filesystem::equivalent(c.path, path, ec) && !ec) return check(c.name, true);
+    }
     // judged against the open clip, which the list was made for
     candidates_.push_back(trainingCandidate(openHeader_, path));
     checked_.push_back(false);
@@ -190,7 +198,7 @@ void TrainClipsWindow::draw(EditorApp& app) {
         }
         const Clip* clip = clipOf(i, app);
         ImGui::SameLine(260.0f * scale);
-        if (!c.usable) ImGui::TextDisabled("%s", c.reason.rfind("BVH", 0) == 0 ? "BVH: not supported yet" : "other skeleton");
+        if (!c.usable) ImGui::TextDisabled("%s", shortReason(c.reason));
         else if (clip) ImGui::TextDisabled("%d frames", clip->frameCount());
         else ImGui::TextDisabled("same skeleton");
         ImGui::PopID();

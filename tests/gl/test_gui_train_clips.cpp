@@ -117,3 +117,26 @@ TEST_CASE("gui: Train on clips on a BVH clip says why and trains nothing") {
     CHECK_FALSE(h->app->state().training.running());
     CHECK_FALSE(h->app->state().doc.hasModel());
 }
+
+TEST_CASE("gui: the train-clips action names what is wrong and trains nothing") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    REQUIRE(h->app->openClip(test::mocapDir() + "/asf_amc/10_03.amc") == "");
+    h->frame(2);
+    ui::EditorApp& app = *h->app;
+    CHECK(app.runAction({"train-clips", "10_09"}) ==
+          "no clip '10_09' beside the open clip (offered: 10_02; give a path to add another file)");
+    CHECK(app.runAction({"train-clips", "16_01"}).rfind("16_01 cannot train with 10_03: another skeleton (16.asf): joint ", 0) == 0);
+    CHECK(app.runAction({"train-clips", "10_02", "5"}) == "expected a frame range A:B or all, found '5'");
+    CHECK(app.runAction({"train-clips", "10_02", "1:1"}) == "expected at least 3 training frames after --frames/--step, found 2");
+    CHECK(app.runAction({"train-clips", "10_02", "1:400"}) ==
+          "expected --frames A:B with 1 ≤ A ≤ B ≤ 362 (10_03's frames counted from 1), found '1:400'");
+    CHECK(app.runAction({"train-clips", test::mocapDir() + "/asf_amc/10_99.amc"}) == "10_99 cannot train with 10_03: no such file");
+    CHECK_FALSE(app.state().training.running());
+    CHECK_FALSE(app.state().doc.hasModel());
+    h->frame(3);
+    REQUIRE(app.trainClipsWindow().shown());
+    app.trainClipsWindow().close();
+    h->frame(3);
+    CHECK_FALSE(app.popupOpen());
+}
