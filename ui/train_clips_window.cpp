@@ -96,14 +96,15 @@ std::string TrainClipsWindow::addFile(const std::string& path) {
         std::error_code ec;  // a path that does not exist is no error here: it is refused below
         if (!c.path.empty() && std::filesystem::equivalent(c.path, path, ec) && !ec) return check(c.name, true);
     }
-    // judged against the open clip, which the list was made for
-    candidates_.push_back(trainingCandidate(openHeader_, path));
+    // Judged against the open clip, which the list was made for; a refused file stays listed with why.
+    TrainingCandidate added = trainingCandidate(openHeader_, path);
+    for (const TrainingCandidate& c : candidates_)
+        if (c.name == added.name)  // a model names its clips by file stem
+            return "expected clips with distinct names (file stems), found " + added.name + " twice";
+    candidates_.push_back(std::move(added));
     checked_.push_back(false);
     const TrainingCandidate& c = candidates_.back();
     if (!c.usable) return c.name + " cannot train with " + openName_ + ": " + c.reason;
-    for (std::size_t j = 0; j + 1 < candidates_.size(); ++j)
-        if (candidates_[j].name == c.name && (candidates_[j].open || checked_[j]))
-            return "expected clips with distinct names (file stems), found " + c.name + " twice";
     if (std::string err = load(candidates_.size() - 1); !err.empty()) return err;
     checked_.back() = true;
     return "";

@@ -3,10 +3,12 @@
 // tiny model (two kicks of subject 10, frames 1..60 every 3rd of each: N = 40, M = 15, T = 1) off
 // the UI thread, and the model is installed with the open clip primary and both clips on the
 // latent map's legend. Esc closes the modal without changes; an open BVH clip gets the reason and
-// no training.
+// no training; the script action names what is wrong, and Add file ticks a clip from elsewhere.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "editor_app.h"
@@ -132,6 +134,21 @@ TEST_CASE("gui: the train-clips action names what is wrong and trains nothing") 
     CHECK(app.runAction({"train-clips", "10_02", "1:400"}) ==
           "expected --frames A:B with 1 ≤ A ≤ B ≤ 362 (10_03's frames counted from 1), found '1:400'");
     CHECK(app.runAction({"train-clips", test::mocapDir() + "/asf_amc/10_99.amc"}) == "10_99 cannot train with 10_03: no such file");
+    // Add file: a kick of subject 10 from another folder is ticked; a second file named like a
+    // listed clip is refused (a model names its clips by file stem).
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("motiongp_gui_train_clips_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::copy_file(test::mocapDir() + "/asf_amc/10.asf", dir / "10.asf", fs::copy_options::overwrite_existing);
+    fs::copy_file(test::mocapDir() + "/asf_amc/10_02.amc", dir / "10_05.amc", fs::copy_options::overwrite_existing);
+    fs::copy_file(test::mocapDir() + "/asf_amc/10_02.amc", dir / "10_02.amc", fs::copy_options::overwrite_existing);
+    REQUIRE(app.runAction({"train-clips"}) == "");
+    ui::TrainClipsWindow& w = app.trainClipsWindow();
+    CHECK(w.addFile((dir / "10_05.amc").string()) == "");
+    CHECK(w.candidates().back().name == "10_05");
+    CHECK(w.checked(w.candidates().size() - 1));
+    CHECK(w.addFile((dir / "10_02.amc").string()) == "expected clips with distinct names (file stems), found 10_02 twice");
+    fs::remove_all(dir);
     CHECK_FALSE(app.state().training.running());
     CHECK_FALSE(app.state().doc.hasModel());
     h->frame(3);
