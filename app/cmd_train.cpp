@@ -18,11 +18,10 @@
 #include "cli_common.h"
 #include "command_registry.h"
 #include "gp/model_file.h"
-#include "gp/sha256.h"
 #include "gp/trainer.h"
+#include "gp/training_clips.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
-#include "skeleton/clip_match.h"
 
 namespace mgp::app {
 
@@ -31,16 +30,11 @@ namespace {
 std::atomic<bool> gCancel{false};
 extern "C" void onSigint(int) { gCancel.store(true); }
 
-struct FrameRange {
-    int first = 1, last = 0;  // 1-based inclusive; last 0 = to the end
-};
-
-FrameRange parseFrames(const std::string& s, int frameCount) {
-    FrameRange r;
-    if (s.empty()) {
-        r.last = frameCount;
-        return r;
-    }
+// "A:B" → frames A..B; whether B fits each clip is gp::selectFrames' check.
+gp::FrameSelection parseFrames(const std::string& s, int step) {
+    gp::FrameSelection r;
+    r.step = step;
+    if (s.empty()) return r;
     const auto colon = s.find(':');
     try {
         if (colon == std::string::npos) throw std::invalid_argument("no colon");
@@ -53,15 +47,9 @@ FrameRange parseFrames(const std::string& s, int frameCount) {
     } catch (const std::exception&) {
         throw UsageError("expected --frames A:B with integers A ≤ B, found '" + s + "'");
     }
-    if (r.first < 1 || r.last > frameCount || r.first > r.last)
-        throw UsageError("expected --frames A:B with 1 ≤ A ≤ B ≤ " + std::to_string(frameCount) +
-                         " (clip frames counted from 1), found '" + s + "'");
+    if (r.first < 1 || r.first > r.last)
+        throw UsageError("expected --frames A:B with 1 ≤ A ≤ B (clip frames counted from 1), found '" + s + "'");
     return r;
-}
-
-std::string baseName(const std::string& path) {
-    const auto slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 void printBar(int iter, int total, double L, double elapsed, bool tty) {
@@ -122,41 +110,27 @@ const CommandRegistration reg(
                 throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
 
-            // Every clip is loaded and checked before training starts. One range for all clips: each
-            // clip's own frame count bounds it.
-            std::vector<Clip> clips;
-            std::vector<std::vector<int>> frames;
-            FrameRange firstRange;  // the model's settings record the first clip's range
-            std::size_t rows = 0;
-            for (const std::string& path : o->clips) {
-                Clip clip = loadClip(path, o->skel);
-                if (clip.format == ClipFormat::kBvh)
-                    throw UsageError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + path + "')");
-                if (!clips.empty()) {
-                    std::string difference;
-                    if (!sameSkeleton(clips.front().skeleton, clip.skeleton, &difference))
-                        throw UsageError("expected clips of one skeleton (retargeting is not supported), found " + path +
-                                         " against " + o->clips.front() + ": " + difference);
-                }
-                for (const Clip& c : clips)
-                    if (c.name == clip.name)
-                        throw UsageError("expected clips with distinct names (file stems), found " + clip.name + " twice");
-                const FrameRange range = parseFrames(o->frames, clip.frameCount());
-                if (clips.empty()) firstRange = range;
-                unwrapClip(clip);  // the model's clip must match its (unwrapped) training rows
-                std::vector<int> f;
-                for (int t = range.first; t <= range.last; t += o->step) f.push_back(t - 1);
-                rows += f.size();
-                frames.push_back(std::move(f));
-                clips.push_back(std::move(clip));
+            // Every clip is loaded and checked before training starts (gp::prepareTrainingClips, the
+            // editor's Train on clips… takes the same path). One range for all clips: each clip's own
+            // frame count bounds it.
+            const gp::FrameSelection selection = parseFrames(o->frames, o->step);
+            std::vector<Clip> loaded;
+            for (const std::string& path : o->clips) loaded.push_back(loadClip(path, o->skel));
+            std::vector<gp::TrainingClip> clips;
+            try {
+                clips = gp::prepareTrainingClips(std::move(loaded), o->clips, selection);
+            } catch (const gp::TrainingInputError& e) {
+                throw UsageError(e.what());
             }
-            if (rows < 3)
-                throw UsageError("expected at least 3 training frames after --frames/--step, found " + std::to_string(rows));
+            std::vector<std::size_t> frameCounts;
+            std::size_t rows = 0;
+            for (const gp::TrainingClip& c : clips) {
+                frameCounts.push_back(c.frames.size());
+                rows += c.frames.size();
+            }
             gp::TrainingData data;
             try {
-                std::vector<const Clip*> ptrs;
-                for (const Clip& c : clips) ptrs.push_back(&c);
-                data = gp::trainingDataFromClips(ptrs, frames);
+                data = gp::trainingDataOf(clips);
             } catch (const std::invalid_argument& e) {  // degenerate data (NaN, nothing varies): bad input
                 std::string names;
                 for (const std::string& p : o->clips) names += (names.empty() ? "" : ", ") + p;
@@ -177,7 +151,7 @@ const CommandRegistration reg(
             const auto t0 = std::chrono::steady_clock::now();
             auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
             std::string clipList;
-            for (const Clip& c : clips) clipList += (clipList.empty() ? "" : " + ") + c.name;
+            for (const gp::TrainingClip& c : clips) clipList += (clipList.empty() ? "" : " + ") + c.clip.name;
             std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clipList << ", N = " << rows
                       << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(rows))
                       << ", T = " << o->iters << ", prior " << gp::latentPriorName(prior) << "\n";
@@ -195,14 +169,7 @@ const CommandRegistration reg(
             const double seconds = elapsed();
 
             gp::GpModel& model = res.model;
-            model.clip = std::move(clips.front());
-            model.sourceFile = baseName(o->clips.front());
-            model.sourceSha256 = gp::sha256OfFile(o->clips.front());
-            for (std::size_t c = 1; c < clips.size(); ++c)
-                model.moreClips.push_back({baseName(o->clips[c]), gp::sha256OfFile(o->clips[c]), std::move(clips[c])});
-            model.settings.frameFirst = firstRange.first;
-            model.settings.frameLast = firstRange.last;
-            model.settings.frameStep = o->step;
+            gp::attachTrainingClips(model, std::move(clips), selection);
             gp::saveModel(o->out, model);
 
             const gp::Kernel k = model.kernel();
@@ -214,7 +181,7 @@ const CommandRegistration reg(
             nlohmann::json clipsJson = nlohmann::json::array();
             for (int c = 0; c < model.clipCount(); ++c)
                 clipsJson.push_back({{"name", model.clipName(c)},
-                                     {"frames", frames[static_cast<std::size_t>(c)].size()},
+                                     {"frames", frameCounts[static_cast<std::size_t>(c)]},
                                      {"sha256", model.clipSha256(c)}});
             j["clips"] = clipsJson;
             j["D"] = model.D();

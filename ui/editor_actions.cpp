@@ -193,6 +193,11 @@ std::vector<EditorAction> makeActions() {
     const Enabled canTrain = [](const EditorApp& app) { return docOf(app).trainable() && !app.state().training.running(); };
     add({"train", "[fas|sgplvm] [M] [T]", "Ctrl+T", {{'T', kCtrl}}, "train on the open clip (defaults from the Model panel)",
          canTrain, false, train});
+    add({"train-clips", "[CLIPS [A:B|all] [K] [M] [T]]", "", {},
+         "train on the open clip and others of its skeleton (CLIPS: comma-separated names or paths; frames A:B and step K "
+         "of each clip; M, T as for train); no arguments: the Train on clips dialog",
+         [](const EditorApp& app) { return docOf(app).hasClip() && !app.state().training.running(); }, false,
+         [](EditorApp& app, const ActionArgs& a) { return app.trainOnClips(a); }});
     add({"cancel-train", "", "", {}, "cancel the training run", [](const EditorApp& app) { return app.state().training.running(); },
          false, plain([](EditorApp& app) { app.state().training.cancel(); })});
     add({"train-compare", "", "", {}, "train the compare model (the other kernel) for `compare model`", always, false,

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "action_args.h"
 #include "edit/mirror_edit.h"
 #include "editor_actions.h"
 #include "editor_session.h"
@@ -68,8 +69,16 @@ std::string EditorApp::reportingErrors(const std::function<void()>& work) {
 
 std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
-    const std::string err =
-        state_.training.start(state_.doc.clip(), state_.trainOptions, baseName(state_.doc.clip().sourcePath));
+    return reportTrainingStart(
+        state_.training.start(state_.doc.clip(), state_.trainOptions, baseName(state_.doc.clip().sourcePath)));
+}
+
+std::string EditorApp::startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) {
+    if (!state_.doc.hasClip()) return "no clip";
+    return reportTrainingStart(state_.training.start(std::move(clips), selection, state_.trainOptions));
+}
+
+std::string EditorApp::reportTrainingStart(const std::string& err) {
     if (err.empty()) {
         state_.setStatusWhile("training (the editor stays usable; Cancel in the Model panel)",
                               [job = &state_.training] { return job->running(); });
@@ -239,6 +248,40 @@ std::string EditorApp::rotateJoint(const std::vector<std::string>& a) {
     return jointWindow_.rotate(state_, a);
 }
 
+std::string EditorApp::trainOnClips(const std::vector<std::string>& a) {
+    if (!state_.doc.hasClip()) return "no clip open";
+    trainClips_.show(*this);
+    if (a.empty()) return "";
+    // CLIPS: the clips to train with the open clip (which is always included), by name or path.
+    std::string list = a[0];
+    for (std::size_t at = 0; at <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', at), list.size());
+        const std::string name = list.substr(at, comma - at);
+        if (!name.empty())
+            if (std::string err = trainClips_.check(name, true); !err.empty()) return err;
+        at = comma + 1;
+    }
+    gp::FrameSelection& sel = trainClips_.selection();
+    if (a.size() > 1 && a[1] != "all") {
+        const std::size_t colon = a[1].find(':');
+        if (colon == std::string::npos) return "expected a frame range A:B or all, found '" + a[1] + "'";
+        if (std::string err = parseIntArg(a[1].substr(0, colon), "the first frame A", sel.first); !err.empty()) return err;
+        if (std::string err = parseIntArg(a[1].substr(colon + 1), "the last frame B", sel.last); !err.empty()) return err;
+        if (sel.first < 1 || sel.last < sel.first) return "expected frames A:B with 1 <= A <= B, found '" + a[1] + "'";
+    }
+    if (a.size() > 2)
+        if (std::string err = parseIntArg(a[2], "the step K", sel.step); !err.empty()) return err;
+    if (sel.step < 1) return "expected a step K >= 1, found " + std::to_string(sel.step);
+    gp::TrainOptions o = state_.trainOptions;
+    if (a.size() > 3)
+        if (std::string err = parseIntArg(a[3], "the active set size M", o.activeSize); !err.empty()) return err;
+    if (a.size() > 4)
+        if (std::string err = parseIntArg(a[4], "the iteration count T", o.outerIterations); !err.empty()) return err;
+    if (a.size() > 5) return "expected train-clips CLIPS [A:B|all] [K] [M] [T], found " + std::to_string(a.size()) + " arguments";
+    state_.trainOptions = o;
+    return trainClips_.train(*this);
+}
+
 void EditorApp::dialogs() {
     if (auto path = dialog_.draw()) {
         switch (purpose_) {
@@ -319,6 +362,7 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     layout_.draw(state_, *viewport_, latent_, timeline_, width, height);
     if (const int picked = viewport_->takePickedJoint(); picked >= 0) jointWindow_.selectJoint(picked);
     jointWindow_.draw(*this);
+    trainClips_.draw(*this);
     viewport_->setJointPicking(jointWindow_.shown());
     drawHelpWindow(showHelp_, layout_.leftWidth() * 0.5f, float(height) * 0.5f, options_.autosaveSeconds);
     runRequests();

@@ -28,6 +28,7 @@
 #include "png_capture.h"
 #include "script_player.h"
 #include "timeline_panel.h"
+#include "train_clips_window.h"
 #include "viewport_panel.h"
 
 namespace mgp::ui {
@@ -64,6 +65,9 @@ public:
     // (gp::withPrimaryClip); asks about unsaved changes first. "" or the error.
     std::string openModelClip(const std::string& name, int frame);
     std::string startTraining();         // on the open clip with state().trainOptions
+    // On clips checked by gp::prepareTrainingClips (the open clip first) with state().trainOptions:
+    // Model > Train on clips... (train_clips_window.h).
+    std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection);
     std::string startCompareTraining();  // the compare model: the other kernel, same options
     // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
     std::string openSession(const std::string& path, bool addToRecent = true);
@@ -88,6 +92,11 @@ public:
     // animates, in x, y, z order, sets them as one undo step (with the window's prior option).
     std::string rotateJoint(const std::vector<std::string>& args);
     JointRotationWindow& jointWindow() { return jointWindow_; }
+    TrainClipsWindow& trainClipsWindow() { return trainClips_; }
+    const TrainClipsWindow& trainClipsWindow() const { return trainClips_; }
+    // The `train-clips` action: no arguments shows Train on clips...; CLIPS (comma-separated names
+    // or paths) [A:B|all] [K] [M] [T] ticks those clips, sets the range and options and trains.
+    std::string trainOnClips(const std::vector<std::string>& args);
     const JointRotationWindow& jointWindow() const { return jointWindow_; }
     void toggleHelp() { showHelp_ = !showHelp_; }
     const RecentFiles* recentFiles() const { return recent_.get(); }  // null when turned off
@@ -135,6 +144,7 @@ public:
 
 private:
     void pollJobs();
+    std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
@@ -164,6 +174,7 @@ private:
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet
     std::optional<Pose> poseClipboard_;
     JointRotationWindow jointWindow_;
+    TrainClipsWindow trainClips_;
 
     std::string sessionPath_;  // "" until saved or opened
     long savedRevision_ = 0;   // doc.revision() when last saved or opened

@@ -112,6 +112,7 @@ void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText)
     }
     if (beginMenu("Model", escape)) {
         t.menuItem(app, "train", "Train");
+        t.menuItem(app, "train-clips", "Train on clips...");
         t.menuItem(app, "cancel-train", "Cancel training");
         const bool adaptive = app.state().doc.adaptiveEnabled();
         t.menuItem(app, "adaptive", "Adaptive active set", {adaptive ? "off" : "on"}, adaptive);

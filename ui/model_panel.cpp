@@ -232,6 +232,33 @@ void drawAdaptiveHistory(const std::vector<AdaptiveHistoryEntry>& history) {
 
 }  // namespace
 
+void drawTrainOptions(gp::TrainOptions& o) {
+    int kind = o.kind == gp::KernelKind::kFas ? 0 : 1;
+    ImGui::RadioButton("FASGPLVM", &kind, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("SGPLVM", &kind, 1);
+    o.kind = kind == 0 ? gp::KernelKind::kFas : gp::KernelKind::kSgplvm;
+    // Four fields and their one-letter labels share the row, however narrow the panel.
+    const float labelW = ImGui::CalcTextSize("M").x + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+    ImGui::PushItemWidth(std::clamp(ImGui::GetContentRegionAvail().x / 4.0f - labelW, 30.0f, 70.0f));
+    ImGui::InputInt("M", &o.activeSize, 0);
+    ImGui::SameLine();
+    ImGui::InputInt("T", &o.outerIterations, 0);
+    ImGui::SameLine();
+    ImGui::InputInt("S", &o.scgIterations, 0);
+    ImGui::SameLine();
+    ImGui::InputDouble("C", &o.tolerance, 0, 0, "%.3g");
+    ImGui::PopItemWidth();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
+                          "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
+                          gp::latentPriorName(o.prior), o.resolvedPriorWeight());
+    o.activeSize = std::clamp(o.activeSize, 3, 5000);
+    o.outerIterations = std::clamp(o.outerIterations, 1, 1000);
+    o.scgIterations = std::clamp(o.scgIterations, 1, 10000);
+    if (!(o.tolerance > 0)) o.tolerance = 0.01;
+}
+
 void drawModelPanel(EditorState& s) {
     EditorDocument& doc = s.doc;
     if (doc.hasClip()) {
@@ -251,31 +278,7 @@ void drawModelPanel(EditorState& s) {
     if (s.training.running()) {
         progressRow(s.training, "main");
     } else {
-        gp::TrainOptions& o = s.trainOptions;
-        int kind = o.kind == gp::KernelKind::kFas ? 0 : 1;
-        ImGui::RadioButton("FASGPLVM", &kind, 0);
-        ImGui::SameLine();
-        ImGui::RadioButton("SGPLVM", &kind, 1);
-        o.kind = kind == 0 ? gp::KernelKind::kFas : gp::KernelKind::kSgplvm;
-        // Four fields and their one-letter labels share the row, however narrow the panel.
-        const float labelW = ImGui::CalcTextSize("M").x + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
-        ImGui::PushItemWidth(std::clamp(ImGui::GetContentRegionAvail().x / 4.0f - labelW, 30.0f, 70.0f));
-        ImGui::InputInt("M", &o.activeSize, 0);
-        ImGui::SameLine();
-        ImGui::InputInt("T", &o.outerIterations, 0);
-        ImGui::SameLine();
-        ImGui::InputInt("S", &o.scgIterations, 0);
-        ImGui::SameLine();
-        ImGui::InputDouble("C", &o.tolerance, 0, 0, "%.3g");
-        ImGui::PopItemWidth();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
-                              "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
-                              gp::latentPriorName(o.prior), o.resolvedPriorWeight());
-        o.activeSize = std::clamp(o.activeSize, 3, 5000);
-        o.outerIterations = std::clamp(o.outerIterations, 1, 1000);
-        o.scgIterations = std::clamp(o.scgIterations, 1, 10000);
-        if (!(o.tolerance > 0)) o.tolerance = 0.01;
+        drawTrainOptions(s.trainOptions);
         ImGui::BeginDisabled(!doc.trainable());
         if (ImGui::Button("Train")) s.request("train");
         s.recordControl("Train");

@@ -8,6 +8,9 @@
 namespace mgp::ui {
 
 void drawModelPanel(EditorState& state);
+// The training options (kernel, M, T, S, C; the prior in the tooltip), clamped to sane ranges:
+// the Model panel's Train and Model ▸ Train on clips… share them (EditorState::trainOptions).
+void drawTrainOptions(gp::TrainOptions& options);
 void drawIkReadout(EditorState& state);
 
 }  // namespace mgp::ui

@@ -10,19 +10,40 @@ TrainingJob::TrainingJob()
               "training failed: ") {}
 
 std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile) {
-    static const char* const kBusy = "a training run is already in progress";
-    if (worker_.busy()) return kBusy;
     if (clip.format == ClipFormat::kBvh) return "BVH clips are view-only: training on BVH is not supported yet";
     if (clip.frameCount() < 3) return "expected at least 3 frames to train on, found " + std::to_string(clip.frameCount());
+    if (worker_.busy()) return "a training run is already in progress";  // before copying the clip
+    gp::TrainingClip one;
+    one.clip = clip;
+    unwrapClip(one.clip);  // the model's clip must match its (unwrapped) training rows
+    one.path = sourceFile;
+    one.frames.resize(static_cast<std::size_t>(clip.frameCount()));
+    for (int t = 0; t < clip.frameCount(); ++t) one.frames[static_cast<std::size_t>(t)] = t;
+    std::vector<gp::TrainingClip> clips;
+    clips.push_back(std::move(one));
+    return startRequest(Request{std::move(clips), gp::FrameSelection{}, options});
+}
+
+std::string TrainingJob::start(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection,
+                               const gp::TrainOptions& options) {
+    if (clips.empty()) return "expected at least one clip to train on";
+    for (const gp::TrainingClip& c : clips)
+        if (c.clip.format == ClipFormat::kBvh) return "BVH clips are view-only: training on BVH is not supported yet";
+    return startRequest(Request{std::move(clips), selection, options});
+}
+
+std::string TrainingJob::startRequest(Request request) {
+    static const char* const kBusy = "a training run is already in progress";
+    if (worker_.busy()) return kBusy;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_ = {};
         progress_.running = true;
-        progress_.total = options.outerIterations;
-        progress_.kernel = gp::kernelKindName(options.kind);
+        progress_.total = request.options.outerIterations;
+        progress_.kernel = gp::kernelKindName(request.options.kind);
         started_ = std::chrono::steady_clock::now();
     }
-    if (!worker_.startIfIdle(Request{clip, options, sourceFile})) return kBusy;
+    if (!worker_.startIfIdle(std::move(request))) return kBusy;
     return "";
 }
 
@@ -53,7 +74,7 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         }
     } finish{*this, elapsed};
     const gp::TrainOptions& options = request.options;
-    gp::TrainResult res = gp::trainOnClip(std::move(request.clip), options, [&](const gp::IterationLog& e) {
+    gp::TrainResult res = gp::train(gp::trainingDataOf(request.clips), options, [&](const gp::IterationLog& e) {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_.iteration = e.iter;
         progress_.objective = e.L;
@@ -61,7 +82,7 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         if (e.iter > 0) progress_.etaSeconds = progress_.elapsedSeconds / e.iter * (progress_.total - e.iter);
     }, &cancel);
     if (res.cancelled) return {std::nullopt, "training cancelled after " + std::to_string(res.log.size()) + " iterations"};
-    res.model.sourceFile = request.sourceFile;
+    gp::attachTrainingClips(res.model, std::move(request.clips), request.selection);
     char buf[160];
     std::snprintf(buf, sizeof buf, "trained %s: %zu iterations in %.1f s%s", gp::kernelKindName(options.kind),
                   res.log.size(), elapsed(), res.converged ? " (converged)" : "");

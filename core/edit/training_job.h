@@ -1,5 +1,5 @@
 #pragma once
-// TrainingJob: trains a model from a clip on a background thread, one outer iteration at a time,
+// TrainingJob: trains a model from one clip or several clips of one skeleton on a background thread, one outer iteration at a time,
 // with progress, an ETA and cancellation (docs/architecture.md §4: the app never blocks the UI on
 // training). The UI polls progress() every frame and takes the finished model once. The thread,
 // the cancel flag and the take-once model are a BackgroundWorker's (core/util/background_worker.h),
@@ -7,9 +7,11 @@
 #include <chrono>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "gp/model_version.h"
 #include "gp/trainer.h"
+#include "gp/training_clips.h"
 #include "skeleton/clip.h"
 #include "util/background_worker.h"
 
@@ -35,6 +37,10 @@ public:
     // Starts training on every frame of `clip` (ASF/AMC or synthetic). Returns "" or why not
     // (a job is running, BVH clip, fewer than 3 frames).
     std::string start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile = "");
+    // Starts training on clips checked by gp::prepareTrainingClips (the first becomes the model's
+    // primary clip; `selection` is recorded in the model's settings). "" or why not.
+    std::string start(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection,
+                      const gp::TrainOptions& options);
     void cancel() { worker_.cancel(); }
     bool running() const { return worker_.busy(); }
     TrainingProgress progress() const;
@@ -46,10 +52,11 @@ public:
 
 private:
     struct Request {
-        Clip clip;
+        std::vector<gp::TrainingClip> clips;
+        gp::FrameSelection selection;
         gp::TrainOptions options;
-        std::string sourceFile;
     };
+    std::string startRequest(Request request);
     JobOutcome<gp::ModelVersionPtr> run(Request& request, const std::atomic<bool>& cancel);
     mutable std::mutex mutex_;  // guards progress_ and started_
     TrainingProgress progress_;
