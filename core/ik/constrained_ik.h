@@ -37,13 +37,15 @@
 // the pins' tangent space. A model that is still indefinite gets a one-step shift τI. Each step
 // solves the KKT system of the pins' linearisation (range-space form, A (H + μ diag H)⁻¹ Aᵀ), is
 // shortened to at most half the RBF length scale in x and 20° in any angle, then a second-order
-// correction (up to 5 projections in the same metric) brings the trial point back onto the pins
-// and onto the exact targets' linearised prediction: without it the κ-penalty charges the curved
-// target manifold to every step along it and the iteration converges only linearly. Steps are
+// correction (up to 5 projections in the same metric, stopped when one makes the residual larger)
+// brings the trial point back onto the pins and onto the exact targets' linearised prediction:
+// without it the κ-penalty charges the curved target manifold to every step along it and the
+// iteration converges only linearly. Steps are
 // accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
 // tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
 // 1e-3 cm (the next step restores them). Before a trial point is scored, its latent point is
-// re-optimised for its pose: up to three Newton steps on L_IK over x alone (y fixed; x–x Hessian by
+// re-optimised for its pose, from the sixth trial on (a drag event needs at most five, so drags
+// keep their cost): up to three Newton steps on L_IK over x alone (y fixed; x–x Hessian by
 // central differences, eigenvalues taken in absolute value, the same latent bound, halving
 // backtracking). F depends on x only through L_IK, so this is exact block elimination of x
 // (variable projection): the outer step no longer has to drag x along behind y, which the
