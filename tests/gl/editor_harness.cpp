@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <vector>
 
+#include "script_player.h"
 #include "skip.h"
 
 namespace mgp::test {
@@ -70,6 +72,19 @@ void tapKey(Harness& h, int k, std::initializer_list<int> mods) {
     h.input.setKey(k, false);
     for (int m : mods) h.input.setKey(m, false);
     h.frame(3);
+}
+
+void clickAt(Harness& h, float x, float y) {
+    ui::GuiScript script;
+    script.add(0, "move", {std::to_string(x), std::to_string(y)});
+    script.add(2, "down", {"left"});
+    script.add(4, "up", {"left"});
+    ui::ScriptPlayer player(script);
+    std::vector<std::string> shots;
+    for (int i = 0; i <= 6; ++i) {
+        player.apply(i, h.input, *h.app, shots);
+        h.frame();
+    }
 }
 
 }  // namespace mgp::test

@@ -34,6 +34,10 @@ struct Harness {
 // does, then runs 3 frames: the input replay spreads the events over them.
 void tapKey(Harness& h, int k, std::initializer_list<int> mods = {});
 
+// A left click at window pixel (x, y) as a --script run plays it (move, press on frame 2,
+// release on frame 4), over 7 frames.
+void clickAt(Harness& h, float x, float y);
+
 // nullptr (the test is then reported skipped, with the reason: the caller returns) when no
 // offscreen context can be made, or when llvmpipeOnly and the context is not llvmpipe.
 std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel = true);

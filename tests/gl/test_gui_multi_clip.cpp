@@ -18,9 +18,7 @@
 #include "editor_harness.h"
 #include "gp/model_file.h"
 #include "gp/trainer.h"
-#include "input_state.h"
 #include "io/clip_loader.h"
-#include "script_player.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -125,18 +123,6 @@ int loneDotOf1002(test::Harness& h, float& x, float& y) {
     return best;
 }
 
-void click(test::Harness& h, float x, float y) {
-    ui::GuiScript script;
-    script.add(0, "move", {std::to_string(x), std::to_string(y)});
-    script.add(2, "down", {"left"});
-    script.add(4, "up", {"left"});
-    ui::ScriptPlayer player(script);
-    std::vector<std::string> shots;
-    for (int i = 0; i <= 6; ++i) {
-        player.apply(i, h.input, *h.app, shots);
-        h.frame();
-    }
-}
 }  // namespace
 
 TEST_CASE("gui: the latent map of a two-clip model colours its dots by clip, with a legend") {
@@ -194,7 +180,7 @@ TEST_CASE("gui: clicking a dot of the model's other clip opens that clip at that
     float x = 0, y = 0;
     const int frame = loneDotOf1002(*h, x, y);
     REQUIRE(frame >= 0);
-    click(*h, x, y);
+    test::clickAt(*h, x, y);
     CHECK_FALSE(h->app->askingAboutUnsavedChanges());  // nothing unsaved: no question
     CHECK(doc.clip().name == "10_02");
     CHECK(doc.frame() == frame);
@@ -231,7 +217,7 @@ TEST_CASE("gui: with unsaved edits, clicking another clip's dot asks first and C
     h->frame(2);
     float x = 0, y = 0;
     REQUIRE(loneDotOf1002(*h, x, y) >= 0);
-    click(*h, x, y);
+    test::clickAt(*h, x, y);
     REQUIRE(h->app->askingAboutUnsavedChanges());
     CHECK(doc.clip().name == "10_03");  // nothing happens before the answer
     tapKey(*h, key::kEscape);

@@ -13,8 +13,6 @@
 
 #include "editor_app.h"
 #include "editor_harness.h"
-#include "input_state.h"
-#include "script_player.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -27,17 +25,7 @@ void clickControl(test::Harness& h, const std::string& name, bool leftEnd = fals
     REQUIRE(controls.count(name) == 1);
     const auto& r = controls.at(name);
     REQUIRE(r.visible);
-    const float x = leftEnd ? r.x0 + 6.0f : (r.x0 + r.x1) / 2, y = (r.y0 + r.y1) / 2;
-    ui::GuiScript script;
-    script.add(0, "move", {std::to_string(x), std::to_string(y)});
-    script.add(2, "down", {"left"});
-    script.add(4, "up", {"left"});
-    ui::ScriptPlayer player(script);
-    std::vector<std::string> shots;
-    for (int i = 0; i <= 6; ++i) {
-        player.apply(i, h.input, *h.app, shots);
-        h.frame();
-    }
+    test::clickAt(h, leftEnd ? r.x0 + 6.0f : (r.x0 + r.x1) / 2, (r.y0 + r.y1) / 2);
 }
 }  // namespace
 
