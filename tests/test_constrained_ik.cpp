@@ -108,7 +108,7 @@ TEST_CASE("constrained IK: a cold start that crawls converges within 50 iteratio
     // as pins (what `motiongp pose` does). Without the crawl rules of docs/maths-ik.md §3 (the
     // shift bracketed, the latent trust radius) this move stops at the cap with F 2473.72 and
     // converges only after 51 trial steps; with them it converged in 47, and with the latent
-    // refinement of step 7 as well in 38, at the same F.
+    // refinement of step 7 as well in 34, at the same F.
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     const int frame = 149;
@@ -204,7 +204,7 @@ TEST_CASE("constrained IK: re-fitting each trial's latent point lets long cold s
     // raised 50 cm, the other foot held where it is in contact. Without the latent refinement
     // (docs/maths-ik.md §3 step 7) both stopped at the 50-iteration cap, at F 81.73 and 124.85,
     // short of the minima a 500-iteration solve reaches (70.08 and 111.99); with it they
-    // converge in 22 and 33.
+    // converge in 39 and 33.
     const auto version = test::kickModel1003();
     const Clip& clip = version->model->clip;
     const int frame = 149;

@@ -288,20 +288,16 @@ void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
     xR_ = z.head(d_);
     double L = post.evaluate(xR_, y_, wsFd_, &gR_, &gyTmp_);
     ++evaluations_;
+    // The x–x Hessian is the joint model's at the current point (its central differences are
+    // already paid for): a trial's y differs from it by one step, and the backtracking below
+    // only accepts what lowers L_IK. Central differences at every trial point cost twice the
+    // prior evaluations for the same convergence (docs/maths-ik.md §3).
+    HR_ = Hm_.topLeftCorner(d_, d_);
+    HR_ = (0.5 * (HR_ + HR_.transpose())).eval();
+    // |λ|: a direction of negative curvature is followed downhill, not uphill.
+    eigR_.compute(HR_);
+    const double largest = std::max(1.0, eigR_.eigenvalues().cwiseAbs().maxCoeff());
     for (int step = 0; step < kLatentRefinements; ++step) {
-        for (int i = 0; i < d_; ++i) {
-            xRt_ = xR_;
-            xRt_[i] += kFdStepX;
-            post.evaluate(xRt_, y_, wsFd_, &gxP_, &gyTmp_);
-            xRt_[i] -= 2.0 * kFdStepX;
-            post.evaluate(xRt_, y_, wsFd_, &gxM_, &gyTmp_);
-            evaluations_ += 2;
-            HR_.col(i) = (gxP_ - gxM_) / (2.0 * kFdStepX);
-        }
-        HR_ = (0.5 * (HR_ + HR_.transpose())).eval();
-        // |λ|: a direction of negative curvature is followed downhill, not uphill.
-        eigR_.compute(HR_);
-        const double largest = std::max(1.0, eigR_.eigenvalues().cwiseAbs().maxCoeff());
         sR_ = eigR_.eigenvectors().transpose() * gR_;
         for (int i = 0; i < d_; ++i) sR_[i] /= std::max(std::abs(eigR_.eigenvalues()[i]), 1e-6 * largest);
         sR_ = -(eigR_.eigenvectors() * sR_).eval();

@@ -45,9 +45,9 @@
 // tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
 // 1e-3 cm (the next step restores them). Before a trial point is scored, its latent point is
 // re-optimised for its pose, from the sixth trial on (a drag event needs at most five, so drags
-// keep their cost): up to three Newton steps on L_IK over x alone (y fixed; x–x Hessian by
-// central differences, eigenvalues taken in absolute value, the same latent bound, halving
-// backtracking). F depends on x only through L_IK, so this is exact block elimination of x
+// keep their cost): up to three Newton steps on L_IK over x alone (y fixed; the exact x-gradient,
+// the joint model's x–x block as Hessian with its eigenvalues taken in absolute value, the same
+// latent bound, halving backtracking). F depends on x only through L_IK, so this is exact block elimination of x
 // (variable projection): the outer step no longer has to drag x along behind y, which the
 // indefinite x–x block made slow (docs/maths-ik.md §3). A solve still running after 20 trial steps is crawling:
 // from then on the shift is 4× the smallest that factorises (bracketed) and the latent

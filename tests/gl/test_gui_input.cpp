@@ -23,7 +23,8 @@ namespace {
 using test::Harness;
 namespace key = ui::key;
 
-void clickAt(Harness& h, float x, float y) {
+// Press and release within one frame, as `xdotool click` does (clickAt in the harness spreads them).
+void quickClick(Harness& h, float x, float y) {
     h.input.mouseX = x;
     h.input.mouseY = y;
     h.frame(2);  // hover first
@@ -55,7 +56,7 @@ TEST_CASE("gui input: a click shorter than one frame opens a menu, and Esc close
     h->frame(3);
     REQUIRE_FALSE(h->app->popupOpen());
     // Through the event queue: the same tap is replayed over two frames.
-    clickAt(*h, kFileMenuX, kMenuY);
+    quickClick(*h, kFileMenuX, kMenuY);
     CHECK(h->app->popupOpen());
     tapKey(*h, key::kEscape);
     CHECK_FALSE(h->app->popupOpen());
