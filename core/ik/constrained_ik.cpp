@@ -67,7 +67,6 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     xP_.resize(d_);
     for (Eigen::VectorXd* v : {&xR_, &gR_, &sR_, &xRt_, &gRt_}) v->resize(d_);
     HR_.resize(d_, d_);
-    eigR_ = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d_);
     jac_.resize(3, kPoseDofs);
     for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &zSoc_, &delta_, &deltaT_, &tmp_, &rhs_}) v->resize(n_);
     for (Eigen::MatrixXd* m : {&H_, &C_, &Hm_, &Hd_}) m->resize(n_, n_);
