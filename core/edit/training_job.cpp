@@ -17,8 +17,7 @@ std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options
     one.clip = clip;
     unwrapClip(one.clip);  // the model's clip must match its (unwrapped) training rows
     one.path = sourceFile;
-    one.frames.resize(static_cast<std::size_t>(clip.frameCount()));
-    for (int t = 0; t < clip.frameCount(); ++t) one.frames[static_cast<std::size_t>(t)] = t;
+    one.frames = gp::selectFrames(clip.frameCount(), gp::FrameSelection{}, clip.name);  // every frame
     std::vector<gp::TrainingClip> clips;
     clips.push_back(std::move(one));
     return startRequest(Request{std::move(clips), gp::FrameSelection{}, options});
