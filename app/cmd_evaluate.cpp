@@ -88,6 +88,7 @@ const CommandRegistration reg(
             j["kernel"] = gp::kernelKindName(model.kind);
             j["prior"] = gp::latentPriorName(model.settings.prior);
             if (model.settings.prior != gp::LatentPrior::kNone) j["prior_weight"] = model.settings.priorWeight;
+            j["back_constraints"] = model.settings.backConstraints;
             j["N"] = model.N();
             j["M"] = static_cast<int>(model.active.size());
             j["iterations"] = model.iterations;
@@ -156,7 +157,7 @@ const CommandRegistration reg(
                 return 0;
             }
             std::cout << o->model << ": " << j["kernel"].get<std::string>() << ", prior " << j["prior"].get<std::string>()
-                      << ", N = " << model.N() << "\n";
+                      << (model.settings.backConstraints ? ", back-constrained" : "") << ", N = " << model.N() << "\n";
             for (int k = 0; k < model.clipCount(); ++k) {
                 const eval::ContinuityReport& c = perClip[static_cast<std::size_t>(k)];
                 std::cout << "  continuity of " << model.clipName(k) << " (step / median pair distance): p50 " << c.p50

@@ -71,7 +71,7 @@ const CommandRegistration reg(
             CLI::Option* priorWeightOption = nullptr;  // unset: gp::defaultPriorWeight(T)
             int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
             double tol = 0.01;
-            bool json = false;
+            bool json = false, backConstraints = false;
         };
         auto o = std::make_shared<Opts>();
         sub.add_option("clip", o->clips,
@@ -88,6 +88,8 @@ const CommandRegistration reg(
                                    "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
         o->priorWeightOption = sub.add_option("--prior-weight", o->priorWeight,
                                               "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 100, log-linear between)");
+        sub.add_flag("--back-constraints", o->backConstraints,
+                     "Make the latent points a smooth function of the poses (X = K A; Step 8 is skipped)");
         sub.add_option("--frames", o->frames, "Keep frames A..B (from 1, inclusive) of each clip, e.g. 1:180");
         sub.add_option("--step", o->step, "Then keep every K-th frame of each clip (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
@@ -146,6 +148,7 @@ const CommandRegistration reg(
             opt.threads = o->threads;
             opt.prior = prior;
             if (weightGiven) opt.priorWeight = o->priorWeight;
+            opt.backConstraints = o->backConstraints;
 
             const bool tty = ::isatty(2) != 0;
             const auto t0 = std::chrono::steady_clock::now();
@@ -154,7 +157,8 @@ const CommandRegistration reg(
             for (const gp::TrainingClip& c : clips) clipList += (clipList.empty() ? "" : " + ") + c.clip.name;
             std::cerr << "train: " << gp::kernelKindName(kind) << " on " << clipList << ", N = " << rows
                       << ", D = " << data.Y.cols() << ", M = " << std::min<int>(o->active, static_cast<int>(rows))
-                      << ", T = " << o->iters << ", prior " << gp::latentPriorName(prior) << "\n";
+                      << ", T = " << o->iters << ", prior " << gp::latentPriorName(prior)
+                      << (o->backConstraints ? ", back-constrained" : "") << "\n";
             gCancel.store(false);
             auto previous = std::signal(SIGINT, onSigint);
             gp::TrainResult res = gp::train(data, opt, [&](const gp::IterationLog& e) {

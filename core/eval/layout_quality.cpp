@@ -329,6 +329,7 @@ gp::TrainOptions trainOptionsOf(const gp::GpModel& model) {
     o.tolerance = model.settings.tolerance;
     o.prior = model.settings.prior;
     if (o.prior != gp::LatentPrior::kNone) o.priorWeight = model.settings.priorWeight;
+    o.backConstraints = model.settings.backConstraints;
     return o;
 }
 

@@ -36,6 +36,7 @@ struct TrainingSettings {
     int frameStep = 1;                  // --step K
     LatentPrior prior = LatentPrior::kNone;  // temporal prior (docs/maths.md §19)
     double priorWeight = 0.0;                // its λ (0 with kNone)
+    bool backConstraints = false;            // X a function of the poses (docs/maths.md §22)
 };
 
 // A source clip other than the primary one.

@@ -148,6 +148,7 @@ std::string modelToJsonText(const GpModel& m) {
     // Only written for a prior other than none, so the paper model's file is unchanged.
     if (s.prior != LatentPrior::kNone)
         j["training"]["prior"] = {{"kind", latentPriorName(s.prior)}, {"weight", s.priorWeight}};
+    if (s.backConstraints) j["training"]["back_constraints"] = true;  // likewise only when used
     j["source"] = {{"file", m.sourceFile}, {"sha256", m.sourceSha256}};
     j["clip"] = clipToJson(m.clip);
     // Y is not stored: a row is the clip's pose at its training frame. A row an adaptive update
@@ -265,6 +266,11 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
                 pr["weight"].get<double>() < 0.0)
                 throwParseError(file, 0, "a finite training.prior.weight ≥ 0", pr.dump());
             m.settings.priorWeight = pr["weight"].get<double>();
+        }
+        if (t.contains("back_constraints")) {
+            if (!t["back_constraints"].is_boolean())
+                throwParseError(file, 0, "training.back_constraints true or false", t["back_constraints"].dump());
+            m.settings.backConstraints = t["back_constraints"].get<bool>();
         }
         if (t.contains("objective_history")) {  // absent in files written before it existed
             const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");

@@ -130,6 +130,11 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
         prior_ = TemporalPrior::secondDifference(data_.frames, opt_.resolvedPriorWeight(), data_.clips);
     if (opt_.prior == LatentPrior::kPaced)
         prior_ = TemporalPrior::posePaced(data_.frames, data_.Y, opt_.resolvedPriorWeight(), data_.clips);
+    if (opt_.backConstraints) {  // start from the mapping's nearest reach of the PCA layout
+        back_ = BackConstraint(Ybar);
+        A_ = back_.fit(X_);
+        X_ = back_.latent(A_);
+    }
     active_ = selectActive();
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
                                        objective(), false);
@@ -160,10 +165,18 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     so.tolX = opt_.scgTolX;
     so.tolF = opt_.scgTolF;
     if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
-    // The inactive rows stay where they are during Step 6.
-    const LatentTerm extra = prior_.empty() ? LatentTerm() : priorOnActive(prior_, X_, active);
-    const ActiveStepResult step =
-        optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
+    ActiveStepResult step;
+    if (!back_.empty()) {  // every point moves with A (docs/maths.md §22)
+        BackStepResult back = optimizeBackConstrainedStep(opt_.kind, psi_, A_, back_, active, centredRows(data_, active),
+                                                          prior_, so, objective());
+        A_ = std::move(back.A);
+        X_ = back_.latent(A_);
+        step = std::move(back.step);
+    } else {
+        // The inactive rows stay where they are during Step 6.
+        const LatentTerm extra = prior_.empty() ? LatentTerm() : priorOnActive(prior_, X_, active);
+        step = optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
+    }
     psi_ = step.psi;
     for (std::size_t i = 0; i < active.size(); ++i) X_.row(active[i]) = step.XI.row(static_cast<Eigen::Index>(i));
     if (entry) {
@@ -181,7 +194,8 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
 
 void Trainer::optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel) {
     const std::vector<int> inactive = complementOf(active, static_cast<int>(X_.rows()));
-    if (inactive.empty()) return;
+    // Back-constrained points are not free: Step 6 already moved every one along the mapping.
+    if (inactive.empty() || !back_.empty()) return;
     const Eigen::MatrixXd Yhat = centredRows(data_, active);
     const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active), Yhat, objective(), false);
     if (!ev.ok) return;  // cannot factor K: leave the inactive points where they are
@@ -326,6 +340,7 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.settings.tolerance = options.tolerance;
     m.settings.prior = options.prior;
     m.settings.priorWeight = options.resolvedPriorWeight();
+    m.settings.backConstraints = options.backConstraints;
     m.iterations = static_cast<int>(res.log.size());
     m.converged = res.converged;
     m.objectiveHistory = trainer.objectiveHistory();

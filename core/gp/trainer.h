@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "gp/back_constraints.h"
 #include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/model.h"
@@ -62,6 +63,9 @@ struct TrainOptions {
     std::optional<double> priorWeight;
     // The λ a run with these options uses (0 with LatentPrior::kNone).
     double resolvedPriorWeight() const;
+    // Back-constraints (docs/maths.md §22): X = K A, a smooth function of the poses; Step 6
+    // optimises (ψ, A) and Step 8 is skipped. Combines with any prior (on X = K A).
+    bool backConstraints = false;
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;
@@ -125,6 +129,9 @@ public:
     const TrainOptions& options() const { return opt_; }
     // The temporal prior in use (empty for LatentPrior::kNone).
     const TemporalPrior& temporalPrior() const { return prior_; }
+    // The mapping and its weights A (X = K A) when back-constrained; empty otherwise.
+    const BackConstraint& backConstraint() const { return back_; }
+    const Eigen::MatrixXd& backWeights() const { return A_; }
     // Profiled W on the current active set.
     Eigen::VectorXd currentWeights() const;
 
@@ -141,6 +148,8 @@ private:
     Eigen::MatrixXd X_;
     std::vector<int> active_;
     TemporalPrior prior_;
+    BackConstraint back_;  // empty unless options.backConstraints
+    Eigen::MatrixXd A_;    // X = back_.latent(A_) when back-constrained
     Eigen::VectorXd prevW_;
     double lInit_ = 0.0;
     bool frozen_ = false;
