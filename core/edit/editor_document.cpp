@@ -466,6 +466,23 @@ void EditorDocument::waitIdle() {
     models_.waitIdle();
 }
 
+namespace {
+
+// The latent point of the model's training row that holds pose y (kept columns) for clip frame
+// `frame` of the primary (open) clip, if an update added one; the last such row when there are several.
+std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, const Eigen::VectorXd& y) {
+    for (Eigen::Index r = m.X.rows() - 1; r >= 0; --r) {
+        const auto row = static_cast<std::size_t>(r);
+        if (row >= m.trainingFrames.size() || m.trainingFrames[row] != frame) continue;
+        if (row < m.trainingClips.size() && m.trainingClips[row] != 0) continue;
+        if (m.Y.cols() == y.size() && (m.Y.row(r).transpose() - y).cwiseAbs().maxCoeff() <= 1e-9)
+            return Eigen::VectorXd(m.X.row(r).transpose());
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     const gp::ModelVersionPtr v = model();
     if (!v || !hasClip()) return std::nullopt;
@@ -481,10 +498,13 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     if (v->model->clip.skeleton.jointCount() != clip().skeleton.jointCount()) return std::nullopt;
     const PoseLayout layout(clip().skeleton);
     const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
-    const double lik = v->posterior->evaluate(e.x, y, nullptr, nullptr);
+    // A pose an update taught the model is a training row now, and that update re-fitted its latent
+    // point: judge it there, not at the x of the solve on the previous version.
+    const Eigen::VectorXd x = taughtLatent(*v->model, frame_, y).value_or(e.x);
+    const double lik = v->posterior->evaluate(x, y, nullptr, nullptr);
     Eigen::VectorXd mean;
     double sigma2 = 0.0;
-    v->posterior->predict(e.x, mean, sigma2);
+    v->posterior->predict(x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
     const bool reached = !(lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose)) || lastDrag_.reached;
     return gp::admitPose(v->range, reached, sigma2, lik);

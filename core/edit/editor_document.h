@@ -166,8 +166,9 @@ public:
     Eigen::Vector3d dragTarget() const { return drag_.target(); }
     const SolveReadout& readout() const { return drag_.readout(); }
     // σ²(x), L_IK and the admission verdict of the current frame's solved pose against the latest
-    // model version's training range: the live drag solve, else the frame's accepted edit (its x
-    // and pose re-evaluated, so an update that taught the model the pose calms it). None without a
+    // model version's training range: the live drag solve, else the frame's accepted edit (its pose
+    // re-evaluated at its x, or, once an update taught the model the pose, at the latent point that
+    // update gave the new training row, so the verdict judges the model that holds it). None without a
     // model, on a captured frame, or for an edit without a latent point (plain IK).
     std::optional<gp::AdmissionVerdict> currentPoseVerdict() const;
 

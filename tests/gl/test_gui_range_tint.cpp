@@ -112,9 +112,23 @@ TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
     CHECK(f.tint != render::kRangeRed);
     CHECK(contains(s.rangeLegend, "would be admitted"));
     CHECK_FALSE(contains(s.rangeLegend, "out of range"));
+    const int rowsBefore = static_cast<int>(doc.model()->model->X.rows());
     REQUIRE(h->play(ui::GuiScript::parse("0 up left\n")).empty());
     REQUIRE(doc.isEdited(40));
     h->app->waitIdle();
     h->frame(2);
     CHECK(contains(s.rangeLegend, "would be admitted"));
+    // The update taught the model the pose: it is judged at the latent point the update gave its
+    // new training row, not at the x solved on the previous version.
+    const gp::ModelVersionPtr now = doc.model();
+    REQUIRE(now->number == 1);
+    const gp::GpModel& m = *now->model;
+    REQUIRE(m.X.rows() == rowsBefore + 1);
+    const Eigen::VectorXd xRow = m.X.row(m.X.rows() - 1).transpose();
+    const Eigen::VectorXd yRow = m.Y.row(m.Y.rows() - 1).transpose();
+    CHECK(m.trainingFrames.back() == 40);
+    CHECK((xRow - doc.edits().at(40).x).norm() > 0.0);  // the update moved it
+    const std::optional<gp::AdmissionVerdict> after = doc.currentPoseVerdict();
+    REQUIRE(after);
+    CHECK(after->lik == doctest::Approx(now->posterior->evaluate(xRow, yRow, nullptr, nullptr)).epsilon(1e-12));
 }
