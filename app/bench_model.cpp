@@ -1,5 +1,6 @@
 // bench section "model": layout quality of a quick model (T = 10, the paper's other settings) for
-// each latent prior on two real clips (walk 35_01, jump 16_01): the numbers `motiongp evaluate`
+// each latent prior, and back-constraints without a prior, on two real clips (walk 35_01, jump
+// 16_01): the numbers `motiongp evaluate`
 // reports (docs/maths.md §20) and how long each measure takes. Continuity and the yardstick are
 // timed over ctx.repeats (medians); training and the held-out protocol (a retraining) once.
 // --quick: M = 60, T = 2 (a smoke test; the numbers then mean little).
@@ -14,9 +15,10 @@
 namespace mgp::app {
 namespace {
 
-nlohmann::json benchClip(const Clip& clip, gp::LatentPrior prior, const BenchContext& ctx) {
+nlohmann::json benchClip(const Clip& clip, gp::LatentPrior prior, bool backConstraints, const BenchContext& ctx) {
     gp::TrainOptions o;
     o.prior = prior;
+    o.backConstraints = backConstraints;
     o.outerIterations = ctx.quick ? 2 : 10;
     if (ctx.quick) o.activeSize = 60;
     gp::TrainResult r;
@@ -38,6 +40,7 @@ nlohmann::json benchClip(const Clip& clip, gp::LatentPrior prior, const BenchCon
         h = eval::heldOutReconstruction(hr.model, split.heldFrames);
     });
     return {{"prior", gp::latentPriorName(prior)},
+            {"back_constraints", backConstraints},
             {"N", m.N()},
             {"M", static_cast<int>(m.active.size())},
             {"T", o.outerIterations},
@@ -50,7 +53,7 @@ nlohmann::json benchClip(const Clip& clip, gp::LatentPrior prior, const BenchCon
                          {"measured_once", true}}}};
 }
 
-const BenchRegistration reg("model", "Layout quality (continuity, full-GP yardstick, held-out) per prior on two clips",
+const BenchRegistration reg("model", "Layout quality (continuity, full-GP yardstick, held-out) per prior and with back-constraints on two clips",
                             [](const BenchContext& ctx) {
     const std::string dir = !ctx.mocapDir.empty() ? ctx.mocapDir
                                                   : findShippedMocapFolder(globalOptions().exeDir).value_or("");
@@ -59,7 +62,9 @@ const BenchRegistration reg("model", "Layout quality (continuity, full-GP yardst
     for (const char* trial : {"35_01", "16_01"}) {
         const Clip clip = loadClip(dir + "/asf_amc/" + trial + ".amc");
         nlohmann::json rows = nlohmann::json::array();
-        for (gp::LatentPrior p : {gp::LatentPrior::kNone, gp::LatentPrior::kSmooth, gp::LatentPrior::kPaced}) rows.push_back(benchClip(clip, p, ctx));
+        for (gp::LatentPrior p : {gp::LatentPrior::kNone, gp::LatentPrior::kSmooth, gp::LatentPrior::kPaced})
+            rows.push_back(benchClip(clip, p, false, ctx));
+        rows.push_back(benchClip(clip, gp::LatentPrior::kNone, true, ctx));
         out[trial] = rows;
     }
     return out;
