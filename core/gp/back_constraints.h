@@ -5,9 +5,10 @@
 //   x_n = Σ_r a_r k_bc(y_n, y_{b_r}),   k_bc(y, y') = exp(−‖y − y'‖² / (2ℓ²)),   X = K A,
 //
 // over R basis rows b_r (every ⌈N/R⌉-th training row, R ≤ kMaxBackBasis), ℓ² a quarter of the
-// median squared distance between training rows and basis rows. Training then optimises (ψ, A) in Step 6 and
-// Step 8 has nothing to do: every inactive point follows the mapping, so two frames with similar
-// poses always land close together. The kernel is fixed at construction (it depends on Y only).
+// median squared distance between training rows and basis rows. Training then optimises (ψ, A)
+// in Step 6 and Step 8 has nothing to do: every inactive point follows the mapping, so two frames
+// with similar poses always land close together. The kernel is fixed at construction (it depends
+// on Y only).
 #include <Eigen/Core>
 #include <vector>
 
@@ -19,14 +20,15 @@ namespace mgp::gp {
 
 // Basis rows are capped so that K stays N×R (memory O(N·R), like the training's O(N·M)).
 constexpr int kMaxBackBasis = 500;
-// ℓ² over the median squared pose distance: 1/4 reconstructed held-out frames better than 1 and
-// 1/16 on walk, kick and jump (docs/maths.md §22).
+// ℓ² over the median squared pose distance: 1/4 reconstructed held-out frames better than 1 on
+// walk, kick and jump, and within 0.011° of 1/16 (better on the jump; docs/maths.md §22).
 constexpr double kBackLengthScale2 = 0.25;
 
 class BackConstraint {
 public:
     BackConstraint() = default;
-    // Ybar: N×D centred training rows. Throws std::invalid_argument if N < 2 or every row is equal.
+    // Ybar: N×D centred training rows. Throws std::invalid_argument if N < 2 or most rows are equal
+    // (a zero median distance).
     explicit BackConstraint(const Eigen::MatrixXd& Ybar, int maxBasis = kMaxBackBasis);
 
     bool empty() const { return K_.size() == 0; }
