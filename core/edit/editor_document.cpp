@@ -472,9 +472,7 @@ namespace {
 // `frame` of the primary (open) clip, if an update added one; the last such row when there are several.
 std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, const Eigen::VectorXd& y) {
     for (Eigen::Index r = m.X.rows() - 1; r >= 0; --r) {
-        const auto row = static_cast<std::size_t>(r);
-        if (row >= m.trainingFrames.size() || m.trainingFrames[row] != frame) continue;
-        if (row < m.trainingClips.size() && m.trainingClips[row] != 0) continue;
+        if (m.trainingFrames[static_cast<std::size_t>(r)] != frame || m.rowClip(static_cast<int>(r)) != 0) continue;
         if (m.Y.cols() == y.size() && (m.Y.row(r).transpose() - y).cwiseAbs().maxCoeff() <= 1e-9)
             return Eigen::VectorXd(m.X.row(r).transpose());
     }
