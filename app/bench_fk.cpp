@@ -11,7 +11,7 @@ const BenchRegistration reg("fk", "Forward kinematics and effector Jacobian per 
     const Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk() : loadClip(ctx.mocapDir + "/asf_amc/35_01.amc");
     const PoseLayout layout(clip.skeleton);
     FkState fk;
-    Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, kPoseDofs);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, layout.size());
     const int calls = ctx.quick ? 1000 : 20000;
     std::vector<double> fkSamples, jacSamples;
     volatile double sink = 0.0;

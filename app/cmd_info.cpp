@@ -25,8 +25,9 @@ nlohmann::json clipInfoJson(const Clip& clip) {
     j["frames"] = clip.frameCount();
     j["fps"] = clip.fps;
     j["bones"] = kModelBones - static_cast<int>(missing.size());
-    j["dof"] = kModelDofs;
-    j["rot_dof"] = kPoseDofs;
+    const int rotationDofs = PoseLayout(clip.skeleton).size();
+    j["dof"] = rotationDofs + 3;  // + root translation
+    j["rot_dof"] = rotationDofs;
     j["constant_dofs"] = constantColumns(y);
     j["unmapped"] = clip.unmappedJoints;
     j["missing_bones"] = missing;

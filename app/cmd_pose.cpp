@@ -159,10 +159,10 @@ int runPose(const PoseOptions& o) {
     j["reached"] = reached;
     j["targets"] = constraintsJson(results, false);
     j["pins"] = constraintsJson(results, true);
-    const Eigen::VectorXd y47 = PoseLayout(clip.skeleton).extract(pose);
-    j["pose_deg"] = std::vector<double>(y47.data(), y47.data() + y47.size());
+    const Eigen::VectorXd poseDeg = PoseLayout(clip.skeleton).extract(pose);
+    j["pose_deg"] = std::vector<double>(poseDeg.data(), poseDeg.data() + poseDeg.size());
     // Where the solved pose is in the data: the nearest captured frame over every source clip.
-    const NearestFrame nearest = nearestFrame(y47, m.clipPoseMatrices());
+    const NearestFrame nearest = nearestFrame(poseDeg, m.clipPoseMatrices());
     const std::string nearestClip = m.clipName(nearest.clip);
     j["clip"] = clip.name;
     j["nearest"] = {{"clip", nearestClip}, {"frame", nearest.frame + 1}, {"rms_deg", nearest.rmsDeg}};

@@ -22,6 +22,7 @@
 #include "gp/training_clips.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
+#include "skeleton/pose_layout.h"
 
 namespace mgp::app {
 
@@ -75,7 +76,8 @@ const CommandRegistration reg(
         };
         auto o = std::make_shared<Opts>();
         sub.add_option("clip", o->clips,
-                       "AMC file(s) of one skeleton, e.g. 10_02.amc 10_03.amc (BVH is not supported for training yet)")
+                       "Clip file(s) of one skeleton: AMC of one ASF subject (10_02.amc 10_03.amc) or BVH of one "
+                       "hierarchy (a BVH trains on its own rotation channels; its rest frame is skipped)")
             ->required();
         sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
         sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
@@ -188,7 +190,9 @@ const CommandRegistration reg(
                                      {"frames", frameCounts[static_cast<std::size_t>(c)]},
                                      {"sha256", model.clipSha256(c)}});
             j["clips"] = clipsJson;
+            j["pose_dofs"] = PoseLayout(model.clip.skeleton).size();  // P: 47 for ASF, the channels for BVH
             j["D"] = model.D();
+            j["latent_dim"] = model.latentDim();
             j["M"] = static_cast<int>(model.active.size());
             j["iterations"] = model.iterations;
             j["converged"] = res.converged;

@@ -64,8 +64,8 @@ public:
     const Clip& clip() const { return store_.clip(); }
     bool hasClip() const { return !store_.empty(); }
     bool synthetic() const { return store_.synthetic(); }
-    // Training needs ASF/AMC (or the synthetic clip): BVH is view-only for now.
-    bool trainable() const { return hasClip() && clip().format != ClipFormat::kBvh; }
+    // Any open clip trains (ASF/AMC, BVH, the synthetic clip).
+    bool trainable() const { return hasClip(); }
     int frame() const { return frame_; }
     int frameCount() const { return store_.frameCount(); }
     void setFrame(int frame);  // clamped; ends a drag in progress (accepting it)

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "io/asf_reader.h"
+#include "io/bvh_reader.h"
 #include "io/clip_loader.h"
 #include "skeleton/clip_match.h"
 
@@ -13,8 +14,6 @@ namespace mgp {
 
 namespace {
 namespace fs = std::filesystem;
-
-const char* const kBvhReason = "BVH: training on BVH is not supported yet";
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -27,21 +26,23 @@ bool sameFile(const std::string& a, const std::string& b) {
     return !a.empty() && !b.empty() && fs::equivalent(a, b, ec) && !ec;
 }
 
-// The candidate for `path`, reading each ASF once (`verdicts` caches its verdict by ASF path: a reader
-// error is kept as the reason).
+// The candidate for `path`, reading each skeleton once (`verdicts` caches its verdict by ASF path,
+// or by BVH path: a BVH carries its own; a reader error is kept as the reason).
 TrainingCandidate judge(const Clip& open, const std::string& path, std::map<std::string, std::string>& verdicts) {
     TrainingCandidate c;
     c.path = path;
     c.name = fs::path(path).stem().string();
     const std::string ext = lowerExtension(path);
-    if (ext == ".bvh") {
+    const bool openIsBvh = open.format == ClipFormat::kBvh;
+    if (ext != ".amc" && ext != ".bvh") {
         c.usable = false;
-        c.reason = kBvhReason;
+        c.reason = "expected a clip file (.amc or .bvh), found '" + ext + "'";
         return c;
     }
-    if (ext != ".amc") {
+    if ((ext == ".bvh") != openIsBvh) {
         c.usable = false;
-        c.reason = "expected an ASF/AMC clip (.amc), found '" + ext + "'";
+        c.reason = openIsBvh ? "an ASF/AMC clip: another skeleton than the open BVH (retargeting is not supported)"
+                             : "a BVH clip: another skeleton than the open ASF/AMC (retargeting is not supported)";
         return c;
     }
     if (!fs::is_regular_file(path)) {
@@ -49,18 +50,19 @@ TrainingCandidate judge(const Clip& open, const std::string& path, std::map<std:
         c.reason = "no such file";
         return c;
     }
-    const std::string asf = defaultAsfFor(path);
-    auto it = verdicts.find(asf);
+    const std::string skeletonFile = openIsBvh ? path : defaultAsfFor(path);
+    auto it = verdicts.find(skeletonFile);
     if (it == verdicts.end()) {
         std::string verdict;
         try {
             std::string difference;
-            if (!sameSkeleton(open.skeleton, readAsf(asf).skeleton, &difference))
-                verdict = "another skeleton (" + fs::path(asf).filename().string() + "): " + difference;
+            const Skeleton other = openIsBvh ? readBvh(path).skeleton : readAsf(skeletonFile).skeleton;
+            if (!sameSkeleton(open.skeleton, other, &difference))
+                verdict = "another skeleton (" + fs::path(skeletonFile).filename().string() + "): " + difference;
         } catch (const std::exception& e) {
             verdict = std::string("cannot read its skeleton: ") + e.what();
         }
-        it = verdicts.emplace(asf, verdict).first;
+        it = verdicts.emplace(skeletonFile, verdict).first;
     }
     c.usable = it->second.empty();
     c.reason = it->second;
@@ -78,10 +80,6 @@ std::vector<TrainingCandidate> trainingCandidates(const Clip& open) {
     self.path = open.sourcePath;
     self.name = open.name;
     self.open = true;
-    if (open.format == ClipFormat::kBvh) {
-        self.usable = false;
-        self.reason = kBvhReason;
-    }
     out.push_back(self);
     if (!self.usable || open.sourcePath.empty()) return out;
     std::error_code ec;
@@ -110,14 +108,6 @@ std::vector<TrainingCandidate> trainingCandidates(const Clip& open) {
 
 TrainingCandidate trainingCandidate(const Clip& open, const std::string& path) {
     std::map<std::string, std::string> verdicts;
-    if (open.format == ClipFormat::kBvh) {
-        TrainingCandidate c;
-        c.path = path;
-        c.name = fs::path(path).stem().string();
-        c.usable = false;
-        c.reason = "the open clip is BVH: training on BVH is not supported yet";
-        return c;
-    }
     if (sameFile(path, open.sourcePath)) {
         TrainingCandidate c;
         c.path = path;

@@ -2,11 +2,11 @@
 // Which clips Model ▸ Train on clips… offers beside the open clip, and why it refuses the others
 // (docs/architecture.md, ui/train_clips_window.h). The open clip comes first and is always part
 // of the training (it becomes the model's primary clip). The other candidates are the clip files
-// in the open clip's folder: an AMC whose ASF skeleton is the open clip's (sameSkeleton,
-// skeleton/clip_match.h: clips of one subject) is offered; an AMC of another skeleton (or whose
-// ASF cannot be read) and every BVH are listed as refused, with the reason, so the user sees why
-// a file next to the clip is not offered. Only skeletons are read here (one ASF per subject), not
-// the motions: a folder of many clips lists quickly.
+// in the open clip's folder: a clip whose skeleton is the open clip's (sameSkeleton,
+// skeleton/clip_match.h: AMCs of one ASF subject, or BVH files of one hierarchy) is offered; a
+// clip of another skeleton or format (or whose skeleton cannot be read) is listed as refused,
+// with the reason, so the user sees why a file next to the clip is not offered. For AMC clips
+// only skeletons are read (one ASF per subject), not the motions; a BVH is read whole.
 #include <string>
 #include <vector>
 
@@ -23,8 +23,7 @@ struct TrainingCandidate {
 };
 
 // The open clip first, then the offered clips, then the refused ones, each group by name. The
-// open clip is refused itself when it is BVH (training on BVH is not supported yet); then no
-// other clip is listed.
+// open clip is always usable.
 std::vector<TrainingCandidate> trainingCandidates(const Clip& open);
 // One file the user adds by path: the same checks (a missing or unreadable file is refused with
 // the reader's message).

@@ -10,14 +10,13 @@ TrainingJob::TrainingJob()
               "training failed: ") {}
 
 std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile) {
-    if (clip.format == ClipFormat::kBvh) return "BVH clips are view-only: training on BVH is not supported yet";
     if (clip.frameCount() < 3) return "expected at least 3 frames to train on, found " + std::to_string(clip.frameCount());
     if (worker_.busy()) return "a training run is already in progress";  // before copying the clip
     gp::TrainingClip one;
     one.clip = clip;
     unwrapClip(one.clip);  // the model's clip must match its (unwrapped) training rows
     one.path = sourceFile;
-    one.frames = gp::selectFrames(clip.frameCount(), gp::FrameSelection{}, clip.name);  // every frame
+    one.frames = gp::trainingFrames(clip.frameCount(), clip.restFrame, gp::FrameSelection{}, clip.name);  // all but a rest frame
     std::vector<gp::TrainingClip> clips;
     clips.push_back(std::move(one));
     return startRequest(Request{std::move(clips), gp::FrameSelection{}, options});
@@ -26,8 +25,6 @@ std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options
 std::string TrainingJob::start(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection,
                                const gp::TrainOptions& options) {
     if (clips.empty()) return "expected at least one clip to train on";
-    for (const gp::TrainingClip& c : clips)
-        if (c.clip.format == ClipFormat::kBvh) return "BVH clips are view-only: training on BVH is not supported yet";
     return startRequest(Request{std::move(clips), selection, options});
 }
 

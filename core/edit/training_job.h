@@ -35,7 +35,7 @@ public:
     TrainingJob& operator=(const TrainingJob&) = delete;
 
     // Starts training on every frame of `clip` (ASF/AMC or synthetic). Returns "" or why not
-    // (a job is running, BVH clip, fewer than 3 frames).
+    // (a job is running, fewer than 3 frames).
     std::string start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile = "");
     // Starts training on clips checked by gp::prepareTrainingClips (the first becomes the model's
     // primary clip; `selection` is recorded in the model's settings). "" or why not.

@@ -32,10 +32,10 @@ EditingRange EditingRangeJob::run() const {
         step.residualCm = res.constraints.empty() ? std::numeric_limits<double>::infinity() : res.constraints[0].residualCm;
         step.lik = res.lik;
         step.reach = res.reached;
-        const Eigen::VectorXd pose47 = layout.extract(res.pose);
-        step.verdict = tests->judge(sk, pose47, delta == 0 ? nullptr : &previous);
+        const Eigen::VectorXd poseDeg = layout.extract(res.pose);
+        step.verdict = tests->judge(sk, poseDeg, delta == 0 ? nullptr : &previous);
         step.accepted = step.reach && step.verdict.all();
-        step.pose47 = pose47;
+        step.poseDeg = poseDeg;
         const bool pass[6] = {step.accepted, step.reach, step.verdict.ranges, step.verdict.nearest, step.verdict.density,
                               step.verdict.continuity};
         for (int k = 0; k < 6; ++k) {
@@ -51,7 +51,7 @@ EditingRange EditingRangeJob::run() const {
             }
         }
         out.steps.push_back(step);
-        previous = pose47;
+        previous = poseDeg;
         req.start = res.pose;
         req.startX = res.x;
         bool anyPassing = false;

@@ -20,7 +20,7 @@ struct EditingStep {
     NaturalnessVerdict verdict;
     bool accepted = false;     // reach and every naturalness test
     bool updatedModel = false; // an adaptive update was applied after this step
-    Eigen::VectorXd pose47;    // the solved pose (degrees, §2.3 order)
+    Eigen::VectorXd poseDeg;   // the solved pose vector (degrees, skeleton/pose_layout.h)
 };
 
 struct EditingRange {

@@ -239,9 +239,9 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     if (heldFrames.empty() || model.N() == 0) return rep;
     const Eigen::MatrixXd poses = poseMatrix(model.clip);
     const gp::ActiveSetPosterior pm = model.posterior();
-    // Non-root DOFs: 3..46 of the 47-vector.
-    constexpr int kFirst = 3, kCount = kPoseDofs - kFirst;
-    Eigen::MatrixXd trainFull(model.N(), kPoseDofs);
+    // Non-root DOFs: 3..P−1 of the pose vector.
+    const int kFirst = 3, kCount = static_cast<int>(poses.cols()) - kFirst;
+    Eigen::MatrixXd trainFull(model.N(), poses.cols());
     for (int i = 0; i < model.N(); ++i) trainFull.row(i) = model.fullPose(model.Y.row(i).transpose()).transpose();
     double sse = 0.0, sseNearest = 0.0, sseTime = 0.0;
     // Training rows by frame, and the median frame gap (the segmentation of the temporal prior).

@@ -24,7 +24,7 @@ SecondDifferenceStats secondDifferences(const std::vector<Pose>& frames, const S
     for (int c = std::max(first, 1); c <= std::min(last, n - 2); ++c) {
         const Eigen::VectorXd a = layout.extract(frames[c - 1]), b = layout.extract(frames[c]), d = layout.extract(frames[c + 1]);
         double worst = 0.0;
-        for (int k = 0; k < kPoseDofs; ++k) {
+        for (int k = 0; k < layout.size(); ++k) {
             if (layout.joint(k) < 0) continue;
             worst = std::max(worst, std::abs(wrap180(d[k] - b[k]) - wrap180(b[k] - a[k])));
         }
@@ -42,7 +42,7 @@ double largestAngleChangeDeg(const Pose& a, const Pose& b, const Skeleton& skele
     const PoseLayout layout(skeleton);
     const Eigen::VectorXd ya = layout.extract(a), yb = layout.extract(b);
     double worst = 0.0;
-    for (int k = 0; k < kPoseDofs; ++k)
+    for (int k = 0; k < layout.size(); ++k)
         if (layout.joint(k) >= 0) worst = std::max(worst, std::abs(wrap180(ya[k] - yb[k])));
     return worst;
 }

@@ -21,10 +21,10 @@ const char* boneOfEffector(Effector e) {
 }
 }  // namespace
 
-Eigen::VectorXd NaturalnessTests::bodyShape(const Skeleton& skeleton, const Eigen::VectorXd& pose47) {
+Eigen::VectorXd NaturalnessTests::bodyShape(const Skeleton& skeleton, const Eigen::VectorXd& poseDeg) {
     Pose pose;
     pose.anglesDeg.assign(skeleton.jointCount(), Eigen::Vector3d::Zero());
-    PoseLayout(skeleton).apply(pose47.data(), pose);
+    PoseLayout(skeleton).apply(poseDeg.data(), pose);
     FkState fk;
     forwardKinematics(skeleton, pose, fk);
     // Heading: yaw of the root's forward (+z) axis.
@@ -46,7 +46,7 @@ NaturalnessTests::NaturalnessTests(std::vector<ReferenceFrame> frames, Effector 
         if (std::string(modelBoneNames()[b]) == boneOfEffector(excluded)) boneMask_[b] = false;
     const int n = size();
     shapes_.resize(n, 3 * kModelBones);
-    poses_.resize(n, kPoseDofs);
+    poses_.resize(n, n > 0 ? PoseLayout(frames_[0].clip->skeleton).size() : kAsfPoseDofs);
     // Unwrapped per clip, as the model sees them.
     std::vector<const Clip*> clips;
     for (const auto& f : frames_)
@@ -69,7 +69,7 @@ NaturalnessTests::NaturalnessTests(std::vector<ReferenceFrame> frames, Effector 
     std::sort(d.begin(), d.end());
     tauNN_ = d[std::min<std::size_t>(d.size() - 1, static_cast<std::size_t>(0.99 * (d.size() - 1)))];
     // Density on the columns that move in R.
-    for (int k = 0; k < kPoseDofs; ++k)
+    for (int k = 0; k < static_cast<int>(qMax_.size()); ++k)
         if (qMax_[k] - qMin_[k] > 1e-6) densityColumns_.push_back(k);
     Eigen::MatrixXd cols(n, densityColumns_.size());
     for (std::size_t c = 0; c < densityColumns_.size(); ++c) cols.col(c) = poses_.col(densityColumns_[c]);
@@ -97,7 +97,7 @@ double NaturalnessTests::nearestDistance(const Eigen::VectorXd& shape, int skipG
 NaturalnessVerdict NaturalnessTests::judge(const Skeleton& skeleton, const Eigen::VectorXd& pose,
                                            const Eigen::VectorXd* previous) const {
     NaturalnessVerdict v;
-    for (int k = 0; k < kPoseDofs; ++k) {
+    for (int k = 0; k < static_cast<int>(qMax_.size()); ++k) {
         const double margin = std::max(5.0, 0.1 * (qMax_[k] - qMin_[k]));
         const double excess = std::max(qMin_[k] - margin - pose[k], pose[k] - qMax_[k] - margin);
         if (excess > 0.0) {

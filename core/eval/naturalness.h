@@ -53,7 +53,7 @@ public:
     int size() const { return static_cast<int>(frames_.size()); }
     const Eigen::MatrixXd& referencePoses() const { return poses_; }  // |R| × 47, unwrapped per clip
     // Normalised bone-end positions (root at origin, heading removed), 22×3 flattened, cm.
-    static Eigen::VectorXd bodyShape(const Skeleton& skeleton, const Eigen::VectorXd& pose47);
+    static Eigen::VectorXd bodyShape(const Skeleton& skeleton, const Eigen::VectorXd& poseDeg);
     double nearestDistance(const Eigen::VectorXd& shape, int skipGroup = -1, int skipFrom = 0, int skipTo = -1) const;
 
 private:

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "skeleton/pose_layout.h"
 #include "skeleton/rotation.h"
 
 namespace mgp {
@@ -12,8 +11,8 @@ NearestPose nearestPose(const Eigen::VectorXd& pose, const Eigen::MatrixXd& cand
     NearestPose best;
     for (Eigen::Index i = 0; i < candidates.rows(); ++i) {
         double sum = 0.0;
-        for (int k = 3; k < kPoseDofs; ++k) sum += std::pow(wrap180(pose[k] - candidates(i, k)), 2);
-        const double rms = std::sqrt(sum / (kPoseDofs - 3));
+        for (Eigen::Index k = 3; k < pose.size(); ++k) sum += std::pow(wrap180(pose[k] - candidates(i, k)), 2);
+        const double rms = std::sqrt(sum / static_cast<double>(pose.size() - 3));
         if (rms < best.rmsDeg) best = {static_cast<int>(i), rms};
     }
     return best;

@@ -1,7 +1,8 @@
 #pragma once
 // How close a pose is to real ones, in joint angles (docs/maths.md §14, Table 2's learned-vs-plain
-// comparison): the RMS over the 44 non-root DOFs of the §2.3 pose (indices 3..46), each
-// difference wrapped to ±180°, to the nearest of a set of candidate poses.
+// comparison): the RMS over the non-root DOFs of the pose vector (indices 3..P−1: the 44 of the
+// ASF vector, every non-root rotation channel of a BVH one), each difference wrapped to ±180°, to
+// the nearest of a set of candidate poses.
 #include <Eigen/Core>
 
 #include <limits>
@@ -15,9 +16,9 @@ struct NearestPose {
     double rmsDeg = std::numeric_limits<double>::infinity();
 };
 
-// pose: 47 DOFs (degrees); candidates: one pose per row (the first row wins a tie).
+// pose: P ≥ 4 DOFs (degrees); candidates: one pose per row (P columns) (the first row wins a tie).
 NearestPose nearestPose(const Eigen::VectorXd& pose, const Eigen::MatrixXd& candidates);
-// The nearest captured frame over several clips' pose matrices (clipPoses[c]: one 47-DOF pose per
+// The nearest captured frame over several clips' pose matrices (clipPoses[c]: one pose vector per
 // frame of clip c): which clip, which frame of it, how far. Ties go to the earlier clip, then the
 // earlier frame. clip = row = −1 when there are no frames.
 struct NearestFrame {

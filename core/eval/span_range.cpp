@@ -23,8 +23,8 @@ nlohmann::json SpanRangeJob::run() const {
         job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, direction * delta, 0), Eigen::Vector3d::Zero()};
         job.run();
         const SpanQuality& q = job.quality;
-        const Eigen::VectorXd pose47 = layout.extract(job.frames[f]);
-        const NaturalnessVerdict v = tests->judge(clip.skeleton, pose47, delta == 0 ? nullptr : &previous);
+        const Eigen::VectorXd poseDeg = layout.extract(job.frames[f]);
+        const NaturalnessVerdict v = tests->judge(clip.skeleton, poseDeg, delta == 0 ? nullptr : &previous);
         const bool smooth = q.edited.p95Deg <= 1.5 * q.captured.p95Deg + 2.0 && q.edited.maxDeg <= 1.5 * q.captured.maxDeg + 5.0;
         const bool reach = q.worstKeyErrorCm <= 0.5;
         if (delta % 10 == 0 || !(reach && smooth && v.all()))
@@ -37,7 +37,7 @@ nlohmann::json SpanRangeJob::run() const {
             break;
         }
         range = delta;
-        previous = pose47;
+        previous = poseDeg;
     }
     return {{"combined", range}, {"first_failure", failed.empty() ? "none up to max_delta" : failed}, {"steps", steps},
             {"keys", {f - 21 + 1, f + 1, f + 21 + 1}}};

@@ -173,7 +173,7 @@ nlohmann::json runTable2(const std::string& dir, const Table2Settings& s, const 
             plain.solve();
             const Eigen::VectorXd plainPose = PoseLayout(clip.skeleton).extract(plain.pose);
             compare.push_back({{"delta_cm", delta},
-                               {"learned", {{"residual_cm", learned.residualCm}, {"nn_rms_deg", nearestPoseRmsDeg(learned.pose47, candidates)}}},
+                               {"learned", {{"residual_cm", learned.residualCm}, {"nn_rms_deg", nearestPoseRmsDeg(learned.poseDeg, candidates)}}},
                                {"plain", {{"residual_cm", plain.results[0].residualCm}, {"nn_rms_deg", nearestPoseRmsDeg(plainPose, candidates)}}}});
         }
         entry["learned_vs_plain"] = compare;

@@ -23,15 +23,15 @@ Eigen::MatrixXd GpModel::activeX() const {
 ActiveSetPosterior GpModel::posterior() const { return ActiveSetPosterior(kernel(), activeX(), activeYhat(), mu, w); }
 
 Eigen::VectorXd GpModel::fullPose(const Eigen::VectorXd& kept) const {
-    Eigen::VectorXd full = Eigen::VectorXd::Zero(kPoseDofs);
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keptColumns.size() + constantColumns.size()));
     for (std::size_t k = 0; k < keptColumns.size(); ++k) full[keptColumns[k]] = kept[k];
     for (std::size_t k = 0; k < constantColumns.size(); ++k) full[constantColumns[k]] = constantValues[k];
     return full;
 }
 
-Eigen::VectorXd GpModel::keptPose(const Eigen::VectorXd& full47) const {
+Eigen::VectorXd GpModel::keptPose(const Eigen::VectorXd& full) const {
     Eigen::VectorXd kept(keptColumns.size());
-    for (std::size_t k = 0; k < keptColumns.size(); ++k) kept[k] = full47[keptColumns[k]];
+    for (std::size_t k = 0; k < keptColumns.size(); ++k) kept[k] = full[keptColumns[k]];
     return kept;
 }
 

@@ -11,8 +11,9 @@
 // clip 0), so a single-clip model and its file are exactly as before multi-clip training.
 //
 // Units and conventions: poses in DEGREES in the §2.3 order; Y and μ hold only the kept
-// (non-constant) columns, in ascending order of their index into the 47-vector; constant columns
-// are held at `constantValues`. Latent X is N×d (d = 2 for the 47-DOF pose). Frame numbers are
+// (non-constant) columns, in ascending order of their index into the pose vector (P entries:
+// skeleton/pose_layout.h, 47 for ASF clips); constant columns
+// are held at `constantValues`. Latent X is N×d (eq. 4: d = 2 for D < 60, else 3). Frame numbers are
 // clip indices counted from 0 (the CLI prints them +1).
 #include <Eigen/Core>
 #include <string>
@@ -54,13 +55,13 @@ struct GpModel {
     Eigen::MatrixXd X;          // N×d latent points
     Eigen::MatrixXd Y;          // N×D training rows (kept columns, uncentred, degrees)
     std::vector<int> active;    // active set (row indices into X/Y)
-    std::vector<int> keptColumns;      // D indices into the 47-vector
-    std::vector<int> constantColumns;  // removed indices into the 47-vector
+    std::vector<int> keptColumns;      // D indices into the pose vector
+    std::vector<int> constantColumns;  // removed indices into the pose vector
     Eigen::VectorXd constantValues;    // their values (column means)
     std::vector<int> trainingFrames;   // frame index (0-based) of each training row within its clip
     std::vector<int> trainingClips;    // clip index of each training row; empty = all clip 0
 
-    Clip clip;                  // the primary source clip (47-DOF poses, root translations, bones)
+    Clip clip;                  // the primary source clip (pose vectors, root translations, bones)
     std::string sourceFile;     // file name of the primary clip (no directory), provenance only
     std::string sourceSha256;   // SHA-256 of the source file ("" for a synthetic clip)
     std::vector<SourceClip> moreClips;  // clips 1..K−1 (empty for a single-clip model)
@@ -91,7 +92,7 @@ struct GpModel {
     int rowClip(int r) const { return trainingClips.empty() ? 0 : trainingClips[static_cast<std::size_t>(r)]; }
     // The training rows of clip c, in row order.
     std::vector<int> rowsOfClip(int c) const;
-    // poseMatrix of every source clip, in clip order (one 47-DOF pose per frame).
+    // poseMatrix of every source clip, in clip order (one pose vector per frame).
     std::vector<Eigen::MatrixXd> clipPoseMatrices() const;
     int D() const { return static_cast<int>(mu.size()); }
     int latentDim() const { return static_cast<int>(X.cols()); }
@@ -101,9 +102,9 @@ struct GpModel {
     Eigen::MatrixXd activeX() const;
     // The §6.2 precomputation for IK and prediction.
     ActiveSetPosterior posterior() const;
-    // Expands kept columns to the full 47-vector (constants filled in).
+    // Expands kept columns to the full pose vector (constants filled in).
     Eigen::VectorXd fullPose(const Eigen::VectorXd& kept) const;
-    Eigen::VectorXd keptPose(const Eigen::VectorXd& full47) const;
+    Eigen::VectorXd keptPose(const Eigen::VectorXd& full) const;
 };
 
 // The first of the model's clips that holds the same capture as `open` (sameCapture,

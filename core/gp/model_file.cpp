@@ -27,6 +27,9 @@ namespace {
 using nlohmann::json;
 
 constexpr double kMaxAbsLogParam = 100.0;
+// An upper bound on D read before the clip (three rotations for each of 1000 joints); the clip's
+// own pose vector then fixes it exactly.
+constexpr int kMaxPoseColumns = 3000;
 
 json vecJson(const Eigen::VectorXd& v) {
     json a = json::array();
@@ -197,9 +200,10 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         const int n = needInt(j, "N", file), D = needInt(j, "D", file);
         const int d = needInt(j, "latent_dim", file);
         // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
-        // the 47 pose DOFs), else a declared 2^31 − 1 allocated gigabytes.
-        if (n < 1 || D < 1 || D > kPoseDofs || d < 1 || d > kPoseDofs)
-            throwParseError(file, 0, "positive N, D ≤ 47 and latent_dim ≤ 47",
+        // the pose DOFs, and D never exceeds three per joint of any file we read), else a
+        // declared 2^31 − 1 allocated gigabytes. The clip's pose vector checks D exactly below.
+        if (n < 1 || D < 1 || D > kMaxPoseColumns || d < 1 || d > D)
+            throwParseError(file, 0, "positive N, D ≤ " + std::to_string(kMaxPoseColumns) + " and latent_dim ≤ D",
                             "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));
         m.w = readVec(need(j, "w", file), file, "w", D);
         m.mu = readVec(need(j, "mu", file), file, "mu", D);
@@ -230,19 +234,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
         m.constantValues = readVec(need(j, "constant_values", file), file, "constant_values",
                                    static_cast<Eigen::Index>(m.constantColumns.size()));
-        if (static_cast<int>(m.keptColumns.size()) != D ||
-            m.keptColumns.size() + m.constantColumns.size() != static_cast<std::size_t>(kPoseDofs))
-            throwParseError(file, 0, "kept and constant columns that partition the 47 DOFs",
-                            std::to_string(m.keptColumns.size()) + " + " + std::to_string(m.constantColumns.size()));
-        std::vector<char> seen(kPoseDofs, 0);
-        for (int c : m.keptColumns) {
-            if (c < 0 || c >= kPoseDofs || seen[c]) throwParseError(file, 0, "distinct columns 0..46", std::to_string(c));
-            seen[c] = 1;
-        }
-        for (int c : m.constantColumns) {
-            if (c < 0 || c >= kPoseDofs || seen[c]) throwParseError(file, 0, "distinct columns 0..46", std::to_string(c));
-            seen[c] = 1;
-        }
+        if (static_cast<int>(m.keptColumns.size()) != D)
+            throwParseError(file, 0, std::to_string(D) + " kept columns (D)", std::to_string(m.keptColumns.size()));
         m.trainingFrames = readInts(need(j, "training_frames", file), file, "training_frames");
         if (static_cast<int>(m.trainingFrames.size()) != n)
             throwParseError(file, 0, std::to_string(n) + " training frames", std::to_string(m.trainingFrames.size()));
@@ -281,6 +274,18 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.sourceSha256 = need(src, "sha256", file).get<std::string>();
         m.clip = clipFromJson(need(j, "clip", file), file);
         if (ver.get<long long>() >= 2) readMoreClips(j, file, n, m);
+        // Kept and constant columns partition the clip's pose vector (47 DOFs for ASF clips).
+        const int P = PoseLayout(m.clip.skeleton).size();
+        if (m.keptColumns.size() + m.constantColumns.size() != static_cast<std::size_t>(P))
+            throwParseError(file, 0, "kept and constant columns that partition the " + std::to_string(P) + " pose DOFs",
+                            std::to_string(m.keptColumns.size()) + " + " + std::to_string(m.constantColumns.size()));
+        std::vector<char> seen(static_cast<std::size_t>(P), 0);
+        for (const std::vector<int>* columns : {&m.keptColumns, &m.constantColumns})
+            for (int c : *columns) {
+                if (c < 0 || c >= P || seen[static_cast<std::size_t>(c)])
+                    throwParseError(file, 0, "distinct columns 0.." + std::to_string(P - 1), std::to_string(c));
+                seen[static_cast<std::size_t>(c)] = 1;
+            }
         // Training rows: each row's clip's pose at its training frame, kept columns.
         const std::vector<Eigen::MatrixXd> poses = m.clipPoseMatrices();
         m.Y.resize(n, D);

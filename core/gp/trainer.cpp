@@ -16,24 +16,24 @@
 
 namespace mgp::gp {
 
-TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames) {
-    if (poses47.cols() != kPoseDofs) throw std::invalid_argument("prepareTrainingData: expected 47 columns");
-    if (static_cast<Eigen::Index>(frames.size()) != poses47.rows())
+TrainingData prepareTrainingData(const Eigen::MatrixXd& poses, const std::vector<int>& frames) {
+    if (poses.cols() < 1) throw std::invalid_argument("prepareTrainingData: expected pose columns");
+    if (static_cast<Eigen::Index>(frames.size()) != poses.rows())
         throw std::invalid_argument("prepareTrainingData: one frame number per row");
-    if (poses47.rows() < 3)
-        throw std::invalid_argument("expected at least 3 training frames, found " + std::to_string(poses47.rows()));
+    if (poses.rows() < 3)
+        throw std::invalid_argument("expected at least 3 training frames, found " + std::to_string(poses.rows()));
     // A NaN or Inf angle would make every kernel value, and so the saved model, NaN.
-    for (Eigen::Index t = 0; t < poses47.rows(); ++t)
-        for (Eigen::Index k = 0; k < poses47.cols(); ++k)
-            if (!std::isfinite(poses47(t, k)))
+    for (Eigen::Index t = 0; t < poses.rows(); ++t)
+        for (Eigen::Index k = 0; k < poses.cols(); ++k)
+            if (!std::isfinite(poses(t, k)))
                 throw std::invalid_argument("expected finite training poses, found " +
-                                            std::string(std::isnan(poses47(t, k)) ? "NaN" : "Inf") + " at clip frame " +
+                                            std::string(std::isnan(poses(t, k)) ? "NaN" : "Inf") + " at clip frame " +
                                             std::to_string(frames[static_cast<std::size_t>(t)] + 1) + ", pose DOF " +
                                             std::to_string(k));
     TrainingData out;
     out.frames = frames;
-    out.constantColumns = constantColumns(poses47, 1e-6);
-    for (int k = 0; k < kPoseDofs; ++k)
+    out.constantColumns = constantColumns(poses, 1e-6);
+    for (int k = 0; k < static_cast<int>(poses.cols()); ++k)
         if (!std::binary_search(out.constantColumns.begin(), out.constantColumns.end(), k))
             out.keptColumns.push_back(k);
     // Nothing varies: there is nothing to learn (and D = 0 would divide by zero in the gauge).
@@ -43,9 +43,9 @@ TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vect
             "same pose in every frame)");
     out.constantValues.resize(out.constantColumns.size());
     for (std::size_t k = 0; k < out.constantColumns.size(); ++k)
-        out.constantValues[k] = poses47.col(out.constantColumns[k]).mean();
-    out.Y.resize(poses47.rows(), out.keptColumns.size());
-    for (std::size_t k = 0; k < out.keptColumns.size(); ++k) out.Y.col(k) = poses47.col(out.keptColumns[k]);
+        out.constantValues[k] = poses.col(out.constantColumns[k]).mean();
+    out.Y.resize(poses.rows(), out.keptColumns.size());
+    for (std::size_t k = 0; k < out.keptColumns.size(); ++k) out.Y.col(k) = poses.col(out.keptColumns[k]);
     out.mu = out.Y.colwise().mean().transpose();
     return out;
 }
@@ -123,7 +123,8 @@ void TrainOptions::validate() const {
 Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::move(data)), opt_(options) {
     opt_.validate();
     const Eigen::MatrixXd Ybar = data_.Y.rowwise() - data_.mu.transpose();
-    const int d = latentDimensionFor(kPoseDofs);  // eq. 4 on the 47-DOF pose vector: d = 2
+    // Eq. 4 on the varying DOFs: d = 2 for every ASF clip (at most 47), 3 for a BVH with D ≥ 60.
+    const int d = latentDimensionFor(static_cast<int>(data_.Y.cols()));
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
     if (opt_.prior == LatentPrior::kSmooth)
@@ -274,7 +275,7 @@ TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const 
     if (clips.size() == 1) return trainingDataFromClip(*clips[0], frames[0]);
     std::size_t n = 0;
     for (const auto& f : frames) n += f.size();
-    Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), kPoseDofs);
+    Eigen::MatrixXd rows(static_cast<Eigen::Index>(n), PoseLayout(clips[0]->skeleton).size());
     std::vector<int> allFrames, clipOf;
     for (std::size_t c = 0; c < clips.size(); ++c) {
         const Eigen::MatrixXd all = poseMatrix(*clips[c]);

@@ -80,8 +80,8 @@ struct TrainingData {
     std::vector<int> frames;           // frame index of each row within its clip
     std::vector<int> clips;            // clip index of each row (empty: all one clip, clip 0)
 };
-// poses47: N×47 (unwrapped); frames: clip frame index of each row (size N).
-TrainingData prepareTrainingData(const Eigen::MatrixXd& poses47, const std::vector<int>& frames);
+// poses: N×P pose vectors (skeleton/pose_layout.h, unwrapped); frames: clip frame index of each row.
+TrainingData prepareTrainingData(const Eigen::MatrixXd& poses, const std::vector<int>& frames);
 // The rows of the clip's unwrapped pose matrix at `frames` (clip indices, 0-based).
 TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& frames);
 // Several clips of one skeleton: the rows of clips[c] at frames[c], clip after clip, with

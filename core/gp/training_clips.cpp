@@ -23,6 +23,14 @@ std::vector<int> selectFrames(int frameCount, const FrameSelection& s, const std
     return frames;
 }
 
+std::vector<int> trainingFrames(int frameCount, bool restFrame, const FrameSelection& selection,
+                                const std::string& name) {
+    std::vector<int> frames = selectFrames(frameCount, selection, name);
+    // A converter's rest or T-pose (a BVH's frame 1) is not captured motion: never a training row.
+    if (restFrame && !frames.empty() && frames.front() == 0) frames.erase(frames.begin());
+    return frames;
+}
+
 std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const std::vector<std::string>& paths,
                                                const FrameSelection& selection) {
     if (clips.empty() || clips.size() != paths.size())
@@ -33,8 +41,6 @@ std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const st
         Clip& clip = clips[i];
         const std::string& path = paths[i];
         const std::string shown = path.empty() ? clip.name : path;
-        if (clip.format == ClipFormat::kBvh)
-            throw TrainingInputError("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + shown + "')");
         if (!out.empty()) {
             std::string difference;
             if (!sameSkeleton(out.front().clip.skeleton, clip.skeleton, &difference))
@@ -46,7 +52,7 @@ std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const st
             if (c.clip.name == clip.name)
                 throw TrainingInputError("expected clips with distinct names (file stems), found " + clip.name + " twice");
         TrainingClip t;
-        t.frames = selectFrames(clip.frameCount(), selection, clip.name);
+        t.frames = trainingFrames(clip.frameCount(), clip.restFrame, selection, clip.name);
         rows += t.frames.size();
         unwrapClip(clip);
         t.path = path;

@@ -53,10 +53,10 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     D_ = m.D();
     n_ = d_ + D_;
     latentStepBound_ = 0.5 / std::sqrt(m.kernel().gamma());  // half the RBF length scale
-    yOfDof_.assign(kPoseDofs, -1);
+    yOfDof_.assign(layout_.size(), -1);
     for (int k = 0; k < D_; ++k) yOfDof_[m.keptColumns[k]] = k;
     for (int a = 0; a < 3; ++a) rootY_[a] = yOfDof_[a];  // DOFs 0-2 are the root rotation
-    full_.resize(kPoseDofs);
+    full_.resize(layout_.size());
     x_.resize(d_);
     y_.resize(D_);
     gx_.resize(d_);
@@ -67,10 +67,10 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     xP_.resize(d_);
     for (Eigen::VectorXd* v : {&xR_, &gR_, &sR_, &xRt_, &gRt_}) v->resize(d_);
     HR_.resize(d_, d_);
-    jac_.resize(3, kPoseDofs);
+    jac_.resize(3, layout_.size());
     for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &zSoc_, &delta_, &deltaT_, &tmp_, &rhs_}) v->resize(n_);
     for (Eigen::MatrixXd* m : {&H_, &C_, &Hm_, &Hd_}) m->resize(n_, n_);
-    hc_.resize(kPoseDofs, kPoseDofs);
+    hc_.resize(layout_.size(), layout_.size());
 }
 
 std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
@@ -110,7 +110,7 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
     // Held DOFs keep their values even on a constant column (the prior never sees those).
     heldY_.clear();
     for (const HeldDof& h : request.held)
-        for (int dof = 0; dof < kPoseDofs; ++dof)
+        for (int dof = 0; dof < layout_.size(); ++dof)
             if (layout_.joint(dof) == h.joint && layout_.axis(dof) == h.axis) {
                 full_[dof] = h.valueDeg;
                 if (yOfDof_[dof] >= 0) heldY_.push_back(yOfDof_[dof]);
@@ -233,7 +233,7 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             scatterJacobian(Aall_, correctionRow_[k]);
             eAt_.segment<3>(correctionRow_[k]) = e;  // the residual at z; ê adds the step's linear change
         }
-        for (int a = 0; a < kPoseDofs; ++a) {
+        for (int a = 0; a < layout_.size(); ++a) {
             const int ka = yOfDof_[a];
             if (ka < 0 || jac_.col(a).isZero(0.0)) continue;
             g_[d_ + ka] += kappa * jac_.col(a).dot(e);
@@ -339,16 +339,16 @@ void ConstrainedIkSolver::freezeHeld(bool curvature) {
 
 void ConstrainedIkSolver::scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const {
     into.middleRows<3>(row).setZero();
-    for (int a = 0; a < kPoseDofs; ++a)
+    for (int a = 0; a < layout_.size(); ++a)
         if (yOfDof_[a] >= 0) into.block<3, 1>(row, d_ + yOfDof_[a]) = jac_.col(a);
 }
 
 void ConstrainedIkSolver::addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda) {
     effectorHessianContracted(version_->model->clip.skeleton, layout_, fk_, pose_, e, lambda, hc_);
-    for (int a = 0; a < kPoseDofs; ++a) {
+    for (int a = 0; a < layout_.size(); ++a) {
         const int ka = yOfDof_[a];
         if (ka < 0) continue;
-        for (int b = 0; b < kPoseDofs; ++b)
+        for (int b = 0; b < layout_.size(); ++b)
             if (yOfDof_[b] >= 0) C_(d_ + ka, d_ + yOfDof_[b]) += hc_(a, b);
     }
 }

@@ -16,13 +16,13 @@
 //   - Root orientation: y's three root rotations carry the stiff quadratic ½ k_root ‖Δ‖² (per
 //     degree²) around r_ref (the drag's starting root rotation), so the whole body turns or tilts
 //     only as much as the targets need once the limbs alone cost more than k_root·Δ.
-//   - The root translation, the model's constant columns and DOFs outside the 47-vector stay at
+//   - The root translation, the model's constant columns and DOFs outside the pose vector stay at
 //     the start pose's (constants: the model's) values.
 //   - Held DOFs (rotate joint): each `held` entry fixes one joint angle at its value. It is
 //     removed from the unknowns (its gradient entry is 0 and its Hessian row and column are those
 //     of the identity, its Jacobian columns 0), so the step never moves it and it ends exactly at
 //     its value, while the rest of the pose is the most likely one under the prior given it
-//     (docs/maths-ik.md §7). A held DOF on a constant column or outside the 47-vector is simply
+//     (docs/maths-ik.md §7). A held DOF on a constant column or outside the pose vector is simply
 //     set in the pose.
 //
 // Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
@@ -171,7 +171,7 @@ private:
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     int d_ = 0, D_ = 0, n_ = 0;
-    std::vector<int> yOfDof_;  // 47-index → index into y (−1 if constant)
+    std::vector<int> yOfDof_;  // pose-vector index → index into y (−1 if constant)
     std::vector<int> heldY_;   // indices into y of the request's held DOFs
     int rootY_[3] = {-1, -1, -1};
     double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)

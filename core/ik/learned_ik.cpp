@@ -14,13 +14,13 @@ LearnedIkSolver::LearnedIkSolver(gp::ModelVersionPtr version)
     const gp::GpModel& m = *version_->model;
     d_ = m.latentDim();
     D_ = m.D();
-    full_.resize(kPoseDofs);
-    gradFull_.resize(kPoseDofs);
+    full_.resize(layout_.size());
+    gradFull_.resize(layout_.size());
     x_.resize(d_);
     y_.resize(D_);
     gx_.resize(d_);
     gy_.resize(D_);
-    jac_.resize(3, kPoseDofs);
+    jac_.resize(3, layout_.size());
     bestZ_.resize(d_ + D_);
     scale_ = Eigen::VectorXd::Ones(d_ + D_);
     for (Eigen::VectorXd* v : {&zScaled_, &gScaled_, &z_, &u_, &gTmp_, &zProbe_}) v->resize(d_ + D_);

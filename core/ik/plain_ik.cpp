@@ -9,8 +9,8 @@ std::string PlainIkJob::validate() const {
     if (!skeleton) return "expected a skeleton, found none";
     if (static_cast<int>(start.anglesDeg.size()) != skeleton->jointCount())
         return "expected a start pose for this skeleton, found one with " + std::to_string(start.anglesDeg.size()) + " joints";
-    if (!frozenDofs.empty() && frozenDofs.size() != kPoseDofs)
-        return "expected 47 frozen-DOF flags, found " + std::to_string(frozenDofs.size());
+    if (const int P = PoseLayout(*skeleton).size(); !frozenDofs.empty() && static_cast<int>(frozenDofs.size()) != P)
+        return "expected " + std::to_string(P) + " frozen-DOF flags, found " + std::to_string(frozenDofs.size());
     return validateConstraints(*skeleton, constraints);
 }
 
@@ -26,14 +26,15 @@ void PlainIkJob::solve() {
     const Skeleton& sk = *skeleton;
     const PoseLayout layout(sk);
     std::vector<int> active;
-    for (int i = 0; i < kPoseDofs; ++i)
+    const int P = layout.size();
+    for (int i = 0; i < P; ++i)
         if (layout.joint(i) >= 0 && (frozenDofs.empty() || !frozenDofs[i])) active.push_back(i);
     const int m = static_cast<int>(constraints.size());
     const int n = static_cast<int>(active.size());
     FkState fk;
-    Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, kPoseDofs);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, P);
     Eigen::MatrixXd J(3 * m, n);
-    Eigen::VectorXd err(3 * m), y(kPoseDofs), trial(kPoseDofs);
+    Eigen::VectorXd err(3 * m), y(P), trial(P);
 
     auto evaluate = [&](const Pose& p, Eigen::VectorXd& e) {
         forwardKinematics(sk, p, fk);

@@ -1,6 +1,6 @@
 #pragma once
-// Baseline IK without the learned prior: damped least squares on the 47 joint angles (the pose
-// DOFs of §2.3 that the skeleton has), adaptive damping, iterated from the start pose until the
+// Baseline IK without the learned prior: damped least squares on the pose vector's joint angles
+// (skeleton/pose_layout.h; the DOFs the skeleton has), adaptive damping, iterated from the start pose until the
 // residual stops falling. Users and tests compare it with the learned IK to see what the prior
 // buys. Root translation is fixed; the root rotation is free, as in the learned IK.
 #include <vector>
@@ -16,7 +16,7 @@ struct PlainIkJob {
     const Skeleton* skeleton = nullptr;
     Pose start;
     std::vector<IkConstraint> constraints;
-    std::vector<bool> frozenDofs;      // optional, size 47: true = keep this DOF at its start value
+    std::vector<bool> frozenDofs;      // optional, one per pose-vector DOF: true = keep it at its start value
     int maxIterations = 500;
     double toleranceCm = 1e-3;          // stop once every residual is below this
     double initialDamping = 1.0;        // λ of (JJᵀ + λ² I), in cm

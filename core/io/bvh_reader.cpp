@@ -246,6 +246,7 @@ Clip parse(TextReader& r) {
     }
 
     Skeleton& sk = clip.skeleton;
+    sk.poseVector = PoseVectorKind::kChannels;  // a BVH clip trains on its own channels
     for (std::size_t i = 0; i < raw.size(); ++i) {
         Joint j;
         j.name = raw[i].name;

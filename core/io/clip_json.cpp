@@ -85,7 +85,7 @@ nlohmann::json clipToJson(const Clip& clip) {
     nlohmann::json poses = nlohmann::json::array(), roots = nlohmann::json::array();
     for (int t = 0; t < clip.frameCount(); ++t) {
         nlohmann::json row = nlohmann::json::array();
-        for (int k = 0; k < kPoseDofs; ++k) row.push_back(y(t, k));
+        for (Eigen::Index k = 0; k < y.cols(); ++k) row.push_back(y(t, k));
         poses.push_back(row);
         roots.push_back(vec3(clip.frames[t].rootCm));
     }
@@ -135,6 +135,7 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
                 throwParseError(file, 0, "parents listed before their children", "joint '" + jt.name + "'");
             clip.skeleton.joints.push_back(jt);
         }
+        if (clip.format == ClipFormat::kBvh) clip.skeleton.poseVector = PoseVectorKind::kChannels;
         clip.skeleton.validate();
         clip.skeleton.resolveEffectors();
         const auto& poses = field(j, "poses_deg", file, "clip");
@@ -143,11 +144,12 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             throwParseError(file, 0, "as many root translations as poses (at least one)",
                             std::to_string(roots.size()) + " and " + std::to_string(poses.size()));
         const PoseLayout layout(clip.skeleton);
-        Eigen::VectorXd y(kPoseDofs);
+        Eigen::VectorXd y(layout.size());
         for (std::size_t t = 0; t < poses.size(); ++t) {
-            if (!poses[t].is_array() || poses[t].size() != kPoseDofs)
-                throwParseError(file, 0, "47 pose DOFs in frame " + std::to_string(t + 1), poses[t].dump());
-            for (int k = 0; k < kPoseDofs; ++k) {
+            if (!poses[t].is_array() || poses[t].size() != static_cast<std::size_t>(layout.size()))
+                throwParseError(file, 0, std::to_string(layout.size()) + " pose DOFs in frame " + std::to_string(t + 1),
+                                poses[t].dump());
+            for (int k = 0; k < layout.size(); ++k) {
                 y[k] = poses[t][k].get<double>();
                 // Beyond this a value is corruption (FK of 1e308 degrees is NaN).
                 if (!(std::abs(y[k]) <= kMaxAbsPoseDeg))

@@ -35,13 +35,13 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     d_ = m.latentDim();
     D_ = m.D();
     kappa_ = (1.0 - w_.lambda) / w_.lambda;
-    full_.resize(kPoseDofs);
-    gradFull_.resize(kPoseDofs);
+    full_.resize(layout_.size());
+    gradFull_.resize(layout_.size());
     xt_.resize(d_);
     yt_.resize(D_);
     gx_.resize(d_);
     gy_.resize(D_);
-    jac_.resize(3, kPoseDofs);
+    jac_.resize(3, layout_.size());
     for (int k = 0; k < D_; ++k)
         if (m.keptColumns[k] < 3) rootKept_.push_back(k);
     // Captured x̂, ŷ on frames first−1..last+1 (those inside the clip; others stay empty).

@@ -41,8 +41,8 @@ void unwrapAngles(Eigen::MatrixXd& a) {
 
 Eigen::MatrixXd poseMatrix(const Clip& clip) {
     const PoseLayout layout(clip.skeleton);
-    Eigen::MatrixXd y(clip.frameCount(), kPoseDofs);
-    Eigen::VectorXd row(kPoseDofs);
+    Eigen::MatrixXd y(clip.frameCount(), layout.size());
+    Eigen::VectorXd row(layout.size());
     for (int t = 0; t < clip.frameCount(); ++t) {
         layout.extract(clip.frames[t], row.data());
         y.row(t) = row.transpose();

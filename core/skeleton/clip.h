@@ -38,9 +38,10 @@ void appendFrames(Clip& into, const Clip& from, int first, int count);
 // add or subtract 360° to that frame and every later one.
 void unwrapAngles(Eigen::MatrixXd& anglesByFrame);
 
-// The N×47 pose matrix Y in the §2.3 order, degrees, unwrapped over time (§2.6 step 1).
+// The N×P pose matrix Y (P = PoseLayout(clip.skeleton).size(): 47 for ASF), degrees, unwrapped
+// over time (§2.6 step 1).
 Eigen::MatrixXd poseMatrix(const Clip& clip);
-// Writes the unwrapped §2.3 angles back into the clip's frames, so its poses equal the rows of
+// Writes the unwrapped pose-vector angles back into the clip's frames, so its poses equal the rows of
 // poseMatrix() (a model's clip must match its training data; FK is unchanged by 360° shifts).
 void unwrapClip(Clip& clip);
 // Root translations, N×3, cm.

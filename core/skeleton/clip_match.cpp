@@ -27,8 +27,10 @@ bool sameCapture(const Clip& a, const Clip& b, std::string* difference) {
     if (a.frameCount() != b.frameCount())
         return differs(difference,
                        std::to_string(a.frameCount()) + " frames against " + std::to_string(b.frameCount()));
+    if (a.skeleton.poseVector != b.skeleton.poseVector)
+        return differs(difference, "an ASF pose vector against a BVH channel one");
     const PoseLayout layout(a.skeleton);
-    Eigen::VectorXd ya(kPoseDofs), yb(kPoseDofs);
+    Eigen::VectorXd ya(layout.size()), yb(layout.size());
     char text[160];
     for (int f = 0; f < a.frameCount(); ++f) {
         const Pose& pa = a.frames[f];
@@ -40,11 +42,10 @@ bool sameCapture(const Clip& a, const Clip& b, std::string* difference) {
         }
         layout.extract(pa, ya.data());
         layout.extract(pb, yb.data());
-        for (int d = 0; d < kPoseDofs; ++d) {
+        for (int d = 0; d < layout.size(); ++d) {
             const double gap = std::abs(wrap180(ya[d] - yb[d]));
             if (!(gap <= kTolerance)) {
-                std::snprintf(text, sizeof text, "frame %d, %s r%c: %.3g° apart", f + 1, poseDofTable()[d].bone,
-                              "xyz"[poseDofTable()[d].axis], gap);
+                std::snprintf(text, sizeof text, "frame %d, %s: %.3g° apart", f + 1, layout.dofName(d).c_str(), gap);
                 return differs(difference, text);
             }
         }
@@ -92,6 +93,7 @@ bool sameSkeleton(const Skeleton& a, const Skeleton& b, std::string* difference)
     }
     if (ja.size() != jb.size())
         return differs(difference, std::to_string(ja.size()) + " joints against " + std::to_string(jb.size()));
+    if (a.poseVector != b.poseVector) return differs(difference, "an ASF skeleton against a BVH one");
     return true;
 }
 

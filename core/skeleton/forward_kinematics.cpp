@@ -66,7 +66,7 @@ void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const 
     const EffectorSite& site = skeleton.effectorSite(e);
     if (site.joint < 0) return;
     const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
-    for (int i = 0; i < kPoseDofs; ++i) {
+    for (int i = 0; i < layout.size(); ++i) {
         const int j = layout.joint(i);
         if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
         const Eigen::Vector3d w = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
@@ -83,10 +83,25 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
     const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
     // The chain's DOFs: index, joint, position in the joint's rotation order (outermost first),
     // world axis ω and ω × (p − q).
-    std::array<int, kPoseDofs> dof{}, joint{}, rank{};
-    std::array<Eigen::Vector3d, kPoseDofs> w, v;
+    // Per-thread scratch sized to the largest pose vector seen: a solve's calls allocate nothing.
+    struct ChainScratch {
+        std::vector<int> dof, joint, rank;
+        std::vector<Eigen::Vector3d> w, v;
+    };
+    thread_local ChainScratch scratch;
+    const std::size_t P = static_cast<std::size_t>(layout.size());
+    if (scratch.dof.size() < P) {
+        for (std::vector<int>* a : {&scratch.dof, &scratch.joint, &scratch.rank}) a->resize(P);
+        scratch.w.resize(P);
+        scratch.v.resize(P);
+    }
+    std::vector<int>& dof = scratch.dof;
+    std::vector<int>& joint = scratch.joint;
+    std::vector<int>& rank = scratch.rank;
+    std::vector<Eigen::Vector3d>& w = scratch.w;
+    std::vector<Eigen::Vector3d>& v = scratch.v;
     int n = 0;
-    for (int i = 0; i < kPoseDofs; ++i) {
+    for (int i = 0; i < layout.size(); ++i) {
         const int j = layout.joint(i);
         if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
         const RotationOrder& order = skeleton.joints[j].order;

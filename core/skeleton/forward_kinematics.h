@@ -29,12 +29,12 @@ Eigen::Vector3d effectorCm(const Skeleton& skeleton, const Pose& pose, Effector 
 Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
                              int joint, int axis);
 
-// d(effector position)/d(y) for the 47 pose DOFs, 3×47, cm/deg. Columns of DOFs that are not
+// d(effector position)/d(y) for the P pose-vector DOFs, 3×P, cm/deg. Columns of DOFs that are not
 // ancestors of the effector (or absent from the skeleton) are exactly 0.
 void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
                       const Pose& pose, Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
 
-// λ · ∂²(effector position)/∂y² for the 47 pose DOFs (47×47, cm/deg², symmetric): the
+// λ · ∂²(effector position)/∂y² for the P pose-vector DOFs (P×P, cm/deg², symmetric): the
 // second-order term a Newton step on ‖FK − c‖² or on a pinned effector's multiplier needs. For
 // DOFs a (upstream, or the same DOF) and b on the effector's chain, with world axes ω and b's
 // pivot q_b: ∂²p/∂θ_a∂θ_b = (π/180)² ω_a × (ω_b × (p − q_b)). Other entries are exactly 0.

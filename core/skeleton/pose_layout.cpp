@@ -4,8 +4,8 @@
 
 namespace mgp {
 
-const std::array<PoseDof, kPoseDofs>& poseDofTable() {
-    static const std::array<PoseDof, kPoseDofs> table = {{
+const std::array<AsfPoseDof, kAsfPoseDofs>& asfPoseDofTable() {
+    static const std::array<AsfPoseDof, kAsfPoseDofs> table = {{
         {"root", kAxisX},      {"root", kAxisY},      {"root", kAxisZ},
         {"lfemur", kAxisX},    {"lfemur", kAxisY},    {"lfemur", kAxisZ},
         {"ltibia", kAxisX},    {"lfoot", kAxisX},     {"lfoot", kAxisZ},
@@ -51,24 +51,38 @@ std::vector<std::string> missingModelBones(const Skeleton& skeleton) {
 }
 
 PoseLayout::PoseLayout(const Skeleton& skeleton) {
-    const auto& table = poseDofTable();
-    for (int i = 0; i < kPoseDofs; ++i) joint_[i] = skeleton.findBone(table[i].bone);
+    const auto add = [&](int joint, int axis, const std::string& name) {
+        joint_.push_back(joint);
+        axis_.push_back(axis);
+        name_.push_back(name);
+    };
+    if (skeleton.poseVector == PoseVectorKind::kAsfModel) {
+        for (const AsfPoseDof& d : asfPoseDofTable()) add(skeleton.findBone(d.bone), d.axis, d.bone);
+        return;
+    }
+    // Channels: the root's three rotations first (as in the ASF vector), then every joint's.
+    if (skeleton.jointCount() == 0) return;
+    for (int a = 0; a < 3; ++a) add(0, a, skeleton.joints[0].name);
+    for (int j = 1; j < skeleton.jointCount(); ++j)
+        for (int a = 0; a < 3; ++a)
+            if (skeleton.joints[j].dof[a]) add(j, a, skeleton.joints[j].name);
 }
 
+std::string PoseLayout::dofName(int dof) const { return name_[dof] + " r" + "xyz"[axis_[dof]]; }
+
 void PoseLayout::extract(const Pose& pose, double* y) const {
-    for (int i = 0; i < kPoseDofs; ++i)
-        y[i] = joint_[i] >= 0 ? pose.anglesDeg[joint_[i]][axis(i)] : 0.0;
+    for (int i = 0; i < size(); ++i) y[i] = joint_[i] >= 0 ? pose.anglesDeg[joint_[i]][axis_[i]] : 0.0;
 }
 
 Eigen::VectorXd PoseLayout::extract(const Pose& pose) const {
-    Eigen::VectorXd y(kPoseDofs);
+    Eigen::VectorXd y(size());
     extract(pose, y.data());
     return y;
 }
 
 void PoseLayout::apply(const double* y, Pose& pose) const {
-    for (int i = 0; i < kPoseDofs; ++i)
-        if (joint_[i] >= 0) pose.anglesDeg[joint_[i]][axis(i)] = y[i];
+    for (int i = 0; i < size(); ++i)
+        if (joint_[i] >= 0) pose.anglesDeg[joint_[i]][axis_[i]] = y[i];
 }
 
 bool allFinite(const Pose& pose) {

@@ -1,7 +1,9 @@
 #pragma once
-// The paper's pose vector y (docs/maths.md §2): 47 rotational DOFs in DEGREES, in this exact
-// order everywhere (files, W, limits). Root translation (cm) is kept separately.
+// The pose vector y (docs/maths.md §2): rotational DOFs in DEGREES, in one fixed order per
+// skeleton (files, W, limits). Root translation (cm) is kept separately. Entries 0-2 are always
+// the root's rx ry rz. Two kinds (Skeleton::poseVector):
 //
+// ASF model (ASF/AMC, synthetic): the paper's 47 DOFs, picked by ASF bone role:
 //   0-2 root rx ry rz     15-17 lowerback     33-34 lclavicle ry rz   40-41 rclavicle ry rz
 //   3-5 lfemur rx ry rz   18-20 upperback     35-37 lhumerus          42-44 rhumerus
 //   6 ltibia rx           21-23 thorax        38 lradius rx           45 rradius rx
@@ -9,8 +11,11 @@
 //   9-11 rfemur           27-29 upperneck
 //   12 rtibia rx          30-32 head
 //   13-14 rfoot rx rz
+//   The 22 bones are the 20 DOF-bearing non-root bones above plus lhipjoint and rhipjoint.
 //
-// The 22 bones are the 20 DOF-bearing non-root bones above plus lhipjoint and rhipjoint.
+// Channels (BVH): the skeleton's own hierarchy: root rx ry rz, then every other joint's rotation
+// channels (x, y, z among those the file animates) in joint order. Channels that never move are
+// dropped later, as the ASF vector's are, by the model's constant columns (§2.6 step 2).
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -20,15 +25,14 @@
 
 namespace mgp {
 
-constexpr int kPoseDofs = 47;       // rotational DOFs in y
+constexpr int kAsfPoseDofs = 47;    // rotational DOFs in the ASF model's y
 constexpr int kModelBones = 22;     // bones of the simplified skeleton (root not counted)
-constexpr int kModelDofs = 50;      // 47 + root translation
 
-struct PoseDof {
+struct AsfPoseDof {
     const char* bone;
     int axis;
 };
-const std::array<PoseDof, kPoseDofs>& poseDofTable();
+const std::array<AsfPoseDof, kAsfPoseDofs>& asfPoseDofTable();
 // The 22 bone names of the simplified skeleton (§2.3), root excluded.
 const std::array<const char*, kModelBones>& modelBoneNames();
 // Bones of the full ASF skeleton that the model drops (held rigid): hands, fingers, thumbs, toes.
@@ -45,19 +49,23 @@ struct Pose {
 // Whether the root translation and every angle are finite (a solve that produced NaN is dropped).
 bool allFinite(const Pose& pose);
 
-// Binds the 47-entry layout to one skeleton's joints.
+// The pose vector of one skeleton (its kind decides which), bound to its joints.
 class PoseLayout {
 public:
     explicit PoseLayout(const Skeleton& skeleton);
-    int joint(int dof) const { return joint_[dof]; }  // -1 if the skeleton lacks that bone
-    int axis(int dof) const { return poseDofTable()[dof].axis; }
+    int size() const { return static_cast<int>(joint_.size()); }
+    int joint(int dof) const { return joint_[dof]; }  // -1 if the skeleton lacks that ASF bone
+    int axis(int dof) const { return axis_[dof]; }
+    // "lfemur rx" (ASF bone role) or "LeftUpLeg rz" (the BVH joint's name).
+    std::string dofName(int dof) const;
 
-    void extract(const Pose& pose, double* y) const;    // writes 47 values
+    void extract(const Pose& pose, double* y) const;    // writes size() values
     Eigen::VectorXd extract(const Pose& pose) const;
-    void apply(const double* y, Pose& pose) const;      // overwrites the 47 mapped angles
+    void apply(const double* y, Pose& pose) const;      // overwrites the size() mapped angles
 
 private:
-    std::array<int, kPoseDofs> joint_{};
+    std::vector<int> joint_, axis_;
+    std::vector<std::string> name_;  // joint or bone name per DOF
 };
 
 }  // namespace mgp

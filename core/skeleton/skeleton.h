@@ -35,6 +35,11 @@ struct Joint {
     std::array<bool, 3> dof{false, false, false};  // axes the source file animates (x, y, z)
 };
 
+// Which pose vector y a skeleton's clips train with (skeleton/pose_layout.h): the paper's 47 DOFs
+// picked by ASF bone role (ASF/AMC and the synthetic clip), or every rotation channel of the
+// skeleton's own hierarchy (BVH).
+enum class PoseVectorKind { kAsfModel, kChannels };
+
 // Where an effector sits: a point fixed in one joint's frame.
 struct EffectorSite {
     int joint = -1;
@@ -44,6 +49,7 @@ struct EffectorSite {
 class Skeleton {
 public:
     std::vector<Joint> joints;  // parents precede children; joints[0] is the root
+    PoseVectorKind poseVector = PoseVectorKind::kAsfModel;
 
     int jointCount() const { return static_cast<int>(joints.size()); }
     int findJoint(const std::string& name) const;  // by file name, -1 if absent
