@@ -4,6 +4,7 @@
 #include "cli_common.h"
 #include "command_registry.h"
 #include "io/clip_loader.h"
+#include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {
 namespace {
@@ -25,6 +26,12 @@ const CommandRegistration reg("fk", "Forward kinematics: root and effector posit
         nlohmann::json j;
         j["frame"] = *frame;
         j["positions_cm"] = effectorPositionsJson(clip, index);
+        // Every joint's position by its file name (a BVH importer's bone heads; tests compare them).
+        FkState fk;
+        forwardKinematics(clip.skeleton, clip.frames[index], fk);
+        nlohmann::json joints = nlohmann::json::object();
+        for (int k = 0; k < clip.skeleton.jointCount(); ++k) joints[clip.skeleton.joints[k].name] = vec3Json(fk.jointCm[k]);
+        j["joints_cm"] = joints;
         if (*json) {
             printJson(j);
         } else {

@@ -23,9 +23,67 @@ void appendf(std::string& out, const char* fmt, double a, double b, double c) {
     out += buf;
 }
 
+// A BVH clip written back in its own hierarchy: every joint under its own name, OFFSETs and
+// motion in the source's units, each joint's rotation channels in its own order and the angles
+// as they are (no re-decomposition), so a BVH importer places every joint where the source does.
+std::string formatSourceHierarchyBvh(const Clip& clip) {
+    const Skeleton& sk = clip.skeleton;
+    const int n = sk.jointCount();
+    const double unit = clip.cmPerFileUnit > 0.0 ? 1.0 / clip.cmPerFileUnit : 1.0;  // file units per cm
+    std::vector<std::vector<int>> children(n);
+    for (int j = 1; j < n; ++j) children[sk.joints[j].parent].push_back(j);
+    static const char* const kAxisName[] = {"X", "Y", "Z"};
+    std::vector<std::vector<int>> channels(n);  // rotation axes per joint, in file order
+    for (int j = 0; j < n; ++j)
+        for (int a : sk.joints[j].order)
+            if (j == 0 || sk.joints[j].dof[a]) channels[j].push_back(a);
+
+    std::string out = "HIERARCHY\n";
+    std::vector<int> fileOrder;
+    std::function<void(int, int)> emit = [&](int j, int depth) {
+        const std::string pad(static_cast<std::size_t>(depth) * 2, ' ');
+        const Joint& joint = sk.joints[j];
+        out += pad + (j == 0 ? "ROOT " : "JOINT ") + joint.name + "\n" + pad + "{\n";
+        const Eigen::Vector3d off = joint.offsetCm * unit;
+        appendf(out, (pad + "  OFFSET %.9f %.9f %.9f\n").c_str(), off.x(), off.y(), off.z());
+        const std::size_t count = channels[j].size() + (j == 0 ? 3 : 0);
+        out += pad + "  CHANNELS " + std::to_string(count) + (j == 0 ? " Xposition Yposition Zposition" : "");
+        for (int a : channels[j]) out += std::string(" ") + kAxisName[a] + "rotation";
+        out += "\n";
+        fileOrder.push_back(j);
+        for (int c : children[j]) emit(c, depth + 1);
+        if (children[j].empty()) {
+            const Eigen::Vector3d tail = joint.tailCm * unit;
+            out += pad + "  End Site\n" + pad + "  {\n";
+            appendf(out, (pad + "    OFFSET %.9f %.9f %.9f\n").c_str(), tail.x(), tail.y(), tail.z());
+            out += pad + "  }\n";
+        }
+        out += pad + "}\n";
+    };
+    emit(0, 0);
+
+    char buf[96];
+    out += "MOTION\n";
+    out += "Frames: " + std::to_string(clip.frameCount()) + "\n";
+    std::snprintf(buf, sizeof buf, "Frame Time: %.9f\n", 1.0 / clip.fps);
+    out += buf;
+    for (const Pose& pose : clip.frames) {
+        const Eigen::Vector3d root = pose.rootCm * unit;  // the root's OFFSET is 0: positions are absolute
+        appendf(out, "%.9f %.9f %.9f", root.x(), root.y(), root.z());
+        for (int j : fileOrder)
+            for (int a : channels[j]) {
+                std::snprintf(buf, sizeof buf, " %.9f", pose.anglesDeg[j][a]);
+                out += buf;
+            }
+        out += "\n";
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string formatBvh(const Clip& clip) {
+    if (clip.skeleton.poseVector == PoseVectorKind::kChannels) return formatSourceHierarchyBvh(clip);
     const Skeleton& sk = clip.skeleton;
     const int n = sk.jointCount();
     // Keep the model bones and every ancestor of one (parents precede children, so walk back).
