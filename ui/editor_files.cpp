@@ -36,8 +36,7 @@ std::string EditorApp::openClip(const std::string& path) {
         state_.playing = false;
         std::error_code ec;
         const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
-        state_.setStatus("opened " + (ec ? path : shown) +
-                         (state_.doc.trainable() ? "" : "  (BVH: view-only, training needs ASF/AMC)"));
+        state_.setStatus("opened " + (ec ? path : shown));
         sessionPath_.clear();
         markSaved();
         remember(path, RecentKind::kClip);

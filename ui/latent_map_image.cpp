@@ -16,6 +16,12 @@ void colourMap(double t, std::uint8_t rgb[3]) {
     for (int c = 0; c < 3; ++c) rgb[c] = std::uint8_t(std::lround(stops[i][c] * (1 - f) + stops[i + 1][c] * f));
 }
 
+Eigen::VectorXd latentMapBase(const gp::GpModel& model) {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(model.latentDim());
+    for (int k = 2; k < model.latentDim(); ++k) x[k] = model.X.col(k).mean();
+    return x;
+}
+
 void latentBox(const gp::GpModel& model, double margin, double& x0, double& y0, double& x1, double& y1) {
     const Eigen::MatrixXd& X = model.X;
     x0 = X.col(0).minCoeff();
@@ -37,7 +43,7 @@ LatentImage computeLatentImage(const gp::ModelVersion& version, int size) {
     img.version = version.number;
     latentBox(*version.model, 0.15, img.x0, img.y0, img.x1, img.y1);
     std::vector<double> logVar(std::size_t(size) * size);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(version.model->latentDim()), mean;
+    Eigen::VectorXd x = latentMapBase(*version.model), mean;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (int r = 0; r < size; ++r) {
         for (int c = 0; c < size; ++c) {

@@ -25,6 +25,11 @@ struct LatentImage {
     int version = -1;
 };
 
+// The map shows latent axes 1 and 2. With d = 3 (a BVH pose vector of 60 or more DOFs, eq. 4) it
+// is the slice through the training points' mean on axis 3: this point, whose first two entries
+// the map sets (0) and whose later entries are the mean of X's columns.
+Eigen::VectorXd latentMapBase(const gp::GpModel& model);
+
 // Latent box of a model: bounding box of X plus `margin` of its size on each side, made square.
 void latentBox(const gp::GpModel& model, double margin, double& x0, double& y0, double& x1, double& y1);
 

@@ -163,7 +163,7 @@ void LatentMapPanel::draw(EditorState& s) {
         return ImVec2(float(p0.x + (lx - bx0) / (bx1 - bx0) * side), float(p0.y + (by1 - ly) / (by1 - by0) * side));
     };
     auto toLatent = [&](ImVec2 p) {
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(model.latentDim());
+        Eigen::VectorXd x = latentMapBase(model);
         x[0] = bx0 + (p.x - p0.x) / side * (bx1 - bx0);
         if (x.size() > 1) x[1] = by1 - (p.y - p0.y) / side * (by1 - by0);
         return x;
@@ -314,7 +314,11 @@ void LatentMapPanel::draw(EditorState& s) {
     dl->AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
     const float hiW = ImGui::CalcTextSize(hi).x;
     dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
-    const char* cap = "predictive variance sigma^2(x), log scale";
+    // With d = 3 the map is a slice (latentMapBase): say which.
+    char capText[128] = "predictive variance sigma^2(x), log scale";
+    if (model.latentDim() > 2)
+        std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)", latentMapBase(model)[2]);
+    const char* cap = capText;
     const float capW = ImGui::CalcTextSize(cap).x;
     // Centred under the bar, but never left of the panel's content edge (the caption is wider).
     const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);

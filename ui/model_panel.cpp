@@ -52,12 +52,8 @@ std::string sig4(double v) {
     return out;
 }
 
-// "lfemur x": the pose DOF behind weight index k (keptColumns maps it into the 47-vector).
-std::string dofName(const gp::GpModel& m, int k) {
-    static const char* const kAxis[] = {"x", "y", "z"};
-    const PoseDof& d = poseDofTable()[m.keptColumns[k]];
-    return std::string(d.bone) + " " + kAxis[d.axis];
-}
+// "lfemur rx": the pose DOF behind weight index k (keptColumns maps it into the pose vector).
+std::string dofName(const gp::GpModel& m, int k) { return PoseLayout(m.clip.skeleton).dofName(m.keptColumns[k]); }
 
 // The value index under the mouse for the plot item just drawn, or -1 (ImGui's own rule, so
 // our tooltip names the sample ImGui highlights; a line plot has count − 1 segments).
@@ -267,8 +263,6 @@ void drawModelPanel(EditorState& s) {
         ImGui::SameLine();
         ImGui::TextDisabled("%s, %d frames, %.0f fps", formatLabel(c), c.frameCount(), c.fps);
         if (doc.synthetic()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "No mocap folder found: synthetic demo clip");
-        if (c.format == ClipFormat::kBvh)
-            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "BVH is view-only: training on BVH is not supported yet");
     } else {
         ImGui::TextDisabled("No clip open (File > Open, Ctrl+O)");
     }
@@ -284,8 +278,7 @@ void drawModelPanel(EditorState& s) {
         s.recordControl("Train");
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)"
-                                              : "Training needs an ASF/AMC clip (BVH is view-only for now)");
+            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)" : "Open a clip first (File > Open)");
         sameLineIfFits("Open model...");
         if (ImGui::Button("Open model...")) s.request("open-model");
         s.recordControl("Open model");

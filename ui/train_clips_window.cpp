@@ -22,7 +22,7 @@ bool names(const TrainingCandidate& c, const std::string& name) {
 
 // The refusal in a few words beside the name (the whole reason is the row's tooltip).
 const char* shortReason(const std::string& reason) {
-    if (reason.rfind("BVH", 0) == 0) return "BVH: not supported yet";
+    if (reason.rfind("a BVH", 0) == 0 || reason.rfind("an ASF", 0) == 0) return "other format";
     if (reason.rfind("another skeleton", 0) == 0) return "other skeleton";
     return "cannot be used (hover: why)";
 }
@@ -42,6 +42,7 @@ void TrainClipsWindow::show(EditorApp& app) {
     openHeader_ = doc.clip();
     openHeader_.frames.clear();
     openFrames_ = doc.clip().frameCount();
+    openRestFrame_ = doc.clip().restFrame;
     open_ = true;
 }
 
@@ -116,12 +117,14 @@ int TrainClipsWindow::totalRows(std::string* error) const {
         for (std::size_t i = 0; i < candidates_.size(); ++i) {
             if (!checked_[i]) continue;
             int frames = openFrames_;
+            bool restFrame = openRestFrame_;
             if (!candidates_[i].open) {
                 const auto it = loaded_.find(candidates_[i].path);
                 if (it == loaded_.end()) continue;
                 frames = it->second.frameCount();
+                restFrame = it->second.restFrame;
             }
-            rows += static_cast<int>(gp::selectFrames(frames, selection_, candidates_[i].name).size());
+            rows += static_cast<int>(gp::trainingFrames(frames, restFrame, selection_, candidates_[i].name).size());
         }
     } catch (const std::exception& e) {
         if (error) *error = e.what();
@@ -171,7 +174,6 @@ void TrainClipsWindow::draw(EditorApp& app) {
         return;
     }
     const float scale = app.uiScale();
-    const bool bvh = !candidates_[0].usable;
     ImGui::Text("One model from the open clip and other clips of its skeleton");
     ImGui::TextDisabled("The open clip is always included and becomes the model's primary clip.");
     // The list: open clip, offered clips, refused ones (greyed, the reason as tooltip).
@@ -211,9 +213,9 @@ void TrainClipsWindow::draw(EditorApp& app) {
     addPath_.copy(buf, n);
     buf[n] = '\0';
     ImGui::SetNextItemWidth(340.0f * scale);
-    if (ImGui::InputTextWithHint("##addfile", "another .amc file (path)", buf, sizeof buf)) addPath_ = buf;
+    if (ImGui::InputTextWithHint("##addfile", "another .amc or .bvh file (path)", buf, sizeof buf)) addPath_ = buf;
     ImGui::SameLine();
-    ImGui::BeginDisabled(addPath_.empty() || bvh);
+    ImGui::BeginDisabled(addPath_.empty());
     if (ImGui::Button("Add file")) {
         error_ = addFile(addPath_);
         if (error_.empty()) addPath_.clear();
@@ -248,22 +250,19 @@ void TrainClipsWindow::draw(EditorApp& app) {
     } else {
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "%s", rangeError.c_str());
     }
-    if (bvh) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "%s", candidates_[0].reason.c_str());
     if (!error_.empty()) {
         ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 440.0f * scale);
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", error_.c_str());
         ImGui::PopTextWrapPos();
     }
     const bool busy = s.training.running();
-    const bool canTrain = !bvh && !busy && rows >= 3;
+    const bool canTrain = !busy && rows >= 3;
     ImGui::BeginDisabled(!canTrain);
     const bool trainClicked = ImGui::Button("Train", ImVec2(110.0f * scale, 0));
     ImGui::EndDisabled();
     s.recordControl("train clips: Train");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && !canTrain)
-        ImGui::SetTooltip("%s", bvh ? candidates_[0].reason.c_str()
-                                : busy ? "a training run is already in progress"
-                                       : "expected at least 3 training frames");
+        ImGui::SetTooltip("%s", busy ? "a training run is already in progress" : "expected at least 3 training frames");
     ImGui::SameLine();
     const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f * scale, 0));
     s.recordControl("train clips: Cancel");
