@@ -23,7 +23,7 @@ TEST_CASE("35.asf / 35_01.amc: bones, channels, DOF selection, frames (§13.1)")
     // Every §2.3 DOF exists in the ASF: 47 rotational + 3 root translations = 50.
     const PoseLayout layout(asf.skeleton);
     int rotational = 0;
-    for (int i = 0; i < kPoseDofs; ++i) {
+    for (int i = 0; i < kAsfPoseDofs; ++i) {
         REQUIRE(layout.joint(i) >= 0);
         CHECK(asf.skeleton.joints[layout.joint(i)].dof[layout.axis(i)]);
         ++rotational;

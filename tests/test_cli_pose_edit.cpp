@@ -57,8 +57,8 @@ TEST_CASE("motiongp pose --json: nearest names the captured frame closest to the
     const std::vector<double> y = j["pose_deg"].get<std::vector<double>>();
     auto rmsTo = [&](int row) {
         double sum = 0.0;
-        for (int k = 3; k < kPoseDofs; ++k) sum += std::pow(wrap180(y[k] - captured(row, k)), 2);
-        return std::sqrt(sum / (kPoseDofs - 3));
+        for (int k = 3; k < kAsfPoseDofs; ++k) sum += std::pow(wrap180(y[k] - captured(row, k)), 2);
+        return std::sqrt(sum / (kAsfPoseDofs - 3));
     };
     CHECK(rmsTo(frame - 1) == doctest::Approx(rms).epsilon(1e-9));
     for (int row = 0; row < captured.rows(); ++row) CHECK(rmsTo(row) >= rms - 1e-12);

@@ -65,12 +65,12 @@ TEST_CASE("cmd train: --json contract and deterministic model files") {
     CHECK(model["training_frames"][1] == 6);
 }
 
-TEST_CASE("cmd train: BVH clips and bad values give clear errors and a non-zero exit") {
+TEST_CASE("cmd train: an AMC with a BVH and bad values give clear errors and a non-zero exit") {
     const std::string dir = mgp::test::scratchDir("cmd_train");
     std::filesystem::create_directories(dir);
-    const Run bvh = run("train " + kMocap + "/bvh/02_03.bvh --out " + dir + "/x.json");
-    CHECK(bvh.status != 0);
-    CHECK(bvh.err.find("train needs an ASF/AMC clip; training on BVH is not supported yet") != std::string::npos);
+    const Run mixed = run("train " + kMocap + "/asf_amc/02_03.amc " + kMocap + "/bvh/02_03.bvh --out " + dir + "/x.json");
+    CHECK(mixed.status != 0);
+    CHECK(mixed.err.find("expected clips of one skeleton (retargeting is not supported)") != std::string::npos);
     CHECK(!std::filesystem::exists(dir + "/x.json"));
     const Run frames = run("train " + kMocap + "/asf_amc/16_35.amc --frames 100:5000 --out " + dir + "/x.json");
     CHECK(frames.status != 0);

@@ -118,15 +118,15 @@ TEST_CASE("λ·∂²FK/∂y² matches central differences of λᵀ J for every e
     const Eigen::VectorXd y0 = layout.extract(pose);
     const Eigen::Vector3d lambda(0.7, -1.3, 2.1);
     FkState fk;
-    Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, kPoseDofs), Jp(3, kPoseDofs), Jm(3, kPoseDofs);
-    Eigen::MatrixXd Hc(kPoseDofs, kPoseDofs);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, layout.size()), Jp(3, layout.size()), Jm(3, layout.size());
+    Eigen::MatrixXd Hc(layout.size(), layout.size());
     for (int e = 0; e < kEffectorCount; ++e) {
         const auto eff = static_cast<Effector>(e);
         CAPTURE(std::string(effectorName(eff)));
         forwardKinematics(sk, pose, fk);
         effectorHessianContracted(sk, layout, fk, pose, eff, lambda, Hc);
         double worst = 0.0;
-        for (int i = 0; i < kPoseDofs; ++i) {
+        for (int i = 0; i < layout.size(); ++i) {
             const double h = 1e-4;  // degrees
             Eigen::VectorXd yp = y0, ym = y0;
             yp[i] += h;

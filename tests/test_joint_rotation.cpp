@@ -19,7 +19,7 @@ namespace {
 // The index into z = (x, y) of pose DOF (joint, axis), −1 when it is not a kept column.
 int zIndexOf(const gp::GpModel& m, int joint, int axis) {
     const PoseLayout layout(m.clip.skeleton);
-    for (int dof = 0; dof < kPoseDofs; ++dof)
+    for (int dof = 0; dof < kAsfPoseDofs; ++dof)
         if (layout.joint(dof) == joint && layout.axis(dof) == axis)
             for (int k = 0; k < m.D(); ++k)
                 if (m.keptColumns[k] == dof) return m.latentDim() + k;

@@ -183,13 +183,13 @@ TEST_CASE("multi-clip: the training range hides ±10 frames of the row's own cli
 }
 
 TEST_CASE("multi-clip: nearestFrame searches every clip and names clip and frame") {
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3, kPoseDofs), b = Eigen::MatrixXd::Zero(4, kPoseDofs);
-    a.rightCols(kPoseDofs - 3).setConstant(10.0);
-    b.row(2).rightCols(kPoseDofs - 3).setConstant(1.0);
-    b.row(0).rightCols(kPoseDofs - 3).setConstant(30.0);
-    b.row(1).rightCols(kPoseDofs - 3).setConstant(30.0);
-    b.row(3).rightCols(kPoseDofs - 3).setConstant(30.0);
-    const Eigen::VectorXd pose = Eigen::VectorXd::Zero(kPoseDofs);
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3, kAsfPoseDofs), b = Eigen::MatrixXd::Zero(4, kAsfPoseDofs);
+    a.rightCols(kAsfPoseDofs - 3).setConstant(10.0);
+    b.row(2).rightCols(kAsfPoseDofs - 3).setConstant(1.0);
+    b.row(0).rightCols(kAsfPoseDofs - 3).setConstant(30.0);
+    b.row(1).rightCols(kAsfPoseDofs - 3).setConstant(30.0);
+    b.row(3).rightCols(kAsfPoseDofs - 3).setConstant(30.0);
+    const Eigen::VectorXd pose = Eigen::VectorXd::Zero(kAsfPoseDofs);
     const NearestFrame n = nearestFrame(pose, {a, b});
     CHECK(n.clip == 1);
     CHECK(n.frame == 2);

@@ -150,24 +150,24 @@ TEST_CASE("table2 --quick: shape, finite values, the settings used and prefix ra
 TEST_CASE("nearest-pose RMS: wrapped differences over the 44 non-root DOFs, the nearest candidate") {
     CHECK(wrap180(190.0) == doctest::Approx(-170.0));
     CHECK(wrap180(-350.0) == doctest::Approx(10.0));
-    Eigen::VectorXd pose = Eigen::VectorXd::Zero(kPoseDofs);
+    Eigen::VectorXd pose = Eigen::VectorXd::Zero(kAsfPoseDofs);
     pose.head(3).setConstant(1000.0);  // the root DOFs do not count
-    Eigen::MatrixXd candidates = Eigen::MatrixXd::Zero(2, kPoseDofs);
+    Eigen::MatrixXd candidates = Eigen::MatrixXd::Zero(2, kAsfPoseDofs);
     candidates.row(0).setConstant(10.0);  // RMS 10
     candidates.row(1).tail(44).setConstant(358.0);  // −2 once wrapped: RMS 2
     CHECK(nearestPoseRmsDeg(pose, candidates) == doctest::Approx(2.0));
     candidates(1, 10) = 358.0 + 44.0;  // one DOF at 44 + (−2) → sqrt((43·4 + 42²)/44)
     CHECK(nearestPoseRmsDeg(pose, candidates) == doctest::Approx(std::sqrt((43.0 * 4.0 + 42.0 * 42.0) / 44.0)));
-    CHECK(std::isinf(nearestPoseRmsDeg(pose, Eigen::MatrixXd(0, kPoseDofs))));
+    CHECK(std::isinf(nearestPoseRmsDeg(pose, Eigen::MatrixXd(0, kAsfPoseDofs))));
     // Which row: the nearest one (row 1 here), the first of equals, none without candidates.
     const NearestPose n = nearestPose(pose, candidates);
     CHECK(n.row == 1);
     CHECK(n.rmsDeg == doctest::Approx(std::sqrt((43.0 * 4.0 + 42.0 * 42.0) / 44.0)));
-    Eigen::MatrixXd twins(3, kPoseDofs);
+    Eigen::MatrixXd twins(3, kAsfPoseDofs);
     twins << candidates.row(0), candidates.row(0) * 0.5, candidates.row(0) * 0.5;
     CHECK(nearestPose(pose, twins).row == 1);
     CHECK(nearestPose(pose, twins).rmsDeg == doctest::Approx(5.0));
-    CHECK(nearestPose(pose, Eigen::MatrixXd(0, kPoseDofs)).row == -1);
+    CHECK(nearestPose(pose, Eigen::MatrixXd(0, kAsfPoseDofs)).row == -1);
 }
 
 TEST_CASE("clip segments: joined in order, and a segment past the trial's end is a clear error") {

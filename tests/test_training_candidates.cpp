@@ -1,7 +1,7 @@
 // Model ▸ Train on clips…'s candidate list (core/edit/training_candidates.h): the open clip first,
-// the AMC files of its skeleton beside it offered, every other file beside it refused with the
-// reason. Run on the shipped clips and on a scratch folder of copies (a BVH, an AMC without its
-// ASF, a file of another extension). Only skeletons are read: cheap.
+// the clip files of its skeleton beside it offered (AMC of its ASF subject, or BVH of its
+// hierarchy), every other file beside it refused with the reason. Run on the shipped clips and on
+// a scratch folder of copies (a BVH, an AMC without its ASF, a file of another extension).
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -64,7 +64,7 @@ TEST_CASE("training candidates: BVH, a missing ASF and other files beside the op
     CHECK(list[1].usable);
     CHECK(list[2].name == "02_03");
     CHECK_FALSE(list[2].usable);
-    CHECK(list[2].reason == "BVH: training on BVH is not supported yet");
+    CHECK(list[2].reason == "a BVH clip: another skeleton than the open ASF/AMC (retargeting is not supported)");
     CHECK(list[3].name == "16_01");
     CHECK(list[3].reason.rfind("another skeleton (16.asf): ", 0) == 0);
     CHECK(list[4].name == "77_01");
@@ -77,16 +77,24 @@ TEST_CASE("training candidates: BVH, a missing ASF and other files beside the op
     CHECK(trainingCandidate(open, dir + "/16_01.amc").reason.rfind("another skeleton (16.asf): ", 0) == 0);
     CHECK(trainingCandidate(open, dir + "/10_03.amc").reason == "the open clip is always included");
     CHECK(trainingCandidate(open, dir + "/10_99.amc").reason == "no such file");
-    CHECK(trainingCandidate(open, dir + "/notes.txt").reason == "expected an ASF/AMC clip (.amc), found '.txt'");
+    CHECK(trainingCandidate(open, dir + "/notes.txt").reason == "expected a clip file (.amc or .bvh), found '.txt'");
 }
 
-TEST_CASE("training candidates: an open BVH clip is refused itself and offers nothing") {
-    const Clip open = loadClip(test::mocap("bvh/49_04.bvh"));
+TEST_CASE("training candidates: an open BVH clip trains, BVH of its hierarchy are offered, others refused") {
+    const std::string dir = test::scratchDir("training_candidates_bvh");
+    for (const char* f : {"bvh/02_03.bvh", "bvh/49_04.bvh", "asf_amc/02_03.amc", "asf_amc/02.asf"})
+        fs::copy_file(test::mocap(f), dir + "/" + fs::path(f).filename().string(), fs::copy_options::overwrite_existing);
+    fs::copy_file(test::mocap("bvh/02_03.bvh"), dir + "/02_04.bvh", fs::copy_options::overwrite_existing);
+    const Clip open = loadClip(dir + "/02_03.bvh");
     const std::vector<TrainingCandidate> list = trainingCandidates(open);
-    REQUIRE(list.size() == 1u);
+    // 02_03.bvh (open), 02_04 (offered: the same hierarchy), then 02_03.amc and 49_04 (refused).
+    REQUIRE(list.size() == 4u);
     CHECK(list[0].open);
-    CHECK_FALSE(list[0].usable);
-    CHECK(list[0].reason == "BVH: training on BVH is not supported yet");
-    CHECK(trainingCandidate(open, test::mocap("asf_amc/10_02.amc")).reason ==
-          "the open clip is BVH: training on BVH is not supported yet");
+    CHECK(list[0].usable);
+    CHECK(list[1].name == "02_04");
+    CHECK(list[1].usable);
+    CHECK(list[2].name == "02_03");
+    CHECK(list[2].reason == "an ASF/AMC clip: another skeleton than the open BVH (retargeting is not supported)");
+    CHECK(list[3].name == "49_04");
+    CHECK(list[3].reason.rfind("another skeleton (49_04.bvh): joint ", 0) == 0);
 }

@@ -28,12 +28,16 @@ TEST_CASE("training clips: a frame selection keeps frames A..B of each clip, the
     CHECK_THROWS_WITH_AS(selectFrames(10, {1, 0, 0}, "x"), "expected --step ≥ 1, found 0", TrainingInputError);
 }
 
-TEST_CASE("training clips: BVH, two skeletons, repeated names and too few rows are refused with one line") {
+TEST_CASE("training clips: two skeletons, repeated names and too few rows are refused with one line") {
     const std::string kick = test::mocap("asf_amc/10_02.amc"), kick2 = test::mocap("asf_amc/10_03.amc");
     const std::string jump = test::mocap("asf_amc/16_01.amc"), bvh = test::mocap("bvh/49_04.bvh");
-    CHECK_THROWS_WITH_AS(prepareTrainingClips({loadClip(bvh)}, {bvh}, {}),
-                         ("train needs an ASF/AMC clip; training on BVH is not supported yet ('" + bvh + "')").c_str(),
-                         TrainingInputError);
+    // A BVH trains on its own, never with an AMC (another skeleton); its rest frame is no row.
+    const std::vector<TrainingClip> alone = prepareTrainingClips({loadClip(bvh)}, {bvh}, {});
+    REQUIRE(alone.size() == 1u);
+    CHECK(alone[0].clip.restFrame);
+    CHECK(alone[0].frames.front() == 1);
+    CHECK(static_cast<int>(alone[0].frames.size()) == alone[0].clip.frameCount() - 1);
+    CHECK_THROWS_AS(prepareTrainingClips({loadClip(kick), loadClip(bvh)}, {kick, bvh}, {}), TrainingInputError);
     try {
         prepareTrainingClips({loadClip(kick), loadClip(jump)}, {kick, jump}, {});
         FAIL("clips of two skeletons were accepted");
@@ -91,8 +95,4 @@ TEST_CASE("training clips: the editor's TrainingJob on two kicks gives gp::train
     REQUIRE(m.X.rows() == direct.model.X.rows());
     CHECK(std::memcmp(m.X.data(), direct.model.X.data(), sizeof(double) * static_cast<std::size_t>(m.X.size())) == 0);
 
-    // A BVH clip never reaches the worker.
-    std::vector<TrainingClip> bvh(1);
-    bvh[0].clip = loadClip(test::mocap("bvh/49_04.bvh"));
-    CHECK(job.start(bvh, {}, o) == "BVH clips are view-only: training on BVH is not supported yet");
 }

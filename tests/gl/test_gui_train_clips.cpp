@@ -2,8 +2,8 @@
 // the other clips of its skeleton beside it, a click ticks a second kick, Train (clicked) trains a
 // tiny model (two kicks of subject 10, frames 1..60 every 3rd of each: N = 40, M = 15, T = 1) off
 // the UI thread, and the model is installed with the open clip primary and both clips on the
-// latent map's legend. Esc closes the modal without changes; an open BVH clip gets the reason and
-// no training; the script action names what is wrong, and Add file ticks a clip from elsewhere.
+// latent map's legend. Esc closes the modal without changes; an open BVH clip offers its own
+// hierarchy only and trains a BVH model; the script action names what is wrong, and Add file ticks a clip from elsewhere.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "editor_app.h"
+#include "gp/pca_init.h"
 #include "editor_harness.h"
 
 using namespace mgp;
@@ -92,7 +93,7 @@ TEST_CASE("gui: Train on clips lists the kicks of subject 10, trains two into on
     CHECK_FALSE(h->app->state().training.running());
 }
 
-TEST_CASE("gui: Train on clips on a BVH clip says why and trains nothing") {
+TEST_CASE("gui: Train on clips on a BVH clip refuses other hierarchies and trains a BVH model") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     REQUIRE(h->app->openClip(test::mocapDir() + "/bvh/49_04.bvh") == "");
@@ -101,11 +102,33 @@ TEST_CASE("gui: Train on clips on a BVH clip says why and trains nothing") {
     h->frame(3);
     const ui::TrainClipsWindow& w = h->app->trainClipsWindow();
     REQUIRE(w.shown());
-    REQUIRE(w.candidates().size() == 1u);
-    CHECK(w.candidates()[0].reason == "BVH: training on BVH is not supported yet");
-    CHECK(h->app->runAction({"train-clips", "49_04"}) == "BVH: training on BVH is not supported yet");
-    CHECK_FALSE(h->app->state().training.running());
-    CHECK_FALSE(h->app->state().doc.hasModel());
+    // 49_04 (open), then the two other cgspeed conventions beside it, refused: other hierarchies.
+    REQUIRE(w.candidates().size() == 3u);
+    CHECK(w.candidates()[0].usable);
+    for (std::size_t i = 1; i < 3; ++i) CHECK(w.candidates()[i].reason.rfind("another skeleton (", 0) == 0);
+    CHECK(h->app->runAction({"train-clips", "02_03"}).rfind("02_03 cannot train with 49_04: another skeleton (", 0) == 0);
+    // The open clip alone, a tiny run: a BVH model (its own channels, d by eq. 4) is installed.
+    h->app->trainClipsWindow().selection() = {2, 200, 4};
+    gp::TrainOptions& o = h->app->state().trainOptions;
+    o.activeSize = 20;
+    o.outerIterations = 1;
+    o.scgIterations = 10;
+    o.pointIterations = 10;
+    h->frame(2);
+    CHECK(w.totalRows() == 50);
+    clickControl(*h, "train clips: Train");
+    h->app->waitIdle();
+    for (int i = 0; i < 10 && !h->app->latentMapUpToDate(); ++i) {
+        h->app->waitIdle();
+        h->frame();
+    }
+    const EditorDocument& doc = h->app->state().doc;
+    REQUIRE(doc.hasModel());
+    const gp::GpModel& m = *doc.model()->model;
+    CHECK(m.clip.name == "49_04");
+    CHECK(m.clip.skeleton.poseVector == PoseVectorKind::kChannels);
+    CHECK(m.N() == 50);
+    CHECK(m.latentDim() == gp::latentDimensionFor(m.D()));
 }
 
 TEST_CASE("gui: the train-clips action names what is wrong and trains nothing") {
