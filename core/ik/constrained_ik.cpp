@@ -440,13 +440,28 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         }
         // An indefinite model (the prior's x–x block is not convex everywhere) gets a shift τI
         // for this step only; raising μ instead would slow every later step (docs/maths-ik.md §3).
+        // A crawling solve shifts only the latent block: the indefiniteness is the prior's x–x
+        // block, the y block (W²/σ² + κJᵀJ + ρAᵀA) is positive definite without the constraints'
+        // curvature, so τ on x alone always factorises a Gauss–Newton model, and it no longer
+        // throttles the y DOFs whose prior curvature W²/σ² is far below τ; the latent
+        // refinement moves x after y. A model it cannot factorise gets τI (docs/maths-ik.md §3).
         double shift = 0.0;
+        bool latentOnly = crawling;
+        auto addShift = [&](double amount) {
+            if (latentOnly) Hd_.diagonal().head(d_).array() += amount;
+            else Hd_.diagonal().array() += amount;
+        };
         while (llt_.info() != Eigen::Success) {
             const double next = shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
-            Hd_.diagonal().array() += next - shift;
+            addShift(next - shift);
             shift = next;
             llt_.compute(Hd_);
-            if (shift > kMaxDamping) break;
+            if (shift > kMaxDamping) {
+                if (!latentOnly) break;
+                addShift(-shift);
+                latentOnly = false;
+                shift = 0.0;
+            }
         }
         // τ grows tenfold per try, so it can end up to 10× larger than needed; τ on every unknown
         // then freezes x and the free DOFs for many steps. A crawling solve brackets the smallest
@@ -458,13 +473,13 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             double lo = shift / 10.0, hi = shift;  // lo failed, hi factorises
             for (int b = 0; b < kShiftBisections; ++b) {
                 const double mid = std::sqrt(lo * hi);
-                Hd_.diagonal().array() += mid - shift;
+                addShift(mid - shift);
                 shift = mid;
                 llt_.compute(Hd_);
                 (llt_.info() == Eigen::Success ? hi : lo) = mid;
             }
             const double use = std::min(kShiftMargin * hi, succeeded);
-            Hd_.diagonal().array() += use - shift;
+            addShift(use - shift);
             shift = use;
             llt_.compute(Hd_);
         }

@@ -50,7 +50,9 @@
 // latent bound, halving backtracking). F depends on x only through L_IK, so this is exact block elimination of x
 // (variable projection): the outer step no longer has to drag x along behind y, which the
 // indefinite x–x block made slow (docs/maths-ik.md §3). A solve still running after 20 trial steps is crawling:
-// from then on the shift is 4× the smallest that factorises (bracketed) and the latent
+// from then on the shift is on the latent block only (τ on x, which always factorises a
+// Gauss–Newton model; τI on every unknown froze the y DOFs whose prior curvature is below τ), 4×
+// the smallest that factorises (bracketed), and the latent
 // bound becomes a trust radius (up to 16×; a step it made too long does not raise μ); earlier
 // steps are untouched (docs/maths-ik.md §3).
 //
