@@ -11,6 +11,10 @@
 //  - paper_training_180: the whole paper-setting run (T = 100, S = 100, C = 0.01, no temporal
 //    prior) on the 180-frame clip, measured once; paper_training_180_smooth the same with the
 //    smooth prior (the training default).
+//  - bvh_conventions: the training default (smooth prior, M = 200, T = 100) on the first 180
+//    trained frames of one BVH of each cgspeed convention (its own rotation channels, the rest
+//    frame skipped), with P, D and d, and the ASF/AMC capture of the same trial (02_03) beside
+//    the Daz one for the ratio; measured once each.
 // Medians over ctx.repeats; the large sizes use fewer repeats (stated in the output).
 #include <sys/resource.h>
 
@@ -19,6 +23,7 @@
 
 #include "bench_registry.h"
 #include "gp/trainer.h"
+#include "gp/training_clips.h"
 #include "io/clip_loader.h"
 #include "skeleton/synthetic_clip.h"
 
@@ -83,6 +88,30 @@ nlohmann::json timeOuterIteration(const gp::TrainingData& data, int repeats) {
     }
     return {{"N", data.Y.rows()}, {"D", data.Y.cols()}, {"M", std::min<Eigen::Index>(200, data.Y.rows())},
             {"seconds", summarizeSeconds(s)}, {"step6_seconds_last", step6}, {"step8_seconds_last", step8}};
+}
+
+// One default training per BVH convention (and the AMC of the Daz trial), 180 frames at most.
+nlohmann::json bvhConventions(const BenchContext& ctx) {
+    nlohmann::json rows = nlohmann::json::array();
+    if (ctx.mocapDir.empty()) return rows;  // no clips: nothing to measure
+    for (const char* file : {"bvh/02_03.bvh", "asf_amc/02_03.amc", "bvh/49_04.bvh", "bvh/131_01.bvh"}) {
+        const std::string path = ctx.mocapDir + "/" + file;
+        gp::FrameSelection firstFrames;
+        firstFrames.last = std::min(loadClip(path).frameCount(), 181);  // 180 rows once a rest frame is dropped
+        std::vector<gp::TrainingClip> clips = gp::prepareTrainingClips({loadClip(path)}, {path}, firstFrames);
+        if (clips[0].frames.size() > 180) clips[0].frames.resize(180);
+        const std::string convention = clips[0].clip.convention;
+        const int P = PoseLayout(clips[0].clip.skeleton).size();
+        gp::TrainOptions o;  // the training default
+        if (ctx.quick) o.outerIterations = 3;
+        gp::TrainResult r;
+        const gp::TrainingData data = gp::trainingDataOf(clips);
+        const double sec = secondsOf([&] { r = gp::train(data, o); });
+        rows.push_back({{"file", file}, {"convention", convention}, {"P", P}, {"D", r.model.D()},
+                        {"d", r.model.latentDim()}, {"N", r.model.N()}, {"M", static_cast<int>(r.model.active.size())},
+                        {"T", o.outerIterations}, {"seconds", sec}, {"measured_once", true}});
+    }
+    return rows;
 }
 
 const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run",
@@ -163,6 +192,7 @@ const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal
                                             {"converged", r.converged}, {"T", o.outerIterations},
                                             {"prior_weight", o.resolvedPriorWeight()}, {"measured_once", true}};
     }
+    out["bvh_conventions"] = bvhConventions(ctx);
     return out;
 });
 
