@@ -23,6 +23,22 @@ void appendf(std::string& out, const char* fmt, double a, double b, double c) {
     out += buf;
 }
 
+// The End Site block of a leaf joint at indentation `pad`.
+void appendEndSite(std::string& out, const std::string& pad, const Eigen::Vector3d& tail) {
+    out += pad + "  End Site\n" + pad + "  {\n";
+    appendf(out, (pad + "    OFFSET %.9f %.9f %.9f\n").c_str(), tail.x(), tail.y(), tail.z());
+    out += pad + "  }\n";
+}
+
+// MOTION, Frames and Frame Time.
+void appendMotionHeader(std::string& out, const Clip& clip) {
+    char buf[96];
+    out += "MOTION\n";
+    out += "Frames: " + std::to_string(clip.frameCount()) + "\n";
+    std::snprintf(buf, sizeof buf, "Frame Time: %.9f\n", 1.0 / clip.fps);
+    out += buf;
+}
+
 // A BVH clip written back in its own hierarchy: every joint under its own name, OFFSETs and
 // motion in the source's units, each joint's rotation channels in its own order and the angles
 // as they are (no re-decomposition), so a BVH importer places every joint where the source does.
@@ -52,21 +68,13 @@ std::string formatSourceHierarchyBvh(const Clip& clip) {
         out += "\n";
         fileOrder.push_back(j);
         for (int c : children[j]) emit(c, depth + 1);
-        if (children[j].empty()) {
-            const Eigen::Vector3d tail = joint.tailCm * unit;
-            out += pad + "  End Site\n" + pad + "  {\n";
-            appendf(out, (pad + "    OFFSET %.9f %.9f %.9f\n").c_str(), tail.x(), tail.y(), tail.z());
-            out += pad + "  }\n";
-        }
+        if (children[j].empty()) appendEndSite(out, pad, joint.tailCm * unit);
         out += pad + "}\n";
     };
     emit(0, 0);
 
-    char buf[96];
-    out += "MOTION\n";
-    out += "Frames: " + std::to_string(clip.frameCount()) + "\n";
-    std::snprintf(buf, sizeof buf, "Frame Time: %.9f\n", 1.0 / clip.fps);
-    out += buf;
+    appendMotionHeader(out, clip);
+    char buf[64];
     for (const Pose& pose : clip.frames) {
         const Eigen::Vector3d root = pose.rootCm * unit;  // the root's OFFSET is 0: positions are absolute
         appendf(out, "%.9f %.9f %.9f", root.x(), root.y(), root.z());
@@ -110,21 +118,12 @@ std::string formatBvh(const Clip& clip) {
                              : "  CHANNELS 3 Zrotation Yrotation Xrotation\n");
         order.push_back(j);
         for (int c : children[j]) emit(c, depth + 1);
-        if (children[j].empty()) {
-            out += pad + "  End Site\n" + pad + "  {\n";
-            appendf(out, (pad + "    OFFSET %.9f %.9f %.9f\n").c_str(), joint.tailCm.x(), joint.tailCm.y(),
-                    joint.tailCm.z());
-            out += pad + "  }\n";
-        }
+        if (children[j].empty()) appendEndSite(out, pad, joint.tailCm);
         out += pad + "}\n";
     };
     emit(0, 0);
 
-    char buf[96];
-    out += "MOTION\n";
-    out += "Frames: " + std::to_string(clip.frameCount()) + "\n";
-    std::snprintf(buf, sizeof buf, "Frame Time: %.9f\n", 1.0 / clip.fps);
-    out += buf;
+    appendMotionHeader(out, clip);
     const Eigen::Vector3d rootOffset = sk.joints[0].offsetCm;
     for (const Pose& pose : clip.frames) {
         const Eigen::Vector3d root = pose.rootCm + rootOffset;

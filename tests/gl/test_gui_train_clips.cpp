@@ -28,6 +28,24 @@ void clickControl(test::Harness& h, const std::string& name, bool leftEnd = fals
     REQUIRE(r.visible);
     test::clickAt(h, leftEnd ? r.x0 + 6.0f : (r.x0 + r.x1) / 2, (r.y0 + r.y1) / 2);
 }
+
+// The Model panel's options for a tiny run: M active, T = 1, 10 SCG and point iterations.
+void tinyTraining(test::Harness& h, int M) {
+    gp::TrainOptions& o = h.app->state().trainOptions;
+    o.activeSize = M;
+    o.outerIterations = 1;
+    o.scgIterations = 10;
+    o.pointIterations = 10;
+}
+
+// Until the run has ended and the latent map shows its model.
+void waitForTraining(test::Harness& h) {
+    h.app->waitIdle();
+    for (int i = 0; i < 10 && !h.app->latentMapUpToDate(); ++i) {
+        h.app->waitIdle();
+        h.frame();
+    }
+}
 }  // namespace
 
 TEST_CASE("gui: Train on clips lists the kicks of subject 10, trains two into one model and shows both") {
@@ -52,20 +70,12 @@ TEST_CASE("gui: Train on clips lists the kicks of subject 10, trains two into on
     REQUIRE(w.checked(1));
     // A tiny run: the dialog's range and the Model panel's options.
     h->app->trainClipsWindow().selection() = {1, 60, 3};
-    gp::TrainOptions& o = h->app->state().trainOptions;
-    o.activeSize = 15;
-    o.outerIterations = 1;
-    o.scgIterations = 10;
-    o.pointIterations = 10;
+    tinyTraining(*h, 15);
     h->frame(2);
     CHECK(w.totalRows() == 40);
     clickControl(*h, "train clips: Train");
     CHECK_FALSE(w.shown());
-    h->app->waitIdle();
-    for (int i = 0; i < 10 && !h->app->latentMapUpToDate(); ++i) {
-        h->app->waitIdle();
-        h->frame();
-    }
+    waitForTraining(*h);
     h->frame(2);
     const EditorDocument& doc = h->app->state().doc;
     REQUIRE(doc.hasModel());
@@ -109,19 +119,11 @@ TEST_CASE("gui: Train on clips on a BVH clip refuses other hierarchies and train
     CHECK(h->app->runAction({"train-clips", "02_03"}).rfind("02_03 cannot train with 49_04: another skeleton (", 0) == 0);
     // The open clip alone, a tiny run: a BVH model (its own channels, d by eq. 4) is installed.
     h->app->trainClipsWindow().selection() = {2, 200, 4};
-    gp::TrainOptions& o = h->app->state().trainOptions;
-    o.activeSize = 20;
-    o.outerIterations = 1;
-    o.scgIterations = 10;
-    o.pointIterations = 10;
+    tinyTraining(*h, 20);
     h->frame(2);
     CHECK(w.totalRows() == 50);
     clickControl(*h, "train clips: Train");
-    h->app->waitIdle();
-    for (int i = 0; i < 10 && !h->app->latentMapUpToDate(); ++i) {
-        h->app->waitIdle();
-        h->frame();
-    }
+    waitForTraining(*h);
     const EditorDocument& doc = h->app->state().doc;
     REQUIRE(doc.hasModel());
     const gp::GpModel& m = *doc.model()->model;
