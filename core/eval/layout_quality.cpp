@@ -240,7 +240,7 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
     const Eigen::MatrixXd poses = poseMatrix(model.clip);
     const gp::ActiveSetPosterior pm = model.posterior();
     // Non-root DOFs: 3..P−1 of the pose vector.
-    const int kFirst = 3, kCount = static_cast<int>(poses.cols()) - kFirst;
+    const int nonRoot = static_cast<int>(poses.cols()) - 3;
     Eigen::MatrixXd trainFull(model.N(), poses.cols());
     for (int i = 0; i < model.N(); ++i) trainFull.row(i) = model.fullPose(model.Y.row(i).transpose()).transpose();
     double sse = 0.0, sseNearest = 0.0, sseTime = 0.0;
@@ -263,7 +263,7 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
         // The three nearest training poses (non-root RMS).
         std::vector<std::pair<double, int>> dist;
         for (int i = 0; i < model.N(); ++i)
-            dist.emplace_back((trainFull.row(i).tail(kCount) - truth.tail(kCount).transpose()).squaredNorm(), i);
+            dist.emplace_back((trainFull.row(i).tail(nonRoot) - truth.tail(nonRoot).transpose()).squaredNorm(), i);
         const std::size_t take = std::min<std::size_t>(3, dist.size());
         std::partial_sort(dist.begin(), dist.begin() + static_cast<long>(take), dist.end());
         sseNearest += dist[0].first;
@@ -288,9 +288,9 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
         double var = 0.0;
         pm.predict(bestX, mean, var);
         const Eigen::VectorXd pred = model.fullPose(mean);
-        const double frameSse = (pred.tail(kCount) - truth.tail(kCount)).squaredNorm();
+        const double frameSse = (pred.tail(nonRoot) - truth.tail(nonRoot)).squaredNorm();
         sse += frameSse;
-        frameRms.push_back(std::sqrt(frameSse / kCount));
+        frameRms.push_back(std::sqrt(frameSse / nonRoot));
         if (frameRms.back() > rep.worstFrameRmsDeg) {
             rep.worstFrameRmsDeg = frameRms.back();
             rep.worstFrame = f;
@@ -305,17 +305,17 @@ HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<
                 const Eigen::VectorXd xt =
                     (1.0 - u) * model.X.row(before->second).transpose() + u * model.X.row(after->second).transpose();
                 pm.predict(xt, mean, var);
-                sseTime += (model.fullPose(mean).tail(kCount) - truth.tail(kCount)).squaredNorm();
+                sseTime += (model.fullPose(mean).tail(nonRoot) - truth.tail(nonRoot)).squaredNorm();
                 ++rep.timeCount;
             }
         }
     }
-    const double count = static_cast<double>(heldFrames.size()) * kCount;
+    const double count = static_cast<double>(heldFrames.size()) * nonRoot;
     rep.heldOut = static_cast<int>(heldFrames.size());
     rep.rmsDeg = std::sqrt(sse / count);
     rep.medianFrameRmsDeg = percentile(frameRms, 0.5);
     rep.nearestRmsDeg = std::sqrt(sseNearest / count);
-    rep.timeRmsDeg = rep.timeCount > 0 ? std::sqrt(sseTime / (static_cast<double>(rep.timeCount) * kCount)) : 0.0;
+    rep.timeRmsDeg = rep.timeCount > 0 ? std::sqrt(sseTime / (static_cast<double>(rep.timeCount) * nonRoot)) : 0.0;
     return rep;
 }
 

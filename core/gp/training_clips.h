@@ -44,17 +44,18 @@ struct TrainingClip {
     std::vector<int> frames;  // 0-based training frames
 };
 
-// Checks `clips` (the first becomes the model's primary clip) and selects their frames: one skeleton (against the first), distinct names (file stems), the selection fitting every clip
-// and at least 3 rows in all. `paths[i]` is clip i's file as given ("" for none); the SHA-256 of
-// each existing file is recorded. Throws TrainingInputError.
+// Checks `clips` (the first becomes the model's primary clip) and selects their frames: one
+// skeleton (against the first), distinct names (file stems), the selection fitting every clip and
+// at least 3 rows in all. `paths[i]` is clip i's file as given ("" for none); the SHA-256 of each
+// existing file is recorded. Throws TrainingInputError.
 std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const std::vector<std::string>& paths,
                                                const FrameSelection& selection);
 
 // The training matrix of prepared clips (trainingDataFromClips).
 TrainingData trainingDataOf(const std::vector<TrainingClip>& clips);
 // Stores the clips in a freshly trained model: the first as its primary clip, the others in
-// moreClips, with file names, hashes and the frame selection (TrainingSettings; B = 0 recorded as the primary
-// clip's last frame).
+// moreClips, with file names, hashes and the frame selection (TrainingSettings; B = 0 recorded as
+// the primary clip's last frame).
 void attachTrainingClips(GpModel& model, std::vector<TrainingClip> clips, const FrameSelection& selection);
 
 }  // namespace mgp::gp

@@ -47,20 +47,20 @@
 // re-optimised for its pose, from the sixth trial on (a drag event needs at most five, so drags
 // keep their cost): up to three Newton steps on L_IK over x alone (y fixed; the exact x-gradient,
 // the joint model's x–x block as Hessian with its eigenvalues taken in absolute value, the same
-// latent bound, halving backtracking). F depends on x only through L_IK, so this is exact block elimination of x
-// (variable projection): the outer step no longer has to drag x along behind y, which the
-// indefinite x–x block made slow (docs/maths-ik.md §3). A solve still running after 20 trial steps is crawling:
-// from then on the shift is on the latent block only (τ on x, which always factorises a
-// Gauss–Newton model; τI on every unknown froze the y DOFs whose prior curvature is below τ), 4×
-// the smallest that factorises (bracketed), and the latent
-// bound becomes a trust radius (up to 16×; a step it made too long does not raise μ); earlier
-// steps are untouched (docs/maths-ik.md §3).
+// latent bound, halving backtracking). F depends on x only through L_IK, so this is exact block
+// elimination of x (variable projection): the outer step no longer has to drag x along behind y,
+// which the indefinite x–x block made slow (docs/maths-ik.md §3). A solve still running after 20
+// trial steps is crawling: from then on the shift is on the latent block only (τ on x, which always
+// factorises a Gauss–Newton model; τI on every unknown froze the y DOFs whose prior curvature is
+// below τ), 4× the smallest that factorises (bracketed), and the latent bound becomes a trust
+// radius (up to 16×; a step it made too long does not raise μ); earlier steps are untouched
+// (docs/maths-ik.md §3).
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
 // stationarityAbsolute + stationarityRelative·|F| (1e-6 + 1e-10·|F|) with μ ≤ 1e-2 and no shift,
-// i.e. no Newton step could lower F by more than that. `iterations` counts every linear solve/trial step
-// (accepted or not); `evaluations` counts prior evaluations.
+// i.e. no Newton step could lower F by more than that. `iterations` counts every linear solve/trial
+// step (accepted or not); `evaluations` counts prior evaluations.
 //
 // The solver holds a preallocated workspace for one model version: warm starts come from the
 // request (the previous event's (x, pose)). solve() never throws.

@@ -4,12 +4,12 @@
 //   minimise over (x, y):  F = (1 − λ) L_IK(x, y) + λ Σ_e ‖FK_e(y) − c_e‖²     (cm, λ = 0.999)
 //
 // y holds the model's kept pose columns (degrees); constant columns stay at the model's values,
-// DOFs outside the pose vector (an ASF clip's hands, toes) and the root translation stay at the start pose's
-// values. L-BFGS (LBFGS++) from the warm start (x, y) of the request. Interactive stopping rule:
-// stop when F changed < 1e-7 relative over 5 iterations, or at the iteration cap; `converged`
-// additionally requires every residual < 0.05 cm. LBFGS++ throws on a line-search failure and
-// leaves x at its last trial point: the solver keeps the best (F, x, y) it evaluated, catches,
-// and returns that best with a diagnostic. No exception leaves solve().
+// DOFs outside the pose vector (an ASF clip's hands, toes) and the root translation stay at the
+// start pose's values. L-BFGS (LBFGS++) from the warm start (x, y) of the request. Interactive
+// stopping rule: stop when F changed < 1e-7 relative over 5 iterations, or at the iteration cap;
+// `converged` additionally requires every residual < 0.05 cm. LBFGS++ throws on a line-search
+// failure and leaves x at its last trial point: the solver keeps the best (F, x, y) it evaluated,
+// catches, and returns that best with a diagnostic. No exception leaves solve().
 //
 // LearnedIkSolver holds a preallocated workspace for one model version (vectors, FK state, the
 // L-BFGS solver): after the first solve, a drag allocates nothing of ours; LBFGS++ itself makes

@@ -1,8 +1,8 @@
 #pragma once
 // Baseline IK without the learned prior: damped least squares on the pose vector's joint angles
-// (skeleton/pose_layout.h; the DOFs the skeleton has), adaptive damping, iterated from the start pose until the
-// residual stops falling. Users and tests compare it with the learned IK to see what the prior
-// buys. Root translation is fixed; the root rotation is free, as in the learned IK.
+// (skeleton/pose_layout.h; the DOFs the skeleton has), adaptive damping, iterated from the start
+// pose until the residual stops falling. Users and tests compare it with the learned IK to see what
+// the prior buys. Root translation is fixed; the root rotation is free, as in the learned IK.
 #include <vector>
 
 #include "ik/ik_types.h"

@@ -8,10 +8,11 @@
 // convention and poses (a rest frame stays frame 1), and FK equals the source's within 1e-6 cm.
 // Position channels of non-root joints (which the reader does not keep) are not written.
 //
-// Any other clip (ASF/AMC, synthetic): units cm (1 unit = 1 cm), Y up. One joint per bone of the 22-bone skeleton present in the clip,
-// plus `root`, named by ASF bone name and placed at the bone's start (OFFSET = the parent bone's
-// vector in cm); an `End Site` at the end of each leaf bone. Unmapped source joints are written
-// only where a model bone hangs below them (their rotation matters), under their own names.
+// Any other clip (ASF/AMC, synthetic): units cm (1 unit = 1 cm), Y up. One joint per bone of the
+// 22-bone skeleton present in the clip, plus `root`, named by ASF bone name and placed at the
+// bone's start (OFFSET = the parent bone's vector in cm); an `End Site` at the end of each leaf
+// bone. Unmapped source joints are written only where a model bone hangs below them (their rotation
+// matters), under their own names.
 //   root:   OFFSET 0 0 0, CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation
 //           (positions absolute)
 //   others: CHANNELS 3 Zrotation Yrotation Xrotation (the bone's local rotation C·E·Cᵀ)

@@ -7,8 +7,8 @@
 // the 47 ASF DOFs in the §2.3 order, or every rotation channel of a BVH clip; degrees, unwrapped
 // over time) plus the root translation in cm. Angles outside it (an ASF clip's hands, fingers,
 // thumbs, toes) are not stored: a loaded clip holds them at 0, as docs/maths.md §2 decides for FK.
-// The format "bvh" gives the channel layout back on reading. Doubles are written by nlohmann-json's shortest
-// round-trip formatting, so they read back bit-exactly.
+// The format "bvh" gives the channel layout back on reading. Doubles are written by nlohmann-json's
+// shortest round-trip formatting, so they read back bit-exactly.
 #include <nlohmann/json.hpp>
 #include <string>
 

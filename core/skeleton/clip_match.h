@@ -1,11 +1,11 @@
 #pragma once
 // Whether two clips hold the same capture, and whether two skeletons are one.
 //
-// sameCapture: whether two clips hold the same capture: the editor's open clip and the clip a model was
-// trained on (gp/model.h keeps it). The model's copy keeps only the DOFs of the pose vector
-// (docs/maths.md §2: toes, fingers and thumbs dropped) and went through unwrapping and JSON, so
-// the test compares joints by name, the frame count, and every frame's root position and pose
-// angles (modulo 360°), each to 1e-6 cm or degrees: not bytes, file names or dropped bones.
+// sameCapture: whether two clips hold the same capture: the editor's open clip and the clip a model
+// was trained on (gp/model.h keeps it). The model's copy keeps only the DOFs of the pose vector
+// (docs/maths.md §2: toes, fingers and thumbs dropped) and went through unwrapping and JSON, so the
+// test compares joints by name, the frame count, and every frame's root position and pose angles
+// (modulo 360°), each to 1e-6 cm or degrees: not bytes, file names or dropped bones.
 #include <string>
 
 #include "skeleton/clip.h"
