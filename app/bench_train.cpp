@@ -96,9 +96,10 @@ nlohmann::json bvhConventions(const BenchContext& ctx) {
     if (ctx.mocapDir.empty()) return rows;  // no clips: nothing to measure
     for (const char* file : {"bvh/02_03.bvh", "asf_amc/02_03.amc", "bvh/49_04.bvh", "bvh/131_01.bvh"}) {
         const std::string path = ctx.mocapDir + "/" + file;
+        Clip clip = loadClip(path);
         gp::FrameSelection firstFrames;
-        firstFrames.last = std::min(loadClip(path).frameCount(), 181);  // 180 rows once a rest frame is dropped
-        std::vector<gp::TrainingClip> clips = gp::prepareTrainingClips({loadClip(path)}, {path}, firstFrames);
+        firstFrames.last = std::min(clip.frameCount(), 181);  // 180 rows once a rest frame is dropped
+        std::vector<gp::TrainingClip> clips = gp::prepareTrainingClips({std::move(clip)}, {path}, firstFrames);
         if (clips[0].frames.size() > 180) clips[0].frames.resize(180);
         const std::string convention = clips[0].clip.convention;
         const int P = PoseLayout(clips[0].clip.skeleton).size();

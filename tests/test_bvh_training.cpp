@@ -82,7 +82,7 @@ TEST_CASE("BVH pose vector: the root's three rotations, then every joint's own r
         CHECK(clip.skeleton.joints[layout.joint(k)].dof[layout.axis(k)]);
         if (k > 3) CHECK(layout.joint(k) >= layout.joint(k - 1));  // joint order
     }
-    CHECK(layout.dofName(3) == clip.skeleton.joints[layout.joint(3)].name + " r" + "xyz"[layout.axis(3)]);
+    CHECK(layout.dofName(clip.skeleton, 3) == clip.skeleton.joints[layout.joint(3)].name + " r" + "xyz"[layout.axis(3)]);
     // Every animated angle is in the vector: extract then apply on a blank pose gives the frame back.
     const Pose& source = clip.frames[30];
     Pose back;

@@ -53,7 +53,9 @@ std::string sig4(double v) {
 }
 
 // "lfemur rx": the pose DOF behind weight index k (keptColumns maps it into the pose vector).
-std::string dofName(const gp::GpModel& m, int k) { return PoseLayout(m.clip.skeleton).dofName(m.keptColumns[k]); }
+std::string dofName(const gp::GpModel& m, const PoseLayout& layout, int k) {
+    return layout.dofName(m.clip.skeleton, m.keptColumns[k]);
+}
 
 // The value index under the mouse for the plot item just drawn, or -1 (ImGui's own rule, so
 // our tooltip names the sample ImGui highlights; a line plot has count − 1 segments).
@@ -101,6 +103,7 @@ void drawWeights(const gp::GpModel& m) {
     std::vector<int> order(D);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return m.w[a] > m.w[b]; });
+    const PoseLayout layout(m.clip.skeleton);
     ImGui::Text("w  min %s  max %s", sig4(m.w.minCoeff()).c_str(), sig4(m.w.maxCoeff()).c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("(%d DOFs)", D);
@@ -112,7 +115,7 @@ void drawWeights(const gp::GpModel& m) {
             ImGui::TableNextRow();
             for (const int k : {order[i], order[D - 1 - i]}) {
                 ImGui::TableNextColumn();
-                ImGui::Text("%-11s %s", dofName(m, k).c_str(), sig4(m.w[k]).c_str());
+                ImGui::Text("%-11s %s", dofName(m, layout, k).c_str(), sig4(m.w[k]).c_str());
             }
         }
         ImGui::EndTable();
@@ -123,7 +126,7 @@ void drawWeights(const gp::GpModel& m) {
     ImGui::PlotHistogram("##w", wf.data(), D, 0, nullptr, 0.0f, float(m.w.maxCoeff()),
                          ImVec2(ImGui::GetContentRegionAvail().x, 44));
     const int h = hoveredPlotIndex(D, false);
-    if (h >= 0) ImGui::SetTooltip("%s  w = %s", dofName(m, h).c_str(), sig4(m.w[h]).c_str());
+    if (h >= 0) ImGui::SetTooltip("%s  w = %s", dofName(m, layout, h).c_str(), sig4(m.w[h]).c_str());
     ImGui::TextDisabled("w per DOF, pose order (hover for names)");
 }
 

@@ -42,7 +42,6 @@ void TrainClipsWindow::show(EditorApp& app) {
     openHeader_ = doc.clip();
     openHeader_.frames.clear();
     openFrames_ = doc.clip().frameCount();
-    openRestFrame_ = doc.clip().restFrame;
     open_ = true;
 }
 
@@ -117,7 +116,7 @@ int TrainClipsWindow::totalRows(std::string* error) const {
         for (std::size_t i = 0; i < candidates_.size(); ++i) {
             if (!checked_[i]) continue;
             int frames = openFrames_;
-            bool restFrame = openRestFrame_;
+            bool restFrame = openHeader_.restFrame;
             if (!candidates_[i].open) {
                 const auto it = loaded_.find(candidates_[i].path);
                 if (it == loaded_.end()) continue;

@@ -49,9 +49,9 @@ private:
     bool open_ = false;
     bool popupUp_ = false;  // the modal was drawn last frame
     std::string openName_;  // the open clip the list was made for
-    Clip openHeader_;       // its name, file and skeleton (no frames): "Add file…" is judged against it
+    Clip openHeader_;       // its name, file, skeleton and rest-frame flag (no frames): "Add file…"
+                            // is judged against it
     int openFrames_ = 0;    // its frame count
-    bool openRestFrame_ = false;  // its frame 1 is a BVH converter's rest pose (never trained on)
     std::vector<TrainingCandidate> candidates_;
     std::vector<bool> checked_;
     std::map<std::string, Clip> loaded_;  // by path: the checked clips read so far

@@ -81,7 +81,7 @@ std::vector<TrainingCandidate> trainingCandidates(const Clip& open) {
     self.name = open.name;
     self.open = true;
     out.push_back(self);
-    if (!self.usable || open.sourcePath.empty()) return out;
+    if (open.sourcePath.empty()) return out;
     std::error_code ec;
     const fs::path dir = fs::path(open.sourcePath).parent_path();
     std::vector<std::string> files;

@@ -45,7 +45,7 @@ bool sameCapture(const Clip& a, const Clip& b, std::string* difference) {
         for (int d = 0; d < layout.size(); ++d) {
             const double gap = std::abs(wrap180(ya[d] - yb[d]));
             if (!(gap <= kTolerance)) {
-                std::snprintf(text, sizeof text, "frame %d, %s: %.3g° apart", f + 1, layout.dofName(d).c_str(), gap);
+                std::snprintf(text, sizeof text, "frame %d, %s: %.3g° apart", f + 1, layout.dofName(a.skeleton, d).c_str(), gap);
                 return differs(difference, text);
             }
         }

@@ -50,25 +50,29 @@ std::vector<std::string> missingModelBones(const Skeleton& skeleton) {
     return out;
 }
 
-PoseLayout::PoseLayout(const Skeleton& skeleton) {
-    const auto add = [&](int joint, int axis, const std::string& name) {
+PoseLayout::PoseLayout(const Skeleton& skeleton) : kind_(skeleton.poseVector) {
+    const auto add = [&](int joint, int axis) {
         joint_.push_back(joint);
         axis_.push_back(axis);
-        name_.push_back(name);
     };
-    if (skeleton.poseVector == PoseVectorKind::kAsfModel) {
-        for (const AsfPoseDof& d : asfPoseDofTable()) add(skeleton.findBone(d.bone), d.axis, d.bone);
+    if (kind_ == PoseVectorKind::kAsfModel) {
+        for (const AsfPoseDof& d : asfPoseDofTable()) add(skeleton.findBone(d.bone), d.axis);
         return;
     }
     // Channels: the root's three rotations first (as in the ASF vector), then every joint's.
     if (skeleton.jointCount() == 0) return;
-    for (int a = 0; a < 3; ++a) add(0, a, skeleton.joints[0].name);
+    for (int a = 0; a < 3; ++a) add(0, a);
     for (int j = 1; j < skeleton.jointCount(); ++j)
         for (int a = 0; a < 3; ++a)
-            if (skeleton.joints[j].dof[a]) add(j, a, skeleton.joints[j].name);
+            if (skeleton.joints[j].dof[a]) add(j, a);
 }
 
-std::string PoseLayout::dofName(int dof) const { return name_[dof] + " r" + "xyz"[axis_[dof]]; }
+std::string PoseLayout::dofName(const Skeleton& skeleton, int dof) const {
+    // ASF: the table's bone role (also for a bone the skeleton lacks); channels: the joint's name.
+    const std::string name =
+        kind_ == PoseVectorKind::kAsfModel ? asfPoseDofTable()[dof].bone : skeleton.joints[joint_[dof]].name;
+    return name + " r" + "xyz"[axis_[dof]];
+}
 
 void PoseLayout::extract(const Pose& pose, double* y) const {
     for (int i = 0; i < size(); ++i) y[i] = joint_[i] >= 0 ? pose.anglesDeg[joint_[i]][axis_[i]] : 0.0;

@@ -56,16 +56,17 @@ public:
     int size() const { return static_cast<int>(joint_.size()); }
     int joint(int dof) const { return joint_[dof]; }  // -1 if the skeleton lacks that ASF bone
     int axis(int dof) const { return axis_[dof]; }
-    // "lfemur rx" (ASF bone role) or "LeftUpLeg rz" (the BVH joint's name).
-    std::string dofName(int dof) const;
+    // "lfemur rx" (ASF bone role) or "LeftUpLeg rz" (the BVH joint's name); `skeleton` is the one
+    // the layout was made for.
+    std::string dofName(const Skeleton& skeleton, int dof) const;
 
     void extract(const Pose& pose, double* y) const;    // writes size() values
     Eigen::VectorXd extract(const Pose& pose) const;
     void apply(const double* y, Pose& pose) const;      // overwrites the size() mapped angles
 
 private:
+    PoseVectorKind kind_ = PoseVectorKind::kAsfModel;
     std::vector<int> joint_, axis_;
-    std::vector<std::string> name_;  // joint or bone name per DOF
 };
 
 }  // namespace mgp
