@@ -1,8 +1,13 @@
-// A handle drag with falloff (motion/drag_falloff.h): the target met on the dragged frame, a smooth
-// displacement over t−r..t+r, no frame-to-frame jump at the span's edges beyond the capture's.
+// A handle drag with falloff (motion/drag_falloff.h): the dragged frame keeps the drag's pose bit
+// for bit, a smooth displacement over t−r..t+r, no frame-to-frame jump at the span's edges beyond
+// the capture's.
 #include <cmath>
 
+#include "eval/motion_quality.h"
+#include "ik/constrained_ik.h"
+#include "ik/learned_ik.h"
 #include "motion/drag_falloff.h"
+#include "motion/foot_contacts.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -11,6 +16,22 @@ using namespace mgp;
 namespace {
 // Largest wrapped DOF change between frames s and s + 1.
 double jumpDeg(const std::vector<Pose>& f, const Skeleton& sk, int s) { return largestAngleChangeDeg(f[s + 1], f[s], sk); }
+
+// The pose a drag of `effector` on frame t to `target` ends in, solved as the editor solves it:
+// the constrained learned IK from the captured frame, planted feet pinned.
+ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector effector, const Eigen::Vector3d& target) {
+    const Clip& clip = version->model->clip;
+    ConstrainedIkRequest req;
+    req.start = clip.frames[t];
+    req.startX = latentStartForFrame(*version, t);
+    req.constraints = {{effector, target, false}};
+    const ContactSet contacts = detectFootContacts(clip);
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        if (foot != effector && contacts.at(foot, t)) req.constraints.push_back({foot, effectorCm(clip.skeleton, clip.frames[t], foot), true});
+    req.maxIterations = 200;
+    ConstrainedIkSolver solver(version);
+    return solver.solve(req);
+}
 }  // namespace
 
 TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames") {
@@ -19,12 +40,30 @@ TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames
     const int t = 109;
     CHECK(defaultFalloffRadius(120.0) == 30);
     const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[t], Effector::kLFoot) + Eigen::Vector3d(0, 15, 0);
+    const ConstrainedIkResult drag = dragPose(version, t, Effector::kLFoot, target);
+    REQUIRE(drag.reached);
     std::string problem;
-    MotionEditJob job = dragFalloffJob(version, Effector::kLFoot, t, target, 30, {}, &problem);
+    MotionEditJob job = dragFalloffJob(version, Effector::kLFoot, t, drag.pose, drag.x, 30, {}, &problem);
     REQUIRE(problem.empty());
     job.run();
-    CHECK((effectorCm(clip.skeleton, job.frames[t], Effector::kLFoot) - target).norm() < 0.5);
+    // The dragged frame is the drag's pose and latent point, bit for bit.
+    for (int j = 0; j < clip.skeleton.jointCount(); ++j) CHECK(job.frames[t].anglesDeg[j] == drag.pose.anglesDeg[j]);
+    CHECK(job.frames[t].rootCm == drag.pose.rootCm);
+    const auto heldAt = std::find(job.solvedFrames.begin(), job.solvedFrames.end(), t) - job.solvedFrames.begin();
+    CHECK(job.results[static_cast<std::size_t>(heldAt)].x == drag.x);
+    CHECK((effectorCm(clip.skeleton, job.frames[t], Effector::kLFoot) - target).norm() < 0.05);
     CHECK(job.quality.worstKeyErrorCm < 0.5);
+    // The neighbours join the held frame smoothly: the span's second differences within the motion
+    // bars (p95 ≤ 1.5 × capture + 2°, max ≤ 1.5 × capture + 5°).
+    MESSAGE("held-frame falloff: second difference p95 " << job.quality.edited.p95Deg << "° (captured " << job.quality.captured.p95Deg
+            << "°), max " << job.quality.edited.maxDeg << "° (captured " << job.quality.captured.maxDeg << "°) at frame "
+            << job.quality.edited.maxFrame + 1);
+    CHECK(job.quality.edited.p95Deg <= 1.5 * job.quality.captured.p95Deg + 2.0);
+    CHECK(job.quality.edited.maxDeg <= 1.5 * job.quality.captured.maxDeg + 5.0);
+    const SecondDifferenceStats around = secondDifferences(job.frames, clip.skeleton, t - 1, t + 1);
+    const SecondDifferenceStats capturedAround = secondDifferences(clip.frames, clip.skeleton, t - 1, t + 1);
+    MESSAGE("around the held frame: max " << around.maxDeg << "° (captured " << capturedAround.maxDeg << "°)");
+    CHECK(around.maxDeg <= 1.5 * capturedAround.maxDeg + 5.0);
     // The foot's displacement falls off: half-way out it is between zero and the full 15 cm.
     const double half = (effectorCm(clip.skeleton, job.frames[t + 15], Effector::kLFoot) -
                          effectorCm(clip.skeleton, clip.frames[t + 15], Effector::kLFoot)).norm();
@@ -41,15 +80,23 @@ TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames
 
 TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const Eigen::VectorXd noX;
     std::string problem;
-    dragFalloffJob(version, Effector::kLFoot, 100, Eigen::Vector3d::Zero(), 0, {}, &problem);
+    dragFalloffJob(version, Effector::kLFoot, 100, clip.frames[100], noX, 0, {}, &problem);
     CHECK(problem == "expected a falloff radius of at least 1 frame, found 0");
-    dragFalloffJob(version, Effector::kLFoot, 0, Eigen::Vector3d::Zero(), 30, {}, &problem);
+    dragFalloffJob(version, Effector::kLFoot, 0, clip.frames[0], noX, 30, {}, &problem);
     CHECK(problem == "expected a frame with a captured frame on each side (2..357), found 1");
-    dragFalloffJob(version, Effector::kLFoot, 100, Eigen::Vector3d::Constant(NAN), 30, {}, &problem);
-    CHECK(problem == "expected a finite drag target, found NaN or Inf");
+    Pose bad = clip.frames[100];
+    bad.anglesDeg[3].x() = NAN;
+    dragFalloffJob(version, Effector::kLFoot, 100, bad, noX, 30, {}, &problem);
+    CHECK(problem == "expected a finite drag pose, found NaN or Inf");
+    dragFalloffJob(version, Effector::kLFoot, 100, Pose{}, noX, 30, {}, &problem);
+    CHECK(problem == "expected a drag pose of the model's skeleton, found one with 0 joints");
+    dragFalloffJob(version, Effector::kLFoot, 100, clip.frames[100], Eigen::VectorXd::Zero(5), 30, {}, &problem);
+    CHECK(problem == "expected a 2-D held latent point, found 5");
     // Near the clip's start the span is clamped to frame 1 (one-sided falloff).
-    const MotionEditJob j = dragFalloffJob(version, Effector::kLFoot, 5, Eigen::Vector3d(0, 0, 0), 30, {}, &problem);
+    const MotionEditJob j = dragFalloffJob(version, Effector::kLFoot, 5, clip.frames[5], noX, 30, {}, &problem);
     CHECK(problem.empty());
     CHECK(j.keyFrames == std::vector<int>{0, 5, 35});
 }
@@ -68,6 +115,9 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[109], Effector::kLFoot) + Eigen::Vector3d(0, 10, 0);
     doc.dragTo(target, 200);
     REQUIRE(doc.endDrag());
+    const Pose released = doc.currentPose();  // what the user saw on release
+    const std::optional<gp::AdmissionVerdict> releasedVerdict = doc.currentPoseVerdict();
+    REQUIRE(releasedVerdict);
     doc.waitIdle();
     const std::string summary = doc.pollRegenerate();
     CHECK(summary.rfind("drag spread over frames 91-129", 0) == 0);
@@ -75,8 +125,15 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
         doc.setFrame(t);
         return doc.currentPose();
     };
-    // Frames 90..128 (0-based) changed, 109 meets the target, and one undo restores all of them.
-    CHECK((effectorCm(clip.skeleton, poseAt(109), Effector::kLFoot) - target).norm() < 0.5);
+    // Frames 90..128 (0-based) changed, 109 is still the drag's pose, and one undo restores all of them.
+    const Pose dragged = poseAt(109);
+    for (int j = 0; j < clip.skeleton.jointCount(); ++j) CHECK(dragged.anglesDeg[j] == released.anglesDeg[j]);
+    // So the range legend still judges the pose the user released (it judged a re-solved one).
+    const std::optional<gp::AdmissionVerdict> verdict = doc.currentPoseVerdict();
+    REQUIRE(verdict);
+    CHECK(verdict->lik == releasedVerdict->lik);
+    CHECK(verdict->sigma2 == releasedVerdict->sigma2);
+    CHECK((effectorCm(clip.skeleton, dragged, Effector::kLFoot) - target).norm() < 0.05);
     CHECK(largestAngleChangeDeg(poseAt(100), clip.frames[100], clip.skeleton) > 0.1);
     CHECK(doc.edits().size() == 39);
     CHECK(doc.undo().empty());

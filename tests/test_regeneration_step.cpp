@@ -72,6 +72,18 @@ TEST_CASE("regeneration step: a falloff joins the drag's step and keeps what the
     CHECK_FALSE(drag.before.at(13));  // not the drag's edit: what was there before the drag
     CHECK(drag.after.at(13)->pose.rootCm.y() == job.frames[13].rootCm.y());
     CHECK(falloffSummary(job, 3) == "drag spread over frames 12-16 (falloff 3 frames)");
+
+    // A falloff that held the dragged frame leaves the drag's own record there.
+    MotionEditJob held = finishedJob(store.clip());
+    held.heldPose = MotionEditJob::HeldPose{13, dragged.pose, Eigen::VectorXd()};
+    EditStep drag2;
+    drag2.label = drag.label;
+    drag2.before[13] = std::nullopt;
+    drag2.after[13] = dragged;
+    mergeFalloff(held, store, drag2);
+    REQUIRE(drag2.after.size() == 5);
+    CHECK(drag2.after.at(13)->x.size() == 0);  // the drag's record, not the job's (x = (13, −13))
+    CHECK(drag2.after.at(12)->pose.rootCm.y() == held.frames[12].rootCm.y());
 }
 
 TEST_CASE("regeneration step: only the moved inner keys are taught to the model, and the summary states the numbers") {

@@ -90,3 +90,44 @@ TEST_CASE("span solver refuses targets outside the span and bad spans") {
     CHECK(solver.validate({{12, Effector::kRFoot, Eigen::Vector3d::Constant(NAN), SpanTarget::Kind::kPath}}) ==
           "expected finite targets, found NaN or Inf");
 }
+
+TEST_CASE("a held inner frame stays bit for bit, and its neighbours' gradient still sees it") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int first = 88, last = 100, t = 94, i = t - first - 1;
+    // A pose the capture does not have: one kept DOF of the model turned 6°.
+    const PoseLayout layout(clip.skeleton);
+    const int dof = version->model->keptColumns[10], joint = layout.joint(dof), axis = layout.axis(dof);
+    Pose held = clip.frames[t];
+    held.anglesDeg[joint][axis] += 6.0;
+    const Eigen::VectorXd x = Eigen::Vector2d(0.31, -0.27);
+    for (SpanMethod method : {SpanMethod::kLevenbergMarquardt, SpanMethod::kLbfgs}) {
+        CAPTURE(static_cast<int>(method));
+        SpanSolver solver(version, first, last);
+        solver.setTargets(someTargets(clip, first, last));
+        CHECK(solver.holdFrame(first, held, x) == "expected a held frame in 90..100, found 89");
+        CHECK(solver.holdFrame(t, held, Eigen::VectorXd::Zero(3)) == "expected a 2-D held latent point, found 3");
+        REQUIRE(solver.holdFrame(t, held, x).empty());
+        const int b = version->model->latentDim() + version->model->D();
+        CHECK(solver.capturedZ().segment(i * b, 2) == x);
+        // Gradient: zero on the held block; the frames beside it match central differences.
+        Eigen::VectorXd z = solver.capturedZ(), grad, gp, gm;
+        for (int k = 0; k < b; ++k) z[(i - 1) * b + k] += 0.02 * std::cos(k);
+        solver.objective(z, grad);
+        CHECK(grad.segment(i * b, b).isZero(0.0));
+        for (int k : {(i - 1) * b, (i - 1) * b + 5, (i + 1) * b + 1, (i + 1) * b + 7, (i - 2) * b + 4}) {
+            const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
+            Eigen::VectorXd zp = z, zm = z;
+            zp[k] += h;
+            zm[k] -= h;
+            const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
+            CAPTURE(k);
+            CHECK(std::abs(num - grad[k]) / std::max(1.0, std::abs(num)) < 1e-5);
+        }
+        const SpanResult r = solver.solve(100, 1e-9, nullptr, method);
+        for (std::size_t j = 0; j < held.anglesDeg.size(); ++j) CHECK(r.poses[i].anglesDeg[j] == held.anglesDeg[j]);
+        CHECK(r.x[i] == x);
+        // The neighbours moved toward the held change (the smoothness sees it).
+        CHECK(std::abs(r.poses[i - 1].anglesDeg[joint][axis] - clip.frames[t - 1].anglesDeg[joint][axis]) > 1.0);
+    }
+}

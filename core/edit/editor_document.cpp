@@ -300,8 +300,7 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     const Clip& mc = v->model->clip;
     if (mc.frameCount() != frameCount() || mc.skeleton.jointCount() != clip().skeleton.jointCount()) return;
     std::string problem;
-    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, effectorCm(clip().skeleton, rec.after.pose, rec.effector),
-                                       falloffRadius_, pinnedEffectors(), &problem);
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(), &problem);
     if (!problem.empty()) return;  // the drag stays a one-frame edit
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;

@@ -27,6 +27,7 @@ EditStep regenerationStep(const MotionEditJob& job, const ClipEdits& edits) {
 
 void mergeFalloff(const MotionEditJob& job, const ClipEdits& edits, EditStep& dragStep) {
     for (auto& [frame, record] : regeneratedFrames(job)) {
+        if (job.heldPose && frame == job.heldPose->frame) continue;  // held: the drag's own record stays
         if (!dragStep.before.count(frame)) dragStep.before[frame] = edits.editAt(frame);
         dragStep.after[frame] = std::move(record);
     }

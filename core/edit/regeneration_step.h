@@ -17,7 +17,8 @@ FrameEdits regeneratedFrames(const MotionEditJob& job);
 // A new undo step for a path regeneration: every solved frame, before (from `edits`) and after.
 EditStep regenerationStep(const MotionEditJob& job, const ClipEdits& edits);
 // Folds a drag's falloff into that drag's own step: frames the step did not touch yet get
-// their current edit as `before`, and every solved frame its new `after`.
+// their current edit as `before`, and every solved frame but the held dragged one its new
+// `after` (the dragged frame keeps the drag's record).
 void mergeFalloff(const MotionEditJob& job, const ClipEdits& edits, EditStep& dragStep);
 // As the CLI's `edit --adaptive`: the poses at the moved inner keys (not the in-betweens), for
 // the model to learn. Keys whose solve is not finite are left out.

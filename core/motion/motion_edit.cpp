@@ -34,6 +34,21 @@ std::string MotionEditJob::validate() const {
         if (c.first > c.last) return "expected contact intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
     }
     if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
+    if (heldPose) {
+        if (solver != EditSolver::kSpan) return "expected the span solver for a held pose, found the per-frame one";
+        if (heldPose->frame <= keyFrames.front() || heldPose->frame >= keyFrames.back())
+            return "expected the held frame inside the span (" + std::to_string(keyFrames.front() + 2) + ".." +
+                   std::to_string(keyFrames.back()) + "), found " + std::to_string(heldPose->frame + 1);
+        if (static_cast<int>(heldPose->pose.anglesDeg.size()) != version->model->clip.skeleton.jointCount())
+            return "expected a held pose of the model's skeleton, found one with " + std::to_string(heldPose->pose.anglesDeg.size()) +
+                   " joints";
+        if (heldPose->x.size() != 0 && heldPose->x.size() != version->model->latentDim())
+            return "expected a " + std::to_string(version->model->latentDim()) + "-D held latent point, found " +
+                   std::to_string(heldPose->x.size());
+        bool finite = heldPose->x.allFinite() && heldPose->pose.rootCm.allFinite();
+        for (const auto& a : heldPose->pose.anglesDeg) finite = finite && a.allFinite();
+        if (!finite) return "expected a finite held pose, found NaN or Inf";
+    }
     return "";
 }
 
@@ -144,6 +159,11 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
             targets.push_back({solvedFrames[i], c.effector, c.targetCm, SpanTarget::Kind::kContact});
     }
     span.setTargets(targets);
+    if (heldPose) {
+        const Eigen::VectorXd x = heldPose->x.size() > 0 ? heldPose->x : latentStartForFrame(*version, heldPose->frame);
+        if (const std::string problem = span.holdFrame(heldPose->frame, heldPose->pose, x); !problem.empty())
+            throw std::invalid_argument(problem);  // validate() has checked what holdFrame() checks
+    }
     const SpanResult r = span.solve(maxIterations, spanTolerance, cancel, spanMethod);
     spanStop = r.stop;
     spanIterations = r.iterations;

@@ -19,6 +19,7 @@
 //     and pins become per-frame pins of that frame's solve.
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "eval/motion_quality.h"
@@ -56,6 +57,15 @@ struct MotionEditJob {
     std::shared_ptr<const ContactSet> contacts;
     // Further intervals held the same way (frames outside the span are ignored).
     std::vector<ContactInterval> heldContacts;
+    // An inner frame kept exactly at a given pose and latent point (a drag's accepted pose, which
+    // the falloff around it must not re-solve); kSpan only. An empty x holds the frame's
+    // captured latent point.
+    struct HeldPose {
+        int frame = -1;
+        Pose pose;
+        Eigen::VectorXd x;
+    };
+    std::optional<HeldPose> heldPose;
     double lambda = 0.999;
     SpanWeights spanWeights;                     // kSpan only (lambda above overrides its λ)
     SpanMethod spanMethod = SpanMethod::kLevenbergMarquardt;

@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <LBFGS.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -96,7 +97,32 @@ void SpanSolver::setTargets(std::vector<SpanTarget> targets) {
     computeScaling();
 }
 
+std::string SpanSolver::holdFrame(int frame, const Pose& pose, const Eigen::VectorXd& x) {
+    const gp::GpModel& m = *version_->model;
+    if (frame <= first_ || frame >= last_)
+        return "expected a held frame in " + std::to_string(first_ + 2) + ".." + std::to_string(last_) + ", found " +
+               std::to_string(frame + 1);
+    if (static_cast<int>(pose.anglesDeg.size()) != m.clip.skeleton.jointCount())
+        return "expected a held pose of the model's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) + " joints";
+    if (x.size() != d_) return "expected a " + std::to_string(d_) + "-D held latent point, found " + std::to_string(x.size());
+    bool finite = x.allFinite() && pose.rootCm.allFinite();
+    for (const auto& a : pose.anglesDeg) finite = finite && a.allFinite();
+    if (!finite) return "expected a finite held pose, found NaN or Inf";
+    heldInner_ = frame - first_ - 1;
+    heldPose_ = pose;
+    const int b = d_ + D_;
+    z0_.segment(heldInner_ * b, d_) = x;
+    z0_.segment(heldInner_ * b + d_, D_) = m.keptPose(layout_.extract(pose));
+    lastZ_.resize(0);
+    computeScaling();
+    return "";
+}
+
 void SpanSolver::poseOf(int i, const Eigen::VectorXd& z, Pose& pose) {
+    if (i == heldInner_) {  // exactly the held pose, also what the layout does not cover
+        pose = heldPose_;
+        return;
+    }
     const gp::GpModel& m = *version_->model;
     const int t = first_ + 1 + i;
     pose = m.clip.frames[t];
@@ -178,6 +204,7 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         addSecondDifference(s, uAt, w_.smoothPose, d_, D_);
         addSecondDifference(s, vAt, w_.smoothLatent, 0, d_);
     }
+    if (heldInner_ >= 0) grad.segment(heldInner_ * b, b).setZero();  // constants, not unknowns
     if (!std::isfinite(F) || !grad.allFinite()) {
         grad.setZero();
         lastZ_.resize(0);
@@ -364,6 +391,13 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
                 for (int k = 0; k < d_; ++k) blk(k, k) += 2.0 * w_.smoothLatent * c[p] * c[q];
                 for (int k = 0; k < D_; ++k) blk(d_ + k, d_ + k) += 2.0 * w_.smoothPose * c[p] * c[q];
             }
+    }
+    if (heldInner_ >= 0) {
+        // The held frame's rows and columns: identity on the diagonal, nothing coupling it, so
+        // with its zero gradient the factorised step is exactly zero there.
+        for (int j = std::max(0, heldInner_ - 2); j <= std::min(n_ - 1, heldInner_ + 2); ++j)
+            (j >= heldInner_ ? h.block(j, heldInner_) : h.block(heldInner_, j)).setZero();
+        h.block(heldInner_, heldInner_).setIdentity();
     }
 }
 

@@ -94,6 +94,12 @@ public:
     // "" or what is wrong with the targets (frame outside the span, NaN, effector absent).
     std::string validate(const std::vector<SpanTarget>& targets) const;
     void setTargets(std::vector<SpanTarget> targets);  // must validate
+    // Keeps inner frame `frame` at exactly `pose` and latent point `x` (a drag's accepted pose):
+    // its variables become constants (zero gradient, an identity block decoupled from its
+    // neighbours, so every step leaves them bit for bit), and the frames around it join it
+    // through the second differences. "" when held, else why not (not an inner frame, another
+    // skeleton, x not d-dimensional, NaN).
+    std::string holdFrame(int frame, const Pose& pose, const Eigen::VectorXd& x);
     // The captured span's stacked z (the start point).
     const Eigen::VectorXd& capturedZ() const { return z0_; }
     // F and its gradient (exposed for the gradient test).
@@ -121,6 +127,8 @@ private:
     std::vector<std::vector<int>> targetsOf_;  // inner frame → indices into targets_
     std::vector<SpanTarget> targets_;
     std::vector<int> rootKept_;            // kept-column indices of the root orientation
+    int heldInner_ = -1;                   // inner index of the held frame (holdFrame), or −1
+    Pose heldPose_;
     Eigen::VectorXd z0_, scale_;
     // Workspace.
     gp::PointWorkspace pointWs_;
