@@ -3,6 +3,7 @@
 // gradient of the solver's objective F over (x, y) (targets of several strengths and the root
 // stiffness), the prior's part of its Hessian model (exact), and the contracted second
 // derivative of FK (core/skeleton/forward_kinematics.h).
+#include <algorithm>
 #include <cmath>
 
 #include "central_difference.h"
@@ -145,5 +146,43 @@ TEST_CASE("λ·∂²FK/∂y² matches central differences of λᵀ J for every e
         CHECK(Hc.cwiseAbs().maxCoeff() > 0.0);
         CHECK(worst < 1e-6 * Hc.cwiseAbs().maxCoeff());
         CHECK((Hc - Hc.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    }
+}
+
+TEST_CASE("∂²L_IK/∂x² matches central differences of the exact ∇ₓL_IK (FAS and SGPLVM kernels)") {
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    // The FAS model, and an SGPLVM posterior on the same active points (RBF part only).
+    const Eigen::VectorXd rbfParams = m.kernel().logParams().head(gp::paramCount(gp::KernelKind::kSgplvm));
+    const gp::ActiveSetPosterior sgplvm(gp::Kernel(gp::KernelKind::kSgplvm, rbfParams), m.activeX(), m.activeYhat(), m.mu, m.w);
+    for (const gp::ActiveSetPosterior* pm : {version->posterior.get(), &sgplvm}) {
+        const Eigen::VectorXd y = m.Y.row(17).transpose() + Eigen::VectorXd::Constant(m.D(), 2.0);
+        for (const Eigen::VectorXd& x : {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
+                                         Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
+            CAPTURE(x.transpose());
+            CAPTURE(pm->kernel().hasEta());
+            gp::PointWorkspace ws;
+            Eigen::VectorXd gx(m.latentDim()), gy(m.D()), dS2;
+            Eigen::MatrixXd Jf, H;
+            pm->evaluate(x, y, ws, &gx, &gy);
+            pm->meanVarianceJacobians(x, ws, Jf, dS2);
+            pm->latentHessian(x, ws, Jf, dS2, H);
+            REQUIRE_FALSE(ws.clamped);
+            double err = 0.0;
+            for (int i = 0; i < x.size(); ++i) {
+                // Near the origin the angular term's derivatives scale with 1/|x|: a step of
+                // 1e-4·|x| there keeps the difference quotient's truncation error below round-off.
+                const double h = std::clamp(1e-4 * x.norm(), 1e-7, 1e-6);
+                Eigen::VectorXd a = x, b = x, ga, gb;
+                a[i] += h;
+                b[i] -= h;
+                pm->evaluate(a, y, &ga, nullptr);
+                pm->evaluate(b, y, &gb, nullptr);
+                err = std::max(err, ((ga - gb) / (2 * h) - H.col(i)).cwiseAbs().maxCoeff());
+            }
+            MESSAGE("|∂²L/∂x²| max " << H.cwiseAbs().maxCoeff() << " err " << err);
+            CHECK(err < 1e-6 * std::max(1.0, H.cwiseAbs().maxCoeff()));
+            CHECK(H == H.transpose());
+        }
     }
 }

@@ -40,6 +40,9 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     const bool fas = kernel_.hasEta();
     ws.k.resize(m);
     ws.a.resize(m);
+    ws.rbf.resize(m);
+    ws.angular.resize(m);
+    ws.cosine.resize(m);
     ws.J.resize(m, d);
     ws.phiX.resize(d);
     const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
@@ -61,6 +64,9 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
             kj += E;
         }
         ws.k[j] = kj;
+        ws.rbf[j] = R;
+        ws.angular[j] = E;
+        ws.cosine[j] = C;
         for (Eigen::Index c = 0; c < d; ++c) {
             double g = -gamma * (x[c] - XI_(j, c)) * R;
             if (fas) g += E * (phiI_(j, c) - C * ws.phiX[c]) / n;
@@ -112,6 +118,72 @@ void ActiveSetPosterior::meanVarianceJacobians(const Eigen::VectorXd& x, const P
                                 : 0.0;
     dSigma2.noalias() = -2.0 * ws.J.transpose() * ws.a;
     dSigma2 += diagGrad * x;
+}
+
+void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace& ws, const Eigen::MatrixXd& Jf,
+                                       const Eigen::VectorXd& dSigma2, Eigen::MatrixXd& H) const {
+    // L = E/(2s) + (D/2) ln s + ½‖x‖² with E = ‖r‖², r = W(y − f), s = σ²(x); q_i = ∂_i fᵀ W r,
+    // c = D/(2s) − E/(2s²), and k_m the cross-kernel entries:
+    //   ∂_ij L = Σ_m u_m ∂_ij k_m + ∂_i fᵀ W² ∂_j f / s + (q_i ∂_j s + ∂_i s q_j)/s²
+    //          + (E/s³ − D/(2s²)) ∂_i s ∂_j s + c (∂_ij k(x,x) − 2 ∂_i kᵀ K⁻¹ ∂_j k) + δ_ij,
+    //   u = −B W r / s − 2c K⁻¹k   (the last part, and every ∂s, is 0 where the clamp is active).
+    const Eigen::Index m = XI_.rows(), d = XI_.cols();
+    const double D = static_cast<double>(mu_.size());
+    const double s = ws.variance, E = ws.r.squaredNorm();
+    const double c = D / (2.0 * s) - E / (2.0 * s * s);
+    const double gamma = kernel_.gamma();
+    const bool fas = kernel_.hasEta();
+    H.resize(d, d);
+    H.setZero();
+    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
+    const double n = std::sqrt(n2);
+    // Σ_m u_m ∂_ij k_m. RBF: ∂_ij R = (γ² Δ_i Δ_j − γ δ_ij) R with Δ = x − x_m. Angular:
+    // ∂_i A = A g_i with g_i = (φ_m,i − C φ_i)/n, C = φ·φ_m, so ∂_ij A = A (g_i g_j + ∂_j g_i),
+    // ∂_j g_i = −(g_j φ_i + C (δ_ij/n − x_i x_j/n³))/n − g_i x_j/n².
+    for (Eigen::Index j = 0; j < m; ++j) {
+        const double u = -ws.bwr[j] / s - (ws.clamped ? 0.0 : 2.0 * c * ws.a[j]);
+        const double R = ws.rbf[j];
+        for (Eigen::Index a = 0; a < d; ++a)
+            for (Eigen::Index b = 0; b <= a; ++b) {
+                double h = gamma * gamma * (x[a] - XI_(j, a)) * (x[b] - XI_(j, b)) * R - (a == b ? gamma * R : 0.0);
+                if (fas) {
+                    const double A = ws.angular[j], C = ws.cosine[j];
+                    const double ga = (phiI_(j, a) - C * ws.phiX[a]) / n, gb = (phiI_(j, b) - C * ws.phiX[b]) / n;
+                    const double dgab = -(gb * ws.phiX[a] + C * ((a == b ? 1.0 / n : 0.0) - x[a] * x[b] / (n2 * n))) / n -
+                                        ga * x[b] / n2;
+                    h += A * (ga * gb + dgab);
+                }
+                H(a, b) += u * h;
+            }
+    }
+    // The mean's and the variance's first-derivative terms.
+    for (Eigen::Index a = 0; a < d; ++a) {
+        const double qa = Jf.col(a).dot(ws.wr);
+        for (Eigen::Index b = 0; b <= a; ++b) {
+            const double qb = Jf.col(b).dot(ws.wr);
+            double h = Jf.col(a).cwiseProduct(w_).dot(Jf.col(b).cwiseProduct(w_)) / s;
+            h += (qa * dSigma2[b] + dSigma2[a] * qb) / (s * s) + (E / (s * s * s) - D / (2.0 * s * s)) * dSigma2[a] * dSigma2[b];
+            H(a, b) += h;
+        }
+    }
+    if (!ws.clamped) {
+        // c (∂_ij k(x,x) − 2 ∂_i kᵀ K⁻¹ ∂_j k); k(x,x) = α + η e^{|φ|²}, |φ|² = |x|²/n²:
+        // ∂_i = η e^{|φ|²} 2ε² x_i/n⁴, ∂_ij = η e^{|φ|²} [4ε⁴ x_i x_j/n⁸ + 2ε² (δ_ij/n⁴ − 4 x_i x_j/n⁶)].
+        ws.kinvJ.resize(m, d);
+        for (Eigen::Index b = 0; b < d; ++b) ws.kinvJ.col(b).noalias() = Kinv_ * ws.J.col(b);  // d GEMVs: no GEMM packing
+        const double eps2 = kAngularEps * kAngularEps;
+        const double ephi = fas ? kernel_.eta() * std::exp(ws.phiX.squaredNorm()) : 0.0;
+        for (Eigen::Index a = 0; a < d; ++a)
+            for (Eigen::Index b = 0; b <= a; ++b) {
+                const double diag = ephi * (4.0 * eps2 * eps2 * x[a] * x[b] / (n2 * n2 * n2 * n2) +
+                                            2.0 * eps2 * ((a == b ? 1.0 : 0.0) / (n2 * n2) - 4.0 * x[a] * x[b] / (n2 * n2 * n2)));
+                H(a, b) += c * (diag - 2.0 * ws.J.col(a).dot(ws.kinvJ.col(b)));
+            }
+    }
+    for (Eigen::Index a = 0; a < d; ++a) {
+        H(a, a) += 1.0;
+        for (Eigen::Index b = 0; b < a; ++b) H(b, a) = H(a, b);
+    }
 }
 
 void ActiveSetPosterior::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {

@@ -24,7 +24,9 @@ namespace mgp::gp {
 // Scratch for the allocation-free ActiveSetPosterior::evaluate overload: sized on first use, reused after.
 struct PointWorkspace {
     Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
+    Eigen::VectorXd rbf, angular, cosine;  // per active point: the RBF and angular parts of k, φ(x)·φ(x_j)
     Eigen::MatrixXd J;      // M×d: ∂k/∂x
+    Eigen::MatrixXd kinvJ;  // M×d: K⁻¹ ∂k/∂x (latentHessian)
     double variance = 0.0;  // σ²(x) of the last evaluation
     bool clamped = false;   // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
 };
@@ -68,6 +70,11 @@ public:
     // Jf and dSigma2 have their sizes.
     void meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
                                Eigen::VectorXd& dSigma2) const;
+    // After evaluate(x, y, ws, gradX, …) with a gradient and meanVarianceJacobians(x, ws, Jf, dSigma2)
+    // on the same x: the exact Hessian ∂²L_IK/∂x² (d×d, y fixed), from the kernel's second
+    // derivatives (docs/maths-ik.md §2). No allocation once ws and H have their sizes.
+    void latentHessian(const Eigen::VectorXd& x, PointWorkspace& ws, const Eigen::MatrixXd& Jf, const Eigen::VectorXd& dSigma2,
+                       Eigen::MatrixXd& H) const;
 
 private:
     Kernel kernel_;

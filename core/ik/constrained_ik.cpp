@@ -7,7 +7,6 @@
 namespace mgp {
 
 namespace {
-constexpr double kFdStepX = 1e-5;          // central differences of ∂L_IK/∂x for the x–x block
 constexpr double kMaxDamping = 1e12;
 constexpr double kConvergedDamping = 1e-2;  // above this the decrement is not a Newton decrement
 constexpr int kProjections = 5;             // second-order corrections onto the pins per trial
@@ -61,10 +60,7 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     y_.resize(D_);
     gx_.resize(d_);
     gy_.resize(D_);
-    gxP_.resize(d_);
-    gxM_.resize(d_);
     gyTmp_.resize(D_);
-    xP_.resize(d_);
     for (Eigen::VectorXd* v : {&xR_, &gR_, &sR_, &xRt_, &gRt_}) v->resize(d_);
     HR_.resize(d_, d_);
     jac_.resize(3, layout_.size());
@@ -206,18 +202,9 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
                 H_(i, d_ + k) = h;
             }
         }
-        // x–x: central differences of the exact x-gradient (y fixed).
-        for (int i = 0; i < d_; ++i) {
-            xP_ = x_;
-            xP_[i] += kFdStepX;
-            version_->posterior->evaluate(xP_, y_, wsFd_, &gxP_, &gyTmp_);
-            xP_[i] -= 2.0 * kFdStepX;
-            version_->posterior->evaluate(xP_, y_, wsFd_, &gxM_, &gyTmp_);
-            evaluations_ += 2;
-            for (int j = 0; j < d_; ++j) H_(j, i) = (gxP_[j] - gxM_[j]) / (2.0 * kFdStepX);
-        }
-        for (int i = 0; i < d_; ++i)
-            for (int j = 0; j < i; ++j) H_(i, j) = H_(j, i) = 0.5 * (H_(i, j) + H_(j, i));
+        // x–x: exact, from the kernel's second derivatives (y fixed).
+        version_->posterior->latentHessian(x_, ws_, Jf_, dS2_, Hxx_);
+        H_.topLeftCorner(d_, d_) = Hxx_;
     }
     setPose(y_);
     // Targets (penalties) and pins (constraints).
@@ -287,10 +274,9 @@ void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
     xR_ = z.head(d_);
     double L = post.evaluate(xR_, y_, wsFd_, &gR_, &gyTmp_);
     ++evaluations_;
-    // The x–x Hessian is the joint model's at the current point (its central differences are
-    // already paid for): a trial's y differs from it by one step, and the backtracking below
-    // only accepts what lowers L_IK. Central differences at every trial point cost twice the
-    // prior evaluations for the same convergence (docs/maths-ik.md §3).
+    // The x–x Hessian is the joint model's at the current point (already computed): a trial's y
+    // differs from it by one step, and the backtracking below only accepts what lowers L_IK
+    // (docs/maths-ik.md §3).
     HR_ = Hm_.topLeftCorner(d_, d_);
     HR_ = (0.5 * (HR_ + HR_.transpose())).eval();
     // |λ|: a direction of negative curvature is followed downhill, not uphill.

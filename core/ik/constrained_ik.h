@@ -26,8 +26,8 @@
 //     set in the pose.
 //
 // Method: Levenberg–Marquardt with hard pins, on the exact gradient of F and the Hessian model
-//   H = ∇²L_IK (y–y and x–y blocks analytic from ∂f/∂x and ∂σ²/∂x; x–x block by central differences
-//       of the analytic x-gradient, so the ln σ² term is handled exactly)
+//   H = ∇²L_IK (exact: y–y and x–y blocks from ∂f/∂x and ∂σ²/∂x, the x–x block from the kernel's
+//       second derivatives, ActiveSetPosterior::latentHessian; the ln σ² term included)
 //     + Σ κ J_tᵀJ_t (Gauss–Newton for the targets) + k_root on the root diagonal,
 //     + the constraints' curvature Σ κe_t·∇²FK_t + Σ ν_p·∇²FK_p (ν: least-squares multipliers)
 //       once the iteration is in its Newton regime (the last step accepted with μ ≤ 1e-3);
@@ -187,9 +187,9 @@ private:
     // Workspace.
     Pose pose_;
     FkState fk_;
-    Eigen::VectorXd full_, x_, y_, gx_, gy_, gxP_, gxM_, gyTmp_, dS2_, xP_;
+    Eigen::VectorXd full_, x_, y_, gx_, gy_, gyTmp_, dS2_;
     Eigen::VectorXd xR_, gR_, sR_, xRt_, gRt_, nuT_, deltaT_;  // latent refinement, tangent decrement
-    Eigen::MatrixXd HR_;
+    Eigen::MatrixXd HR_, Hxx_;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigR_;
     Eigen::MatrixXd Jf_;
     gp::PointWorkspace ws_, wsFd_;
