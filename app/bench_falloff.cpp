@@ -9,6 +9,7 @@
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
+#include "ik_cli.h"
 #include "io/clip_loader.h"
 #include "motion/drag_falloff.h"
 #include "motion_quality_json.h"
@@ -36,9 +37,9 @@ ConstrainedIkResult solveDrag(const gp::ModelVersionPtr& version, int t, Effecto
     req.start = clip.frames[t];
     req.startX = latentStartForFrame(*version, t);
     req.constraints = {{effector, target, false}};
-    const ContactSet contacts = detectFootContacts(clip);
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (foot != effector && contacts.at(foot, t)) req.constraints.push_back({foot, effectorCm(clip.skeleton, clip.frames[t], foot), true});
+    FkState fk;
+    forwardKinematics(clip.skeleton, clip.frames[t], fk);
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), t, req.constraints)) req.constraints.push_back(pin);
     req.maxIterations = 200;
     ConstrainedIkSolver solver(version);
     return solver.solve(req);
