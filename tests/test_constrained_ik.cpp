@@ -165,6 +165,13 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
         req.maxIterations = 2000;
         const ConstrainedIkResult deep = solver.solve(req);
         CHECK(res.constraints[0].residualCm <= deep.constraints[0].residualCm + 0.05);
+        // Past 50 steps the out-of-reach target switches the model to full Newton (docs/maths-ik.md
+        // §3 step 6): the least-squares solve becomes stationary (35_01 after 100 steps, 10_03
+        // after 252; with Gauss–Newton alone both were still moving after 2000).
+        MESSAGE("2000-step solve: " << std::string(ikStopName(deep.stop)) << " after " << deep.iterations << ", hand "
+                                    << deep.constraints[0].residualCm << " cm");
+        if (file == "35_01.amc") CHECK(res.converged);
+        CHECK(deep.converged);
     }
 }
 

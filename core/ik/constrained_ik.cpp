@@ -27,6 +27,10 @@ constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half
 constexpr int kDirectTrials = 5;             // trials before the latent refinement starts
 constexpr int kLatentRefinements = 3;        // Newton steps in x per trial point (variable projection)
 constexpr int kRefineBacktracks = 5;         // halvings of one such step before it is given up
+// Past the interactive budget (a drag event's and `pose --iterations 50`'s cap), a solve whose exact
+// target is still out of tolerance is in the large-residual regime, where Gauss–Newton converges
+// only linearly: from then on its model is the full Newton one (docs/maths-ik.md §3).
+constexpr int kLargeResidualIterations = 50;
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -268,6 +272,16 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     return F;
 }
 
+double ConstrainedIkSolver::exactTargetResidualCm() const {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    double worst = 0.0;
+    for (int t : exactTargets_) {
+        const IkConstraint& c = request_->constraints[t];
+        worst = std::max(worst, (effectorCm(sk, fk_, c.effector) - c.targetCm).norm());
+    }
+    return worst;
+}
+
 void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
     const gp::ActiveSetPosterior& post = *version_->posterior;
     y_ = z.tail(D_);
@@ -404,6 +418,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     int it = 0;
     bool lastAccepted = false;
     double latentRadius = latentStepBound_;  // grows only once the solve is crawling
+    bool largeResidual = false;              // Newton model after every accepted step (see above)
     while (true) {
         const bool crawling = it >= kCrawlIterations;
         // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
@@ -420,7 +435,9 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double floor = 1e-9 * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
         for (int i = 0; i < n_; ++i) Hd_(i, i) += mu * std::max(std::abs(H_(i, i)), floor);
         llt_.compute(Hd_);
-        if (llt_.info() != Eigen::Success && newton) {
+        // An indefinite Newton model falls back to Gauss–Newton for this step, except in the
+        // large-residual regime, where Gauss–Newton is what crawls: there it takes the shift below.
+        if (llt_.info() != Eigen::Success && newton && !largeResidual) {
             lastAccepted = false;
             continue;
         }
@@ -586,7 +603,9 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             z_ = zTrial_;
             mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
-            curvature_ = mu <= kNewtonDamping;  // the next model is a Newton one: it needs C
+            // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
+            largeResidual = it >= kLargeResidualIterations && exactTargetResidualCm() > request.reachedToleranceCm;
+            curvature_ = mu <= kNewtonDamping || largeResidual;  // the next model is a Newton one: it needs C
             F = evaluate(z_, true);
             if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
                 stop = IkStop::kNonFinite;  // cannot happen for finite z; kept as a guard

@@ -53,8 +53,10 @@
 // trial steps is crawling: from then on the shift is on the latent block only (τ on x, which always
 // factorises a Gauss–Newton model; τI on every unknown froze the y DOFs whose prior curvature is
 // below τ), 4× the smallest that factorises (bracketed), and the latent bound becomes a trust
-// radius (up to 16×; a step it made too long does not raise μ); earlier steps are untouched
-// (docs/maths-ik.md §3).
+// radius (up to 16×; a step it made too long does not raise μ); earlier steps are untouched. A
+// solve past 50 steps whose exact target is still out of tolerance (out of reach, or met only by a
+// straight limb) uses the full Newton model after every accepted step: there Gauss–Newton
+// converges only linearly (docs/maths-ik.md §3).
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
@@ -167,6 +169,8 @@ private:
     void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
     // Lowers L_IK over the latent part of z with its pose fixed (the trial's variable projection).
     void refineLatent(Eigen::VectorXd& z);
+    // The largest exact target's residual (cm) at the pose of the last evaluate().
+    double exactTargetResidualCm() const;
     // Removes the held DOFs from the unknowns in g_, H_, A_ and Aall_ (and C_ when `curvature`).
     void freezeHeld(bool curvature);
 
