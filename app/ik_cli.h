@@ -32,11 +32,6 @@ gp::ModelVersionPtr loadModelVersion(const std::string& path);
 // UsageError listing the model's clips. clipIndex (if given) receives the clip's index in the
 // file: withPrimaryClip(model, *clipIndex) restores the file's clip order before saving.
 gp::ModelVersionPtr loadModelVersion(const std::string& path, const std::string& clipName, int* clipIndex = nullptr);
-// The feet `pose` holds by default on `frame`: each foot in ground contact there (`contacts`, the
-// rule of core/motion/foot_contacts.h), not released and not already in `constraints`, as a pin
-// where it stands (`fk` of that frame). `released` is indexed by Effector (null: none released).
-std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,
-                                        const std::vector<IkConstraint>& constraints, const bool* released = nullptr);
 // One entry per constraint of that kind: effector, residual_cm, reached (targets also strength).
 nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, bool pins);
 

@@ -1,6 +1,8 @@
 #pragma once
-// The span report (eval/motion_quality.h) as JSON, shared by `edit --json` and `bench --only edit`.
+// The span report (eval/motion_quality.h) as JSON, shared by `edit --json` and the edit and falloff
+// bench sections.
 // Frame numbers are printed 1-based, like every CLI frame.
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "eval/motion_quality.h"
@@ -18,6 +20,16 @@ inline nlohmann::json spanQualityJson(const SpanQuality& q) {
             {"worst_key_error_cm", q.worstKeyErrorCm}, {"worst_path_error_cm", q.worstPathErrorCm},
             {"worst_pose_change_deg", q.worstPoseChangeDeg}, {"worst_pose_change_frame", q.worstPoseChangeFrame + 1},
             {"contacts", contacts}};
+}
+
+// The span against the motion bars (DESIGN's quality targets): second difference p95 ≤ 1.5 ×
+// capture + 2°, max ≤ 1.5 × capture + 5°, every held contact's travel ≤ capture + 1 cm.
+inline nlohmann::json motionBarsJson(const SpanQuality& q) {
+    bool contactsOk = true;
+    for (const ContactTravel& c : q.contacts) contactsOk = contactsOk && std::abs(c.editedCm - c.capturedCm) <= 1.0;
+    return {{"p95", q.edited.p95Deg <= 1.5 * q.captured.p95Deg + 2.0},
+            {"max", q.edited.maxDeg <= 1.5 * q.captured.maxDeg + 5.0},
+            {"contacts_1_cm", contactsOk}};
 }
 
 }  // namespace mgp::app

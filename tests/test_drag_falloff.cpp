@@ -25,9 +25,9 @@ ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector
     req.start = clip.frames[t];
     req.startX = latentStartForFrame(*version, t);
     req.constraints = {{effector, target, false}};
-    const ContactSet contacts = detectFootContacts(clip);
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (foot != effector && contacts.at(foot, t)) req.constraints.push_back({foot, effectorCm(clip.skeleton, clip.frames[t], foot), true});
+    FkState fk;
+    forwardKinematics(clip.skeleton, clip.frames[t], fk);
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), t, req.constraints)) req.constraints.push_back(pin);
     req.maxIterations = 200;
     ConstrainedIkSolver solver(version);
     return solver.solve(req);

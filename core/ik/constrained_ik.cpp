@@ -286,7 +286,7 @@ void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
     const gp::ActiveSetPosterior& post = *version_->posterior;
     y_ = z.tail(D_);
     xR_ = z.head(d_);
-    double L = post.evaluate(xR_, y_, wsFd_, &gR_, &gyTmp_);
+    double L = post.evaluate(xR_, y_, wsRefine_, &gR_, &gyTmp_);
     ++evaluations_;
     // The x–x Hessian is the joint model's at the current point (already computed): a trial's y
     // differs from it by one step, and the backtracking below only accepts what lowers L_IK
@@ -306,7 +306,7 @@ void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
         bool lowered = false;
         for (int b = 0; b < kRefineBacktracks && !lowered; ++b, sR_ *= 0.5) {
             xRt_ = xR_ + sR_;
-            const double Lt = post.evaluate(xRt_, y_, wsFd_, &gRt_, &gyTmp_);
+            const double Lt = post.evaluate(xRt_, y_, wsRefine_, &gRt_, &gyTmp_);
             ++evaluations_;
             if (Lt < L) {
                 xR_ = xRt_;

@@ -196,7 +196,7 @@ private:
     Eigen::MatrixXd HR_, Hxx_;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigR_;
     Eigen::MatrixXd Jf_;
-    gp::PointWorkspace ws_, wsFd_;
+    gp::PointWorkspace ws_, wsRefine_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
     Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, zSoc_, delta_, tmp_, nu_, rhs_;
     Eigen::MatrixXd H_, C_, Hm_, Hd_, A_, HinvAt_, S_, hc_;

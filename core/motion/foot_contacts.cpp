@@ -116,4 +116,18 @@ ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule) {
                               clip.fps, rule);
 }
 
+std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,
+                                        const std::vector<IkConstraint>& constraints, const bool* released) {
+    std::vector<IkConstraint> out;
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+        if (!clip.skeleton.hasEffector(foot) || (released && released[static_cast<int>(foot)]) ||
+            !contacts.at(foot, frame))
+            continue;
+        bool constrained = false;
+        for (const IkConstraint& c : constraints) constrained |= c.effector == foot;
+        if (!constrained) out.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+    }
+    return out;
+}
+
 }  // namespace mgp

@@ -15,7 +15,9 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ik/ik_types.h"
 #include "skeleton/clip.h"
+#include "skeleton/forward_kinematics.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp {
@@ -61,5 +63,11 @@ ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule = {});
 
 // One effector's world position at every frame of the clip (cm).
 std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effector);
+
+// The feet a pose solve holds by default on `frame`: each foot in ground contact there
+// (`contacts`), not released and not already in `constraints`, as a pin where it stands (`fk` of
+// that frame). `released` is indexed by Effector (null: none released).
+std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,
+                                        const std::vector<IkConstraint>& constraints, const bool* released = nullptr);
 
 }  // namespace mgp

@@ -45,9 +45,7 @@ std::string MotionEditJob::validate() const {
         if (heldPose->x.size() != 0 && heldPose->x.size() != version->model->latentDim())
             return "expected a " + std::to_string(version->model->latentDim()) + "-D held latent point, found " +
                    std::to_string(heldPose->x.size());
-        bool finite = heldPose->x.allFinite() && heldPose->pose.rootCm.allFinite();
-        for (const auto& a : heldPose->pose.anglesDeg) finite = finite && a.allFinite();
-        if (!finite) return "expected a finite held pose, found NaN or Inf";
+        if (!heldPose->x.allFinite() || !allFinite(heldPose->pose)) return "expected a finite held pose, found NaN or Inf";
     }
     return "";
 }

@@ -105,9 +105,7 @@ std::string SpanSolver::holdFrame(int frame, const Pose& pose, const Eigen::Vect
     if (static_cast<int>(pose.anglesDeg.size()) != m.clip.skeleton.jointCount())
         return "expected a held pose of the model's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) + " joints";
     if (x.size() != d_) return "expected a " + std::to_string(d_) + "-D held latent point, found " + std::to_string(x.size());
-    bool finite = x.allFinite() && pose.rootCm.allFinite();
-    for (const auto& a : pose.anglesDeg) finite = finite && a.allFinite();
-    if (!finite) return "expected a finite held pose, found NaN or Inf";
+    if (!x.allFinite() || !allFinite(pose)) return "expected a finite held pose, found NaN or Inf";
     heldInner_ = frame - first_ - 1;
     heldPose_ = pose;
     const int b = d_ + D_;
