@@ -21,6 +21,9 @@ constexpr double kPinSlackCm = 1e-3;
 // latent step bound becomes a trust radius that grows after good steps it cut (docs/maths-ik.md §3).
 // Solves that stop earlier take exactly the steps they took without these rules.
 constexpr int kCrawlIterations = 20;
+constexpr double kMinAngleRadiusDeg = 0.5;    // a crawling solve's angle trust radius: its floor
+constexpr double kAccurateGain = 0.1;        // |gain − 1| at most this: the model predicted the step
+constexpr double kAccurateDamping = 0.1;     // a crawling solve's μ factor after such a step
 constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
 constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
 constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
@@ -418,6 +421,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     int it = 0;
     bool lastAccepted = false;
     double latentRadius = latentStepBound_;  // grows only once the solve is crawling
+    double angleRadius = kMaxStepDeg;         // shrinks only once the solve is crawling
     bool largeResidual = false;              // Newton model after every accepted step (see above)
     while (true) {
         const bool crawling = it >= kCrawlIterations;
@@ -526,10 +530,12 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // Step bound: the linearisation of FK and of the prior does not reach further than about
         // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
         // (same direction) rather than left to the damping, which would also slow every later step.
-        // A crawling solve uses the latent trust radius instead of the fixed bound.
+        // A crawling solve uses trust radii instead of the fixed bounds (latent and angle).
         const double latentBound = crawling ? latentRadius : latentStepBound_;
         const double latentScale = latentBound / std::max(1e-300, delta_.head(d_).norm());
-        const double scale = std::min({1.0, latentScale, kMaxStepDeg / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff())});
+        const double angleBound = crawling ? angleRadius : kMaxStepDeg;
+        const double angleScale = angleBound / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff());
+        const double scale = std::min({1.0, latentScale, angleScale});
         double stepDecrease = modelDecrease;
         if (scale < 1.0) {
             delta_ *= scale;
@@ -598,10 +604,21 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
                 latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
             else if (!accepted)
                 latentRadius = std::max(latentStepBound_, 0.5 * latentRadius);
+            // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
+            // fails keeps failing while μ is still too small to shorten it), doubled back up to
+            // kMaxStepDeg after a good step it cut.
+            if (angleScale < 1.0 && angleScale <= scale) {
+                if (!accepted) angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
+                else if (gain > 0.75) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
+            }
         }
         if (accepted) {
             z_ = zTrial_;
-            mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+            // Nielsen's update lowers μ by at most 3× per step; a crawling solve whose model
+            // predicted the step (gain within 1 ± 0.1) lowers it 10×, so it regains the Newton
+            // regime in a third of the steps after a run of rejections (docs/maths-ik.md §3).
+            mu *= crawling && std::abs(gain - 1.0) <= kAccurateGain ? kAccurateDamping
+                                                                  : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
             largeResidual = it >= kLargeResidualIterations && exactTargetResidualCm() > request.reachedToleranceCm;
