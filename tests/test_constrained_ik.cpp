@@ -44,6 +44,36 @@ struct Move {
     Effector effector;
     Eigen::Vector3d offset;
 };
+
+// What `motiongp pose` solves: from the captured frame, `effector` moved by `move` (an exact
+// target), the feet in ground contact there held as pins where they stand.
+ConstrainedIkRequest poseMove(const gp::ModelVersion& v, int frame, Effector effector, const Eigen::Vector3d& move) {
+    const Clip& clip = v.model->clip;
+    ConstrainedIkRequest req = captured(v, frame);
+    FkState fk;
+    forwardKinematics(clip.skeleton, req.start, fk);
+    req.constraints = {{effector, effectorCm(clip.skeleton, fk, effector) + move, false}};
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), frame, req.constraints))
+        req.constraints.push_back(pin);
+    return req;
+}
+
+// The request at its 50-step cap converges, meets every pin and target, and ends at the minimum
+// the same solve finds with 500 steps.
+void checkConvergesWithin50AtTheLongSolvesMinimum(ConstrainedIkSolver& solver, ConstrainedIkRequest req) {
+    REQUIRE(req.maxIterations == 50);
+    const ConstrainedIkResult at50 = solver.solve(req);
+    req.maxIterations = 500;
+    const ConstrainedIkResult full = solver.solve(req);
+    MESSAGE("at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations << ", F " << at50.objective
+                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F " << full.objective);
+    CHECK(at50.converged);
+    CHECK(at50.iterations <= 50);
+    CHECK(at50.reached);
+    for (const auto& c : at50.constraints) CHECK(c.residualCm <= (c.pin ? 1e-5 : 0.05));
+    REQUIRE(full.converged);
+    CHECK(at50.objective == doctest::Approx(full.objective).epsilon(1e-6));
+}
 }  // namespace
 
 TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose: pins always hold, targets met to 0.05 cm") {
@@ -110,29 +140,11 @@ TEST_CASE("constrained IK: a cold start that crawls converges within 50 iteratio
     // converges only after 51 trial steps; with them it converged in 47, and with the latent
     // refinement of step 7 as well in 34, at the same F.
     const auto version = test::walkModel35();
-    const Clip& clip = version->model->clip;
-    const int frame = 149;
-    ConstrainedIkRequest req = captured(*version, frame);
-    FkState fk;
-    forwardKinematics(clip.skeleton, req.start, fk);
-    req.constraints = {{Effector::kLHand, effectorCm(clip.skeleton, fk, Effector::kLHand) + Eigen::Vector3d(-30, 0, 30), false}};
-    const ContactSet contacts = detectFootContacts(clip);
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (contacts.at(foot, frame)) req.constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
+    const ConstrainedIkRequest req = poseMove(*version, 149, Effector::kLHand, {-30, 0, 30});
     REQUIRE(req.constraints.size() >= 2);  // at least one foot is pinned
     ConstrainedIkSolver solver(version);
-    const ConstrainedIkResult at50 = solver.solve(req);
-    req.maxIterations = 500;
-    const ConstrainedIkResult full = solver.solve(req);
-    MESSAGE("at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations << ", F " << at50.objective
-                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F " << full.objective);
-    CHECK(at50.converged);
-    CHECK(at50.iterations <= 50);
-    CHECK(at50.reached);
-    for (const auto& c : at50.constraints) CHECK(c.residualCm <= (c.pin ? 1e-5 : 0.05));
     // The same minimum as the long solve: the rules make the crawl faster, not go elsewhere.
-    REQUIRE(full.converged);
-    CHECK(at50.objective == doctest::Approx(full.objective).epsilon(1e-6));
+    checkConvergesWithin50AtTheLongSolvesMinimum(solver, req);
 }
 
 TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keeps the feet, reached:false, refused") {
@@ -213,29 +225,11 @@ TEST_CASE("constrained IK: re-fitting each trial's latent point lets long cold s
     // short of the minima a 500-iteration solve reaches (70.08 and 111.99); with it they
     // converge in 39 and 33.
     const auto version = test::kickModel1003();
-    const Clip& clip = version->model->clip;
-    const int frame = 149;
-    const ContactSet contacts = detectFootContacts(clip);
-    const std::pair<Effector, Eigen::Vector3d> moves[] = {{Effector::kRFoot, {0, 0, -30}}, {Effector::kLHand, {0, 50, 0}}};
     ConstrainedIkSolver solver(version);
-    for (const auto& [effector, move] : moves) {
-        ConstrainedIkRequest req = captured(*version, frame);
-        FkState fk;
-        forwardKinematics(clip.skeleton, req.start, fk);
-        req.constraints = {{effector, effectorCm(clip.skeleton, fk, effector) + move, false}};
-        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-            if (foot != effector && contacts.at(foot, frame))
-                req.constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
-        const ConstrainedIkResult at50 = solver.solve(req);
-        req.maxIterations = 500;
-        const ConstrainedIkResult full = solver.solve(req);
-        MESSAGE(std::string(effectorName(effector)) << ": at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations
-                                       << ", F " << at50.objective << "; at 500: F " << full.objective);
-        CHECK(at50.converged);
-        CHECK(at50.reached);
-        for (const auto& c : at50.constraints) CHECK(c.residualCm <= (c.pin ? 1e-5 : 0.05));
-        REQUIRE(full.converged);
-        CHECK(at50.objective == doctest::Approx(full.objective).epsilon(1e-6));
+    const Move moves[] = {{Effector::kRFoot, {0, 0, -30}}, {Effector::kLHand, {0, 50, 0}}};
+    for (const Move& move : moves) {
+        CAPTURE(std::string(effectorName(move.effector)));
+        checkConvergesWithin50AtTheLongSolvesMinimum(solver, poseMove(*version, 149, move.effector, move.offset));
     }
 }
 
@@ -247,26 +241,8 @@ TEST_CASE("constrained IK: a crawling solve's trust radius on angles and its fas
     // §3 step 6) the solve stopped at the cap (F 69.1158, converged after 52); with them it
     // converges in 28 at the minimum the 500-step solve finds.
     const auto version = test::kickModel1003();
-    const Clip& clip = version->model->clip;
-    const int frame = 149;
-    ConstrainedIkRequest req = captured(*version, frame);
-    FkState fk;
-    forwardKinematics(clip.skeleton, req.start, fk);
-    req.constraints = {{Effector::kLHand, effectorCm(clip.skeleton, fk, Effector::kLHand) + Eigen::Vector3d(0, 40, 10), false}};
-    const ContactSet contacts = detectFootContacts(clip);
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (contacts.at(foot, frame)) req.constraints.push_back({foot, effectorCm(clip.skeleton, fk, foot), true});
     ConstrainedIkSolver solver(version);
-    const ConstrainedIkResult at50 = solver.solve(req);
-    req.maxIterations = 500;
-    const ConstrainedIkResult full = solver.solve(req);
-    MESSAGE("at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations << ", F " << at50.objective
-                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F " << full.objective);
-    CHECK(at50.converged);
-    CHECK(at50.reached);
-    for (const auto& c : at50.constraints) CHECK(c.residualCm <= (c.pin ? 1e-5 : 0.05));
-    REQUIRE(full.converged);
-    CHECK(at50.objective == doctest::Approx(full.objective).epsilon(1e-6));
+    checkConvergesWithin50AtTheLongSolvesMinimum(solver, poseMove(*version, 149, Effector::kLHand, {0, 40, 10}));
 }
 
 TEST_CASE("constrained IK: strength runs from natural to exact, and the root turns only as much as needed") {
