@@ -8,10 +8,9 @@
 #include "bench_registry.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
-#include "ik/learned_ik.h"
 #include "io/clip_loader.h"
+#include "motion/captured_pose_request.h"
 #include "motion/drag_falloff.h"
-#include "motion/foot_contacts.h"
 #include "motion_quality_json.h"
 
 namespace mgp::app {
@@ -32,17 +31,8 @@ const FalloffCase kCases[] = {
 };
 
 ConstrainedIkResult solveDrag(const gp::ModelVersionPtr& version, int t, Effector effector, const Eigen::Vector3d& target) {
-    const Clip& clip = version->model->clip;
-    ConstrainedIkRequest req;
-    req.start = clip.frames[t];
-    req.startX = latentStartForFrame(*version, t);
-    req.constraints = {{effector, target, false}};
-    FkState fk;
-    forwardKinematics(clip.skeleton, clip.frames[t], fk);
-    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), t, req.constraints)) req.constraints.push_back(pin);
-    req.maxIterations = 200;
     ConstrainedIkSolver solver(version);
-    return solver.solve(req);
+    return solver.solve(capturedPoseRequest(*version, t, {{effector, target, false}}, detectFootContacts(version->model->clip), 200));
 }
 
 nlohmann::json runFalloff(MotionEditJob job, const Pose& released, int t, int repeats) {

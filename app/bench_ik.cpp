@@ -24,6 +24,7 @@
 #include "ik/learned_ik.h"
 #include "ik_cli.h"
 #include "io/clip_loader.h"
+#include "motion/captured_pose_request.h"
 #include "motion/foot_contacts.h"
 #include "motion/motion_edit.h"
 #include "skeleton/synthetic_clip.h"
@@ -194,7 +195,6 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
     const ContactSet contacts = detectFootContacts(clip);
     const Eigen::Vector3d moves[] = {{0, 20, 0}, {20, 0, 0}, {0, 0, -30}, {0, 40, 10}, {-30, 0, 30}, {0, 50, 0}};
     ConstrainedIkSolver solver(version);
-    ConstrainedIkRequest req;
     ConstrainedIkResult res, full;
     std::vector<double> iterations;
     int moveCount = 0, converged = 0, reachable = 0, reachableConverged = 0;
@@ -205,12 +205,8 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
         forwardKinematics(clip.skeleton, clip.frames[frame], fk);
         for (Effector e : {Effector::kRHand, Effector::kLHand, Effector::kRFoot}) {
             for (const Eigen::Vector3d& mv : moves) {
-                req.start = clip.frames[frame];
-                req.startX = latentStartForFrame(*version, frame);
-                req.constraints = {{e, effectorCm(clip.skeleton, fk, e) + mv, false}};
-                for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, req.constraints))
-                    req.constraints.push_back(pin);
-                req.maxIterations = kEventCap;
+                ConstrainedIkRequest req =
+                    capturedPoseRequest(*version, frame, {{e, effectorCm(clip.skeleton, fk, e) + mv, false}}, contacts, kEventCap);
                 solver.solve(req, res);
                 req.maxIterations = 500;
                 solver.solve(req, full);

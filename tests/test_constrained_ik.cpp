@@ -10,6 +10,7 @@
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
+#include "motion/captured_pose_request.h"
 #include "motion/foot_contacts.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -49,13 +50,8 @@ struct Move {
 // target), the feet in ground contact there held as pins where they stand.
 ConstrainedIkRequest poseMove(const gp::ModelVersion& v, int frame, Effector effector, const Eigen::Vector3d& move) {
     const Clip& clip = v.model->clip;
-    ConstrainedIkRequest req = captured(v, frame);
-    FkState fk;
-    forwardKinematics(clip.skeleton, req.start, fk);
-    req.constraints = {{effector, effectorCm(clip.skeleton, fk, effector) + move, false}};
-    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), frame, req.constraints))
-        req.constraints.push_back(pin);
-    return req;
+    const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[frame], effector) + move;
+    return capturedPoseRequest(v, frame, {{effector, target, false}}, detectFootContacts(clip), 50);
 }
 
 // The request at its 50-step cap converges, meets every pin and target, and ends at the minimum

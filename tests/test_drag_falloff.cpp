@@ -5,7 +5,7 @@
 
 #include "eval/motion_quality.h"
 #include "ik/constrained_ik.h"
-#include "ik/learned_ik.h"
+#include "motion/captured_pose_request.h"
 #include "motion/drag_falloff.h"
 #include "motion/foot_contacts.h"
 #include "test_support.h"
@@ -20,17 +20,8 @@ double jumpDeg(const std::vector<Pose>& f, const Skeleton& sk, int s) { return l
 // The pose a drag of `effector` on frame t to `target` ends in, solved as the editor solves it:
 // the constrained learned IK from the captured frame, planted feet pinned.
 ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector effector, const Eigen::Vector3d& target) {
-    const Clip& clip = version->model->clip;
-    ConstrainedIkRequest req;
-    req.start = clip.frames[t];
-    req.startX = latentStartForFrame(*version, t);
-    req.constraints = {{effector, target, false}};
-    FkState fk;
-    forwardKinematics(clip.skeleton, clip.frames[t], fk);
-    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), t, req.constraints)) req.constraints.push_back(pin);
-    req.maxIterations = 200;
     ConstrainedIkSolver solver(version);
-    return solver.solve(req);
+    return solver.solve(capturedPoseRequest(*version, t, {{effector, target, false}}, detectFootContacts(version->model->clip), 200));
 }
 }  // namespace
 
