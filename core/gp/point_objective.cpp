@@ -39,6 +39,7 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     const double alpha = kernel_.alpha(), gamma = kernel_.gamma(), eta = kernel_.eta();
     const bool fas = kernel_.hasEta();
     ws.k.resize(m);
+    ws.v.resize(m);
     ws.a.resize(m);
     ws.rbf.resize(m);
     ws.angular.resize(m);
@@ -73,11 +74,16 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
             ws.J(j, c) = g;
         }
     }
-    ws.a.noalias() = Kinv_ * ws.k;
+    // From the Cholesky factor, not the stored K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is
+    // small, while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation (maths §9.1).
+    ws.v = ws.k;
+    llt_.matrixL().solveInPlace(ws.v);
+    ws.a = ws.v;
+    llt_.matrixU().solveInPlace(ws.a);
     ws.f = mu_;
     ws.f.noalias() += B_.transpose() * ws.k;
     const double diag = alpha + (fas ? eta * std::exp(phi2) : 0.0);
-    const double noiseFree = diag - ws.k.dot(ws.a);
+    const double noiseFree = diag - ws.v.squaredNorm();
     const bool clamped = !(noiseFree > 0.0);
     const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
     ws.variance = s2;

@@ -23,7 +23,7 @@ namespace mgp::gp {
 
 // Scratch for the allocation-free ActiveSetPosterior::evaluate overload: sized on first use, reused after.
 struct PointWorkspace {
-    Eigen::VectorXd k, a, f, r, wr, bwr, phiX;
+    Eigen::VectorXd k, v, a, f, r, wr, bwr, phiX;  // v = L⁻¹k (K = LLᵀ), a = K⁻¹k
     Eigen::VectorXd rbf, angular, cosine;  // per active point: the RBF and angular parts of k, φ(x)·φ(x_j)
     Eigen::MatrixXd J;      // M×d: ∂k/∂x
     Eigen::MatrixXd kinvJ;  // M×d: K⁻¹ ∂k/∂x (latentHessian)
@@ -60,8 +60,9 @@ public:
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
     // The same value and gradients with no heap allocation after the first call on `ws` (the
-    // interactive IK path): one fused pass builds k(x) and ∂k/∂x together. gradX/gradY, when
-    // given, must already have sizes d and D.
+    // interactive IK path): one fused pass builds k(x) and ∂k/∂x together, and σ² comes from the
+    // Cholesky factor, free of the cancellation noise the K⁻¹ form above has next to the data
+    // (docs/maths.md §9.1). gradX/gradY, when given, must already have sizes d and D.
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
 
