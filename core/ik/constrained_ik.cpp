@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "skeleton/limb_extension.h"
 
 namespace mgp {
 
@@ -34,6 +37,11 @@ constexpr int kRefineBacktracks = 5;         // halvings of one such step before
 // target is still out of tolerance is in the large-residual regime, where Gauss–Newton converges
 // only linearly: from then on its model is the full Newton one (docs/maths-ik.md §3).
 constexpr int kLargeResidualIterations = 50;
+// A crawling solve enters that regime earlier, once a step is rejected while such a target sits at
+// the end of a limb this close to straight (limbExtension): at a straight knee or elbow the limb's
+// Jacobian loses rank, and the Gauss–Newton model cannot see that the effector is at the end of
+// its reach; the constraint curvature it omits can (docs/maths-ik.md §3).
+constexpr double kStraightLimbExtension = 0.99;
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -275,14 +283,17 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     return F;
 }
 
-double ConstrainedIkSolver::exactTargetResidualCm() const {
+ConstrainedIkSolver::ExactTargetReach ConstrainedIkSolver::exactTargetReach(double reachedToleranceCm) const {
     const Skeleton& sk = version_->model->clip.skeleton;
-    double worst = 0.0;
+    ExactTargetReach reach;
     for (int t : exactTargets_) {
         const IkConstraint& c = request_->constraints[t];
-        worst = std::max(worst, (effectorCm(sk, fk_, c.effector) - c.targetCm).norm());
+        if (!((effectorCm(sk, fk_, c.effector) - c.targetCm).norm() > reachedToleranceCm)) continue;
+        reach.outside = true;
+        const std::optional<double> extension = limbExtension(sk, fk_, c.effector);
+        if (extension && *extension >= kStraightLimbExtension) reach.outsideAtStraightLimb = true;
     }
-    return worst;
+    return reach;
 }
 
 void ConstrainedIkSolver::refineLatent(Eigen::VectorXd& z) {
@@ -423,6 +434,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     double latentRadius = latentStepBound_;  // grows only once the solve is crawling
     double angleRadius = kMaxStepDeg;         // shrinks only once the solve is crawling
     bool largeResidual = false;              // Newton model after every accepted step (see above)
+    bool straightLimbNewton = false;         // Gauss–Newton failed at a straight limb (see above)
+    bool rejectedSinceAccepted = false;
     while (true) {
         const bool crawling = it >= kCrawlIterations;
         // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
@@ -621,7 +634,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
                                                                   : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
-            largeResidual = it >= kLargeResidualIterations && exactTargetResidualCm() > request.reachedToleranceCm;
+            const ExactTargetReach reach = exactTargetReach(request.reachedToleranceCm);
+            straightLimbNewton = straightLimbNewton || (it > kCrawlIterations && rejectedSinceAccepted && reach.outsideAtStraightLimb);
+            largeResidual = (it >= kLargeResidualIterations && reach.outside) || (straightLimbNewton && reach.outsideAtStraightLimb);
+            rejectedSinceAccepted = false;
             curvature_ = mu <= kNewtonDamping || largeResidual;  // the next model is a Newton one: it needs C
             F = evaluate(z_, true);
             if (!std::isfinite(F) || !g_.allFinite() || !H_.allFinite()) {
@@ -634,8 +650,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // The grown radius, not the damping, made the step too long: the halved radius above
             // shortens the retry, and μ stays where the gain ratio put it.
             lastAccepted = false;
+            rejectedSinceAccepted = true;
         } else {
             lastAccepted = false;
+            rejectedSinceAccepted = true;
             mu *= nuLm;
             nuLm *= 2.0;
             if (mu > kMaxDamping) {

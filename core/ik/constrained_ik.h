@@ -58,7 +58,10 @@
 // predicted (gain within 1 ± 0.1) instead of at most 3×; earlier steps are untouched. A
 // solve past 50 steps whose exact target is still out of tolerance (out of reach, or met only by a
 // straight limb) uses the full Newton model after every accepted step: there Gauss–Newton
-// converges only linearly (docs/maths-ik.md §3).
+// converges only linearly. A crawling solve (past step 20) does so earlier, from its first step
+// accepted after a rejection while that target sits at the end of a knee or elbow within 1 % of
+// straight (limbExtension ≥ 0.99), for as long as it sits there: at the straight limb's
+// rank-deficient Jacobian Gauss–Newton cannot see the end of the reach (docs/maths-ik.md §3).
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
@@ -171,8 +174,13 @@ private:
     void addConstraintCurvature(Effector e, const Eigen::Vector3d& lambda);
     // Lowers L_IK over the latent part of z with its pose fixed (the trial's variable projection).
     void refineLatent(Eigen::VectorXd& z);
-    // The largest exact target's residual (cm) at the pose of the last evaluate().
-    double exactTargetResidualCm() const;
+    // At the pose of the last evaluate(): whether an exact target is farther than the reached
+    // tolerance, and whether one such sits at the end of a straight limb (limbExtension ≥ 0.99).
+    struct ExactTargetReach {
+        bool outside = false;
+        bool outsideAtStraightLimb = false;
+    };
+    ExactTargetReach exactTargetReach(double reachedToleranceCm) const;
     // Removes the held DOFs from the unknowns in g_, H_, A_ and Aall_ (and C_ when `curvature`).
     void freezeHeld(bool curvature);
 
