@@ -26,6 +26,7 @@ ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::Matrix
     if (!jitterCholesky(kernel_.gram(XI_), llt_, jitter_))
         throw std::runtime_error("ActiveSetPosterior: the kernel matrix could not be factored");
     Kinv_ = llt_.solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
+    Linv_ = llt_.matrixL().solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
     B_ = llt_.solve(Yhat);
     phiI_.resize(XI_.rows(), XI_.cols());
     for (Eigen::Index j = 0; j < XI_.rows(); ++j)
@@ -74,12 +75,11 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
             ws.J(j, c) = g;
         }
     }
-    // From the Cholesky factor, not the stored K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is
-    // small, while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation (maths §9.1).
-    ws.v = ws.k;
-    llt_.matrixL().solveInPlace(ws.v);
-    ws.a = ws.v;
-    llt_.matrixU().solveInPlace(ws.a);
+    // From the Cholesky factor, not K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is small,
+    // while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation (maths §9.1). Two
+    // triangular products with the stored L⁻¹ cost what one product with K⁻¹ did.
+    ws.v.noalias() = Linv_.triangularView<Eigen::Lower>() * ws.k;
+    ws.a.noalias() = Linv_.transpose().triangularView<Eigen::Upper>() * ws.v;
     ws.f = mu_;
     ws.f.noalias() += B_.transpose() * ws.k;
     const double diag = alpha + (fas ? eta * std::exp(phi2) : 0.0);

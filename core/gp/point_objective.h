@@ -83,6 +83,7 @@ private:
     Eigen::VectorXd mu_, w_;
     Eigen::LLT<Eigen::MatrixXd> llt_;
     Eigen::MatrixXd Kinv_, B_;
+    Eigen::MatrixXd Linv_;  // L⁻¹ of K = LLᵀ (lower triangular): σ² without cancellation noise
     Eigen::MatrixXd phiI_;  // φ(x_j) of the active points (FAS), for the fused evaluation
     double jitter_ = 0.0;
 };
