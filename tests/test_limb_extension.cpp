@@ -29,13 +29,18 @@ Skeleton leg() {
     return sk;
 }
 
-double extensionWithKnee(const Skeleton& sk, double kneeDeg) {
+// FK of `sk` with every angle 0 except the knee's (joint 2's x), when the skeleton has one.
+FkState fkWithKnee(const Skeleton& sk, double kneeDeg) {
     Pose pose;
-    pose.anglesDeg.assign(3, Eigen::Vector3d::Zero());
-    pose.anglesDeg[2].x() = kneeDeg;
+    pose.anglesDeg.assign(sk.jointCount(), Eigen::Vector3d::Zero());
+    if (kneeDeg != 0.0) pose.anglesDeg[2].x() = kneeDeg;
     FkState fk;
     forwardKinematics(sk, pose, fk);
-    const std::optional<double> e = limbExtension(sk, fk, Effector::kLFoot);
+    return fk;
+}
+
+double extensionWithKnee(const Skeleton& sk, double kneeDeg) {
+    const std::optional<double> e = limbExtension(sk, fkWithKnee(sk, kneeDeg), Effector::kLFoot);
     REQUIRE(e.has_value());
     return *e;
 }
@@ -54,10 +59,7 @@ TEST_CASE("limb extension: the law of cosines on a 40 + 30 cm leg") {
 
 TEST_CASE("limb extension: no value for the head or a limb without its bone roles") {
     const Skeleton sk = leg();
-    Pose pose;
-    pose.anglesDeg.assign(3, Eigen::Vector3d::Zero());
-    FkState fk;
-    forwardKinematics(sk, pose, fk);
+    const FkState fk = fkWithKnee(sk, 0.0);
     CHECK_FALSE(limbExtension(sk, fk, Effector::kHead).has_value());
     CHECK_FALSE(limbExtension(sk, fk, Effector::kRFoot).has_value());  // no rfemur / rtibia
     CHECK_FALSE(limbExtension(sk, fk, Effector::kLHand).has_value());
@@ -65,10 +67,7 @@ TEST_CASE("limb extension: no value for the head or a limb without its bone role
 
 TEST_CASE("limb extension of 35_01: straight limbs at rest, bent knees and elbows in the walk") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
-    Pose rest;
-    rest.anglesDeg.assign(clip.skeleton.jointCount(), Eigen::Vector3d::Zero());
-    FkState fk;
-    forwardKinematics(clip.skeleton, rest, fk);
+    FkState fk = fkWithKnee(clip.skeleton, 0.0);  // the rest pose
     for (Effector e : {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot}) {
         CAPTURE(effectorName(e));
         const std::optional<double> atRest = limbExtension(clip.skeleton, fk, e);

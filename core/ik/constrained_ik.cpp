@@ -634,8 +634,9 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
                                                                   : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
+            // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.
             const ExactTargetReach reach = it > kCrawlIterations ? exactTargetReach(request.reachedToleranceCm) : ExactTargetReach{};
-            straightLimbNewton = straightLimbNewton || (it > kCrawlIterations && rejectedSinceAccepted && reach.outsideAtStraightLimb);
+            straightLimbNewton = straightLimbNewton || (rejectedSinceAccepted && reach.outsideAtStraightLimb);
             largeResidual = (it >= kLargeResidualIterations && reach.outside) || (straightLimbNewton && reach.outsideAtStraightLimb);
             rejectedSinceAccepted = false;
             curvature_ = mu <= kNewtonDamping || largeResidual;  // the next model is a Newton one: it needs C
