@@ -42,6 +42,9 @@ constexpr int kLargeResidualIterations = 50;
 // Jacobian loses rank, and the Gauss–Newton model cannot see that the effector is at the end of
 // its reach; the constraint curvature it omits can (docs/maths-ik.md §3).
 constexpr double kStraightLimbExtension = 0.99;
+// A trial rejected only for leaving the pins is retried this much shorter, at most and at least.
+constexpr double kMaxRetryShortening = 0.5;
+constexpr double kMinRetryShortening = 0.1;
 }  // namespace
 
 const char* ikStopName(IkStop stop) {
@@ -436,8 +439,11 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     bool largeResidual = false;              // Newton model after every accepted step (see above)
     bool straightLimbNewton = false;         // Gauss–Newton failed at a straight limb (see above)
     bool rejectedSinceAccepted = false;
+    // Step caps for the retry of a trial rejected only because it left the pins (see below).
+    double retryAngleCap = std::numeric_limits<double>::infinity(), retryLatentCap = retryAngleCap;
     while (true) {
         const bool crawling = it >= kCrawlIterations;
+        const bool shortenedRetry = std::isfinite(retryAngleCap);
         // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
         // Lagrangian Hessian) once the iteration is in its Newton regime; see the header.
         const bool newton = lastAccepted && curvature_;
@@ -543,10 +549,11 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // Step bound: the linearisation of FK and of the prior does not reach further than about
         // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
         // (same direction) rather than left to the damping, which would also slow every later step.
-        // A crawling solve uses trust radii instead of the fixed bounds (latent and angle).
-        const double latentBound = crawling ? latentRadius : latentStepBound_;
+        // A crawling solve uses trust radii instead of the fixed bounds (latent and angle), and a
+        // shortened retry (below) its caps.
+        const double latentBound = std::min(crawling ? latentRadius : latentStepBound_, retryLatentCap);
         const double latentScale = latentBound / std::max(1e-300, delta_.head(d_).norm());
-        const double angleBound = crawling ? angleRadius : kMaxStepDeg;
+        const double angleBound = std::min(crawling ? angleRadius : kMaxStepDeg, retryAngleCap);
         const double angleScale = angleBound / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff());
         const double scale = std::min({1.0, latentScale, angleScale});
         double stepDecrease = modelDecrease;
@@ -607,9 +614,22 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
         // Pins never get visibly worse: a trial that leaves them by more than kPinSlackCm, the
         // tolerance or where they are (a projection that could not return, e.g. at a straight leg)
-        // is rejected, so μ shrinks the step.
-        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
+        // is rejected.
+        const double pinAllowance = std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
+        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= pinAllowance;
         const bool accepted = std::isfinite(Ft) && pinsHeld && gain > 1e-4;
+        // A Gauss–Newton trial whose F the model predicted (gain within 1 ± 0.1) but which left the
+        // pins was too long for the pins' curvature, not for the model. Its retry is shortened so
+        // that the pins' error, second order in the step, fits the allowance (to at most half and
+        // at least a tenth of the step); raising μ alone shortened it only after up to seven
+        // trials at μ far below the model's curvature (docs/maths-ik.md §3 step 5).
+        retryAngleCap = retryLatentCap = std::numeric_limits<double>::infinity();
+        if (std::isfinite(Ft) && !pinsHeld && !newton && std::abs(gain - 1.0) <= kAccurateGain) {
+            const double shorten =
+                std::clamp(std::sqrt(pinAllowance / cTrial_.cwiseAbs().maxCoeff()), kMinRetryShortening, kMaxRetryShortening);
+            retryAngleCap = shorten * delta_.tail(D_).cwiseAbs().maxCoeff();
+            retryLatentCap = shorten * delta_.head(d_).norm();
+        }
         if (crawling) {
             // Trust radius: doubled after a good step that the latent bound cut (the model
             // predicted it well, so the bound, not the model, limited it), halved on rejection.
@@ -630,8 +650,11 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // Nielsen's update lowers μ by at most 3× per step; a crawling solve whose model
             // predicted the step (gain within 1 ± 0.1) lowers it 10×, so it regains the Newton
             // regime in a third of the steps after a run of rejections (docs/maths-ik.md §3).
-            mu *= crawling && std::abs(gain - 1.0) <= kAccurateGain ? kAccurateDamping
-                                                                  : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+            // A shortened retry that succeeds keeps the μ its rejection raised: it shows that the
+            // short step holds the pins, not that the next full-length one will.
+            if (!shortenedRetry)
+                mu *= crawling && std::abs(gain - 1.0) <= kAccurateGain ? kAccurateDamping
+                                                                      : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
             // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.

@@ -43,7 +43,9 @@
 // iteration converges only linearly. Steps are
 // accepted by the gain ratio (Nielsen's μ update) on F when both points are on the pins (to a
 // tenth of the tolerance), else on the ℓ1 merit F + ν‖c‖₁; a trial may leave the pins by at most
-// 1e-3 cm (the next step restores them). Before a trial point is scored, its latent point is
+// 1e-3 cm (the next step restores them), and a Gauss–Newton trial rejected only for leaving
+// them, its F predicted, is retried shorter by the pins' second-order error, μ kept where the
+// rejection put it. Before a trial point is scored, its latent point is
 // re-optimised for its pose, from the sixth trial on (a drag event needs at most five, so drags
 // keep their cost): up to three Newton steps on L_IK over x alone (y fixed; the exact x-gradient,
 // the joint model's x–x block as Hessian with its eigenvalues taken in absolute value, the same
