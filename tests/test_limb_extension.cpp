@@ -29,8 +29,8 @@ Skeleton leg() {
     return sk;
 }
 
-// FK of `sk` with every angle 0 except the knee's (joint 2's x), when the skeleton has one.
-FkState fkWithKnee(const Skeleton& sk, double kneeDeg) {
+// FK of `sk` in its rest pose (every angle 0), the test leg's knee (joint 2, x) bent by kneeDeg.
+FkState fkAtRest(const Skeleton& sk, double kneeDeg = 0.0) {
     Pose pose;
     pose.anglesDeg.assign(sk.jointCount(), Eigen::Vector3d::Zero());
     if (kneeDeg != 0.0) pose.anglesDeg[2].x() = kneeDeg;
@@ -40,7 +40,7 @@ FkState fkWithKnee(const Skeleton& sk, double kneeDeg) {
 }
 
 double extensionWithKnee(const Skeleton& sk, double kneeDeg) {
-    const std::optional<double> e = limbExtension(sk, fkWithKnee(sk, kneeDeg), Effector::kLFoot);
+    const std::optional<double> e = limbExtension(sk, fkAtRest(sk, kneeDeg), Effector::kLFoot);
     REQUIRE(e.has_value());
     return *e;
 }
@@ -59,7 +59,7 @@ TEST_CASE("limb extension: the law of cosines on a 40 + 30 cm leg") {
 
 TEST_CASE("limb extension: no value for the head or a limb without its bone roles") {
     const Skeleton sk = leg();
-    const FkState fk = fkWithKnee(sk, 0.0);
+    const FkState fk = fkAtRest(sk);
     CHECK_FALSE(limbExtension(sk, fk, Effector::kHead).has_value());
     CHECK_FALSE(limbExtension(sk, fk, Effector::kRFoot).has_value());  // no rfemur / rtibia
     CHECK_FALSE(limbExtension(sk, fk, Effector::kLHand).has_value());
@@ -67,7 +67,7 @@ TEST_CASE("limb extension: no value for the head or a limb without its bone role
 
 TEST_CASE("limb extension of 35_01: straight limbs at rest, bent knees and elbows in the walk") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
-    FkState fk = fkWithKnee(clip.skeleton, 0.0);  // the rest pose
+    FkState fk = fkAtRest(clip.skeleton);
     for (Effector e : {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot}) {
         CAPTURE(effectorName(e));
         const std::optional<double> atRest = limbExtension(clip.skeleton, fk, e);

@@ -618,13 +618,14 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double pinAllowance = std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
         const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= pinAllowance;
         const bool accepted = std::isfinite(Ft) && pinsHeld && gain > 1e-4;
+        const bool predictedWell = std::abs(gain - 1.0) <= kAccurateGain;  // the model predicted F's change
         // A Gauss–Newton trial whose F the model predicted (gain within 1 ± 0.1) but which left the
         // pins was too long for the pins' curvature, not for the model. Its retry is shortened so
         // that the pins' error, second order in the step, fits the allowance (to at most half and
         // at least a tenth of the step); raising μ alone shortened it only after up to seven
         // trials at μ far below the model's curvature (docs/maths-ik.md §3 step 5).
         retryAngleCap = retryLatentCap = std::numeric_limits<double>::infinity();
-        if (std::isfinite(Ft) && !pinsHeld && !newton && std::abs(gain - 1.0) <= kAccurateGain) {
+        if (std::isfinite(Ft) && !pinsHeld && !newton && predictedWell) {
             const double shorten =
                 std::clamp(std::sqrt(pinAllowance / cTrial_.cwiseAbs().maxCoeff()), kMinRetryShortening, kMaxRetryShortening);
             retryAngleCap = shorten * delta_.tail(D_).cwiseAbs().maxCoeff();
@@ -653,8 +654,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // A shortened retry that succeeds keeps the μ its rejection raised: it shows that the
             // short step holds the pins, not that the next full-length one will.
             if (!shortenedRetry)
-                mu *= crawling && std::abs(gain - 1.0) <= kAccurateGain ? kAccurateDamping
-                                                                      : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+                mu *= crawling && predictedWell ? kAccurateDamping : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
             // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.
