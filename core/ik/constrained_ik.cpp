@@ -26,6 +26,7 @@ constexpr double kPinSlackCm = 1e-3;
 constexpr int kCrawlIterations = 20;
 constexpr double kMinAngleRadiusDeg = 0.5;    // a crawling solve's angle trust radius: its floor
 constexpr double kAccurateGain = 0.1;        // |gain − 1| at most this: the model predicted the step
+constexpr double kGoodGain = 0.75;           // gain above this: a good step (trust radii may grow)
 constexpr double kAccurateDamping = 0.1;     // a crawling solve's μ factor after such a step
 constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
 constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
@@ -439,6 +440,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     bool largeResidual = false;              // Newton model after every accepted step (see above)
     bool straightLimbNewton = false;         // Gauss–Newton failed at a straight limb (see above)
     bool rejectedSinceAccepted = false;
+    bool gaussNewtonOverpredicted = false;  // the last Gauss–Newton trial's gain ratio was below kGoodGain
     // Step caps for the retry of a trial rejected only because it left the pins (see below).
     double retryAngleCap = std::numeric_limits<double>::infinity(), retryLatentCap = retryAngleCap;
     while (true) {
@@ -459,8 +461,11 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         for (int i = 0; i < n_; ++i) Hd_(i, i) += mu * std::max(std::abs(H_(i, i)), floor);
         llt_.compute(Hd_);
         // An indefinite Newton model falls back to Gauss–Newton for this step, except in the
-        // large-residual regime, where Gauss–Newton is what crawls: there it takes the shift below.
-        if (llt_.info() != Eigen::Success && newton && !largeResidual) {
+        // large-residual regime, where Gauss–Newton is what crawls, and in a crawling solve whose
+        // last Gauss–Newton trial lowered F by less than 3/4 of what its model promised (the
+        // curvature that model omits is what limits the steps): both take the shift below.
+        const bool newtonKept = newton && !largeResidual && crawling && gaussNewtonOverpredicted;
+        if (llt_.info() != Eigen::Success && newton && !largeResidual && !newtonKept) {
             lastAccepted = false;
             continue;
         }
@@ -471,8 +476,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // curvature, so τ on x alone always factorises a Gauss–Newton model, and it no longer
         // throttles the y DOFs whose prior curvature W²/σ² is far below τ; the latent
         // refinement moves x after y. A model it cannot factorise gets τI (docs/maths-ik.md §3).
+        // A Newton model kept because Gauss–Newton overpredicted is indefinite through the
+        // constraints' curvature on y: its shift is τI from the start (docs/maths-ik.md §3 step 6).
         double shift = 0.0;
-        bool latentOnly = crawling;
+        bool latentOnly = crawling && !newtonKept;
         auto addShift = [&](double amount) {
             if (latentOnly) Hd_.diagonal().head(d_).array() += amount;
             else Hd_.diagonal().array() += amount;
@@ -619,6 +626,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= pinAllowance;
         const bool accepted = std::isfinite(Ft) && pinsHeld && gain > 1e-4;
         const bool predictedWell = std::abs(gain - 1.0) <= kAccurateGain;  // the model predicted F's change
+        if (!newton && std::isfinite(Ft)) gaussNewtonOverpredicted = gain < kGoodGain;
         // A Gauss–Newton trial whose F the model predicted (gain within 1 ± 0.1) but which left the
         // pins was too long for the pins' curvature, not for the model. Its retry is shortened so
         // that the pins' error, second order in the step, fits the allowance (to at most half and
@@ -634,7 +642,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         if (crawling) {
             // Trust radius: doubled after a good step that the latent bound cut (the model
             // predicted it well, so the bound, not the model, limited it), halved on rejection.
-            if (accepted && gain > 0.75 && latentScale < 1.0 && latentScale <= scale)
+            if (accepted && gain > kGoodGain && latentScale < 1.0 && latentScale <= scale)
                 latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
             else if (!accepted)
                 latentRadius = std::max(latentStepBound_, 0.5 * latentRadius);
@@ -643,7 +651,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // kMaxStepDeg after a good step it cut.
             if (angleScale < 1.0 && angleScale <= scale) {
                 if (!accepted) angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
-                else if (gain > 0.75) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
+                else if (gain > kGoodGain) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
             }
         }
         if (accepted) {

@@ -64,6 +64,9 @@
 // accepted after a rejection while that target sits at the end of a knee or elbow within 1 % of
 // straight (limbExtension ≥ 0.99), for as long as it sits there: at the straight limb's
 // rank-deficient Jacobian Gauss–Newton cannot see the end of the reach (docs/maths-ik.md §3).
+// A crawling solve whose last Gauss–Newton trial lowered F by less than 3/4 of that model's
+// prediction keeps a Newton model that does not factorise, shifted by τI, instead of falling back
+// to Gauss–Newton: the curvature Gauss–Newton omits is what limits its steps.
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
