@@ -310,6 +310,23 @@ TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, sh
     }
 }
 
+TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below the fixed bound when it cut a rejected step") {
+    // 10_03 kick, frames 310 and 220, left foot moved (0, 0, −30) and (−30, 0, 0) cm, the right
+    // foot pinned. Latent steps cut to the fixed bound (half the RBF length scale) were rejected
+    // with gain ratios of −1 to −200, and the identical retries failed until Nielsen's ladder had
+    // raised μ from 10⁻⁹: they stopped at the cap and converged after 114 and 57 steps. With the
+    // radius halved below the bound (docs/maths-ik.md §3 step 6) they converge in 38 and 40.
+    const auto version = test::kickModel1003();
+    ConstrainedIkSolver solver(version);
+    for (const auto& [frame, move] : {std::pair<int, Move>{309, {Effector::kLFoot, {0, 0, -30}}},
+                                      std::pair<int, Move>{219, {Effector::kLFoot, {-30, 0, 0}}}}) {
+        CAPTURE(frame);
+        const ConstrainedIkRequest req = poseMove(*version, frame, move.effector, move.offset);
+        REQUIRE(req.constraints.size() == 2);  // the right foot is pinned
+        checkConvergesWithin50AtTheLongSolvesMinimum(solver, req);
+    }
+}
+
 TEST_CASE("constrained IK: strength runs from natural to exact, and the root turns only as much as needed") {
     const auto version = test::walkModel35();
     const Skeleton& sk = version->model->clip.skeleton;

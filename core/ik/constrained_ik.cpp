@@ -31,6 +31,7 @@ constexpr double kAccurateDamping = 0.1;     // a crawling solve's μ factor aft
 constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
 constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
 constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
+constexpr double kMinLatentRadius = 1.0 / 16.0;  // its floor once it cut a rejected step (same unit)
 constexpr int kDirectTrials = 5;             // trials before the latent refinement starts
 constexpr int kLatentRefinements = 3;        // Newton steps in x per trial point (variable projection)
 constexpr int kRefineBacktracks = 5;         // halvings of one such step before it is given up
@@ -641,11 +642,18 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         }
         if (crawling) {
             // Trust radius: doubled after a good step that the latent bound cut (the model
-            // predicted it well, so the bound, not the model, limited it), halved on rejection.
-            if (accepted && gain > kGoodGain && latentScale < 1.0 && latentScale <= scale)
+            // predicted it well, so the bound, not the model, limited it), halved on rejection:
+            // down to the fixed bound, or below it when it cut the rejected step (a cut step that
+            // fails otherwise fails again until Nielsen's ladder has raised μ), except where a
+            // target is out of reach: there short latent steps ended farther from it
+            // (docs/maths-ik.md §3 step 6).
+            const bool latentCut = latentScale < 1.0 && latentScale <= scale;
+            if (accepted && gain > kGoodGain && latentCut)
                 latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
             else if (!accepted)
-                latentRadius = std::max(latentStepBound_, 0.5 * latentRadius);
+                latentRadius = std::max(latentCut && !largeResidual ? kMinLatentRadius * latentStepBound_
+                                                                    : std::min(latentRadius, latentStepBound_),
+                                        0.5 * latentRadius);
             // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
             // fails keeps failing while μ is still too small to shorten it), doubled back up to
             // kMaxStepDeg after a good step it cut.
