@@ -291,11 +291,11 @@ TEST_CASE("constrained IK: a trial rejected only for leaving the pins is retried
 
 TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, shifted, once Gauss–Newton overpredicts") {
     // 35_01 walk, frame 30, left foot moved (−45, −5, 0) cm; 10_03 kick, frame 60, left foot moved
-    // (−25, 0, −25) cm. Once the target is met, the Newton model is indefinite and fell back to
-    // Gauss–Newton, whose steps lowered F by a quarter to a half of what it promised: the angle
-    // radius shrank to 1.25° and stayed there, and they stopped at the cap and converged after 150
-    // and 159 steps. Shifted instead of dropped (docs/maths-ik.md §3 step 6) the Newton model
-    // converges in 29 and 43, at the same minimum.
+    // (−25, 0, −25) cm; the other foot free. Without the rule the indefinite Newton model fell
+    // back to Gauss–Newton, whose steps lowered F by a quarter to a half of what it promised (on
+    // the walk the angle radius shrank to 1.25° and stayed there): both stopped at the cap and
+    // converged after 150 and 159 steps. With the Newton model shifted instead of dropped
+    // (docs/maths-ik.md §3 step 6) they converge in 29 and 43, at the same minimum.
     struct Case {
         gp::ModelVersionPtr version;
         int frame;
@@ -313,8 +313,8 @@ TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, sh
 TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below the fixed bound when it cut a rejected step") {
     // 10_03 kick, frames 310 and 220, left foot moved (0, 0, −30) and (−30, 0, 0) cm, the right
     // foot pinned. Latent steps cut to the fixed bound (half the RBF length scale) were rejected
-    // with gain ratios of −1 to −200, and the identical retries failed until Nielsen's ladder had
-    // raised μ from 10⁻⁹: they stopped at the cap and converged after 114 and 57 steps. With the
+    // at negative gain ratios, and the identical retries failed until Nielsen's ladder had raised
+    // μ from 10⁻¹²–10⁻⁹: they stopped at the cap and converged after 114 and 57 steps. With the
     // radius halved below the bound (docs/maths-ik.md §3 step 6) they converge in 38 and 40.
     const auto version = test::kickModel1003();
     ConstrainedIkSolver solver(version);

@@ -452,7 +452,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const bool newton = lastAccepted && curvature_;
         Hm_ = H_;
         if (newton) Hm_ += C_;
-        // Damped model (a Newton model that cannot be factorised falls back to Gauss–Newton).
+        // Damped model (a Newton model that cannot be factorised falls back to Gauss–Newton or
+        // takes a shift; see below).
         Hd_ = Hm_;
         // ρAᵀA leaves the KKT step unchanged (it only shifts ν by −ρc) but makes the factorised
         // matrix positive definite wherever the Hessian is on the pins' tangent space, which is
@@ -463,10 +464,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         llt_.compute(Hd_);
         // An indefinite Newton model falls back to Gauss–Newton for this step, except in the
         // large-residual regime, where Gauss–Newton is what crawls, and in a crawling solve whose
-        // last Gauss–Newton trial lowered F by less than 3/4 of what its model promised (the
-        // curvature that model omits is what limits the steps): both take the shift below.
-        const bool newtonKept = newton && !largeResidual && crawling && gaussNewtonOverpredicted;
-        if (llt_.info() != Eigen::Success && newton && !largeResidual && !newtonKept) {
+        // last Gauss–Newton trial had a gain ratio below 0.75 (it promised more decrease than it
+        // gave: the curvature that model omits is what limits the steps): both take the shift below.
+        const bool keepIndefiniteNewton = newton && !largeResidual && crawling && gaussNewtonOverpredicted;
+        if (llt_.info() != Eigen::Success && newton && !largeResidual && !keepIndefiniteNewton) {
             lastAccepted = false;
             continue;
         }
@@ -480,7 +481,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         // A Newton model kept because Gauss–Newton overpredicted is indefinite through the
         // constraints' curvature on y: its shift is τI from the start (docs/maths-ik.md §3 step 6).
         double shift = 0.0;
-        bool latentOnly = crawling && !newtonKept;
+        bool latentOnly = crawling && !keepIndefiniteNewton;
         auto addShift = [&](double amount) {
             if (latentOnly) Hd_.diagonal().head(d_).array() += amount;
             else Hd_.diagonal().array() += amount;
@@ -564,6 +565,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         const double angleBound = std::min(crawling ? angleRadius : kMaxStepDeg, retryAngleCap);
         const double angleScale = angleBound / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff());
         const double scale = std::min({1.0, latentScale, angleScale});
+        const bool latentCut = latentScale < 1.0 && latentScale <= scale;  // the latent bound set the length
+        const bool angleCut = angleScale < 1.0 && angleScale <= scale;
         double stepDecrease = modelDecrease;
         if (scale < 1.0) {
             delta_ *= scale;
@@ -644,10 +647,10 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // Trust radius: doubled after a good step that the latent bound cut (the model
             // predicted it well, so the bound, not the model, limited it), halved on rejection:
             // down to the fixed bound, or below it when it cut the rejected step (a cut step that
-            // fails otherwise fails again until Nielsen's ladder has raised μ), except where a
-            // target is out of reach: there short latent steps ended farther from it
+            // fails otherwise fails again until Nielsen's ladder has raised μ), except in the
+            // large-residual regime, where short latent steps ended farther from out-of-reach
+            // targets; a radius already below the bound keeps its value after other rejections
             // (docs/maths-ik.md §3 step 6).
-            const bool latentCut = latentScale < 1.0 && latentScale <= scale;
             if (accepted && gain > kGoodGain && latentCut)
                 latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
             else if (!accepted)
@@ -657,7 +660,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
             // fails keeps failing while μ is still too small to shorten it), doubled back up to
             // kMaxStepDeg after a good step it cut.
-            if (angleScale < 1.0 && angleScale <= scale) {
+            if (angleCut) {
                 if (!accepted) angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
                 else if (gain > kGoodGain) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
             }
@@ -686,7 +689,7 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
             }
             nuLm = 2.0;
             lastAccepted = true;
-        } else if (crawling && latentBound > latentStepBound_ && latentScale < 1.0 && latentScale <= scale) {
+        } else if (crawling && latentBound > latentStepBound_ && latentCut) {
             // The grown radius, not the damping, made the step too long: the halved radius above
             // shortens the retry, and μ stays where the gain ratio put it.
             lastAccepted = false;

@@ -55,8 +55,8 @@
 // trial steps is crawling: from then on the shift is on the latent block only (τ on x, which always
 // factorises a Gauss–Newton model; τI on every unknown froze the y DOFs whose prior curvature is
 // below τ), 4× the smallest that factorises (bracketed), and the latent bound becomes a trust
-// radius (up to 16×; a step it made too long does not raise μ; down to 1/16 after rejected
-// steps it cut, outside the large-residual regime below), the 20° angle bound one too
+// radius (up to 16×, and a step the grown radius made too long does not raise μ; down to 1/16
+// after rejected steps it cut, outside the large-residual regime below), the 20° angle bound one too
 // (halved, down to 0.5°, when a step it cut is rejected), and μ falls 10× after a step the model
 // predicted (gain within 1 ± 0.1) instead of at most 3×; earlier steps are untouched. A
 // solve past 50 steps whose exact target is still out of tolerance (out of reach, or met only by a
@@ -65,9 +65,9 @@
 // accepted after a rejection while that target sits at the end of a knee or elbow within 1 % of
 // straight (limbExtension ≥ 0.99), for as long as it sits there: at the straight limb's
 // rank-deficient Jacobian Gauss–Newton cannot see the end of the reach (docs/maths-ik.md §3).
-// A crawling solve whose last Gauss–Newton trial lowered F by less than 3/4 of that model's
-// prediction keeps a Newton model that does not factorise, shifted by τI, instead of falling back
-// to Gauss–Newton: the curvature Gauss–Newton omits is what limits its steps.
+// A crawling solve whose last Gauss–Newton trial had a gain ratio below 0.75 (it promised more
+// decrease than it gave) keeps a Newton model that does not factorise, shifted by τI, instead of
+// falling back to Gauss–Newton: the curvature Gauss–Newton omits is what limits its steps.
 //
 // Convergence (KKT): the pins' residual ‖c‖∞ ≤ pinToleranceCm (1e-5 cm) and the damped Newton
 // decrement gᵀ(H + μ diag H)⁻¹g projected onto the pins' tangent space is at most
