@@ -47,6 +47,13 @@ struct Move {
     Eigen::Vector3d offset;
 };
 
+// One move of a committed fixture's captured frame (a 0-based frame index).
+struct FixtureMove {
+    gp::ModelVersionPtr version;
+    int frame;
+    Move move;
+};
+
 // What `motiongp pose` solves: from the captured frame, `effector` moved by `move` (an exact
 // target), the feet in ground contact there held as pins where they stand.
 ConstrainedIkRequest poseMove(const gp::ModelVersion& v, int frame, Effector effector, const Eigen::Vector3d& move) {
@@ -273,14 +280,9 @@ TEST_CASE("constrained IK: a trial rejected only for leaving the pins is retried
     // the cap and converged after 60 and 58 steps. Retried at the length where the pin's
     // second-order error fits the slack (docs/maths-ik.md §3 step 5) they converge in 9 and 16,
     // at the same minimum.
-    struct Case {
-        gp::ModelVersionPtr version;
-        int frame;
-        Move move;
-    };
-    const Case cases[] = {{test::walkModel35(), 79, {Effector::kLHand, {-20, 20, -20}}},
-                          {test::kickModel1003(), 269, {Effector::kLFoot, {25, 0, -25}}}};
-    for (const Case& c : cases) {
+    const FixtureMove cases[] = {{test::walkModel35(), 79, {Effector::kLHand, {-20, 20, -20}}},
+                                 {test::kickModel1003(), 269, {Effector::kLFoot, {25, 0, -25}}}};
+    for (const FixtureMove& c : cases) {
         CAPTURE(c.version->model->clip.name);
         ConstrainedIkSolver solver(c.version);
         const ConstrainedIkRequest req = poseMove(*c.version, c.frame, c.move.effector, c.move.offset);
@@ -296,14 +298,9 @@ TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, sh
     // the walk the angle radius shrank to 1.25° and stayed there): both stopped at the cap and
     // converged after 150 and 159 steps. With the Newton model shifted instead of dropped
     // (docs/maths-ik.md §3 step 6) they converge in 29 and 43, at the same minimum.
-    struct Case {
-        gp::ModelVersionPtr version;
-        int frame;
-        Move move;
-    };
-    const Case cases[] = {{test::walkModel35(), 29, {Effector::kLFoot, {-45, -5, 0}}},
-                          {test::kickModel1003(), 59, {Effector::kLFoot, {-25, 0, -25}}}};
-    for (const Case& c : cases) {
+    const FixtureMove cases[] = {{test::walkModel35(), 29, {Effector::kLFoot, {-45, -5, 0}}},
+                                 {test::kickModel1003(), 59, {Effector::kLFoot, {-25, 0, -25}}}};
+    for (const FixtureMove& c : cases) {
         CAPTURE(c.version->model->clip.name);
         ConstrainedIkSolver solver(c.version);
         checkConvergesWithin50AtTheLongSolvesMinimum(solver, poseMove(*c.version, c.frame, c.move.effector, c.move.offset));
@@ -316,12 +313,12 @@ TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below 
     // at negative gain ratios, and the identical retries failed until Nielsen's ladder had raised
     // μ from 10⁻¹²–10⁻⁹: they stopped at the cap and converged after 114 and 57 steps. With the
     // radius halved below the bound (docs/maths-ik.md §3 step 6) they converge in 38 and 40.
-    const auto version = test::kickModel1003();
-    ConstrainedIkSolver solver(version);
-    for (const auto& [frame, move] : {std::pair<int, Move>{309, {Effector::kLFoot, {0, 0, -30}}},
-                                      std::pair<int, Move>{219, {Effector::kLFoot, {-30, 0, 0}}}}) {
-        CAPTURE(frame);
-        const ConstrainedIkRequest req = poseMove(*version, frame, move.effector, move.offset);
+    const auto kick = test::kickModel1003();
+    const FixtureMove cases[] = {{kick, 309, {Effector::kLFoot, {0, 0, -30}}}, {kick, 219, {Effector::kLFoot, {-30, 0, 0}}}};
+    ConstrainedIkSolver solver(kick);
+    for (const FixtureMove& c : cases) {
+        CAPTURE(c.frame);
+        const ConstrainedIkRequest req = poseMove(*c.version, c.frame, c.move.effector, c.move.offset);
         REQUIRE(req.constraints.size() == 2);  // the right foot is pinned
         checkConvergesWithin50AtTheLongSolvesMinimum(solver, req);
     }
