@@ -324,6 +324,24 @@ TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below 
     }
 }
 
+TEST_CASE("constrained IK: a crawling solve's full-length step rejected on its merit sets the angle trust radius to half its length") {
+    // 10_03 kick, frame 281, right foot moved (50, 0, 0) cm, and frame 356, left hand moved
+    // (0, −35, 0) cm, the feet in contact pinned. Full-length steps that neither bound had cut
+    // were rejected, and the retries at μ ≈ 10⁻¹² were about the same step: the first move retried
+    // it seven times while Nielsen's ladder raised μ to the model's curvature; the second, already
+    // at its minimum's F, alternated such rejections with short accepted steps from step 23 on.
+    // They stopped at the cap and converged after 53 and 59 steps. With the angle radius set to
+    // half the rejected step's largest angle change (docs/maths-ik.md §3 step 6) they converge in
+    // 40 and 41.
+    const auto kick = test::kickModel1003();
+    const FixtureMove cases[] = {{kick, 280, {Effector::kRFoot, {50, 0, 0}}}, {kick, 355, {Effector::kLHand, {0, -35, 0}}}};
+    ConstrainedIkSolver solver(kick);
+    for (const FixtureMove& c : cases) {
+        CAPTURE(c.frame);
+        checkConvergesWithin50AtTheLongSolvesMinimum(solver, poseMove(*c.version, c.frame, c.move.effector, c.move.offset));
+    }
+}
+
 TEST_CASE("constrained IK: strength runs from natural to exact, and the root turns only as much as needed") {
     const auto version = test::walkModel35();
     const Skeleton& sk = version->model->clip.skeleton;
