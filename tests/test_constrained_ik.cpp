@@ -326,7 +326,7 @@ TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below 
 
 TEST_CASE("constrained IK: a crawling solve's full-length step rejected on its merit sets the angle trust radius to half its length") {
     // 10_03 kick, frame 281, right foot moved (50, 0, 0) cm, and frame 356, left hand moved
-    // (0, −35, 0) cm, the feet in contact pinned. Full-length steps that neither bound had cut
+    // (0, −35, 0) cm, the one foot in contact pinned. Full-length steps that neither bound had cut
     // were rejected, and the retries at μ ≈ 10⁻¹² were about the same step: the first move retried
     // it seven times while Nielsen's ladder raised μ to the model's curvature; the second, already
     // at its minimum's F, alternated such rejections with short accepted steps from step 23 on.
@@ -338,7 +338,9 @@ TEST_CASE("constrained IK: a crawling solve's full-length step rejected on its m
     ConstrainedIkSolver solver(kick);
     for (const FixtureMove& c : cases) {
         CAPTURE(c.frame);
-        checkConvergesWithin50AtTheLongSolvesMinimum(solver, poseMove(*c.version, c.frame, c.move.effector, c.move.offset));
+        const ConstrainedIkRequest req = poseMove(*c.version, c.frame, c.move.effector, c.move.offset);
+        REQUIRE(req.constraints.size() == 2);  // the one foot in contact is pinned
+        checkConvergesWithin50AtTheLongSolvesMinimum(solver, req);
     }
 }
 

@@ -659,10 +659,11 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
                                         0.5 * latentRadius);
             // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
             // fails keeps failing while μ is still too small to shorten it), doubled back up to
-            // kMaxStepDeg after a good step it cut. A full-length step rejected on its merit (the
-            // pins held; not a shortened retry) sets it to half that step's largest angle change:
-            // at μ ≈ 1e-12 the retry is otherwise the same step until Nielsen's ladder has raised
-            // μ to the model's curvature, seven trials (docs/maths-ik.md §3 step 6).
+            // kMaxStepDeg after a good step it cut. A full-length step rejected on its merit (finite
+            // F, the pins held; not a shortened retry) sets it to half that step's largest angle
+            // change (at least kMinAngleRadiusDeg): at μ ≈ 1e-12 the retry is otherwise about the
+            // same step until Nielsen's ladder has raised μ to the model's curvature, up to seven
+            // trials later (docs/maths-ik.md §3 step 6).
             if (angleCut) {
                 if (!accepted) angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
                 else if (gain > kGoodGain) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);

@@ -57,8 +57,9 @@
 // below τ), 4× the smallest that factorises (bracketed), and the latent bound becomes a trust
 // radius (up to 16×, and a step the grown radius made too long does not raise μ; down to 1/16
 // after rejected steps it cut, outside the large-residual regime below), the 20° angle bound one too
-// (halved, down to 0.5°, when a step it cut is rejected; set to half the largest angle change of a
-// full-length step rejected with the pins held), and μ falls 10× after a step the model
+// (halved, down to 0.5°, when a step it cut is rejected; set to half the largest angle change, at
+// least 0.5°, of a full-length step rejected at a finite F with the pins held, unless it was a
+// shortened retry), and μ falls 10× after a step the model
 // predicted (gain within 1 ± 0.1) instead of at most 3×; earlier steps are untouched. A
 // solve past 50 steps whose exact target is still out of tolerance (out of reach, or met only by a
 // straight limb) uses the full Newton model after every accepted step: there Gauss–Newton
