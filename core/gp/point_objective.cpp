@@ -91,19 +91,34 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     ws.r = w_.cwiseProduct(y - ws.f);
     const double E = ws.r.squaredNorm();
     const double value = likFromResidual(E, s2, D, x);
+    gradients(x, ws, gradX, gradY);
+    return value;
+}
+
+double ActiveSetPosterior::diagonalGradientScale(const Eigen::VectorXd& x, const PointWorkspace& ws) const {
+    // ∂k(x,x)/∂x = 2η e^{|φ|²} ε² x / n⁴ (FAS only; the RBF part of k(x,x) is constant).
+    if (!kernel_.hasEta()) return 0.0;
+    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
+    return 2.0 * kernel_.eta() * std::exp(ws.phiX.squaredNorm()) * kAngularEps * kAngularEps / (n2 * n2);
+}
+
+void ActiveSetPosterior::gradients(const Eigen::VectorXd& x, PointWorkspace& ws, Eigen::VectorXd* gradX,
+                                   Eigen::VectorXd* gradY) const {
+    const double s2 = ws.variance;
     if (gradX) {
+        const Eigen::Index d = XI_.cols();
+        const double D = static_cast<double>(mu_.size());
+        const double E = ws.r.squaredNorm();
         ws.wr = w_.cwiseProduct(ws.r);
         ws.bwr.noalias() = B_ * ws.wr;
         const double c = D / (2.0 * s2) - E / (2.0 * s2 * s2);
-        // ∂k(x,x)/∂x = 2η e^{|φ|²} ε² x / n⁴ (FAS only).
-        const double diagGrad = fas ? 2.0 * eta * std::exp(phi2) * kAngularEps * kAngularEps / (n2 * n2) : 0.0;
+        const double diagGrad = diagonalGradientScale(x, ws);
         for (Eigen::Index i = 0; i < d; ++i) {
-            const double dS2 = clamped ? 0.0 : diagGrad * x[i] - 2.0 * ws.J.col(i).dot(ws.a);
+            const double dS2 = ws.clamped ? 0.0 : diagGrad * x[i] - 2.0 * ws.J.col(i).dot(ws.a);
             (*gradX)[i] = -(1.0 / s2) * ws.J.col(i).dot(ws.bwr) + c * dS2 + x[i];
         }
     }
     if (gradY) *gradY = w_.cwiseProduct(ws.r) / s2;  // same size: evaluated in place
-    return value;
 }
 
 void ActiveSetPosterior::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
@@ -112,18 +127,16 @@ void ActiveSetPosterior::meanVarianceJacobians(const Eigen::VectorXd& x, const P
     Jf.resize(mu_.size(), d);
     dSigma2.resize(d);
     // f = μ + Bᵀk  ⇒  ∂f/∂x = Bᵀ ∂k/∂x.
-    Jf.noalias() = B_.transpose() * ws.J;
+    // One matrix-vector product per latent dimension: as a matrix product, packing Bᵀ (D×M) took
+    // longer than the arithmetic (d is 2 or 3).
+    for (Eigen::Index c = 0; c < d; ++c) Jf.col(c).noalias() = B_.transpose() * ws.J.col(c);
     if (ws.clamped) {
         dSigma2.setZero();
         return;
     }
     // σ² = 1/β + k(x,x) − kᵀK⁻¹k  ⇒  ∂σ²/∂x = ∂k(x,x)/∂x − 2 (∂k/∂x)ᵀ a.
-    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
-    const double diagGrad = kernel_.hasEta()
-                                ? 2.0 * kernel_.eta() * std::exp(ws.phiX.squaredNorm()) * kAngularEps * kAngularEps / (n2 * n2)
-                                : 0.0;
     dSigma2.noalias() = -2.0 * ws.J.transpose() * ws.a;
-    dSigma2 += diagGrad * x;
+    dSigma2 += diagonalGradientScale(x, ws) * x;
 }
 
 void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace& ws, const Eigen::MatrixXd& Jf,
@@ -175,15 +188,17 @@ void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace&
     if (!ws.clamped) {
         // c (∂_ij k(x,x) − 2 ∂_i kᵀ K⁻¹ ∂_j k); k(x,x) = α + η e^{|φ|²}, |φ|² = |x|²/n²:
         // ∂_i = η e^{|φ|²} 2ε² x_i/n⁴, ∂_ij = η e^{|φ|²} [4ε⁴ x_i x_j/n⁸ + 2ε² (δ_ij/n⁴ − 4 x_i x_j/n⁶)].
-        ws.kinvJ.resize(m, d);
-        for (Eigen::Index b = 0; b < d; ++b) ws.kinvJ.col(b).noalias() = Kinv_ * ws.J.col(b);  // d GEMVs: no GEMM packing
+        // ∂_i kᵀ K⁻¹ ∂_j k = (L⁻¹∂_i k)·(L⁻¹∂_j k): d triangular products with the stored L⁻¹ (as σ²
+        // in evaluate()), half the work of d products with K⁻¹.
+        ws.linvJ.resize(m, d);
+        for (Eigen::Index b = 0; b < d; ++b) ws.linvJ.col(b).noalias() = Linv_.triangularView<Eigen::Lower>() * ws.J.col(b);
         const double eps2 = kAngularEps * kAngularEps;
         const double ephi = fas ? kernel_.eta() * std::exp(ws.phiX.squaredNorm()) : 0.0;
         for (Eigen::Index a = 0; a < d; ++a)
             for (Eigen::Index b = 0; b <= a; ++b) {
                 const double diag = ephi * (4.0 * eps2 * eps2 * x[a] * x[b] / (n2 * n2 * n2 * n2) +
                                             2.0 * eps2 * ((a == b ? 1.0 : 0.0) / (n2 * n2) - 4.0 * x[a] * x[b] / (n2 * n2 * n2)));
-                H(a, b) += c * (diag - 2.0 * ws.J.col(a).dot(ws.kinvJ.col(b)));
+                H(a, b) += c * (diag - 2.0 * ws.linvJ.col(a).dot(ws.linvJ.col(b)));
             }
     }
     for (Eigen::Index a = 0; a < d; ++a) {

@@ -26,7 +26,7 @@ struct PointWorkspace {
     Eigen::VectorXd k, v, a, f, r, wr, bwr, phiX;  // v = L⁻¹k (K = LLᵀ), a = K⁻¹k
     Eigen::VectorXd rbf, angular, cosine;  // per active point: the RBF and angular parts of k, φ(x)·φ(x_j)
     Eigen::MatrixXd J;      // M×d: ∂k/∂x
-    Eigen::MatrixXd kinvJ;  // M×d: K⁻¹ ∂k/∂x (latentHessian)
+    Eigen::MatrixXd linvJ;  // M×d: L⁻¹ ∂k/∂x (latentHessian)
     double variance = 0.0;  // σ²(x) of the last evaluation
     bool clamped = false;   // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
 };
@@ -65,6 +65,10 @@ public:
     // (docs/maths.md §9.1). gradX/gradY, when given, must already have sizes d and D.
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
+    // After evaluate(x, y, ws, …) on the same x and y, with or without gradients: the gradients
+    // that call would have written (the same arithmetic), so a value-only evaluation that turns
+    // out to be needed with derivatives is not repeated.
+    void gradients(const Eigen::VectorXd& x, PointWorkspace& ws, Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const;
 
     // After evaluate(x, y, ws, ...) on the same x: the mean's Jacobian ∂f/∂x (D×d) and the variance
     // gradient ∂σ²/∂x (d), both exact (∂σ²/∂x = 0 where the clamp is active). No allocation once
@@ -78,6 +82,9 @@ public:
                        Eigen::MatrixXd& H) const;
 
 private:
+    // ∂k(x,x)/∂x = this · x (needs ws.phiX of an evaluation at x).
+    double diagonalGradientScale(const Eigen::VectorXd& x, const PointWorkspace& ws) const;
+
     Kernel kernel_;
     Eigen::MatrixXd XI_;
     Eigen::VectorXd mu_, w_;

@@ -225,6 +225,13 @@ private:
     Eigen::VectorXd eAt_, eHat_, rAll_;
     double sigma2_ = 0.0, lik_ = 0.0;
     bool curvature_ = false;  // evaluate() also fills C_ (the constraints' curvature)
+    // What the workspace holds, so a point is not evaluated twice (a trial that is accepted is
+    // scored without derivatives, then evaluated with them): fk_ is FK at yPosed_, ws_ the prior's
+    // value at zValued_; bind() clears both.
+    Eigen::VectorXd yPosed_, zValued_;
+    bool posed_ = false, valued_ = false;
+    // Per effector: the pose-vector DOFs on its chain (effectorHessianContracted is 0 elsewhere).
+    std::vector<int> chainDofs_[kEffectorCount];
     int evaluations_ = 0;
 };
 

@@ -85,19 +85,20 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
     // world axis ω and ω × (p − q).
     // Per-thread scratch sized to the largest pose vector seen: a solve's calls allocate nothing.
     struct ChainScratch {
-        std::vector<int> dof, joint, rank;
+        std::vector<int> dof, joint, rank, depth;
         std::vector<Eigen::Vector3d> w, v;
     };
     thread_local ChainScratch scratch;
     const std::size_t P = static_cast<std::size_t>(layout.size());
     if (scratch.dof.size() < P) {
-        for (std::vector<int>* a : {&scratch.dof, &scratch.joint, &scratch.rank}) a->resize(P);
+        for (std::vector<int>* a : {&scratch.dof, &scratch.joint, &scratch.rank, &scratch.depth}) a->resize(P);
         scratch.w.resize(P);
         scratch.v.resize(P);
     }
     std::vector<int>& dof = scratch.dof;
     std::vector<int>& joint = scratch.joint;
     std::vector<int>& rank = scratch.rank;
+    std::vector<int>& depth = scratch.depth;
     std::vector<Eigen::Vector3d>& w = scratch.w;
     std::vector<Eigen::Vector3d>& v = scratch.v;
     int n = 0;
@@ -108,6 +109,8 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
         dof[n] = i;
         joint[n] = j;
         rank[n] = static_cast<int>(std::find(order.begin(), order.end(), layout.axis(i)) - order.begin());
+        depth[n] = 0;
+        for (int up = skeleton.joints[j].parent; up >= 0; up = skeleton.joints[up].parent) ++depth[n];
         w[n] = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
         v[n] = w[n].cross(pe - fk.jointCm[j]);
         ++n;
@@ -118,7 +121,7 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
             // Which of the two is upstream: the ancestor joint, or the outer axis of one joint.
             bool aUp;
             if (joint[a] == joint[b]) aUp = rank[a] <= rank[b];
-            else aUp = skeleton.isAncestorOrSelf(joint[a], joint[b]);
+            else aUp = depth[a] < depth[b];  // both lie on the root-to-effector path
             const int up = aUp ? a : b, down = aUp ? b : a;
             const double h = k2 * lambda.dot(w[up].cross(v[down]));
             out(dof[a], dof[b]) = h;
