@@ -20,7 +20,7 @@ struct EditCase {
 };
 
 // 35_01 and 10_02 are where the span solver's weights were tuned; the others are held out.
-const EditCase kCases[] = {
+const EditCase kEditCases[] = {
     {"10_03", Effector::kRFoot, 189, "held-out kick, left foot planted from 224"},
     {"16_01", Effector::kRFoot, 60, "held-out jump take-off, both feet planted"},
     {"09_01", Effector::kLFoot, 60, "held-out run"},
@@ -65,15 +65,15 @@ nlohmann::json runOne(const gp::ModelVersionPtr& version, const EditCase& c, con
     return out;
 }
 
-const BenchRegistration reg("edit", "Span regeneration vs per-frame: smoothness, keys, contacts, time (43-frame spans)",
+const BenchRegistration editBench("edit", "Span regeneration vs per-frame: smoothness, keys, contacts, time (43-frame spans)",
                             [](const BenchContext& ctx) {
     nlohmann::json out = nlohmann::json::object();
     if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    const int clips = ctx.quick ? 2 : static_cast<int>(std::size(kCases));
+    const int clips = ctx.quick ? 2 : static_cast<int>(std::size(kEditCases));
     nlohmann::json rows = nlohmann::json::array();
     std::vector<double> spanMedians;
     for (int ci = 0; ci < clips; ++ci) {
-        const EditCase& c = kCases[ci];
+        const EditCase& c = kEditCases[ci];
         gp::TrainOptions options;
         options.activeSize = ctx.quick ? 100 : 200;
         options.outerIterations = ctx.quick ? 3 : 20;

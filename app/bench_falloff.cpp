@@ -24,7 +24,7 @@ struct FalloffCase {
 };
 
 // 35_01 is where the span solver's weights were tuned; the others are held out.
-const FalloffCase kCases[] = {
+const FalloffCase kFalloffCases[] = {
     {"16_03", 91, Effector::kLHand, {20, -20, 0}},  {"16_03", 91, Effector::kRHand, {0, 20, 10}},
     {"16_01", 60, Effector::kRHand, {0, 20, 0}},    {"09_01", 60, Effector::kLFoot, {0, 15, 0}},
     {"10_03", 189, Effector::kRFoot, {10, 10, 0}},  {"35_01", 110, Effector::kLFoot, {0, 15, 0}},
@@ -50,17 +50,17 @@ nlohmann::json runFalloff(MotionEditJob job, const Pose& released, int t, int re
             {"meets_targets", motionBarsJson(job.quality)}};
 }
 
-const BenchRegistration reg("falloff", "Drag falloff: the dragged frame kept vs re-solved, smoothness around it, time (±30 frames)",
+const BenchRegistration falloffBench("falloff", "Drag falloff: the dragged frame kept vs re-solved, smoothness around it, time (±30 frames)",
                             [](const BenchContext& ctx) {
     if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    const std::size_t cases = ctx.quick ? 2 : std::size(kCases);
+    const std::size_t cases = ctx.quick ? 2 : std::size(kFalloffCases);
     const int repeats = ctx.quick ? 1 : std::min(ctx.repeats, 3);
     nlohmann::json rows = nlohmann::json::array();
     double worstBefore = 0.0, worstAfter = 0.0;
     std::string loaded;
     gp::ModelVersionPtr version;
     for (std::size_t ci = 0; ci < cases; ++ci) {
-        const FalloffCase& c = kCases[ci];
+        const FalloffCase& c = kFalloffCases[ci];
         if (loaded != c.clip) {
             gp::TrainOptions options;
             options.activeSize = ctx.quick ? 100 : 200;

@@ -7,7 +7,7 @@
 namespace mgp::app {
 namespace {
 
-const BenchRegistration reg("fk", "Forward kinematics and effector Jacobian per call", [](const BenchContext& ctx) {
+const BenchRegistration fkBench("fk", "Forward kinematics and effector Jacobian per call", [](const BenchContext& ctx) {
     const Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk() : loadClip(ctx.mocapDir + "/asf_amc/35_01.amc");
     const PoseLayout layout(clip.skeleton);
     FkState fk;

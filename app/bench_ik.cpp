@@ -240,7 +240,7 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
             {"worst_reachable_target_residual_cm", worstReachableTarget}};
 }
 
-const BenchRegistration reg("ik", "Learned IK drags on two clips, adaptive update, span regeneration (M = 200)", [](const BenchContext& ctx) {
+const BenchRegistration ikBench("ik", "Learned IK drags on two clips, adaptive update, span regeneration (M = 200)", [](const BenchContext& ctx) {
     const int steps = ctx.quick ? 20 : 200;
     nlohmann::json out;
     out["drags"] = nlohmann::json::array();

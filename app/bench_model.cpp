@@ -53,7 +53,7 @@ nlohmann::json benchClip(const Clip& clip, gp::LatentPrior prior, bool backConst
                          {"measured_once", true}}}};
 }
 
-const BenchRegistration reg("model", "Layout quality (continuity, full-GP yardstick, held-out) per prior and with back-constraints on two clips",
+const BenchRegistration modelBench("model", "Layout quality (continuity, full-GP yardstick, held-out) per prior and with back-constraints on two clips",
                             [](const BenchContext& ctx) {
     const std::string dir = !ctx.mocapDir.empty() ? ctx.mocapDir
                                                   : findShippedMocapFolder(globalOptions().exeDir).value_or("");

@@ -16,7 +16,7 @@
 namespace mgp::app {
 namespace {
 
-const BenchRegistration reg("render", "Offscreen frame time at 1280x720 and PNG capture time", [](const BenchContext& ctx) {
+const BenchRegistration renderBench("render", "Offscreen frame time at 1280x720 and PNG capture time", [](const BenchContext& ctx) {
     const Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk() : loadClip(ctx.mocapDir + "/asf_amc/35_01.amc");
     render::ClipSceneOptions opt;
     opt.paths = {Effector::kRFoot};

@@ -115,7 +115,7 @@ nlohmann::json bvhConventions(const BenchContext& ctx) {
     return rows;
 }
 
-const BenchRegistration reg("train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run",
+const BenchRegistration trainBench("train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run",
                             [](const BenchContext& ctx) {
     nlohmann::json out;
     out["threads"] = std::max(1u, std::thread::hardware_concurrency());

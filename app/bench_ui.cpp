@@ -120,7 +120,7 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     return j;
 }
 
-const BenchRegistration reg("ui", "Editor frame time at 1280x720 while dragging (offscreen, whole UI)", benchUi);
+const BenchRegistration uiBench("ui", "Editor frame time at 1280x720 while dragging (offscreen, whole UI)", benchUi);
 
 }  // namespace
 }  // namespace mgp::app

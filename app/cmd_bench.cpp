@@ -35,7 +35,7 @@ nlohmann::json summarizeSeconds(std::vector<double> s) {
 
 namespace {
 
-const CommandRegistration reg("bench", "Measure speed (medians over repeats) and print JSON",
+const CommandRegistration benchCommand("bench", "Measure speed (medians over repeats) and print JSON",
                               [](CLI::App& sub) -> CommandRunner {
     auto only = std::make_shared<std::vector<std::string>>();
     auto repeats = std::make_shared<int>(5);

@@ -83,7 +83,7 @@ int runEdit(const EditOptions& o) {
     return 0;
 }
 
-const CommandRegistration reg("edit", "Edit an effector path (Hermite keys) and regenerate the motion",
+const CommandRegistration editCommand("edit", "Edit an effector path (Hermite keys) and regenerate the motion",
                               [](CLI::App& sub) -> CommandRunner {
     auto o = std::make_shared<EditOptions>();
     sub.add_option("model", o->model, "Model file")->required();

@@ -51,7 +51,7 @@ std::vector<int> parseOffsets(const std::string& text, int every) {
     return out;
 }
 
-const CommandRegistration reg(
+const CommandRegistration evaluateCommand(
     "evaluate", "Layout quality of a model: latent continuity, full-GP yardstick, held-out reconstruction",
     [](CLI::App& sub) -> CommandRunner {
         struct Opts {

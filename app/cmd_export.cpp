@@ -9,7 +9,7 @@
 namespace mgp::app {
 namespace {
 
-const CommandRegistration reg("export", "Write a clip as BVH (cm, Y up, ASF bone names)",
+const CommandRegistration exportCommand("export", "Write a clip as BVH (cm, Y up, ASF bone names)",
                               [](CLI::App& sub) -> CommandRunner {
     auto clipPath = std::make_shared<std::string>();
     auto skel = std::make_shared<std::string>();

@@ -9,7 +9,7 @@
 namespace mgp::app {
 namespace {
 
-const CommandRegistration reg("fk", "Forward kinematics: root and effector positions of one frame",
+const CommandRegistration fkCommand("fk", "Forward kinematics: root and effector positions of one frame",
                               [](CLI::App& sub) -> CommandRunner {
     auto clipPath = std::make_shared<std::string>();
     auto skel = std::make_shared<std::string>();

@@ -131,7 +131,7 @@ int runGui(const GuiArgs& args) {
 
 namespace {
 
-const CommandRegistration reg("gui", "Open the interactive editor (or run it scripted and save a screenshot)",
+const CommandRegistration guiCommand("gui", "Open the interactive editor (or run it scripted and save a screenshot)",
                               [](CLI::App& sub) -> CommandRunner {
     auto a = std::make_shared<GuiArgs>();
     auto size = std::make_shared<std::string>("1280x800");

@@ -48,7 +48,7 @@ void printHuman(const nlohmann::json& j) {
         std::cout << "  bones missing from the file (held at 0): " << j["missing_bones"].dump() << "\n";
 }
 
-const CommandRegistration reg("info", "Summarise a clip (frames, fps, DOFs, constant columns)",
+const CommandRegistration infoCommand("info", "Summarise a clip (frames, fps, DOFs, constant columns)",
                               [](CLI::App& sub) -> CommandRunner {
     auto clipPath = std::make_shared<std::string>();
     auto skel = std::make_shared<std::string>();

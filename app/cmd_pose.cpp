@@ -191,7 +191,7 @@ int runPose(const PoseOptions& o) {
     return 0;
 }
 
-const CommandRegistration reg("pose", "Solve IK on one frame of a model's clip (learned or plain)",
+const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model's clip (learned or plain)",
                               [](CLI::App& sub) -> CommandRunner {
     auto o = std::make_shared<PoseOptions>();
     sub.add_option("model", o->model, "Model file (motiongp train --out)")->required();

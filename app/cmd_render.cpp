@@ -39,7 +39,7 @@ Effector effectorFromCli(const std::string& option, const std::string& name) {
     return e;
 }
 
-const CommandRegistration reg("render", "Draw one frame offscreen to a PNG (no display needed)",
+const CommandRegistration renderCommand("render", "Draw one frame offscreen to a PNG (no display needed)",
                               [](CLI::App& sub) -> CommandRunner {
     auto input = std::make_shared<std::string>();
     auto skel = std::make_shared<std::string>();

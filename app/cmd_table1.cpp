@@ -14,7 +14,7 @@
 namespace mgp::app {
 namespace {
 
-const CommandRegistration reg(
+const CommandRegistration table1Command(
     "table1", "Reproduce the paper's Table 1 (convergence precision, FASGPLVM vs SGPLVM)",
     [](CLI::App& sub) -> CommandRunner {
         struct Opts {

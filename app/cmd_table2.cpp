@@ -61,7 +61,7 @@ int runTable2Command(int iters, int active, int maxDelta, bool quick, bool json)
     return 0;
 }
 
-const CommandRegistration reg("table2", "Editing range (paper Table 2) with model-independent naturalness tests",
+const CommandRegistration table2Command("table2", "Editing range (paper Table 2) with model-independent naturalness tests",
                               [](CLI::App& sub) -> CommandRunner {
     auto iters = std::make_shared<int>(10), active = std::make_shared<int>(200), maxDelta = std::make_shared<int>(80);
     auto quick = std::make_shared<bool>(false), json = std::make_shared<bool>(false);

@@ -63,7 +63,7 @@ void printBar(int iter, int total, double L, double elapsed, bool tty) {
     std::cerr << (tty ? "\r" : "") << buf << (tty ? "" : "\n") << std::flush;
 }
 
-const CommandRegistration reg(
+const CommandRegistration trainCommand(
     "train", "Learn a FASGPLVM or SGPLVM pose model from an ASF/AMC clip", [](CLI::App& sub) -> CommandRunner {
         struct Opts {
             std::vector<std::string> clips;

@@ -43,11 +43,6 @@ std::string tmpDir() {
     return dir;
 }
 
-bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-    return a.rows() == b.rows() && a.cols() == b.cols() &&
-           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
-}
-
 
 }  // namespace
 
@@ -74,7 +69,7 @@ TEST_CASE("model_file: nlohmann-json round-trips awkward doubles bit-exactly") {
     m.mu[1] = 5e-324;
     m.mu[2] = -1.7976931348623157e308;
     const GpModel back = modelFromJsonText(modelToJsonText(m), "mem");
-    CHECK(bitsEqual(m.mu, back.mu));
+    CHECK(mgp::test::bitsEqual(m.mu, back.mu));
 }
 
 TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are atomic") {
@@ -86,12 +81,12 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are ato
         CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
     const GpModel b = loadModel(path);
     CHECK(b.kind == m.kind);
-    CHECK(bitsEqual(b.logParams, m.logParams));
-    CHECK(bitsEqual(b.w, m.w));
-    CHECK(bitsEqual(b.mu, m.mu));
-    CHECK(bitsEqual(b.X, m.X));
-    CHECK(bitsEqual(b.Y, m.Y));  // rebuilt from the stored clip poses
-    CHECK(bitsEqual(b.constantValues, m.constantValues));
+    CHECK(mgp::test::bitsEqual(b.logParams, m.logParams));
+    CHECK(mgp::test::bitsEqual(b.w, m.w));
+    CHECK(mgp::test::bitsEqual(b.mu, m.mu));
+    CHECK(mgp::test::bitsEqual(b.X, m.X));
+    CHECK(mgp::test::bitsEqual(b.Y, m.Y));  // rebuilt from the stored clip poses
+    CHECK(mgp::test::bitsEqual(b.constantValues, m.constantValues));
     CHECK(b.active == m.active);
     CHECK(b.keptColumns == m.keptColumns);
     CHECK(b.constantColumns == m.constantColumns);
@@ -101,8 +96,8 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are ato
                       sizeof(double) * m.objectiveHistory.size()) == 0);
     CHECK(b.sourceSha256 == m.sourceSha256);
     CHECK(b.clip.frameCount() == m.clip.frameCount());
-    CHECK(bitsEqual(mgp::poseMatrix(b.clip), mgp::poseMatrix(m.clip)));
-    CHECK(bitsEqual(mgp::rootTranslations(b.clip), mgp::rootTranslations(m.clip)));
+    CHECK(mgp::test::bitsEqual(mgp::poseMatrix(b.clip), mgp::poseMatrix(m.clip)));
+    CHECK(mgp::test::bitsEqual(mgp::rootTranslations(b.clip), mgp::rootTranslations(m.clip)));
     CHECK(b.clip.skeleton.jointCount() == m.clip.skeleton.jointCount());
     // Saving the loaded model reproduces the file byte for byte.
     CHECK(modelToJsonText(b) == mgp::test::readText(path));
@@ -111,7 +106,7 @@ TEST_CASE("model_file: save/load is self-contained and bit-exact, writes are ato
     double v1 = 0, v2 = 0;
     m.posterior().predict(m.X.row(3).transpose(), f1, v1);
     b.posterior().predict(b.X.row(3).transpose(), f2, v2);
-    CHECK(bitsEqual(f1, f2));
+    CHECK(mgp::test::bitsEqual(f1, f2));
     CHECK(v1 == v2);
 }
 
@@ -185,7 +180,7 @@ TEST_CASE("model_file: the objective history is optional, bit-exact and validate
         j["training"].erase("objective_history");
         const GpModel old = modelFromJsonText(j.dump(1), "old.json");
         CHECK(old.objectiveHistory.empty());
-        CHECK(bitsEqual(old.logParams, m.logParams));
+        CHECK(mgp::test::bitsEqual(old.logParams, m.logParams));
     }
     auto message = [](const nlohmann::json& doc) -> std::string {
         try {

@@ -26,11 +26,6 @@ namespace {
 
 const std::string kMocap = MOTIONGP_TEST_MOCAP;
 
-bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-    return a.rows() == b.rows() && a.cols() == b.cols() &&
-           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
-}
-
 // Two kicks of subject 10, frames 1..60 every 3rd of each (20 rows each), M = 15, T = 1.
 const GpModel& twoKicks() {
     static const GpModel model = [] {
@@ -88,8 +83,8 @@ TEST_CASE("multi-clip: a two-clip model file is version 2 and round-trips bit-ex
     CHECK(back.clipSha256(1) == m.clipSha256(1));
     CHECK(back.trainingClips == m.trainingClips);
     CHECK(back.trainingFrames == m.trainingFrames);
-    CHECK(bitsEqual(back.X, m.X));
-    CHECK(bitsEqual(back.Y, m.Y));  // rebuilt from each row's own clip
+    CHECK(mgp::test::bitsEqual(back.X, m.X));
+    CHECK(mgp::test::bitsEqual(back.Y, m.Y));  // rebuilt from each row's own clip
     // Damage: a row pointing at a clip that is not there is a clear error.
     auto j = nlohmann::json::parse(text);
     j["training_clips"][3] = 2;
@@ -120,7 +115,7 @@ TEST_CASE("multi-clip: withPrimaryClip swaps clips and relabels rows, and is its
     CHECK(s.clipName(1) == "10_02");
     CHECK(s.rowClip(0) == 1);
     CHECK(s.rowClip(39) == 0);
-    CHECK(bitsEqual(s.Y, m.Y));
+    CHECK(mgp::test::bitsEqual(s.Y, m.Y));
     CHECK(modelToJsonText(withPrimaryClip(s, 1)) == modelToJsonText(m));
     CHECK_THROWS_AS(withPrimaryClip(m, 2), std::out_of_range);
     // The open clip is found among the model's clips.

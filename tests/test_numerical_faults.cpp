@@ -245,7 +245,7 @@ TEST_CASE("`motiongp train` on degenerate clips: clear error (exit 2, no model) 
 
 namespace {
 
-gp::ModelVersionPtr smallModel() {
+gp::ModelVersionPtr smallModelVersion() {
     static const gp::ModelVersionPtr v = [] {
         gp::TrainResult res = gp::trainOnClip(walk(60), smallOptions());
         return gp::ModelVersion::make(std::move(res.model));
@@ -263,7 +263,7 @@ Eigen::Vector3d effectorOf(const Skeleton& sk, const Pose& p, Effector e) {
 }  // namespace
 
 TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets") {
-    const gp::ModelVersionPtr v = smallModel();
+    const gp::ModelVersionPtr v = smallModelVersion();
     const Clip& clip = v->model->clip;
     const int frame = 20;
     LearnedIkSolver solver(v);
@@ -323,7 +323,7 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
 TEST_CASE("`motiongp pose`: a target 1e308 cm away is a finite NOT-reached result, NaN offsets are refused") {
     const std::string dir = test::scratchDir("numerical_pose");
     const std::string model = dir + "/m.json";
-    gp::saveModel(model, *smallModel()->model);
+    gp::saveModel(model, *smallModelVersion()->model);
     for (const char* offset : {"rhand=1000,0,0", "rhand=0,1e300,0", "rhand=0,0,1e308"}) {
         CAPTURE(offset);
         const test::CliResult r = test::runCliArgs({"pose", model, "--frame", "21", "--target", offset, "--json"}, test::hostileLimits());
@@ -353,7 +353,7 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
         // A fresh document on frame 20 (learned: the small model; else plain IK on the walk).
         auto makeDoc = [&] {
             auto doc = std::make_unique<EditorDocument>();
-            if (learned) doc->setModel(smallModel(), true);
+            if (learned) doc->setModel(smallModelVersion(), true);
             else doc->setClip(walk(60), true);
             REQUIRE(doc->hasModel() == learned);
             doc->setFrame(20);

@@ -59,6 +59,11 @@ void writeText(const std::string& path, const std::string& text) {
     REQUIRE(out.good());
 }
 
+bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return a.rows() == b.rows() && a.cols() == b.cols() &&
+           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
 std::string readText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream ss;

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace mgp::test {
 
 // A clip shipped with the repository (assets/mocap, always there). Fails the calling test if the
@@ -22,6 +24,8 @@ std::string sharedMocapDir();
 std::string scratchDir(const std::string& name);
 void writeText(const std::string& path, const std::string& text);
 std::string readText(const std::string& path);
+// Same shape and the same bits in every entry (no tolerance: for "reproduces exactly" checks).
+bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 
 struct CliResult {
     int exitCode = -1;      // -1 unless the process exited normally

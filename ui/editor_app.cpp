@@ -24,7 +24,6 @@
 namespace mgp::ui {
 
 namespace {
-std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 double secondsNow() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -70,7 +69,7 @@ std::string EditorApp::reportingErrors(const std::function<void()>& work) {
 std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
     return reportTrainingStart(
-        state_.training.start(state_.doc.clip(), state_.trainOptions, baseName(state_.doc.clip().sourcePath)));
+        state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath)));
 }
 
 std::string EditorApp::startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) {
@@ -176,7 +175,7 @@ bool EditorApp::animating() const {
 
 std::string EditorApp::title() const {
     std::string t = std::string(dirty() ? "* " : "") + "MotionGP - ";
-    if (!sessionPath_.empty()) t += baseName(sessionPath_) + " - ";
+    if (!sessionPath_.empty()) t += fileNameOf(sessionPath_) + " - ";
     if (!state_.doc.hasClip()) t += "no clip";
     else if (state_.doc.synthetic()) t += "synthetic demo clip (no mocap data found)";
     else t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH, view-only)" : "");

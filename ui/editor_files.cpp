@@ -17,7 +17,6 @@
 namespace mgp::ui {
 
 namespace {
-std::string baseName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 // Adds `extension` when the user typed a name without one.
 std::string withExtension(const std::string& path, const std::string& extension) {
@@ -30,7 +29,7 @@ std::string EditorApp::openClip(const std::string& path) {
         Clip clip = loadClip(path);
         state_.training.cancel();
         state_.doc.setClip(std::move(clip), false);
-        state_.clipLabel = baseName(path);
+        state_.clipLabel = fileNameOf(path);
         state_.modelLabel.clear();
         state_.cameraNeedsFraming = true;
         state_.playing = false;
@@ -76,7 +75,7 @@ std::string EditorApp::openModel(const std::string& path) {
             v->model->clipCount() > 1 ? std::to_string(v->model->clipCount()) + " clips (" + v->model->clipNames() + ")"
                                       : modelClip + " (" + std::to_string(v->model->clip.frameCount()) + " frames)";
         prompts_.askModelClip(
-            {baseName(path) + " was trained on " + trainedOn + ".",
+            {fileNameOf(path) + " was trained on " + trainedOn + ".",
              "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
                  " frames): " + difference + ".",
              "Opening the model replaces the open clip with " + modelClip + "."},
@@ -91,7 +90,7 @@ std::string EditorApp::openModel(const std::string& path) {
 void EditorApp::installModel(gp::ModelVersionPtr v, const std::string& path) {
     state_.doc.setModel(v, true);
     state_.clipLabel = v->model->sourceFile.empty() ? v->model->clip.name : v->model->sourceFile;
-    state_.modelLabel = baseName(path);
+    state_.modelLabel = fileNameOf(path);
     state_.cameraNeedsFraming = true;
     state_.setStatus("opened model " + path);
     sessionPath_.clear();
@@ -149,7 +148,7 @@ std::string EditorApp::saveModel(const std::string& path) {
     }
     return reportingErrors([&] {
         gp::saveModel(path, *v->model);
-        state_.modelLabel = baseName(path);
+        state_.modelLabel = fileNameOf(path);
         state_.setStatus("saved model " + path);
         remember(path, RecentKind::kModel);
     });

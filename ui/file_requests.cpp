@@ -4,6 +4,8 @@
 
 namespace mgp::ui {
 
+std::string fileNameOf(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
 FileRequest fileRequest(FileKind kind, const EditorDocument& doc, const std::string& sessionPath, const std::string& mocapDir) {
     using Mode = FileDialog::Mode;
     const std::string clipStem = doc.hasClip() && !doc.clip().sourcePath.empty()

@@ -22,6 +22,9 @@ struct FileRequest {
 
 // `sessionPath` "" = not saved yet; `mocapDir` "" = no data folder (File > Open starts in its
 // asf_amc/ otherwise).
+// The file name of `path` without its folders, as the title bar and labels show it.
+std::string fileNameOf(const std::string& path);
+
 FileRequest fileRequest(FileKind kind, const EditorDocument& doc, const std::string& sessionPath, const std::string& mocapDir);
 
 }  // namespace mgp::ui

@@ -18,7 +18,7 @@ bool isFrameNumberLine(const std::vector<std::string_view>& tok, long long& numb
     return tok.size() == 1 && parseInt(tok[0], number);
 }
 
-Clip parse(TextReader& r, const AsfSkeleton& asf) {
+Clip readAmcClip(TextReader& r, const AsfSkeleton& asf) {
     Clip clip;
     clip.sourcePath = r.fileName();
     clip.skeletonPath = asf.path;
@@ -137,12 +137,12 @@ Clip parse(TextReader& r, const AsfSkeleton& asf) {
 
 Clip readAmc(const std::string& amcPath, const AsfSkeleton& asf) {
     TextReader r = TextReader::fromFile(amcPath);
-    return parse(r, asf);
+    return readAmcClip(r, asf);
 }
 
 Clip parseAmc(const std::string& name, std::string text, const AsfSkeleton& asf) {
     TextReader r = TextReader::fromString(name, std::move(text));
-    return parse(r, asf);
+    return readAmcClip(r, asf);
 }
 
 }  // namespace mgp

@@ -73,7 +73,7 @@ int AsfSkeleton::channelCount() const {
 
 namespace {
 
-AsfSkeleton parse(TextReader& r) {
+AsfSkeleton readAsfSkeleton(TextReader& r) {
     AsfSkeleton out;
     out.path = r.fileName();
     double lengthUnit = 1.0;  // ASF default: inches
@@ -294,12 +294,12 @@ AsfSkeleton parse(TextReader& r) {
 
 AsfSkeleton readAsf(const std::string& path) {
     TextReader r = TextReader::fromFile(path, 16u << 20);
-    return parse(r);
+    return readAsfSkeleton(r);
 }
 
 AsfSkeleton parseAsf(const std::string& name, std::string text) {
     TextReader r = TextReader::fromString(name, std::move(text));
-    return parse(r);
+    return readAsfSkeleton(r);
 }
 
 }  // namespace mgp

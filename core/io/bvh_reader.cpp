@@ -187,7 +187,7 @@ Eigen::Vector3d tailOf(const std::vector<RawJoint>& raw, const std::vector<std::
     return joint.children.empty() ? mean : Eigen::Vector3d(mean / double(joint.children.size()));
 }
 
-Clip parse(TextReader& r) {
+Clip readBvhClip(TextReader& r) {
     HierarchyParser hp(r);
     hp.tokenize();
     std::vector<RawJoint> raw = hp.parse();
@@ -305,12 +305,12 @@ Clip parse(TextReader& r) {
 
 Clip readBvh(const std::string& path) {
     TextReader r = TextReader::fromFile(path);
-    return parse(r);
+    return readBvhClip(r);
 }
 
 Clip parseBvh(const std::string& name, std::string text) {
     TextReader r = TextReader::fromString(name, std::move(text));
-    return parse(r);
+    return readBvhClip(r);
 }
 
 }  // namespace mgp

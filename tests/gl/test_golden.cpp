@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "gl_test_paths.h"
 #include "io/clip_loader.h"
 #include "scene_builder.h"
 #include "snapshot.h"
@@ -33,9 +34,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kMocap = MOTIONGP_TEST_MOCAP;
-const std::string kGoldenDir = MOTIONGP_GOLDEN_DIR;
-const std::string kOutDir = MOTIONGP_GL_OUT_DIR;
+using test::kMocap;
+using test::kGoldenDir;
+using test::kOutDir;
 constexpr int kTolerance = 2;            // per channel, out of 255
 constexpr double kMinMatching = 0.999;   // fraction of pixels within kTolerance
 constexpr int kWidth = 400, kHeight = 300;

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gl_context.h"
+#include "gl_test_paths.h"
 #include "skip.h"
 
 namespace fs = std::filesystem;
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kBinary = MOTIONGP_TEST_BINARY;
-const std::string kMocap = MOTIONGP_TEST_MOCAP;
+using test::kMocap;
 const std::string kOut = std::string(MOTIONGP_GL_OUT_DIR) + "/command_line";
 
 struct Run {

@@ -22,6 +22,7 @@
 #include "editor_app.h"
 #include "editor_harness.h"
 #include "gl_context.h"
+#include "gl_test_paths.h"
 #include "gui_script.h"
 #include "io/parse_error.h"
 #include "png_capture.h"
@@ -35,8 +36,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kGoldenDir = MOTIONGP_GOLDEN_DIR;
-const std::string kOutDir = MOTIONGP_GL_OUT_DIR;
+using test::kGoldenDir;
+using test::kOutDir;
 
 using test::Harness;
 using test::makeHarness;

@@ -8,6 +8,7 @@
 
 #include "editor_app.h"
 #include "editor_harness.h"
+#include "gl_test_paths.h"
 #include "gui_script.h"
 #include "png_capture.h"
 #include "script_player.h"
@@ -17,7 +18,7 @@
 using namespace mgp;
 
 namespace {
-const std::string kOutDir = MOTIONGP_GL_OUT_DIR;
+using test::kOutDir;
 
 int greenGhosts(const render::Scene& scene) {
     int n = 0;

@@ -18,6 +18,7 @@
 #include "edit/session_file.h"
 #include "document_helpers.h"
 #include "editor_harness.h"
+#include "gl_test_paths.h"
 #include "gp/model_file.h"
 #include "png_capture.h"
 #include "skeleton/forward_kinematics.h"
@@ -27,7 +28,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kOutDir = MOTIONGP_GL_OUT_DIR;
+using test::kOutDir;
 
 std::string outDir(const std::string& name) {
     const std::string dir = kOutDir + "/" + name;

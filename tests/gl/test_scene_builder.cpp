@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "gl_test_paths.h"
 #include "io/clip_loader.h"
 #include "scene_builder.h"
 #include "skeleton/synthetic_clip.h"
@@ -10,9 +11,7 @@
 using namespace mgp;
 using namespace mgp::render;
 
-namespace {
-const std::string kMocap = MOTIONGP_TEST_MOCAP;
-}  // namespace
+using test::kMocap;
 
 TEST_CASE("scene builder: sides come from the ASF bone role") {
     CHECK(sideOfBone("lfemur") == BodySide::kLeft);
