@@ -4,7 +4,6 @@
 // trains, poses (--clip) and refuses clips of different skeletons. Tiny models only (CI budget).
 #include <doctest/doctest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
