@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kBinary = MOTIONGP_TEST_BINARY;
-using test::kMocap;
+using mgp::test::kMocap;
 const std::string kOut = std::string(MOTIONGP_GL_OUT_DIR) + "/command_line";
 
 struct Run {
