@@ -43,7 +43,6 @@ std::string tmpDir() {
     return dir;
 }
 
-
 }  // namespace
 
 TEST_CASE("model_file: SHA-256 matches the published checksum of 35_01.amc and the FIPS vector") {
