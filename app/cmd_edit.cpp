@@ -1,6 +1,6 @@
 // `motiongp edit MODEL --effector EFF --keys 89,103,117,131 --offset dx,dy,dz
 //  [--clip NAME] [--mode direct|displacement] [--solver span|per-frame] [--pin EFF]... [--adaptive --out-model MODEL2]
-//  --out OUT.bvh [--json]`:
+//  --out OUT.bvh|.glb|.gltf|.fbx [--json]`:
 // moves the middle keys (frames of --clip NAME, the model clip's file stem; default the first) by the offset, regenerates the span and writes the whole clip as BVH
 // (edited frames replaced). `span` (default) solves the span as one problem with smoothness and
 // held contacts (motion/span_solver.h); `per-frame` is the paper's independent per-frame IK.
@@ -12,7 +12,7 @@
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
 #include "ik_cli.h"
-#include "io/bvh_writer.h"
+#include "io/clip_export.h"
 #include "motion/motion_edit.h"
 #include "motion_quality_json.h"
 
@@ -31,6 +31,8 @@ int runEdit(const EditOptions& o) {
         throw UsageError("expected --mode direct or displacement, found '" + o.mode + "'");
     if (o.solver != "span" && o.solver != "per-frame")
         throw UsageError("expected --solver span or per-frame, found '" + o.solver + "'");
+    if (!isExportPath(o.out))
+        throw UsageError("expected --out to end in " + std::string(exportExtensions()) + ", found '" + o.out + "'");
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     const auto t0 = std::chrono::steady_clock::now();
     MotionEditJob job;
@@ -51,7 +53,7 @@ int runEdit(const EditOptions& o) {
     job.run();
     Clip edited = job.version->model->clip;
     edited.frames = job.frames;
-    writeBvh(edited, o.out);
+    exportClip(edited, o.out, [](const std::string& stage) { std::cerr << stage << "\n"; });
     nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm},
                      {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
                      {"quality", spanQualityJson(job.quality)}};
@@ -98,7 +100,7 @@ const CommandRegistration editCommand("edit", "Edit an effector path (Hermite ke
     sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
-    sub.add_option("--out", o->out, "Output BVH (every clip frame, edited ones replaced)")->required();
+    sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every clip frame, edited ones replaced)")->required();
     sub.add_flag("--json", o->json, "Print one JSON object");
     return [o]() { return runEdit(*o); };
 });

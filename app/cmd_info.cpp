@@ -23,6 +23,7 @@ nlohmann::json clipInfoJson(const Clip& clip) {
     j["format"] = clipFormatName(clip.format);
     j["convention"] = clip.convention;
     j["frames"] = clip.frameCount();
+    j["joints"] = clip.skeleton.jointCount();
     j["fps"] = clip.fps;
     j["bones"] = kModelBones - static_cast<int>(missing.size());
     const int rotationDofs = PoseLayout(clip.skeleton).size();
@@ -40,7 +41,7 @@ nlohmann::json clipInfoJson(const Clip& clip) {
 void printHuman(const nlohmann::json& j) {
     std::cout << j["clip"].get<std::string>() << ": " << j["format"].get<std::string>() << " ("
               << j["convention"].get<std::string>() << "), " << j["frames"] << " frames at "
-              << j["fps"] << " fps, " << j["bones"] << " of 22 bones, constant DOFs "
+              << j["fps"] << " fps, " << j["joints"] << " joints, " << j["bones"] << " of 22 bones, constant DOFs "
               << j["constant_dofs"].dump() << ", rest frame " << (j["rest_frame"].get<bool>() ? "yes" : "no")
               << "\n";
     if (!j["unmapped"].empty()) std::cout << "  unmapped joints: " << j["unmapped"].dump() << "\n";
@@ -53,7 +54,7 @@ const CommandRegistration infoCommand("info", "Summarise a clip (frames, fps, DO
     auto clipPath = std::make_shared<std::string>();
     auto skel = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    sub.add_option("clip", *clipPath, "AMC or BVH file")->required();
+    sub.add_option("clip", *clipPath, "AMC, BVH or glTF (.glb, .gltf) file")->required();
     sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
     sub.add_flag("--json", *json, "Print one JSON object");
     return [=]() {

@@ -5,7 +5,6 @@
 // file stem; default the first; --frame counts within it) with the model's own
 // reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
 // --ghost-captured shows the captured pose beside what the model makes of it.
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <regex>
@@ -21,16 +20,6 @@
 
 namespace mgp::app {
 namespace {
-
-bool isClipPath(const std::string& path) {
-    std::string lower = path;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-    auto endsWith = [&](const char* ext) {
-        const std::string e(ext);
-        return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
-    };
-    return endsWith(".amc") || endsWith(".bvh");
-}
 
 Effector effectorFromCli(const std::string& option, const std::string& name) {
     Effector e{};

@@ -149,7 +149,7 @@ TEST_CASE("bad files at the file level: missing, directory, empty, binary, wrong
     CHECK(errorOf([&] { loadClip(dir + "/empty.bvh"); }) == dir + "/empty.bvh: expected mocap text, found an empty file");
     CHECK(errorOf([&] { loadClip(dir + "/binary.bvh"); }) == dir + "/binary.bvh:1: expected text, found binary data (a NUL byte)");
     CHECK(errorOf([&] { loadClip(dir + "/folder.bvh"); }) == dir + "/folder.bvh: expected a file, found a directory");
-    CHECK(errorOf([&] { loadClip(dir + "/clip.txt"); }) == dir + "/clip.txt: expected a clip ending in .amc or .bvh, found '.txt'");
+    CHECK(errorOf([&] { loadClip(dir + "/clip.txt"); }) == dir + "/clip.txt: expected a clip ending in .amc, .bvh, .glb or .gltf, found '.txt'");
     CHECK(errorOf([&] { loadClip(test::mocap("asf_amc/35.asf")); }) ==
           test::mocap("asf_amc/35.asf") + ": expected a motion clip (.amc or .bvh; pass the .asf with --skel), found a skeleton file");
     // An AMC whose subject ASF is missing names the ASF it looked for.

@@ -116,8 +116,14 @@ std::vector<EditorAction> makeActions() {
          pathOrDialog([](EditorApp& app, const std::string& p) { return app.saveModel(p); },
                       [](EditorApp& app) { app.askForFile(FileKind::kSaveModel); })});
     add({"export-bvh", "[PATH]", "Ctrl+E", {{'E', kCtrl}}, "the edited motion as BVH; no PATH: the Save dialog", hasClip, true,
-         pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportBvh(p); },
+         pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".bvh"); },
                       [](EditorApp& app) { app.askForFile(FileKind::kExportBvh); })});
+    add({"export-gltf", "[PATH]", "", {}, "the edited motion as glTF 2.0 (.glb; .gltf for text); no PATH: the Save dialog", hasClip,
+         true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".glb"); },
+                            [](EditorApp& app) { app.askForFile(FileKind::kExportGltf); })});
+    add({"export-fbx", "[PATH]", "", {}, "the edited motion as FBX, converted by Blender in the background; no PATH: the Save dialog",
+         hasClip, true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".fbx"); },
+                                     [](EditorApp& app) { app.askForFile(FileKind::kExportFbx); })});
     add({"export-png", "[PATH]", "Ctrl+Shift+E", {{'E', kCtrl | kShift}}, "the 3-D viewport as PNG; no PATH: the Save dialog", hasClip,
          true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportPng(p); },
                             [](EditorApp& app) { app.askForFile(FileKind::kExportPng); })});
@@ -208,7 +214,7 @@ std::vector<EditorAction> makeActions() {
              app.state().doc.setAdaptiveEnabled(a[0] == "on");
              return std::string();
          }});
-    add({"wait", "", "", {}, "block until training, adaptive updates and the latent map are done", always, false,
+    add({"wait", "", "", {}, "block until training, exports, adaptive updates and the latent map are done", always, false,
          plain([](EditorApp& app) { app.waitIdle(); })});
     // ---- View
     add({"frame-camera", "", "F", {}, "frame the character (F over the viewport)", always, false,

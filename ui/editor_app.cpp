@@ -141,6 +141,7 @@ void EditorApp::pollJobs() {
         const std::string why = state_.training.message();
         state_.setStatus(why.empty() ? "training stopped" : "training stopped: " + why);
     }
+    pollExport();
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {
         state_.doc.setCompareModel(v);
         state_.setStatus("compare model: " + state_.compareTraining.message());
@@ -155,7 +156,23 @@ std::string EditorApp::startCompareTraining() {
     return err;
 }
 
+void EditorApp::pollExport() {
+    if (!exportSeen_) return;
+    if (std::optional<ExportOutcome> done = state_.exporting.take()) {
+        exportSeen_ = false;
+        state_.setStatus("exported " + std::to_string(done->frames) + " frames to " + done->path);
+    } else if (state_.exporting.running()) {
+        const std::string stage = state_.exporting.stage();
+        if (!stage.empty() && stage != exportStage_) state_.setStatus("exporting: " + stage);
+        exportStage_ = stage;
+    } else {
+        exportSeen_ = false;  // stopped without a file: say why
+        state_.setStatus(state_.exporting.message(), true);
+    }
+}
+
 void EditorApp::waitIdle() {
+    state_.exporting.join();
     state_.training.join();
     state_.compareTraining.join();
     pollJobs();
@@ -291,7 +308,9 @@ void EditorApp::dialogs() {
                 if (saveSession(*path).empty())
                     if (auto then = prompts_.takeAfterSave()) then();
                 break;
-            case FileKind::kExportBvh: exportBvh(*path); break;
+            case FileKind::kExportBvh: exportMotion(*path, ".bvh"); break;
+            case FileKind::kExportGltf: exportMotion(*path, ".glb"); break;
+            case FileKind::kExportFbx: exportMotion(*path, ".fbx"); break;
             case FileKind::kExportPng: exportPng(*path); break;
             case FileKind::kNone: break;
         }

@@ -77,7 +77,8 @@ public:
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
     std::string restoreAutosave(const std::string& path = "");
     // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
-    std::string exportBvh(const std::string& path);
+    // The edited motion as BVH or glTF (by the path's extension; `defaultExtension` when it has none).
+    std::string exportMotion(const std::string& path, const std::string& defaultExtension);
     std::string exportPng(const std::string& path);
     // Opens the file dialog for `kind`; with `what` ("opening a model") after asking about
     // unsaved changes, since the document will be replaced.
@@ -144,6 +145,7 @@ public:
 
 private:
     void pollJobs();
+    void pollExport();
     std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
@@ -172,6 +174,8 @@ private:
     bool showHelp_ = false;
     bool showMessages_ = false;
     bool trainingSeen_ = false;  // a training run this editor started has not been reported yet
+    bool exportSeen_ = false;    // an export this editor started has not been reported yet
+    std::string exportStage_;    // the running export's stage as last shown
     std::optional<Pose> poseClipboard_;
     JointRotationWindow jointWindow_;
     TrainClipsWindow trainClips_;

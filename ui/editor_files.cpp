@@ -8,7 +8,9 @@
 #include "edit/session_mapping.h"
 #include "editor_session.h"
 #include "gp/model_file.h"
-#include "io/bvh_writer.h"
+#include "io/clip_export.h"
+#include "io/fbx_export.h"
+#include "io/text_reader.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
 #include "skeleton/clip_match.h"
@@ -216,13 +218,24 @@ std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
     }
 }
 
-std::string EditorApp::exportBvh(const std::string& pathIn) {
-    const std::string path = withExtension(pathIn, ".bvh");
+std::string EditorApp::exportMotion(const std::string& pathIn, const std::string& defaultExtension) {
+    const std::string path = withExtension(pathIn, defaultExtension);
     if (!state_.doc.hasClip()) return "no clip to export";
     return reportingErrors([&] {
         Clip edited = state_.doc.clip();
         for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
-        writeBvh(edited, path);
+        if (fileExtension(path) == "fbx") {
+            // Through Blender, seconds: on the export worker; pollExport reports its stages and end.
+            std::string why;
+            if (findBlender(&why).empty())
+                throw std::runtime_error(path + ": FBX export needs Blender (apt-get install blender), " + why +
+                                         "; glTF (.glb) needs nothing else");
+            if (const std::string busy = state_.exporting.start(std::move(edited), path); !busy.empty()) throw std::runtime_error(busy);
+            exportSeen_ = true;
+            state_.setStatus("exporting " + fileNameOf(path) + " through Blender...");
+            return;
+        }
+        exportClip(edited, path);
         state_.setStatus("exported " + std::to_string(edited.frameCount()) + " frames (" +
                          std::to_string(state_.doc.edits().size()) + " edited) to " + path);
     });

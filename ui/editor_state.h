@@ -10,6 +10,7 @@
 #include "frame_profile.h"
 #include "camera.h"
 #include "edit/editor_document.h"
+#include "edit/export_job.h"
 #include "edit/training_job.h"
 #include "gp/trainer.h"
 #include "message_log.h"
@@ -20,6 +21,7 @@ struct EditorState {
     EditorDocument doc;
     TrainingJob training;         // the main model
     TrainingJob compareTraining;  // the compare model (the other kernel)
+    ExportJob exporting;          // FBX exports (Blender takes seconds)
     gp::TrainOptions trainOptions;
     render::OrbitCamera camera;
     bool cameraNeedsFraming = true;

@@ -21,6 +21,10 @@ FileRequest fileRequest(FileKind kind, const EditorDocument& doc, const std::str
             return {"Save session", Mode::kSave, {".mgsession"}, "",
                     sessionPath.empty() ? clipStem + ".mgsession" : std::filesystem::path(sessionPath).filename().string()};
         case FileKind::kExportBvh: return {"Export motion as BVH", Mode::kSave, {".bvh"}, "", clipStem + "_edited.bvh"};
+        case FileKind::kExportGltf:
+            return {"Export motion as glTF (.glb binary, .gltf text)", Mode::kSave, {".glb", ".gltf"}, "", clipStem + "_edited.glb"};
+        case FileKind::kExportFbx:
+            return {"Export motion as FBX (through Blender)", Mode::kSave, {".fbx"}, "", clipStem + "_edited.fbx"};
         case FileKind::kExportPng:
             return {"Export viewport as PNG", Mode::kSave, {".png"}, "", clipStem + "_f" + std::to_string(doc.frame() + 1) + ".png"};
         case FileKind::kNone: break;

@@ -10,7 +10,7 @@
 
 namespace mgp::ui {
 
-enum class FileKind { kNone, kOpenAny, kModel, kSaveModel, kSaveSession, kExportBvh, kExportPng };
+enum class FileKind { kNone, kOpenAny, kModel, kSaveModel, kSaveSession, kExportBvh, kExportGltf, kExportFbx, kExportPng };
 
 struct FileRequest {
     std::string title;

@@ -36,6 +36,8 @@ void fileMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "save-model", "Save model...");
     ImGui::Separator();
     t.menuItem(app, "export-bvh", "Export motion as BVH...");
+    t.menuItem(app, "export-gltf", "Export motion as glTF...");
+    t.menuItem(app, "export-fbx", "Export motion as FBX (Blender)...");
     t.menuItem(app, "export-png", "Export viewport as PNG...");
     ImGui::Separator();
     t.menuItem(app, "demo-clip", "Synthetic demo clip");

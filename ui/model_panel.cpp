@@ -23,6 +23,7 @@ const char* formatLabel(const Clip& c) {
         case ClipFormat::kAmc: return "ASF/AMC";
         case ClipFormat::kBvh: return "BVH";
         case ClipFormat::kSynthetic: return "synthetic";
+        case ClipFormat::kGltf: return "glTF";
     }
     return "?";
 }

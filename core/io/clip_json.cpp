@@ -52,7 +52,8 @@ ClipFormat formatFromName(const std::string& s, const std::string& file) {
     if (s == "amc") return ClipFormat::kAmc;
     if (s == "bvh") return ClipFormat::kBvh;
     if (s == "synthetic") return ClipFormat::kSynthetic;
-    throwParseError(file, 0, "clip format amc, bvh or synthetic", "'" + s + "'");
+    if (s == "gltf") return ClipFormat::kGltf;
+    throwParseError(file, 0, "clip format amc, bvh, gltf or synthetic", "'" + s + "'");
 }
 
 }  // namespace
@@ -135,7 +136,7 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
                 throwParseError(file, 0, "parents listed before their children", "joint '" + jt.name + "'");
             clip.skeleton.joints.push_back(jt);
         }
-        if (clip.format == ClipFormat::kBvh) clip.skeleton.poseVector = PoseVectorKind::kChannels;
+        if (clip.format == ClipFormat::kBvh || clip.format == ClipFormat::kGltf) clip.skeleton.poseVector = PoseVectorKind::kChannels;
         clip.skeleton.validate();
         clip.skeleton.resolveEffectors();
         const auto& poses = field(j, "poses_deg", file, "clip");

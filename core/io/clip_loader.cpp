@@ -3,6 +3,7 @@
 #include "io/amc_reader.h"
 #include "io/asf_reader.h"
 #include "io/bvh_reader.h"
+#include "io/gltf_reader.h"
 #include "io/parse_error.h"
 #include "io/text_reader.h"
 
@@ -18,9 +19,15 @@ std::string defaultAsfFor(const std::string& amcPath) {
     return dir + subject + ".asf";
 }
 
+bool isClipPath(const std::string& path) {
+    const std::string ext = fileExtension(path);
+    return ext == "amc" || ext == "bvh" || ext == "glb" || ext == "gltf";
+}
+
 Clip loadClip(const std::string& path, const std::string& skeletonPath) {
     const std::string ext = fileExtension(path);
     if (ext == "bvh") return readBvh(path);
+    if (ext == "glb" || ext == "gltf") return readGltfClip(path);
     if (ext == "amc") {
         const std::string asfPath = skeletonPath.empty() ? defaultAsfFor(path) : skeletonPath;
         const AsfSkeleton asf = readAsf(asfPath);
@@ -29,7 +36,7 @@ Clip loadClip(const std::string& path, const std::string& skeletonPath) {
     if (ext == "asf")
         throwParseError(path, 0, "a motion clip (.amc or .bvh; pass the .asf with --skel)",
                         "a skeleton file");
-    throwParseError(path, 0, "a clip ending in .amc or .bvh", "'." + ext + "'");
+    throwParseError(path, 0, "a clip ending in .amc, .bvh, .glb or .gltf", "'." + ext + "'");
 }
 
 }  // namespace mgp

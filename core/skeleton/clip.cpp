@@ -9,8 +9,10 @@ const char* clipFormatName(ClipFormat f) {
     switch (f) {
         case ClipFormat::kAmc: return "amc";
         case ClipFormat::kBvh: return "bvh";
-        default: return "synthetic";
+        case ClipFormat::kGltf: return "gltf";
+        case ClipFormat::kSynthetic: break;
     }
+    return "synthetic";
 }
 
 void appendFrames(Clip& into, const Clip& from, int first, int count) {

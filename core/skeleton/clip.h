@@ -10,7 +10,7 @@
 
 namespace mgp {
 
-enum class ClipFormat { kAmc, kBvh, kSynthetic };
+enum class ClipFormat { kAmc, kBvh, kSynthetic, kGltf };
 const char* clipFormatName(ClipFormat f);
 
 struct Clip {

@@ -20,6 +20,8 @@
 #include "editor_harness.h"
 #include "gl_test_paths.h"
 #include "gp/model_file.h"
+#include "io/clip_loader.h"
+#include "io/fbx_export.h"
 #include "png_capture.h"
 #include "skeleton/forward_kinematics.h"
 
@@ -129,6 +131,10 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     s.add(24, "action", {"regenerate", "300"});
     s.add(25, "action", {"wait"});
     s.add(27, "action", {"export-bvh", dir + "/after.bvh"});
+    s.add(28, "action", {"export-gltf", dir + "/after.glb"});
+    const bool blender = !findBlender().empty();
+    if (blender) s.add(29, "action", {"export-fbx", dir + "/after.fbx"});  // in the background
+    s.add(30, "action", {"wait"});
     CHECK(h->play(s).empty());
     CHECK(doc.undoLabel() == "regenerate lfoot, frames 90-130");  // the key drag was no effector drag
 
@@ -150,6 +156,30 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     REQUIRE(before.size() == std::size_t(doc.frameCount()));
     REQUIRE(after.size() == before.size());
     for (int t = 0; t < doc.frameCount(); ++t) CHECK((before[t] == after[t]) == !(t > 88 && t < 130));
+    // The glTF export holds the same edited motion: every joint where the BVH export puts it.
+    const Clip fromBvh = loadClip(dir + "/after.bvh"), fromGltf = loadClip(dir + "/after.glb");
+    REQUIRE(fromGltf.frameCount() == doc.frameCount());
+    double worstGltfCm = 0.0;
+    FkState fkBvh, fkGltf;
+    for (int t = 0; t < doc.frameCount(); ++t) {
+        forwardKinematics(fromBvh.skeleton, fromBvh.frames[t], fkBvh);
+        forwardKinematics(fromGltf.skeleton, fromGltf.frames[t], fkGltf);
+        for (int j = 0; j < fromBvh.skeleton.jointCount(); ++j) {
+            const int g = fromGltf.skeleton.findJoint(fromBvh.skeleton.joints[j].name);
+            REQUIRE(g >= 0);
+            worstGltfCm = std::max(worstGltfCm, (fkBvh.jointCm[j] - fkGltf.jointCm[g]).norm());
+        }
+    }
+    INFO("worst joint gap between the BVH and glTF exports: " << worstGltfCm << " cm");
+    CHECK(worstGltfCm < 1e-3);
+    if (blender) {
+        CHECK(std::filesystem::file_size(dir + "/after.fbx") > 0);
+        const std::string said = "exported " + std::to_string(doc.frameCount()) + " frames to " + dir + "/after.fbx";
+        const auto& history = h->app->state().messages.history();
+        CHECK(std::any_of(history.begin(), history.end(), [&](const auto& m) { return m.text == said; }));
+    } else {
+        MESSAGE("no blender: the FBX export is not driven here");
+    }
 
     doc.waitIdle();
     const gp::ModelVersionPtr v2 = doc.model();

@@ -1,0 +1,239 @@
+#include "io/gltf_reader.h"
+
+#include <sys/stat.h>
+
+#include <Eigen/Geometry>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <tiny_gltf.h>
+
+#include "io/parse_error.h"
+#include "io/text_reader.h"
+
+namespace mgp {
+
+namespace {
+
+constexpr double kCmPerMetre = 100.0;
+
+// A float accessor's values, `width` per element, checked against its buffer view.
+std::vector<float> readFloatAccessor(const std::string& path, const tinygltf::Model& model, int index, int width,
+                                     const std::string& what) {
+    auto fail = [&](const std::string& found) {
+        throwParseError(path, 0, what + " as a float accessor of " + std::to_string(width) + " component(s)", found);
+    };
+    if (index < 0 || index >= static_cast<int>(model.accessors.size())) fail("accessor " + std::to_string(index));
+    const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail("component type " + std::to_string(a.componentType));
+    if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != width)
+        fail(std::to_string(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type))) + " components");
+    if (a.sparse.isSparse) fail("a sparse accessor");
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(model.bufferViews.size())) fail("no buffer view");
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size())) fail("no buffer");
+    const std::vector<unsigned char>& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+    const std::size_t element = sizeof(float) * static_cast<std::size_t>(width);
+    const std::size_t stride = view.byteStride ? view.byteStride : element;
+    const std::size_t start = view.byteOffset + a.byteOffset;
+    if (a.count > 0 && (stride < element || start + (a.count - 1) * stride + element > data.size() ||
+                        a.byteOffset + (a.count - 1) * stride + element > view.byteLength))
+        fail(std::to_string(a.count) + " elements that run past their buffer");
+    std::vector<float> out(a.count * static_cast<std::size_t>(width));
+    for (std::size_t i = 0; i < a.count; ++i)
+        std::memcpy(&out[i * static_cast<std::size_t>(width)], &data[start + i * stride], element);
+    for (float v : out)
+        if (!std::isfinite(v)) fail("a value that is not finite");
+    return out;
+}
+
+const tinygltf::Value* extraOf(const tinygltf::Value& extras, const char* key) {
+    if (!extras.IsObject() || !extras.Has(key)) return nullptr;
+    return &extras.Get(key);
+}
+
+Eigen::Vector3d vectorOf(const tinygltf::Value& v) {
+    Eigen::Vector3d out = Eigen::Vector3d::Zero();
+    if (!v.IsArray() || v.ArrayLen() != 3) return out;
+    for (int i = 0; i < 3; ++i)
+        if (v.Get(i).IsNumber()) out[i] = v.Get(i).GetNumberAsDouble();
+    return out;
+}
+
+// The file's bytes, with the same checks (and messages) as the text formats' reader.
+std::string readGltfBytes(const std::string& path) {
+    constexpr std::size_t kMaxBytes = 512u << 20;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) throwParseError(path, 0, "a readable file", std::string("none (") + std::strerror(errno) + ")");
+    if (S_ISDIR(st.st_mode)) throwParseError(path, 0, "a file", "a directory");
+    if (!S_ISREG(st.st_mode)) throwParseError(path, 0, "a regular file", "a special file");
+    if (static_cast<std::size_t>(st.st_size) > kMaxBytes)
+        throwParseError(path, 0, "a file of at most 512 MiB", std::to_string(st.st_size) + " bytes");
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) throwParseError(path, 0, "a readable file", std::string("a read error (") + std::strerror(errno) + ")");
+    if (bytes.empty()) throwParseError(path, 0, "a glTF file", "an empty file");
+    return bytes;
+}
+
+tinygltf::Model loadGltfModel(const std::string& path) {
+    const std::string bytes = readGltfBytes(path);
+    const std::size_t slash = path.find_last_of('/');
+    const std::string baseDir = slash == std::string::npos ? "." : path.substr(0, slash);
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = fileExtension(path) == "glb";
+    const auto size = static_cast<unsigned>(bytes.size());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                         size, baseDir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
+    if (!ok) throwParseError(path, 0, binary ? "a binary glTF 2.0 file" : "a glTF 2.0 JSON file", err.empty() ? "an unreadable file" : err);
+    return model;
+}
+
+}  // namespace
+
+Clip readGltfClip(const std::string& path) {
+    const tinygltf::Model model = loadGltfModel(path);
+    if (model.skins.empty()) throwParseError(path, 0, "a skin (the skeleton's joints)", "no skin");
+    if (model.animations.empty()) throwParseError(path, 0, "an animation", "no animation");
+    const tinygltf::Skin& skin = model.skins[0];
+    const int nodeCount = static_cast<int>(model.nodes.size());
+
+    // The joint tree: each joint's parent is its nearest ancestor node that is a joint.
+    std::vector<int> parentNode(static_cast<std::size_t>(nodeCount), -1);
+    for (int i = 0; i < nodeCount; ++i)
+        for (int c : model.nodes[i].children)
+            if (c >= 0 && c < nodeCount) parentNode[c] = i;
+    std::map<int, int> skinIndexOf;
+    for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
+        const int node = skin.joints[k];
+        if (node < 0 || node >= nodeCount) throwParseError(path, 0, "skin joints that are nodes", "node " + std::to_string(node));
+        skinIndexOf[node] = k;
+    }
+    std::vector<int> parentJointNode(skin.joints.size(), -1);
+    int rootNode = -1;
+    for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
+        int a = parentNode[skin.joints[k]];
+        for (int guard = 0; a >= 0 && !skinIndexOf.count(a) && guard < nodeCount; ++guard) a = parentNode[a];
+        parentJointNode[k] = a >= 0 && skinIndexOf.count(a) ? a : -1;
+        if (parentJointNode[k] < 0) {
+            if (rootNode >= 0)
+                throwParseError(path, 0, "one root joint", "'" + model.nodes[rootNode].name + "' and '" +
+                                                               model.nodes[skin.joints[k]].name + "'");
+            rootNode = skin.joints[k];
+        }
+    }
+    if (rootNode < 0) throwParseError(path, 0, "a root joint", "a skin with no joints or a cycle");
+    // Parents before children, otherwise in the skin's order (our exports' order is kept).
+    std::vector<int> order;
+    std::map<int, int> jointOf;
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
+            const int node = skin.joints[k];
+            if (jointOf.count(node) || (parentJointNode[k] >= 0 && !jointOf.count(parentJointNode[k]))) continue;
+            jointOf[node] = static_cast<int>(order.size());
+            order.push_back(node);
+            grew = true;
+        }
+    }
+
+    Clip clip;
+    clip.sourcePath = path;
+    clip.format = ClipFormat::kGltf;
+    clip.convention = "gltf";
+    clip.cmPerFileUnit = kCmPerMetre;
+    const tinygltf::Animation& animation = model.animations[0];
+    clip.name = animation.name.empty() ? fileStem(path) : animation.name;
+    Skeleton& sk = clip.skeleton;
+    sk.poseVector = PoseVectorKind::kChannels;
+    std::vector<Eigen::Quaterniond> restRotation;
+    for (int node : order) {
+        const tinygltf::Node& nd = model.nodes[node];
+        Joint joint;
+        joint.name = nd.name.empty() ? "node" + std::to_string(node) : nd.name;
+        joint.parent = node == rootNode ? -1 : jointOf.at(parentJointNode[skinIndexOf.at(node)]);
+        if (!nd.matrix.empty()) throwParseError(path, 0, "joint transforms as translation/rotation", "a matrix on '" + joint.name + "'");
+        for (double s : nd.scale)
+            if (std::abs(s - 1.0) > 1e-6) throwParseError(path, 0, "joints with scale 1", "scale " + std::to_string(s) + " on '" + joint.name + "'");
+        if (nd.translation.size() == 3)
+            joint.offsetCm = Eigen::Vector3d(nd.translation[0], nd.translation[1], nd.translation[2]) * kCmPerMetre;
+        restRotation.push_back(nd.rotation.size() == 4
+                                   ? Eigen::Quaterniond(nd.rotation[3], nd.rotation[0], nd.rotation[1], nd.rotation[2]).normalized()
+                                   : Eigen::Quaterniond::Identity());
+        if (const tinygltf::Value* bone = extraOf(nd.extras, "bone"); bone && bone->IsString()) joint.bone = bone->Get<std::string>();
+        if (const tinygltf::Value* tail = extraOf(nd.extras, "tail_m")) joint.tailCm = vectorOf(*tail) * kCmPerMetre;
+        if (joint.bone.empty()) clip.unmappedJoints.push_back(joint.name);
+        sk.joints.push_back(joint);
+    }
+    const int n = sk.jointCount();
+
+    // The channels: one shared time line.
+    std::vector<float> times;
+    std::vector<std::vector<float>> rotation(static_cast<std::size_t>(n)), rootTranslation(1);
+    for (const tinygltf::AnimationChannel& channel : animation.channels) {
+        if (!jointOf.count(channel.target_node) || channel.target_path == "weights") continue;
+        const int j = jointOf.at(channel.target_node);
+        const std::string& name = sk.joints[j].name;
+        if (channel.sampler < 0 || channel.sampler >= static_cast<int>(animation.samplers.size()))
+            throwParseError(path, 0, "a channel with a sampler", "sampler " + std::to_string(channel.sampler) + " on '" + name + "'");
+        const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(channel.sampler)];
+        if (sampler.interpolation != "LINEAR" && sampler.interpolation != "STEP")
+            throwParseError(path, 0, "LINEAR or STEP keys", sampler.interpolation + " on '" + name + "'");
+        const std::vector<float> t = readFloatAccessor(path, model, sampler.input, 1, "key times");
+        if (times.empty()) times = t;
+        bool same = t.size() == times.size();
+        for (std::size_t i = 0; same && i < t.size(); ++i) same = std::abs(t[i] - times[i]) <= 1e-5f;
+        if (!same) throwParseError(path, 0, "every channel keyed at the same times", "other times on '" + name + "'");
+        if (channel.target_path == "rotation") {
+            rotation[j] = readFloatAccessor(path, model, sampler.output, 4, "rotations of '" + name + "'");
+            if (rotation[j].size() != 4 * times.size()) throwParseError(path, 0, "one rotation per key", "another count on '" + name + "'");
+        } else if (channel.target_path == "translation") {
+            if (j != 0) throwParseError(path, 0, "translation animated on the root joint only", "on '" + name + "'");
+            rootTranslation[0] = readFloatAccessor(path, model, sampler.output, 3, "translations of '" + name + "'");
+            if (rootTranslation[0].size() != 3 * times.size()) throwParseError(path, 0, "one translation per key", "another count on '" + name + "'");
+        } else if (channel.target_path == "scale") {
+            for (float s : readFloatAccessor(path, model, sampler.output, 3, "scales of '" + name + "'"))
+                if (std::abs(s - 1.0f) > 1e-5f) throwParseError(path, 0, "joints with scale 1", "animated scale on '" + name + "'");
+        }
+    }
+    if (times.empty()) throwParseError(path, 0, "an animation that keys the skeleton's joints", "none");
+
+    clip.fps = 0.0;
+    if (const tinygltf::Value* fps = extraOf(model.asset.extras, "fps"); fps && fps->IsNumber()) clip.fps = fps->GetNumberAsDouble();
+    if (!(clip.fps > 0.0) && times.size() > 1 && times.back() > times.front())
+        clip.fps = static_cast<double>(times.size() - 1) / (times.back() - times.front());
+    if (!(clip.fps > 0.0)) clip.fps = 30.0;  // a single key has no rate; any will do
+    if (const tinygltf::Value* rest = extraOf(model.asset.extras, "rest_frame"); rest && rest->IsBool())
+        clip.restFrame = rest->Get<bool>();
+
+    for (int j = 0; j < n; ++j)
+        if (!rotation[j].empty()) sk.joints[j].dof = {true, true, true};
+    for (std::size_t f = 0; f < times.size(); ++f) {
+        Pose pose;
+        pose.anglesDeg.resize(static_cast<std::size_t>(n));
+        for (int j = 0; j < n; ++j) {
+            Eigen::Quaterniond q = restRotation[j];
+            if (!rotation[j].empty()) {
+                const float* r = &rotation[j][4 * f];
+                q = Eigen::Quaterniond(r[3], r[0], r[1], r[2]).normalized();
+            }
+            pose.anglesDeg[j] = eulerZYXFromMatrix(q.toRotationMatrix());
+        }
+        if (!rootTranslation[0].empty()) {
+            const float* t = &rootTranslation[0][3 * f];
+            pose.rootCm = Eigen::Vector3d(t[0], t[1], t[2]) * kCmPerMetre - sk.joints[0].offsetCm;
+        }
+        clip.frames.push_back(std::move(pose));
+    }
+    sk.resolveEffectors();
+    sk.validate();
+    return clip;
+}
+
+}  // namespace mgp
