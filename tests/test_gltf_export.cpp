@@ -166,7 +166,7 @@ TEST_CASE("glTF export is no larger than twice the BVH of the same motion") {
 TEST_CASE("glTF: bad input gets one clear error") {
     const std::string dir = test::scratchDir("gltf_bad");
     const Clip clip = makeSyntheticWalk();
-    auto errorOf = [](auto&& f) -> std::string {
+    auto messageOf = [](auto&& f) -> std::string {
         try {
             f();
         } catch (const std::exception& e) {
@@ -174,21 +174,21 @@ TEST_CASE("glTF: bad input gets one clear error") {
         }
         return "";
     };
-    CHECK(errorOf([&] { exportClip(clip, dir + "/motion.fbx.txt"); }) ==
+    CHECK(messageOf([&] { exportClip(clip, dir + "/motion.fbx.txt"); }) ==
           dir + "/motion.fbx.txt: expected an output file ending in .bvh, .glb, .gltf or .fbx, found '.txt'");
     Clip empty = clip;
     empty.frames.clear();
-    CHECK(errorOf([&] { formatGltf(empty, true); }).find("expected a clip with joints and frames") != std::string::npos);
+    CHECK(messageOf([&] { formatGltf(empty, true); }).find("expected a clip with joints and frames") != std::string::npos);
 
     // A truncated binary file and a glTF with no skin: ParseErrors naming the file, never a crash.
     const std::string glb = formatGltf(clip, true);
     test::writeText(dir + "/cut.glb", glb.substr(0, glb.size() / 2));
-    std::string why = errorOf([&] { readGltfClip(dir + "/cut.glb"); });
+    std::string why = messageOf([&] { readGltfClip(dir + "/cut.glb"); });
     CHECK(why.rfind(dir + "/cut.glb: expected a binary glTF 2.0 file, found ", 0) == 0);
     test::writeText(dir + "/noskin.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"name": "a"}], "scenes": [{"nodes": [0]}]})");
-    CHECK(errorOf([&] { readGltfClip(dir + "/noskin.gltf"); }) == dir + "/noskin.gltf: expected a skin (the skeleton's joints), found no skin");
+    CHECK(messageOf([&] { readGltfClip(dir + "/noskin.gltf"); }) == dir + "/noskin.gltf: expected a skin (the skeleton's joints), found no skin");
     test::writeText(dir + "/text.gltf", "not json");
-    why = errorOf([&] { readGltfClip(dir + "/text.gltf"); });
+    why = messageOf([&] { readGltfClip(dir + "/text.gltf"); });
     CHECK(why.rfind(dir + "/text.gltf: expected a glTF 2.0 JSON file, found ", 0) == 0);
 }
 

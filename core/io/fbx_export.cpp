@@ -56,7 +56,7 @@ bool isExecutableFile(const std::string& path) {
 }
 
 // The last `lines` lines of a text file (Blender's log), for an error message.
-std::string tailOf(const std::string& path, int lines) {
+std::string lastLinesOf(const std::string& path, int lines) {
     std::ifstream in(path);
     std::vector<std::string> all;
     for (std::string line; std::getline(in, line);) all.push_back(line);
@@ -129,7 +129,7 @@ void exportFbxThroughBlender(const Clip& clip, const std::string& fbxPath,
         throw std::runtime_error(fbxPath + ": expected Blender to write the FBX, found " +
                                  (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
                                                     : std::string("a crash")) +
-                                 "; Blender's last lines:" + tailOf(log, 6));
+                                 "; Blender's last lines:" + lastLinesOf(log, 6));
     if (::rename(fbx.c_str(), fbxPath.c_str()) != 0)
         throw std::runtime_error(fbxPath + ": expected a writable file, found " + std::strerror(errno));
     say("wrote " + fbxPath);

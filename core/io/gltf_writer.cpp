@@ -121,20 +121,11 @@ tinygltf::Value vectorValue(const Eigen::Vector3d& v) {
     return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(v.x()), tinygltf::Value(v.y()), tinygltf::Value(v.z())});
 }
 
-tinygltf::Model gltfModelOf(const Clip& clip) {
-    const Skeleton& sk = clip.skeleton;
+// The joint nodes (parents precede children, as in the skeleton); returns their world rest
+// positions in metres.
+std::vector<Eigen::Vector3d> addJointNodes(const Skeleton& sk, tinygltf::Model& model) {
     const int n = sk.jointCount();
-    const int frames = clip.frameCount();
-    if (n == 0 || frames == 0)
-        throw std::invalid_argument("glTF export: expected a clip with joints and frames, found " +
-                                    std::to_string(n) + " joints and " + std::to_string(frames) + " frames");
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "MotionGP";
-    GltfBuffer buffer(model);
-
-    // Joint nodes: rest translation = offset (m), rest rotation identity; parents precede children.
-    std::vector<Eigen::Vector3d> restM(static_cast<std::size_t>(n));  // world rest positions
+    std::vector<Eigen::Vector3d> restM(static_cast<std::size_t>(n));
     for (int j = 0; j < n; ++j) {
         const Joint& joint = sk.joints[j];
         restM[j] = joint.offsetCm * kMetresPerCm + (joint.parent >= 0 ? restM[joint.parent] : Eigen::Vector3d::Zero());
@@ -151,8 +142,15 @@ tinygltf::Model gltfModelOf(const Clip& clip) {
         model.nodes.push_back(node);
         if (joint.parent >= 0) model.nodes[static_cast<std::size_t>(joint.parent)].children.push_back(j);
     }
+    return restM;
+}
 
-    // The figure and its skin.
+// The skin over every joint and the figure mesh it deforms, on a node of its own at the scene's
+// root with no transform (as skinned meshes must be). Returns that node's index.
+int addSkinnedFigure(const Clip& clip, const std::vector<Eigen::Vector3d>& restM, GltfBuffer& buffer,
+                     tinygltf::Model& model) {
+    const Skeleton& sk = clip.skeleton;
+    const int n = sk.jointCount();
     FigureMesh figure;
     std::vector<bool> hasChild(static_cast<std::size_t>(n), false);
     for (int j = 1; j < n; ++j) {
@@ -166,7 +164,7 @@ tinygltf::Model gltfModelOf(const Clip& clip) {
     if (figure.indices.empty())
         throw std::invalid_argument("glTF export: expected a skeleton with at least one bone of " +
                                     std::to_string(kMinBoneCm) + " cm or more, found none");
-    std::vector<float> inverseBind;  // column-major 4×4: a translation by −rest
+    std::vector<float> inverseBind;  // column-major 4×4: a translation by −rest (rest rotations are I)
     for (int j = 0; j < n; ++j) {
         Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
         m.block<3, 1>(0, 3) = (-restM[j]).cast<float>();
@@ -193,13 +191,19 @@ tinygltf::Model gltfModelOf(const Clip& clip) {
     mesh.name = clip.name + "_figure";
     mesh.primitives.push_back(primitive);
     model.meshes.push_back(mesh);
-    tinygltf::Node meshNode;  // at the scene's root with no transform, as skinned meshes must be
+    tinygltf::Node meshNode;
     meshNode.name = clip.name + "_figure";
-    meshNode.mesh = 0;
-    meshNode.skin = 0;
+    meshNode.mesh = static_cast<int>(model.meshes.size()) - 1;
+    meshNode.skin = static_cast<int>(model.skins.size()) - 1;
     model.nodes.push_back(meshNode);
+    return static_cast<int>(model.nodes.size()) - 1;
+}
 
-    // The animation: local rotations from FK, continuous in sign, and the root's translation.
+// The animation: every joint's local rotation G_parentᵀ·G_j from FK (continuous in sign) and the
+// root's translation, one LINEAR key per frame.
+void addAnimation(const Clip& clip, GltfBuffer& buffer, tinygltf::Model& model) {
+    const Skeleton& sk = clip.skeleton;
+    const int n = sk.jointCount(), frames = clip.frameCount();
     std::vector<float> times(static_cast<std::size_t>(frames));
     for (int f = 0; f < frames; ++f) times[f] = static_cast<float>(f / clip.fps);
     std::vector<std::vector<float>> rotations(static_cast<std::size_t>(n));
@@ -238,6 +242,20 @@ tinygltf::Model gltfModelOf(const Clip& clip) {
     addChannel(0, "translation", rootTranslation, 3);
     for (int j = 0; j < n; ++j) addChannel(j, "rotation", rotations[j], 4);
     model.animations.push_back(animation);
+}
+
+tinygltf::Model gltfModelOf(const Clip& clip) {
+    const int n = clip.skeleton.jointCount(), frames = clip.frameCount();
+    if (n == 0 || frames == 0)
+        throw std::invalid_argument("glTF export: expected a clip with joints and frames, found " +
+                                    std::to_string(n) + " joints and " + std::to_string(frames) + " frames");
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "MotionGP";
+    GltfBuffer buffer(model);
+    const std::vector<Eigen::Vector3d> restM = addJointNodes(clip.skeleton, model);
+    const int figureNode = addSkinnedFigure(clip, restM, buffer, model);
+    addAnimation(clip, buffer, model);
 
     tinygltf::Value::Object extras;
     extras["tool"] = tinygltf::Value(std::string("MotionGP"));
@@ -252,7 +270,7 @@ tinygltf::Model gltfModelOf(const Clip& clip) {
 
     tinygltf::Scene scene;
     scene.name = clip.name;
-    scene.nodes = {0, n};  // the skeleton's root and the figure
+    scene.nodes = {0, figureNode};  // the skeleton's root and the figure
     model.scenes.push_back(scene);
     model.defaultScene = 0;
     return model;

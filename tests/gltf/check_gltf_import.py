@@ -1,27 +1,27 @@
 # Run inside Blender: blender -b --factory-startup --python-exit-code 1 -P check_gltf_import.py --
-#   FRAMES FPS FILE.glb|.gltf|.fbx... -- FK.json...
-# Imports each FILE, in an empty scene of its own, with Blender's own glTF (or FBX) importer and
-# checks: one armature, one action spanning FRAMES frames, and every bone's head where MotionGP's
-# FK (`motiongp fk --json`) puts the joint of the same name, within 0.1 cm, with the scene at the
-# clip's rate. Prints a BLENDER_GLTF_CHECK line per file; exits 1 if any file fails.
+#   OUTDIR...
+# Each OUTDIR (tests/gltf/export_for_check.sh) holds export.glb, export.gltf, maybe export.fbx,
+# and check.json: the clip's frame count and rate, and `motiongp fk --json` of five frames. Each
+# file is imported into an empty scene at the clip's rate with Blender's own glTF (or FBX)
+# importer, and must give one armature, one action spanning the frame count, and every bone's head
+# where our FK puts the joint of the same name, within 0.1 cm. Prints a BLENDER_GLTF_CHECK line per
+# file; exits 1 if any file fails.
 import json
+import os
 import sys
 
 import numpy
 
 # Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which numpy 1.24 removed.
-if not hasattr(numpy, "bool") or numpy.bool is not bool:
+if not hasattr(numpy, "bool"):
     numpy.bool = bool
 
 import bpy
 
 args = sys.argv[sys.argv.index("--") + 1:]
-split = args.index("--")
-frames, fps, files, fk_files = int(args[0]), float(args[1]), args[2:split], args[split + 1:]
-fks = [json.load(open(f)) for f in fk_files]
 
 
-def check(path):
+def check(path, frames, fps, fks):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     # Blender keys glTF times at the scene's rate: at the clip's own, one key per frame.
     bpy.context.scene.render.fps = int(round(fps))
@@ -62,12 +62,19 @@ def check(path):
     if worst > 0.1:
         problems.append(f"a bone head {worst:.4f} cm from our FK (limit 0.1 cm)")
     print("BLENDER_GLTF_CHECK " + json.dumps({
-        "file": path.rsplit("/", 1)[-1], "armatures": len(armatures), "actions": len(actions),
+        "file": "/".join(path.rsplit("/", 2)[-2:]), "armatures": len(armatures), "actions": len(actions),
         "frame_range": list(actions[0].frame_range) if actions else None,
         "bones": len(armatures[0].data.bones) if armatures else 0,
         "joints_compared": compared, "worst_cm": worst, "problems": problems[:10]}))
     return not problems
 
 
-results = [check(f) for f in files]
-sys.exit(0 if all(results) else 1)
+results = []
+for case in args:
+    info = json.load(open(os.path.join(case, "check.json")))
+    fks = [json.load(open(f)) for f in info["fk_files"]]
+    for name in ("export.glb", "export.gltf", "export.fbx"):
+        path = os.path.join(case, name)
+        if name != "export.fbx" or os.path.exists(path):
+            results.append(check(path, info["frames"], info["fps"], fks))
+sys.exit(0 if results and all(results) else 1)

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Writes what the glTF checks read, into OUTDIR: export.glb and export.gltf of CLIP (or, with
 # --edit, of an edit of CLIP: a small model trained on it, the right hand moved over frames
-# 40..80), our FK of the exported motion on five frames (fk_<frame>.json), and check.env with
+# 40..80), our FK of the exported motion on five frames (fk_<frame>.json), and check.json with
 # the frame count, the frame rate and those FK files. A ctest fixture: the validator and Blender
-# checks of the same case share it.
+# checks share it.
 # Usage: export_for_check.sh MOTIONGP CLIP OUTDIR [--edit]
 set -euo pipefail
 motiongp=$1 clip=$2 out=$3
@@ -29,4 +29,5 @@ for f in 1 $((frames / 4)) $((frames / 2)) $((3 * frames / 4)) "$frames"; do
   "$motiongp" fk "$fk_source" --frame "$f" --json > "$out/fk_$f.json"
   fk_files+=("$out/fk_$f.json")
 done
-printf 'frames=%s\nfps=%s\nfk_files=(%s)\n' "$frames" "$fps" "${fk_files[*]}" > "$out/check.env"
+python3 -c 'import json, sys; print(json.dumps({"frames": int(sys.argv[1]), "fps": float(sys.argv[2]), "fk_files": sys.argv[3:]}))' \
+  "$frames" "$fps" "${fk_files[@]}" > "$out/check.json"
