@@ -226,10 +226,7 @@ std::string EditorApp::exportMotion(const std::string& pathIn, const std::string
         for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
         if (fileExtension(path) == "fbx") {
             // Through Blender, seconds: on the export worker; pollExport reports its stages and end.
-            std::string why;
-            if (findBlender(&why).empty())
-                throw std::runtime_error(path + ": FBX export needs Blender (apt-get install blender), " + why +
-                                         "; glTF (.glb) needs nothing else");
+            if (const std::string problem = fbxExportUnavailable(path); !problem.empty()) throw std::runtime_error(problem);
             if (const std::string busy = state_.exporting.start(std::move(edited), path); !busy.empty()) throw std::runtime_error(busy);
             exportSeen_ = true;
             state_.setStatus("exporting " + fileNameOf(path) + " through Blender...");

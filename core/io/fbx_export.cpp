@@ -82,16 +82,20 @@ std::string findBlender(std::string* why) {
     return "";
 }
 
+std::string fbxExportUnavailable(const std::string& fbxPath) {
+    std::string why;
+    if (!findBlender(&why).empty()) return "";
+    return fbxPath + ": FBX export needs Blender (apt-get install blender, or set MOTIONGP_BLENDER), " + why +
+           "; glTF (.glb) needs nothing else";
+}
+
 void exportFbxThroughBlender(const Clip& clip, const std::string& fbxPath,
                              const std::function<void(const std::string&)>& progress) {
     auto say = [&](const std::string& what) {
         if (progress) progress(what);
     };
-    std::string why;
-    const std::string blender = findBlender(&why);
-    if (blender.empty())
-        throw std::runtime_error(fbxPath + ": FBX export needs Blender (apt-get install blender, or set MOTIONGP_BLENDER), " +
-                                 why + "; glTF (.glb) needs nothing else");
+    if (const std::string problem = fbxExportUnavailable(fbxPath); !problem.empty()) throw std::runtime_error(problem);
+    const std::string blender = findBlender();
     const std::string stem = fbxPath + ".tmp." + std::to_string(::getpid());
     const std::string glb = stem + ".glb", fbx = stem + ".fbx", log = stem + ".log";
     struct Cleanup {

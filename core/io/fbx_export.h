@@ -14,6 +14,8 @@ namespace mgp {
 // The Blender executable FBX export would run ($MOTIONGP_BLENDER, else `blender` on PATH), or ""
 // when there is none; then `why` (if given) says what was looked for, as the end of a sentence.
 std::string findBlender(std::string* why = nullptr);
+// "" when FBX export can run here, else the one line saying why not (no Blender), for `fbxPath`.
+std::string fbxExportUnavailable(const std::string& fbxPath);
 // Throws std::runtime_error with one clear line: no Blender ("FBX export needs Blender ..."), or
 // Blender's failure with the last lines it printed. `progress` hears each stage, in words.
 void exportFbxThroughBlender(const Clip& clip, const std::string& fbxPath,

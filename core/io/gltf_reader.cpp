@@ -1,13 +1,8 @@
 #include "io/gltf_reader.h"
 
-#include <sys/stat.h>
-
 #include <Eigen/Geometry>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <tiny_gltf.h>
 
@@ -63,24 +58,8 @@ Eigen::Vector3d vectorOf(const tinygltf::Value& v) {
     return out;
 }
 
-// The file's bytes, with the same checks (and messages) as the text formats' reader.
-std::string readGltfBytes(const std::string& path) {
-    constexpr std::size_t kMaxBytes = 512u << 20;
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) throwParseError(path, 0, "a readable file", std::string("none (") + std::strerror(errno) + ")");
-    if (S_ISDIR(st.st_mode)) throwParseError(path, 0, "a file", "a directory");
-    if (!S_ISREG(st.st_mode)) throwParseError(path, 0, "a regular file", "a special file");
-    if (static_cast<std::size_t>(st.st_size) > kMaxBytes)
-        throwParseError(path, 0, "a file of at most 512 MiB", std::to_string(st.st_size) + " bytes");
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in && !in.eof()) throwParseError(path, 0, "a readable file", std::string("a read error (") + std::strerror(errno) + ")");
-    if (bytes.empty()) throwParseError(path, 0, "a glTF file", "an empty file");
-    return bytes;
-}
-
 tinygltf::Model loadGltfModel(const std::string& path) {
-    const std::string bytes = readGltfBytes(path);
+    const std::string bytes = readFileBytes(path, 512u << 20, "a glTF file");
     const std::size_t slash = path.find_last_of('/');
     const std::string baseDir = slash == std::string::npos ? "." : path.substr(0, slash);
     tinygltf::TinyGLTF loader;

@@ -30,7 +30,7 @@ void throwParseError(const std::string& file, int line, const std::string& expec
     throw ParseError(describeParseProblem(file, line, expected, found));
 }
 
-TextReader TextReader::fromFile(const std::string& path, std::size_t maxBytes) {
+std::string readFileBytes(const std::string& path, std::size_t maxBytes, const std::string& expectedContent) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throwParseError(path, 0, "a readable file", std::string("none (") + std::strerror(errno) + ")");
@@ -45,7 +45,12 @@ TextReader TextReader::fromFile(const std::string& path, std::size_t maxBytes) {
     std::string text(static_cast<std::size_t>(st.st_size), '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<std::size_t>(in.gcount()));
-    if (text.empty()) throwParseError(path, 0, "mocap text", "an empty file");
+    if (text.empty()) throwParseError(path, 0, expectedContent, "an empty file");
+    return text;
+}
+
+TextReader TextReader::fromFile(const std::string& path, std::size_t maxBytes) {
+    std::string text = readFileBytes(path, maxBytes, "mocap text");
     // A UTF-16 file (Windows "Unicode" save) is all NUL bytes to us: name it instead of reporting
     // "binary data".
     if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))

@@ -39,6 +39,11 @@ private:
     std::size_t next_ = 0;
 };
 
+// A whole file's bytes, after the checks every reader makes (ParseError for a missing, unreadable,
+// non-regular, oversized (> maxBytes) or empty file; `expectedContent` names what an empty file
+// should have held). TextReader::fromFile adds the text checks.
+std::string readFileBytes(const std::string& path, std::size_t maxBytes, const std::string& expectedContent);
+
 // Splits on spaces/tabs.
 std::vector<std::string_view> splitTokens(std::string_view line);
 std::string_view trim(std::string_view s);
