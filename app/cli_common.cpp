@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "io/clip_export.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {
@@ -34,6 +35,15 @@ nlohmann::json effectorPositionsJson(const Clip& clip, int frameIndex) {
                                      : nlohmann::json(nullptr);
     }
     return out;
+}
+
+void requireExportPath(const std::string& out) {
+    if (!isExportPath(out))
+        throw UsageError("expected --out to end in " + std::string(exportExtensions()) + ", found '" + out + "'");
+}
+
+void exportFromCli(const Clip& clip, const std::string& out) {
+    exportClip(clip, out, [](const std::string& stage) { std::cerr << stage << "\n"; });
 }
 
 }  // namespace mgp::app

@@ -17,6 +17,11 @@ void printJson(const nlohmann::json& j);
 // Converts a 1-based --frame to a clip index, or throws UsageError naming the valid range.
 int frameIndexFromCli(const Clip& clip, long long frame);
 nlohmann::json vec3Json(const Eigen::Vector3d& v);
+// `--out` of export and edit: throws UsageError unless exportClip writes its extension (checked
+// before any work, so a long edit never ends in a refused file name).
+void requireExportPath(const std::string& out);
+// Writes the clip by its extension (io/clip_export.h), saying each stage of a slow export on stderr.
+void exportFromCli(const Clip& clip, const std::string& out);
 // Positions of root and the five effectors for one frame (null for an effector the clip lacks).
 nlohmann::json effectorPositionsJson(const Clip& clip, int frameIndex);
 

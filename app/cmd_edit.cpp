@@ -12,7 +12,6 @@
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
 #include "ik_cli.h"
-#include "io/clip_export.h"
 #include "motion/motion_edit.h"
 #include "motion_quality_json.h"
 
@@ -31,8 +30,7 @@ int runEdit(const EditOptions& o) {
         throw UsageError("expected --mode direct or displacement, found '" + o.mode + "'");
     if (o.solver != "span" && o.solver != "per-frame")
         throw UsageError("expected --solver span or per-frame, found '" + o.solver + "'");
-    if (!isExportPath(o.out))
-        throw UsageError("expected --out to end in " + std::string(exportExtensions()) + ", found '" + o.out + "'");
+    requireExportPath(o.out);
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     const auto t0 = std::chrono::steady_clock::now();
     MotionEditJob job;
@@ -53,7 +51,7 @@ int runEdit(const EditOptions& o) {
     job.run();
     Clip edited = job.version->model->clip;
     edited.frames = job.frames;
-    exportClip(edited, o.out, [](const std::string& stage) { std::cerr << stage << "\n"; });
+    exportFromCli(edited, o.out);
     nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm},
                      {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
                      {"quality", spanQualityJson(job.quality)}};

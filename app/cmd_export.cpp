@@ -5,7 +5,6 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
-#include "io/clip_export.h"
 #include "io/clip_loader.h"
 
 namespace mgp::app {
@@ -22,10 +21,9 @@ const CommandRegistration exportCommand("export", "Write a clip as BVH, glTF 2.0
     sub.add_option("--out", *out, "Output .bvh, .glb, .gltf or .fbx (needs Blender) file, written atomically")->required();
     sub.add_flag("--json", *json, "Print one JSON object");
     return [=]() {
-        if (!isExportPath(*out))
-            throw UsageError("expected --out to end in " + std::string(exportExtensions()) + ", found '" + *out + "'");
+        requireExportPath(*out);
         const Clip clip = loadClip(*clipPath, *skel);
-        exportClip(clip, *out, [](const std::string& stage) { std::cerr << stage << "\n"; });
+        exportFromCli(clip, *out);
         if (*json) printJson({{"out", *out}, {"frames", clip.frameCount()}, {"joints", clip.skeleton.jointCount()}});
         else std::cout << "wrote " << *out << " (" << clip.frameCount() << " frames)\n";
         return 0;

@@ -77,7 +77,8 @@ public:
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
     std::string restoreAutosave(const std::string& path = "");
     // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
-    // The edited motion as BVH or glTF (by the path's extension; `defaultExtension` when it has none).
+    // The edited motion as BVH, glTF or FBX (by the path's extension; `defaultExtension` when it has
+    // none). FBX runs on the export worker; pollExport reports it.
     std::string exportMotion(const std::string& path, const std::string& defaultExtension);
     std::string exportPng(const std::string& path);
     // Opens the file dialog for `kind`; with `what` ("opening a model") after asking about
