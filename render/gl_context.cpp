@@ -1,6 +1,8 @@
 #include "gl_context.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+#include "util/address_sanitizer.h"
+
+#if MGP_ADDRESS_SANITIZER
 #include <dlfcn.h>
 #include <link.h>
 #endif
@@ -40,7 +42,7 @@ struct OffscreenContext::Egl {
     EGLSurface surface = EGL_NO_SURFACE;
 };
 
-#if defined(__SANITIZE_ADDRESS__)
+#if MGP_ADDRESS_SANITIZER
 namespace {
 // LeakSanitizer checks for leaks after Mesa has unloaded its driver at exit, so the driver's
 // deliberate at-exit allocations show up as "<unknown module>" and no suppression can name them.
@@ -88,7 +90,7 @@ OffscreenContext::OffscreenContext(int width, int height) : egl_(std::make_uniqu
         eglTerminate(e.display);
         throw RenderError(eglErrorText("eglCreateContext(OpenGL 3.3 core)"));
     }
-#if defined(__SANITIZE_ADDRESS__)
+#if MGP_ADDRESS_SANITIZER
     dl_iterate_phdr(pinDriver, nullptr);
 #endif
     try {

@@ -1,6 +1,6 @@
 # motiongp_tests_cost(LIST_VAR SECONDS NAME [SECONDS NAME ...]): gives the named tests (discovered
-# by doctest_discover_tests into LIST_VAR) a COST, their measured time under the sanitizers, the
-# slowest build.
+# by doctest_discover_tests into LIST_VAR) a COST, their measured time under the sanitizers (the
+# slowest build; clang's, as CI compiles it).
 # ctest starts a parallel run's tests in decreasing COST, which it otherwise learns from earlier
 # runs; a fresh build folder (CI, a new clone) has none, so the longest test could start last and
 # run alone on one core while the other idles. The names are the suite's longest tests

@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "ik/learned_ik.h"
+#include "util/address_sanitizer.h"
 #include "skip.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -13,7 +14,7 @@
 // Under AddressSanitizer (MOTIONGP_SANITIZE) the allocator belongs to ASan: interposing malloc
 // here would run before ASan is initialised (it crashed the runner at start-up) and hand ASan
 // pointers from glibc's heap. The count is meaningless there, so the test is skipped.
-#ifdef __SANITIZE_ADDRESS__
+#if MGP_ADDRESS_SANITIZER
 constexpr bool kCountMallocs = false;
 #else
 constexpr bool kCountMallocs = true;
@@ -24,7 +25,7 @@ std::atomic<long> gAllocations{0};
 std::atomic<bool> gCounting{false};
 }  // namespace
 
-#ifndef __SANITIZE_ADDRESS__
+#if !MGP_ADDRESS_SANITIZER
 extern "C" {
 void* __libc_malloc(std::size_t);
 void* __libc_calloc(std::size_t, std::size_t);

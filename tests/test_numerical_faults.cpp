@@ -334,9 +334,12 @@ TEST_CASE("`motiongp pose`: a target 1e308 cm away is a finite NOT-reached resul
         REQUIRE(j["targets"].size() == 1);
         CHECK(j["targets"][0]["residual_cm"].is_number());
         for (const auto& a : j["pose_deg"]) CHECK(a.is_number());  // NaN would be written as null
-        for (const auto& [name, pos] : j["positions_cm"].items())
-            if (!pos.is_null())
-                for (const auto& c : pos) CHECK_MESSAGE(c.is_number(), name);
+        for (const auto& item : j["positions_cm"].items()) {
+            // A named copy: clang before 16 cannot capture a structured binding in CHECK's lambda.
+            const std::string name = item.key();
+            if (!item.value().is_null())
+                for (const auto& c : item.value()) CHECK_MESSAGE(c.is_number(), name);
+        }
     }
     for (const char* offset : {"rhand=nan,0,0", "rhand=0,inf,0", "rhand=0,0,1e999"}) {
         CAPTURE(offset);

@@ -18,6 +18,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "util/address_sanitizer.h"
+
 namespace mgp::test {
 
 namespace {
@@ -115,7 +117,7 @@ Child spawnBounded(const std::vector<std::string>& argv, const CliLimits& limits
         ::unsetenv("WAYLAND_DISPLAY");
         for (std::string& kv : envStrings) ::putenv(kv.data());
         if (limits.addressSpaceBytes > 0) {
-#if defined(__SANITIZE_ADDRESS__)
+#if MGP_ADDRESS_SANITIZER
             // ASan reserves terabytes of shadow address space, so RLIMIT_AS would stop every run:
             // its allocator enforces the same bound instead (a larger single allocation fails,
             // and the process dies once its resident memory exceeds it).

@@ -151,7 +151,10 @@ TEST_CASE("gui: the latent map of a two-clip model colours its dots by clip, wit
     CHECK(colours["10_02"] != colours["10_03"]);
     // The swatches are drawn in those colours.
     const render::Image img = h->app->capture(test::kGuiWidth, test::kGuiHeight);
-    for (const auto& [clip, hex] : colours) {
+    for (const auto& entry : colours) {
+        // Named copies: clang before 16 cannot capture a structured binding in INFO's lambda.
+        const std::string& clip = entry.first;
+        const std::string& hex = entry.second;
         const auto& r = s.controls.at("clip legend " + clip);
         REQUIRE(r.visible);
         const int px = int((r.x0 + r.x1) / 2), py = int((r.y0 + r.y1) / 2);

@@ -56,9 +56,11 @@ TEST_CASE("range tint: amber ramps from the percentile to the limit") {
 TEST_CASE("range tint: red above the sigma^2 limit or the L_IK limit or when not finite") {
     const gp::TrainingRange r = testRange();
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (const auto& [s2, lik] : {std::pair{4.0001, 5.0}, std::pair{100.0, 5.0}, std::pair{1.0, 10.0001},
-                                  std::pair{3.0, 50.0}, std::pair{nan, 5.0}, std::pair{1.0, nan},
-                                  std::pair{std::numeric_limits<double>::infinity(), 5.0}}) {
+    for (const auto& values : {std::pair{4.0001, 5.0}, std::pair{100.0, 5.0}, std::pair{1.0, 10.0001},
+                               std::pair{3.0, 50.0}, std::pair{nan, 5.0}, std::pair{1.0, nan},
+                               std::pair{std::numeric_limits<double>::infinity(), 5.0}}) {
+        // Named copies: clang before 16 cannot capture a structured binding in INFO's lambda.
+        const double s2 = values.first, lik = values.second;
         INFO("sigma2 " << s2 << " lik " << lik);
         const RangeTint t = rangeTint(r, s2, lik);
         CHECK(t.band == RangeBand::kOutOfRange);
