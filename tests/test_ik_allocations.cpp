@@ -6,10 +6,10 @@
 #include <cstddef>
 
 #include "ik/learned_ik.h"
-#include "util/address_sanitizer.h"
 #include "skip.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
+#include "util/address_sanitizer.h"
 
 // Under AddressSanitizer (MOTIONGP_SANITIZE) the allocator belongs to ASan: interposing malloc
 // here would run before ASan is initialised (it crashed the runner at start-up) and hand ASan
