@@ -32,6 +32,7 @@ struct PoseOptions {
     std::vector<std::string> targets, pins, releases;
     bool adaptive = false, json = false;
     int iterations = 500;
+    double locality = kDefaultLocality;
 };
 
 nlohmann::json verdictJson(const gp::AdmissionVerdict& v) {
@@ -53,6 +54,9 @@ int runPose(const PoseOptions& o) {
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     if (o.adaptive && o.solver == "plain") throw UsageError("expected --solver learned with --adaptive, found plain");
     if (o.targets.empty() && o.pins.empty()) throw UsageError("expected at least one --target or --pin, found none");
+    // The learned solver's validate() judges the value itself.
+    if (o.locality != kDefaultLocality && o.solver != "learned")
+        throw UsageError("expected --solver learned with --locality, found --solver " + o.solver);
     const auto t0 = std::chrono::steady_clock::now();
     int clipIndex = 0;
     const gp::ModelVersionPtr version = loadModelVersion(o.model, o.clip, &clipIndex);
@@ -129,7 +133,10 @@ int runPose(const PoseOptions& o) {
         };
         if (o.solver == "learned") {
             ConstrainedIkSolver solver(version);
-            j["stop"] = ikStopName(solveWith(solver, ConstrainedIkRequest{}).stop);
+            ConstrainedIkRequest request;
+            request.locality = o.locality;
+            j["locality"] = o.locality;
+            j["stop"] = ikStopName(solveWith(solver, request).stop);
         } else {
             LearnedIkSolver solver(version);
             const LearnedIkResult r = solveWith(solver, LearnedIkRequest{});
@@ -204,6 +211,9 @@ const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model'
     sub.add_option("--release", o->releases, "EFF: do not hold this foot although it is in ground contact (repeatable)");
     sub.add_option("--solver", o->solver, "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
     sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
+    sub.add_option("--locality", o->locality,
+                   "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
+                   "(0 = off, the default for now)");
     sub.add_flag("--adaptive", o->adaptive,
                  "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and L_IK is within the "
                  "99th percentile (σ²: twice it) of the captured frames scored as new poses");

@@ -1,5 +1,7 @@
 // `motiongp pose --json` with the constrained solver: converged/stop/iterations, target strength,
-// contact pins and --release, the admission verdict, and --adaptive refusing a broken pose.
+// contact pins and --release, the admission verdict, --locality, and --adaptive refusing a broken
+// pose.
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -54,4 +56,36 @@ TEST_CASE("motiongp pose --adaptive refuses an unreachable reach with pinned fee
     CHECK(j["adaptive"]["refused"] == true);
     CHECK(j["adaptive"]["reason"] == "a target or pin was not reached");
     CHECK_FALSE(std::ifstream(out).good());  // nothing written
+}
+
+TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad values are errors") {
+    const std::string model = test::walkModelPath();
+    const std::string base = "pose '" + model + "' --frame 101 --target rhand=0,20,0 --json";
+    auto off = test::runCli(base);
+    auto stiff = test::runCli(base + " --locality 100");
+    REQUIRE(off.exitCode == 0);
+    REQUIRE(stiff.exitCode == 0);
+    const json a = json::parse(off.out), b = json::parse(stiff.out);
+    CHECK(a["locality"] == 0.0);
+    CHECK(b["locality"] == 100.0);
+    CHECK(b["reached"] == true);
+    // The head's distance from where the captured frame has it (the plain solver with no offset
+    // keeps the captured pose) shrinks with the term.
+    const json captured = json::parse(test::runCli("pose '" + model + "' --frame 101 --solver plain --target rhand=0,0,0 --json").out);
+    const auto headMove = [&](const json& j) {
+        double s = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const double d = j["positions_cm"]["head"][i].get<double>() - captured["positions_cm"]["head"][i].get<double>();
+            s += d * d;
+        }
+        return std::sqrt(s);
+    };
+    MESSAGE("head moves " << headMove(a) << " cm without the term, " << headMove(b) << " cm at 100");
+    CHECK(headMove(b) < headMove(a));
+    auto r = test::runCli(base + " --locality -1");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected a locality ≥ 0, found -1.000000\n");
+    r = test::runCli(base + " --locality 3 --solver plain");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
 }

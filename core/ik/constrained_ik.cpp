@@ -67,6 +67,24 @@ const char* ikStopName(IkStop stop) {
     return "unknown";
 }
 
+std::vector<double> localityWeights(const Skeleton& sk, const std::vector<Effector>& effectors) {
+    const PoseLayout layout(sk);
+    // hops[j]: joints from j down to the nearest target's end joint, when j is on its chain.
+    std::vector<int> hops(sk.jointCount(), -1);
+    for (Effector e : effectors) {
+        int j = sk.effectorSite(e).joint;
+        for (int h = 0; j >= 0; ++h, j = sk.joints[j].parent)
+            if (hops[j] < 0 || h < hops[j]) hops[j] = h;
+    }
+    std::vector<double> w(layout.size(), 1.0);
+    for (int dof = 0; dof < layout.size(); ++dof) {
+        const int j = layout.joint(dof);
+        if (j <= 0 || hops[j] < 0) continue;  // the root's rotation and joints off every chain
+        w[dof] = std::clamp(double(hops[j] - kLocalityFreeHops) / kLocalityRampHops, 0.0, 1.0);
+    }
+    return w;
+}
+
 double targetWeight(double strength) {
     if (strength >= kStrengthExact) return kExactTargetWeight;
     return std::min(kExactTargetWeight, 2.0 * strength / (1.0 - strength));
@@ -118,6 +136,15 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
     if (!(r.rootStiffness >= 0.0) || !std::isfinite(r.rootStiffness))
         return "expected a root stiffness ≥ 0, found " + std::to_string(r.rootStiffness);
     if (r.rootReferenceDeg && !r.rootReferenceDeg->allFinite()) return "expected a finite root reference, found NaN or Inf";
+    if (!(r.locality >= 0.0) || !std::isfinite(r.locality))
+        return "expected a locality ≥ 0, found " + std::to_string(r.locality);
+    if (r.localityReference) {
+        if (r.localityReference->anglesDeg.size() != r.start.anglesDeg.size())
+            return "expected a locality reference of the model's skeleton, found one with " +
+                   std::to_string(r.localityReference->anglesDeg.size()) + " joints";
+        for (const auto& a : r.localityReference->anglesDeg)
+            if (!a.allFinite()) return "expected a finite locality reference, found NaN or Inf";
+    }
     for (std::size_t i = 0; i < r.held.size(); ++i) {
         const HeldDof& h = r.held[i];
         if (h.joint < 0 || h.joint >= sk.jointCount() || h.axis < 0 || h.axis > 2)
@@ -148,6 +175,22 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
                 if (yOfDof_[dof] >= 0) heldY_.push_back(yOfDof_[dof]);
             }
     rootRef_ = request.rootReferenceDeg ? *request.rootReferenceDeg : Eigen::Vector3d(full_[0], full_[1], full_[2]);
+    localityW_.setZero(D_);
+    localityRef_.setZero(D_);
+    if (request.locality > 0.0) {
+        std::vector<Effector> targeted;
+        for (const IkConstraint& c : request.constraints)
+            if (!c.pin) targeted.push_back(c.effector);
+        const std::vector<double> w = localityWeights(m.clip.skeleton, targeted);
+        Eigen::VectorXd ref(layout_.size());
+        layout_.extract(request.localityReference ? *request.localityReference : request.start, ref.data());
+        for (int dof = 0; dof < layout_.size(); ++dof)
+            if (const int k = yOfDof_[dof]; k >= 0) {
+                localityW_[k] = request.locality * w[dof];
+                localityRef_[k] = ref[dof];
+            }
+        for (int k : heldY_) localityW_[k] = 0.0;  // not unknowns
+    }
     pins_.clear();
     targets_.clear();
     exactTargets_.clear();
@@ -285,6 +328,16 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
         if (derivatives) {
             g_[d_ + k] += r.rootStiffness * dev;
             H_(d_ + k, d_ + k) += r.rootStiffness;
+        }
+    }
+    // Locality: ½ Σ_k ℓw_k (y_k − y_ref,k)², exact (diagonal).
+    for (int k = 0; k < D_; ++k) {
+        if (localityW_[k] == 0.0) continue;
+        const double dev = y_[k] - localityRef_[k];
+        F += 0.5 * localityW_[k] * dev * dev;
+        if (derivatives) {
+            g_[d_ + k] += localityW_[k] * dev;
+            H_(d_ + k, d_ + k) += localityW_[k];
         }
     }
     if (derivatives) {

@@ -3,7 +3,7 @@
 // and meets every target as strongly as its strength asks (docs/maths-ik.md).
 //
 //   minimise over z = (x, y):  F(z) = L_IK(x, y) + ½ Σ_targets κ(s_t) ‖FK_t(y) − c_t‖²
-//                                              + ½ k_root ‖y_root − r_ref‖²
+//                                              + ½ k_root ‖y_root − r_ref‖² + ½ ℓ Σ_k w_k (y_k − y_ref,k)²
 //   subject to                 FK_p(y) = c_p  for every pin p                      (cm, degrees)
 //
 // Semantics (what an animator gets):
@@ -16,6 +16,9 @@
 //   - Root orientation: y's three root rotations carry the stiff quadratic ½ k_root ‖Δ‖² (per
 //     degree²) around r_ref (the drag's starting root rotation), so the whole body turns or tilts
 //     only as much as the targets need once the limbs alone cost more than k_root·Δ.
+//   - Locality (ℓ > 0, off by default): every DOF away from the targets' limbs costs its change
+//     from y_ref (the start pose, or the drag's first), so the body follows a dragged limb only as
+//     much as the target needs (localityWeights; docs/maths-ik.md §1).
 //   - The root translation, the model's constant columns and DOFs outside the pose vector stay at
 //     the start pose's (constants: the model's) values.
 //   - Held DOFs (rotate joint): each `held` entry fixes one joint angle at its value. It is
@@ -98,6 +101,8 @@ namespace mgp {
 constexpr double kExactTargetWeight = 1e6;
 // Root orientation stiffness per degree² (in ½k‖Δ‖²).
 constexpr double kDefaultRootStiffness = 0.5;
+// Locality ℓ per degree² (ConstrainedIkRequest::locality) that `pose` and the editor use.
+constexpr double kDefaultLocality = 0.0;
 
 enum class IkStop {
     kConverged,       // the KKT test above holds
@@ -110,6 +115,15 @@ const char* ikStopName(IkStop stop);  // "converged", "iteration_cap", "stalled"
 
 // Target weight κ for a strength in (0, 1].
 double targetWeight(double strength);
+
+// Locality weight w ∈ [0, 1] of every pose-vector DOF (PoseLayout order) for targets on
+// `effectors`: 0 on a target's limb (its end joint and kLocalityFreeHops joints above it: a hand's
+// wrist, forearm and upper arm; a foot's ankle, shin and thigh; the head and neck), rising
+// linearly to 1 over the next kLocalityRampHops joints (a clavicle ½, the thorax 1), 1 elsewhere
+// (the spine, the legs, the other limbs, the root's rotation). With no effectors every weight is 1.
+constexpr int kLocalityFreeHops = 2;
+constexpr int kLocalityRampHops = 2;
+std::vector<double> localityWeights(const Skeleton& skeleton, const std::vector<Effector>& effectors);
 
 // One joint angle held at a value (degrees): pose.anglesDeg[joint][axis] = valueDeg.
 struct HeldDof {
@@ -126,6 +140,10 @@ struct ConstrainedIkRequest {
     int maxIterations = 50;
     double rootStiffness = kDefaultRootStiffness;
     std::optional<Eigen::Vector3d> rootReferenceDeg;  // r_ref; default: the start's root rotation
+    // Locality ℓ per degree² (docs/maths-ik.md §1): ½ ℓ Σ_k w_k (y_k − y_ref,k)², w_k by the DOF's
+    // distance along the skeleton from the targets' effectors (localityWeights). 0: off.
+    double locality = 0.0;  // the solver's own default is off; callers pass kDefaultLocality
+    std::optional<Pose> localityReference;  // y_ref; default: the start pose
     double pinToleranceCm = 1e-5;
     double stationarityAbsolute = 1e-6;
     double stationarityRelative = 1e-10;
@@ -198,6 +216,7 @@ private:
     std::vector<int> yOfDof_;  // pose-vector index → index into y (−1 if constant)
     std::vector<int> heldY_;   // indices into y of the request's held DOFs
     int rootY_[3] = {-1, -1, -1};
+    Eigen::VectorXd localityW_, localityRef_;  // ℓ·w_k and y_ref on the kept columns (held: 0)
     double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)
 
     // Bound request.
