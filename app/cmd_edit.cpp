@@ -11,6 +11,7 @@
 #include "command_registry.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
+#include "ik/locality.h"
 #include "ik_cli.h"
 #include "motion/motion_edit.h"
 #include "motion_quality_json.h"
@@ -23,6 +24,7 @@ struct EditOptions {
     std::vector<std::string> pins;
     bool adaptive = false, json = false, noContacts = false;
     int iterations = 500;
+    double locality = kDefaultSpanLocality;
 };
 
 int runEdit(const EditOptions& o) {
@@ -47,12 +49,15 @@ int runEdit(const EditOptions& o) {
     job.solver = o.solver == "span" ? EditSolver::kSpan : EditSolver::kPerFrame;
     for (const std::string& p : o.pins) job.pins.push_back(parseEffectorOption(p, "--pin"));
     job.holdContacts = !o.noContacts;
+    job.spanWeights.locality = o.locality;
+    if (o.locality != kDefaultSpanLocality && job.solver != EditSolver::kSpan)
+        throw UsageError("expected --solver span with --locality, found --solver " + o.solver);
     if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
     job.run();
     Clip edited = job.version->model->clip;
     edited.frames = job.frames;
     exportFromCli(edited, o.out);
-    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm},
+    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm}, {"locality", o.locality},
                      {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
                      {"quality", spanQualityJson(job.quality)}};
     if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
@@ -94,6 +99,8 @@ const CommandRegistration editCommand("edit", "Edit an effector path (Hermite ke
     sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
     sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
     sub.add_option("--pin", o->pins, "Hold this effector at its captured position on every frame of the span (repeatable)");
+    sub.add_option("--locality", o->locality,
+                   "Span solver: how strongly the body away from the edited limb keeps its captured pose, per degree²");
     sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
     sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
     sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");

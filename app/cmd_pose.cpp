@@ -1,5 +1,6 @@
 // `motiongp pose MODEL --frame T --target EFF=dx,dy,dz[@STRENGTH] ... [--pin EFF ...]
-//  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--json]`:
+//  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--out F.bvh|.glb|.gltf|.fbx]
+//  [--json]`:
 // one IK solve on a frame of one of the model's source clips (--clip NAME, default the first; --frame
 // counts within it). Offsets are cm from the effector's position
 // in that frame. An unreachable target is a result (reached: false, exit 0), not an error; so is
@@ -27,7 +28,7 @@ namespace mgp::app {
 namespace {
 
 struct PoseOptions {
-    std::string model, solver = "learned", outModel, clip;
+    std::string model, solver = "learned", outModel, clip, out;
     long long frame = 1;
     std::vector<std::string> targets, pins, releases;
     bool adaptive = false, json = false;
@@ -54,6 +55,7 @@ int runPose(const PoseOptions& o) {
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
     if (o.adaptive && o.solver == "plain") throw UsageError("expected --solver learned with --adaptive, found plain");
     if (o.targets.empty() && o.pins.empty()) throw UsageError("expected at least one --target or --pin, found none");
+    if (!o.out.empty()) requireExportPath(o.out);
     // The learned solver's validate() judges the value itself.
     if (o.locality != kDefaultLocality && o.solver != "learned")
         throw UsageError("expected --solver learned with --locality, found --solver " + o.solver);
@@ -85,7 +87,8 @@ int runPose(const PoseOptions& o) {
     }
     nlohmann::json j;
     j["contact_pins"] = nlohmann::json::array();
-    for (const IkConstraint& pin : contactPinsAt(clip, fk, detectFootContacts(clip), frame, constraints, released)) {
+    const ContactSet contacts = detectFootContacts(clip);
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, constraints, released)) {
         constraints.push_back(pin);
         j["contact_pins"].push_back(effectorName(pin.effector));
     }
@@ -135,6 +138,7 @@ int runPose(const PoseOptions& o) {
             ConstrainedIkSolver solver(version);
             ConstrainedIkRequest request;
             request.locality = o.locality;
+            request.floorCm = contacts.floorCm;
             j["locality"] = o.locality;
             j["stop"] = ikStopName(solveWith(solver, request).stop);
         } else {
@@ -146,7 +150,7 @@ int runPose(const PoseOptions& o) {
         j["x"] = std::vector<double>(x.data(), x.data() + x.size());
         j["sigma2"] = sigma2;
         j["L_IK"] = lik;
-        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, reached, sigma2, lik);
+        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, reached, sigma2, lik, anyBelowFloor(results));
         j["natural"] = verdictJson(verdict);
         if (o.adaptive) {
             if (!verdict.admitted) {
@@ -164,6 +168,8 @@ int runPose(const PoseOptions& o) {
         }
     }
     j["reached"] = reached;
+    // Only the learned solver keeps hands and feet above the floor.
+    j["floor_cm"] = o.solver == "learned" && contacts.floorCm ? nlohmann::json(*contacts.floorCm) : nlohmann::json(nullptr);
     j["targets"] = constraintsJson(results, false);
     j["pins"] = constraintsJson(results, true);
     const Eigen::VectorXd poseDeg = PoseLayout(clip.skeleton).extract(pose);
@@ -176,6 +182,13 @@ int runPose(const PoseOptions& o) {
     Clip solved = clip;
     solved.frames = {pose};
     j["positions_cm"] = effectorPositionsJson(solved, 0);
+    if (!o.out.empty()) {
+        // The whole clip with the solved frame in place, so any tool can check the pose in context.
+        Clip withPose = clip;
+        withPose.frames[frame] = pose;
+        exportFromCli(withPose, o.out);
+        j["out"] = o.out;
+    }
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o.json) {
         printJson(j);
@@ -183,9 +196,11 @@ int runPose(const PoseOptions& o) {
         std::cout << (reached ? "reached" : "NOT reached") << " (" << j["diagnostic"].get<std::string>() << ")\n";
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
-                      << r.residualCm << " cm" << (r.reached ? "" : "  (not reached)") << "\n";
+                      << r.residualCm << " cm" << (r.belowFloor ? "  (below the floor: held on it)" : r.reached ? "" : "  (not reached)")
+                      << "\n";
         std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " ("
                   << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
+        if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
         if (j.contains("adaptive")) {
             if (j["adaptive"]["refused"].get<bool>())
                 std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()
@@ -218,6 +233,7 @@ const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model'
                  "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and L_IK is within the "
                  "99th percentile (σ²: twice it) of the captured frames scored as new poses");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
+    sub.add_option("--out", o->out, "Write the clip with the solved frame in place: .bvh, .glb, .gltf or .fbx");
     sub.add_flag("--json", o->json, "Print one JSON object");
     return [o]() { return runPose(*o); };
 });

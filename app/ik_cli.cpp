@@ -95,6 +95,7 @@ nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, b
         if (r.pin == pins) {
             nlohmann::json e{{"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}};
             if (!pins) e["strength"] = r.strength;
+            if (r.belowFloor) e["below_floor"] = true;
             out.push_back(std::move(e));
         }
     return out;

@@ -1,11 +1,14 @@
 // `motiongp pose --json` with the constrained solver: converged/stop/iterations, target strength,
 // contact pins and --release, the admission verdict, --locality, and --adaptive refusing a broken
-// pose.
+// pose, the floor, and --out.
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "gp/model_file.h"
+#include "ik/locality.h"
+#include "io/clip_loader.h"
+#include "skeleton/forward_kinematics.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -61,13 +64,13 @@ TEST_CASE("motiongp pose --adaptive refuses an unreachable reach with pinned fee
 TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad values are errors") {
     const std::string model = test::walkModelPath();
     const std::string base = "pose '" + model + "' --frame 101 --target rhand=0,20,0 --json";
-    auto off = test::runCli(base);
-    auto stiff = test::runCli(base + " --locality 100");
+    auto off = test::runCli(base + " --locality 0");
+    auto stiff = test::runCli(base);  // the default
     REQUIRE(off.exitCode == 0);
     REQUIRE(stiff.exitCode == 0);
     const json a = json::parse(off.out), b = json::parse(stiff.out);
     CHECK(a["locality"] == 0.0);
-    CHECK(b["locality"] == 100.0);
+    CHECK(b["locality"] == kDefaultLocality);
     CHECK(b["reached"] == true);
     // The head's distance from where the captured frame has it (the plain solver with no offset
     // keeps the captured pose) shrinks with the term.
@@ -88,4 +91,35 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
     r = test::runCli(base + " --locality 3 --solver plain");
     CHECK(r.exitCode == 2);
     CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
+}
+
+TEST_CASE("motiongp pose: a foot target below the floor ends on it and is refused, and --out writes the clip with the pose in place") {
+    const std::string model = test::walkModelPath();
+    const std::string out = test::scratchDir("pose_floor") + "/posed.bvh";
+    const auto r = test::runCli("pose '" + model + "' --frame 101 --target lfoot=0,-20,0 --out '" + out + "' --json");
+    REQUIRE(r.exitCode == 0);
+    const json j = json::parse(r.out);
+    const double floor = j["floor_cm"].get<double>();
+    const double foot = j["positions_cm"]["lfoot"][1].get<double>();
+    MESSAGE("floor " << floor << " cm, the left foot ends " << foot - floor << " cm above it");
+    CHECK(foot >= floor - 0.5);
+    CHECK(j["reached"] == false);
+    CHECK(j["targets"][0]["below_floor"] == true);
+    CHECK(j["targets"][0]["residual_cm"].get<double>() > 10.0);
+    CHECK(j["natural"]["admitted"] == false);
+    CHECK(j["natural"]["reason"] == "a target is below the floor (the effector was held on the floor)");
+    CHECK(j["out"] == out);
+    // The written clip: every frame, the solved one in place (its left foot where the JSON says).
+    const Clip written = loadClip(out);
+    const gp::ModelVersionPtr version = test::walkModel35();
+    REQUIRE(written.frameCount() == version->model->clip.frameCount());
+    CHECK(effectorCm(written.skeleton, written.frames[100], Effector::kLFoot).y() == doctest::Approx(foot).epsilon(1e-4));
+    // The other frames are the capture's (to the BVH file's printed precision).
+    const Skeleton& sk = version->model->clip.skeleton;
+    for (int f : {0, 99, 101})
+        CHECK((effectorCm(written.skeleton, written.frames[f], Effector::kLFoot) -
+               effectorCm(sk, version->model->clip.frames[f], Effector::kLFoot)).norm() < 0.01);
+    const auto bad = test::runCli("pose '" + model + "' --frame 101 --target lfoot=0,5,0 --out posed.txt");
+    CHECK(bad.exitCode == 2);
+    CHECK(bad.err.find("expected --out") != std::string::npos);
 }

@@ -1,7 +1,7 @@
 // Derivatives the constrained learned IK relies on, each against central differences: the GP
 // mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (ActiveSetPosterior::meanVarianceJacobians), the
 // gradient of the solver's objective F over (x, y) (targets of several strengths, the root
-// stiffness and the locality term), the prior's part of its Hessian model (exact), and the
+// stiffness, the locality term and the floor's one-sided penalty), the prior's part of its Hessian model (exact), and the
 // contracted second derivative of FK (core/skeleton/forward_kinematics.h). Also the locality
 // weights and what the term does to a hand raise.
 #include <algorithm>
@@ -101,6 +101,19 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
     ConstrainedIkRequest free = req;
     free.constraints.clear();
     checkGradient("∇F without targets", free);
+    // The floor's one-sided penalty, active on the lower foot (1 cm above it at z), on a request
+    // whose hands and feet carry no constraint.
+    ConstrainedIkRequest floored = free;
+    {
+        Pose atZ = req.start;
+        PoseLayout layout(sk);
+        Eigen::VectorXd full = layout.extract(atZ);
+        for (int k = 0; k < m.D(); ++k) full[m.keptColumns[k]] = z[d + k];
+        layout.apply(full.data(), atZ);
+        floored.floorCm = std::min(effectorCm(sk, atZ, Effector::kLFoot).y(), effectorCm(sk, atZ, Effector::kRFoot).y()) + 1.0;
+    }
+    REQUIRE(solver.objective(floored, z, nullptr) > solver.objective(free, z, nullptr) + 1e3);
+    checkGradient("∇F with a foot below the floor", floored);
     solver.objective(free, z, &g);
     const Eigen::MatrixXd Hf = solver.hessianModel();
     const double scaleH = Hf.cwiseAbs().maxCoeff();

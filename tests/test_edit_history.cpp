@@ -24,8 +24,9 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
     CHECK(doc.undo() == "nothing to undo");
 
     doc.setFrame(99);
-    // Small enough that the solved pose stays within the training range (so it is admitted).
-    dragBy(doc, Effector::kRFoot, {0, 8, 0});
+    // Small enough that the solved pose stays within the training range (so it is admitted): with
+    // the default locality, 8 cm scores L_IK 308 against the limit 243, 4 cm 121.
+    dragBy(doc, Effector::kRFoot, {0, 4, 0});
     const Pose pose99 = doc.currentPose();
     doc.waitIdle();
     const gp::ModelVersionPtr v1 = doc.model();

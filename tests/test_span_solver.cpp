@@ -21,7 +21,7 @@ std::vector<SpanTarget> someTargets(const Clip& clip, int first, int last) {
 }
 }  // namespace
 
-TEST_CASE("span objective gradient matches central differences, with and without the captured residual") {
+TEST_CASE("span objective gradient matches central differences, with and without the captured residual, with locality") {
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     for (bool residual : {true, false}) {
@@ -29,6 +29,7 @@ TEST_CASE("span objective gradient matches central differences, with and without
         SpanWeights w;
         w.keepResidual = residual;
         w.stay = 0.01;  // every term non-negligible
+        REQUIRE(w.locality == kDefaultSpanLocality);  // weights 0 on the path's limb, 1 elsewhere
         SpanSolver solver(version, 88, 100, w);
         solver.setTargets(someTargets(clip, 88, 100));
         std::mt19937 rng(7);
@@ -48,6 +49,7 @@ TEST_CASE("span objective gradient matches central differences, with and without
             idx.push_back(i * b + 2 + (i * 7) % version->model->D());
             idx.push_back(i * b + 2);
         }
+        for (int k = 0; k < version->model->D(); ++k) idx.push_back(b + version->model->latentDim() + k);  // one frame, every DOF
         double worst = 0.0;
         for (int k : idx) {
             const double h = 1e-5 * std::max(1.0, std::abs(z[k]));

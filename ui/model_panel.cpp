@@ -369,6 +369,15 @@ void drawIkReadout(EditorState& s) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
                           "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");
+    // Locality (core/ik/locality.h) as a multiple of the default.
+    float stiffness = static_cast<float>(s.doc.bodyStiffness());
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::SliderFloat("body stiffness", &stiffness, 0.0f, 3.0f, "%.2f")) s.doc.setBodyStiffness(stiffness);
+    s.recordControl("body stiffness");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves the "
+                          "dragged limb and the body only as much as the target needs, 0 lets the learned model move the "
+                          "whole body. Drags, their falloff and Regenerate use it.");
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -393,7 +402,7 @@ void drawIkReadout(EditorState& s) {
             ImGui::Text("%.3f", c.residualCm);
             ImGui::TableNextColumn();
             if (c.reached) ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
-            else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "missed");
+            else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), c.belowFloor ? "on the floor" : "missed");
         }
         ImGui::EndTable();
     }

@@ -104,6 +104,9 @@ void DragSession::solveLearned(int maxIterations) {
     request_.startX = x_;
     request_.constraints = constraints();
     request_.maxIterations = maxIterations;
+    request_.floorCm = floorCm_;
+    request_.locality = locality_;
+    request_.localityReference = startPose_;
     // The root rotation is held (stiffly) near where the drag began, not where the last event left it.
     request_.rootReferenceDeg = startPose_.anglesDeg.empty() ? std::nullopt
                                                              : std::optional<Eigen::Vector3d>(startPose_.anglesDeg[0]);

@@ -55,6 +55,10 @@ public:
     // user pinned is held by its pin only.
     void begin(const Skeleton& skeleton, Effector e, const Pose& start, gp::ModelVersionPtr model, Eigen::VectorXd startX,
                std::vector<IkConstraint> pins, std::vector<IkConstraint> contactPins);
+    // How the learned solves of the next drags hold the body (ConstrainedIkRequest): the floor
+    // hands and feet stay above (none: no floor) and the locality ℓ, against the drag's start pose.
+    void setFloor(std::optional<double> floorCm) { floorCm_ = floorCm; }
+    void setLocality(double locality) { locality_ = locality; }
     // Pins changed while dragging: the next solve holds these.
     void setPins(std::vector<IkConstraint> pins) { pins_ = std::move(pins); }
     // Solves for a new target, warm-started from the previous solve (iteration cap per event).
@@ -115,6 +119,8 @@ private:
     Pose startPose_, pose_;
     Eigen::VectorXd x_;
     int refineBudget_ = 0;
+    std::optional<double> floorCm_;
+    double locality_ = kDefaultLocality;
     bool converged_ = false;
     std::vector<IkConstraint> pins_, contactPins_;
     std::vector<Eigen::VectorXd> latentPath_;

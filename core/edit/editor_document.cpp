@@ -7,6 +7,7 @@
 
 #include "edit/regeneration_step.h"
 #include "ik/learned_ik.h"
+#include "ik/locality.h"
 #include "motion/drag_falloff.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
@@ -242,6 +243,7 @@ std::string EditorDocument::beginDrag(Effector e) {
     const Pose start = currentPose();
     updatePinPositions();
     drag_.setCompare(compare_, compareModel_, frame_);
+    drag_.setFloor(store_.contacts().floorCm);
     drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), pinConstraints(), contactHolds());
     return "";
 }
@@ -270,7 +272,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
     const gp::AdmissionVerdict verdict =
-        learnedPose ? gp::admitPose(solvedOn->range, r.reached, r.sigma2, r.lik) : gp::AdmissionVerdict{};
+        learnedPose ? gp::admitPose(solvedOn->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints)) : gp::AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
         models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
     lastDrag_.frame = frame_;
@@ -294,6 +296,11 @@ void EditorDocument::setContactEnabled(std::size_t index, bool on) {
     if (store_.setContactEnabled(index, on)) ++revision_;
 }
 
+void EditorDocument::setBodyStiffness(double scale) {
+    bodyStiffness_ = std::isfinite(scale) ? std::max(0.0, scale) : 1.0;
+    drag_.setLocality(kDefaultLocality * bodyStiffness_);
+}
+
 void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
@@ -303,6 +310,7 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(), &problem);
     if (!problem.empty()) return;  // the drag stays a one-frame edit
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
+    job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }
 
@@ -431,6 +439,7 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     job.maxIterations = maxIterations;
     job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());  // the user may have switched some off
+    job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     return regenerate_.start(std::move(job));
 }
 
@@ -486,7 +495,7 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     if (drag_.active()) {
         const SolveReadout& r = drag_.readout();
         if (!r.valid || !r.learned) return std::nullopt;
-        return gp::admitPose(v->range, r.reached, r.sigma2, r.lik);
+        return gp::admitPose(v->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints));
     }
     const auto it = store_.edits().find(frame_);
     if (it == store_.edits().end()) return std::nullopt;

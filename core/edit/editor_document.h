@@ -160,6 +160,11 @@ public:
     // (defaultFalloffRadius: 30 frames at 120 fps).
     void setDragFalloff(int frames) { falloffRadius_ = std::max(0, frames); }
     int dragFalloff() const { return falloffRadius_; }
+    // How strongly the body away from the dragged or edited limb keeps its pose (ik/locality.h), as
+    // a multiple of the solvers' defaults: 1 the default, 0 off (the prior alone decides). Drags,
+    // their falloff and path regeneration all use it.
+    void setBodyStiffness(double scale);
+    double bodyStiffness() const { return bodyStiffness_; }
     void cancelDrag();  // restores the pose before the drag
     bool dragging() const { return drag_.active(); }
     Effector dragEffector() const { return drag_.effector(); }
@@ -259,6 +264,7 @@ private:
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
     int falloffRadius_ = 0;  // set by setClip
+    double bodyStiffness_ = 1.0;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
 
     CompareMode compare_ = CompareMode::kNone;

@@ -56,7 +56,7 @@ TrainingRange computeTrainingRange(const GpModel& model, const ActiveSetPosterio
     return out;
 }
 
-AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigma2, double lik) {
+AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigma2, double lik, bool belowFloor) {
     AdmissionVerdict v;
     v.range = range;
     v.reached = reached;
@@ -66,7 +66,10 @@ AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigm
     v.likInRange = std::isfinite(lik) && lik <= range.likLimit;
     v.admitted = v.reached && v.sigma2InRange && v.likInRange;
     char buf[200];
-    if (!v.reached) {
+    if (belowFloor) {
+        v.admitted = false;
+        v.reason = "a target is below the floor (the effector was held on the floor)";
+    } else if (!v.reached) {
         v.reason = "a target or pin was not reached";
     } else if (!v.likInRange) {
         std::snprintf(buf, sizeof buf, "L_IK %.4g is above the held-out training moments' %gth percentile %.4g", lik, range.percentile,

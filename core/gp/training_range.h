@@ -55,6 +55,8 @@ struct AdmissionVerdict {
     std::string reason;  // "" when admitted, else why not (one line)
 };
 
-AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigma2, double lik);
+// `belowFloor`: a target was below the floor and its effector was held on it (the pose is refused
+// with that reason: what the user asked for was not met).
+AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigma2, double lik, bool belowFloor = false);
 
 }  // namespace mgp::gp

@@ -67,24 +67,6 @@ const char* ikStopName(IkStop stop) {
     return "unknown";
 }
 
-std::vector<double> localityWeights(const Skeleton& sk, const std::vector<Effector>& effectors) {
-    const PoseLayout layout(sk);
-    // hops[j]: joints from j down to the nearest target's end joint, when j is on its chain.
-    std::vector<int> hops(sk.jointCount(), -1);
-    for (Effector e : effectors) {
-        int j = sk.effectorSite(e).joint;
-        for (int h = 0; j >= 0; ++h, j = sk.joints[j].parent)
-            if (hops[j] < 0 || h < hops[j]) hops[j] = h;
-    }
-    std::vector<double> w(layout.size(), 1.0);
-    for (int dof = 0; dof < layout.size(); ++dof) {
-        const int j = layout.joint(dof);
-        if (j <= 0 || hops[j] < 0) continue;  // the root's rotation and joints off every chain
-        w[dof] = std::clamp(double(hops[j] - kLocalityFreeHops) / kLocalityRampHops, 0.0, 1.0);
-    }
-    return w;
-}
-
 double targetWeight(double strength) {
     if (strength >= kStrengthExact) return kExactTargetWeight;
     return std::min(kExactTargetWeight, 2.0 * strength / (1.0 - strength));
@@ -145,6 +127,7 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
         for (const auto& a : r.localityReference->anglesDeg)
             if (!a.allFinite()) return "expected a finite locality reference, found NaN or Inf";
     }
+    if (r.floorCm && !std::isfinite(*r.floorCm)) return "expected a finite floor height, found " + std::to_string(*r.floorCm);
     for (std::size_t i = 0; i < r.held.size(); ++i) {
         const HeldDof& h = r.held[i];
         if (h.joint < 0 || h.joint >= sk.jointCount() || h.axis < 0 || h.axis > 2)
@@ -191,6 +174,13 @@ void ConstrainedIkSolver::bind(const ConstrainedIkRequest& request) {
             }
         for (int k : heldY_) localityW_[k] = 0.0;  // not unknowns
     }
+    floorGuarded_.clear();
+    if (request.floorCm)
+        for (Effector e : {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot}) {
+            const bool constrained = std::any_of(request.constraints.begin(), request.constraints.end(),
+                                                 [e](const IkConstraint& c) { return c.effector == e; });
+            if (!constrained && m.clip.skeleton.effectorSite(e).joint >= 0) floorGuarded_.push_back(e);
+        }
     pins_.clear();
     targets_.clear();
     exactTargets_.clear();
@@ -340,6 +330,27 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             H_(d_ + k, d_ + k) += localityW_[k];
         }
     }
+    // Floor: ½ κ_exact min(0, p_y − floor)² on each free hand and foot (Gauss–Newton on the
+    // Jacobian's vertical row). Its gradient is continuous at the floor; its curvature steps there.
+    for (Effector e : floorGuarded_) {
+        const double below = effectorCm(sk, fk_, e).y() - *r.floorCm;
+        if (below >= 0.0) continue;
+        F += 0.5 * kExactTargetWeight * below * below;
+        if (!derivatives) continue;
+        effectorJacobian(sk, layout_, fk_, pose_, e, jac_);
+        for (int a = 0; a < layout_.size(); ++a) {
+            const int ka = yOfDof_[a];
+            if (ka < 0 || jac_(1, a) == 0.0) continue;
+            g_[d_ + ka] += kExactTargetWeight * jac_(1, a) * below;
+            for (int b = 0; b <= a; ++b) {
+                const int kb = yOfDof_[b];
+                if (kb < 0) continue;
+                const double h = kExactTargetWeight * jac_(1, a) * jac_(1, b);
+                H_(d_ + ka, d_ + kb) += h;
+                if (kb != ka) H_(d_ + kb, d_ + ka) += h;
+            }
+        }
+    }
     if (derivatives) {
         for (std::size_t i = 0; i < pins_.size(); ++i) {
             const IkConstraint& pc = r.constraints[pins_[i]];
@@ -463,6 +474,10 @@ void ConstrainedIkSolver::fillResult(const ConstrainedIkRequest& request, Constr
     result.pose = pose_;
     result.sigma2 = sigma2_;
     result.lik = lik_;
+    scoreConstraints(request, result);
+}
+
+void ConstrainedIkSolver::scoreConstraints(const ConstrainedIkRequest& request, ConstrainedIkResult& result) const {
     result.constraints.clear();
     result.reached = true;
     const Skeleton& sk = version_->model->clip.skeleton;
@@ -480,6 +495,23 @@ void ConstrainedIkSolver::fillResult(const ConstrainedIkRequest& request, Constr
 }
 
 void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, ConstrainedIkResult& result) {
+    const auto belowFloor = [&request](const IkConstraint& c) {
+        return request.floorCm && !c.pin && c.effector != Effector::kHead && c.targetCm.y() < *request.floorCm;
+    };
+    if (!std::any_of(request.constraints.begin(), request.constraints.end(), belowFloor) || !validate(request).empty()) {
+        solveOnFloor(request, result);
+        return;
+    }
+    // Targets below the floor: solve for the floor, report against what was asked.
+    ConstrainedIkRequest raised = request;
+    for (IkConstraint& c : raised.constraints)
+        if (belowFloor(c)) c.targetCm.y() = *request.floorCm;
+    solveOnFloor(raised, result);
+    scoreConstraints(request, result);
+    for (std::size_t i = 0; i < request.constraints.size(); ++i) result.constraints[i].belowFloor = belowFloor(request.constraints[i]);
+}
+
+void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, ConstrainedIkResult& result) {
     result.iterations = result.evaluations = 0;
     result.converged = false;
     result.decrement = std::numeric_limits<double>::quiet_NaN();

@@ -19,6 +19,11 @@
 //   - Locality (ℓ > 0, off by default): every DOF away from the targets' limbs costs its change
 //     from y_ref (the start pose, or the drag's first), so the body follows a dragged limb only as
 //     much as the target needs (localityWeights; docs/maths-ik.md §1).
+//   - Floor (optional, floorCm): hands and feet stay on or above it. A target below the floor is
+//     raised onto it before the solve and reports its miss from the asked position (reached =
+//     false, belowFloor); a hand or foot on no target and no pin carries the one-sided penalty
+//     ½ κ_exact min(0, p_y − floor)², so it rests on the floor rather than passing it (ends within
+//     about 1e-4 cm of it; docs/maths-ik.md §1).
 //   - The root translation, the model's constant columns and DOFs outside the pose vector stay at
 //     the start pose's (constants: the model's) values.
 //   - Held DOFs (rotate joint): each `held` entry fixes one joint angle at its value. It is
@@ -91,6 +96,7 @@
 
 #include "gp/model_version.h"
 #include "ik/ik_types.h"
+#include "ik/locality.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
@@ -101,8 +107,6 @@ namespace mgp {
 constexpr double kExactTargetWeight = 1e6;
 // Root orientation stiffness per degree² (in ½k‖Δ‖²).
 constexpr double kDefaultRootStiffness = 0.5;
-// Locality ℓ per degree² (ConstrainedIkRequest::locality) that `pose` and the editor use.
-constexpr double kDefaultLocality = 0.0;
 
 enum class IkStop {
     kConverged,       // the KKT test above holds
@@ -115,15 +119,6 @@ const char* ikStopName(IkStop stop);  // "converged", "iteration_cap", "stalled"
 
 // Target weight κ for a strength in (0, 1].
 double targetWeight(double strength);
-
-// Locality weight w ∈ [0, 1] of every pose-vector DOF (PoseLayout order) for targets on
-// `effectors`: 0 on a target's limb (its end joint and kLocalityFreeHops joints above it: a hand's
-// wrist, forearm and upper arm; a foot's ankle, shin and thigh; the head and neck), rising
-// linearly to 1 over the next kLocalityRampHops joints (a clavicle ½, the thorax 1), 1 elsewhere
-// (the spine, the legs, the other limbs, the root's rotation). With no effectors every weight is 1.
-constexpr int kLocalityFreeHops = 2;
-constexpr int kLocalityRampHops = 2;
-std::vector<double> localityWeights(const Skeleton& skeleton, const std::vector<Effector>& effectors);
 
 // One joint angle held at a value (degrees): pose.anglesDeg[joint][axis] = valueDeg.
 struct HeldDof {
@@ -142,8 +137,9 @@ struct ConstrainedIkRequest {
     std::optional<Eigen::Vector3d> rootReferenceDeg;  // r_ref; default: the start's root rotation
     // Locality ℓ per degree² (docs/maths-ik.md §1): ½ ℓ Σ_k w_k (y_k − y_ref,k)², w_k by the DOF's
     // distance along the skeleton from the targets' effectors (localityWeights). 0: off.
-    double locality = 0.0;  // the solver's own default is off; callers pass kDefaultLocality
+    double locality = kDefaultLocality;  // 0: off
     std::optional<Pose> localityReference;  // y_ref; default: the start pose
+    std::optional<double> floorCm;  // world Y (cm) that hands and feet may not pass; none: no floor
     double pinToleranceCm = 1e-5;
     double stationarityAbsolute = 1e-6;
     double stationarityRelative = 1e-10;
@@ -194,6 +190,10 @@ private:
     double correctionResidual(const Eigen::VectorXd& z, Eigen::VectorXd& r);
     void setPose(const Eigen::VectorXd& y);
     void fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+    // Every constraint's residual and reached flag at the current FK, against `request`'s targets.
+    void scoreConstraints(const ConstrainedIkRequest& request, ConstrainedIkResult& result) const;
+    // solve() once the targets below the floor have been raised onto it.
+    void solveOnFloor(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
     // Rows row..row+2 of `into` = the effector Jacobian jac_ on the kept columns y (x columns 0).
     void scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const;
     // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
@@ -216,6 +216,7 @@ private:
     std::vector<int> yOfDof_;  // pose-vector index → index into y (−1 if constant)
     std::vector<int> heldY_;   // indices into y of the request's held DOFs
     int rootY_[3] = {-1, -1, -1};
+    std::vector<Effector> floorGuarded_;  // hands and feet on no constraint, kept above the floor
     Eigen::VectorXd localityW_, localityRef_;  // ℓ·w_k and y_ref on the kept columns (held: 0)
     double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)
 

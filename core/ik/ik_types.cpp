@@ -1,6 +1,12 @@
 #include "ik/ik_types.h"
 
+#include <algorithm>
+
 namespace mgp {
+
+bool anyBelowFloor(const std::vector<IkConstraintResult>& results) {
+    return std::any_of(results.begin(), results.end(), [](const IkConstraintResult& r) { return r.belowFloor; });
+}
 
 std::string validateConstraints(const Skeleton& skeleton, const std::vector<IkConstraint>& constraints) {
     bool seen[kEffectorCount] = {};

@@ -35,7 +35,13 @@ struct IkConstraintResult {
     double residualCm = 0.0;
     bool reached = false;
     double strength = kStrengthExact;
+    // The target was below the floor: the effector was held on the floor instead (constrained
+    // IK with a floor), so it is not reached.
+    bool belowFloor = false;
 };
+
+// Whether any result is a target held on the floor instead of below it.
+bool anyBelowFloor(const std::vector<IkConstraintResult>& results);
 
 // Checks targets before a solve; returns "" if fine, else what is wrong (NaN target, unknown
 // effector on this skeleton, the same effector twice, a strength outside (0, 1]).

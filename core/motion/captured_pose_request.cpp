@@ -15,6 +15,7 @@ ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int fr
     req.constraints = std::move(constraints);
     for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, req.constraints)) req.constraints.push_back(pin);
     req.maxIterations = maxIterations;
+    req.floorCm = contacts.floorCm;
     return req;
 }
 

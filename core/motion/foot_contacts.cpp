@@ -93,6 +93,10 @@ ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
     if (!leftFootCm.empty()) ground = std::min(ground, heightQuantile(leftFootCm, rule.groundPercentile));
     if (!rightFootCm.empty()) ground = std::min(ground, heightQuantile(rightFootCm, rule.groundPercentile));
     set.groundCm = ground;
+    double lowest = INFINITY;
+    for (const auto* foot : {&leftFootCm, &rightFootCm})
+        for (const Eigen::Vector3d& p : *foot) lowest = std::min(lowest, p.y());
+    set.floorCm = lowest;
     const double speedScale = 120.0 / fps;
     detectOne(Effector::kLFoot, leftFootCm, ground, speedScale, rule, set.contacts);
     detectOne(Effector::kRFoot, rightFootCm, ground, speedScale, rule, set.contacts);

@@ -13,6 +13,7 @@
 // Speed thresholds are stated per frame at 120 fps (the CMU capture rate); for another frame
 // rate they are scaled by 120 / fps so the rule means the same speed in cm/s.
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "ik/ik_types.h"
@@ -46,6 +47,10 @@ struct FootContact {
 
 struct ContactSet {
     double groundCm = 0.0;               // the clip's ground level (world Y, cm)
+    // The floor the solves keep hands and feet above (ConstrainedIkRequest::floorCm): the lowest
+    // height either foot effector reaches over the clip, so no captured frame is below it. None
+    // when the skeleton has no feet.
+    std::optional<double> floorCm;
     std::vector<FootContact> contacts;   // sorted by foot, then by first frame
     // The enabled contact of `foot` that holds `frame`, or nullptr.
     const FootContact* at(Effector foot, int frame) const;

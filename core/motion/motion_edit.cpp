@@ -34,6 +34,8 @@ std::string MotionEditJob::validate() const {
         if (c.first > c.last) return "expected contact intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
     }
     if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
+    if (!(spanWeights.locality >= 0.0) || !std::isfinite(spanWeights.locality))
+        return "expected a locality ≥ 0, found " + std::to_string(spanWeights.locality);
     if (heldPose) {
         if (solver != EditSolver::kSpan) return "expected the span solver for a held pose, found the per-frame one";
         if (heldPose->frame <= keyFrames.front() || heldPose->frame >= keyFrames.back())

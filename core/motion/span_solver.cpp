@@ -10,6 +10,7 @@
 
 #include "ik/learned_ik.h"
 #include "ik/ik_types.h"
+#include "ik/locality.h"
 
 namespace mgp {
 
@@ -32,6 +33,8 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
         throw std::invalid_argument("expected a span first < last − 1 inside the clip's " + std::to_string(clip.frameCount()) +
                                     " frames, found " + std::to_string(first + 1) + ".." + std::to_string(last + 1));
     if (!(w_.lambda > 0.0 && w_.lambda < 1.0)) throw std::invalid_argument("expected 0 < λ < 1, found " + std::to_string(w_.lambda));
+    if (!(w_.locality >= 0.0) || !std::isfinite(w_.locality))
+        throw std::invalid_argument("expected a locality ≥ 0, found " + std::to_string(w_.locality));
     n_ = last - first - 1;
     d_ = m.latentDim();
     D_ = m.D();
@@ -69,6 +72,7 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
         }
     }
     targetsOf_.assign(n_, {});
+    stay_ = Eigen::VectorXd::Constant(D_, w_.stay);
     scale_ = Eigen::VectorXd::Ones(variableCount());
     priorGx_.assign(n_, Eigen::VectorXd::Zero(d_));
     priorGy_.assign(n_, Eigen::VectorXd::Zero(D_));
@@ -93,6 +97,14 @@ void SpanSolver::setTargets(std::vector<SpanTarget> targets) {
     targetsOf_.assign(n_, {});
     for (std::size_t k = 0; k < targets_.size(); ++k) targetsOf_[targets_[k].frame - first_ - 1].push_back(static_cast<int>(k));
     targetJac_.assign(targets_.size(), Eigen::MatrixXd::Zero(3, D_));
+    std::vector<Effector> edited;
+    for (const SpanTarget& t : targets_)
+        if (t.kind == SpanTarget::Kind::kPath && std::find(edited.begin(), edited.end(), t.effector) == edited.end())
+            edited.push_back(t.effector);
+    const gp::GpModel& m = *version_->model;
+    const std::vector<double> lw = localityWeights(m.clip.skeleton, edited);
+    // κ/2: the constrained IK's ½ℓ‖·‖² beside L_IK, here beside κ·L_IK, so one ℓ means the same.
+    for (int k = 0; k < D_; ++k) stay_[k] = w_.stay + 0.5 * kappa_ * w_.locality * lw[m.keptColumns[k]];
     lastZ_.resize(0);
     computeScaling();
 }
@@ -149,8 +161,8 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         grad.segment(i * b + d_, D_) += kappa_ * gy_;
         // Stay near the capture: every DOF a little, the root orientation more.
         const auto u = z.segment(i * b + d_, D_) - yCap_[c];
-        F += w_.stay * u.squaredNorm();
-        grad.segment(i * b + d_, D_) += 2.0 * w_.stay * u;
+        F += u.dot(stay_.cwiseProduct(u));
+        grad.segment(i * b + d_, D_) += 2.0 * stay_.cwiseProduct(u);
         const auto v = z.segment(i * b, d_) - xCap_[c];
         F += w_.stayLatent * v.squaredNorm();
         grad.segment(i * b, d_) += 2.0 * w_.stayLatent * v;
@@ -236,7 +248,7 @@ void SpanSolver::computeScaling() {
             }
         }
         for (int k = 0; k < D_; ++k) {
-            double h = kappa_ * m.w[k] * m.w[k] / s2 + 2.0 * gradFull_[m.keptColumns[k]] + 2.0 * w_.stay + 12.0 * w_.smoothPose;
+            double h = kappa_ * m.w[k] * m.w[k] / s2 + 2.0 * gradFull_[m.keptColumns[k]] + 2.0 * stay_[k] + 12.0 * w_.smoothPose;
             if (m.keptColumns[k] < 3) h += 2.0 * w_.root;
             scale_[i * b + d_ + k] = 1.0 / std::sqrt(h);
         }
@@ -370,7 +382,7 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
         const Eigen::VectorXd lam = eig.eigenvalues().cwiseMax(kappa_ * 1e-3);
         hii.topLeftCorner(d_, d_) = eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose() + coupling;
         hii.topRightCorner(d_, D_) = hyx.transpose();
-        for (int k = 0; k < D_; ++k) hii(d_ + k, d_ + k) += 2.0 * w_.stay;
+        for (int k = 0; k < D_; ++k) hii(d_ + k, d_ + k) += 2.0 * stay_[k];
         for (int k = 0; k < d_; ++k) hii(k, k) += 2.0 * w_.stayLatent;
         for (int k : rootKept_) hii(d_ + k, d_ + k) += 2.0 * w_.root;
         for (int k : targetsOf_[i])

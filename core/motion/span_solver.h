@@ -8,7 +8,8 @@
 //
 //   F = Σ_t [ κ·L_IK(x_t, y_t − r_t)                      learned prior (gp/point_objective.h)
 //           + w_c Σ_c ‖FK_c(y_t) − p_c,t‖²                 targets: the edited path, held feet, pins
-//           + ρ_root ‖u_t,root‖² + ρ ‖u_t‖² + ρ_x ‖v_t‖² ]  root orientation (and everything) near capture
+//           + ρ_root ‖u_t,root‖² + Σ_k (ρ + ½κℓ w_k) u_t,k²  root orientation (and everything) near capture,
+//           + ρ_x ‖v_t‖² ]                                the body away from the edited limb more (ℓ)
 //     + s_y Σ_s ‖u_{s−1} − 2u_s + u_{s+1}‖² + s_x Σ_s ‖v_{s−1} − 2v_s + v_{s+1}‖²
 //
 // with s over first..last, so the two captured frames on each side enter the differences and the
@@ -23,7 +24,10 @@
 // does not explain): with `keepResidual` the prior judges y_t − r_t, so at zero edit the captured
 // span is a stationary point of the prior's pose term instead of being pulled toward f(x). Root
 // orientation is a pose DOF like the others but carries an extra stiffness ρ_root, so it turns
-// only when the targets need it.
+// only when the targets need it. Locality ℓ (ik/locality.h): w_k is 0 on the limbs of the path
+// targets' effectors and 1 on the rest of the body, so an edited hand moves its arm, and the spine,
+// the legs and the other limbs only as much as the path needs. It is scaled by ½κ so that one ℓ
+// weighs against the prior as the constrained IK's ½ℓ‖y − y_ref‖² does beside its unscaled L_IK.
 //
 // Solver (default): Levenberg–Marquardt on the stacked z from the captured span. Its matrix is
 // the exact Hessian of the quadratic terms (smoothness, stay, root), Gauss–Newton 2JᵀJ for the
@@ -39,6 +43,7 @@
 #include <vector>
 
 #include "gp/model_version.h"
+#include "ik/locality.h"
 #include "motion/block_banded.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
@@ -61,6 +66,7 @@ struct SpanWeights {
     double smoothLatent = 10.0;  // s_x, per (latent unit)² of second difference of v
     double root = 0.1;           // ρ_root, per deg² of root orientation change
     double stay = 1e-4;          // ρ, per deg² of any change
+    double locality = kDefaultSpanLocality;  // ℓ per deg² of change, weighted by w_k and ½κ (see above)
     double stayLatent = 10.0;    // ρ_x, per (latent unit)² of change of x
     bool keepResidual = true;    // prior on y − r_t (see above); false: the paper's L_IK(x, y)
 };
@@ -130,6 +136,7 @@ private:
     int heldInner_ = -1;                   // inner index of the held frame (holdFrame), or −1
     Pose heldPose_;
     Eigen::VectorXd z0_, scale_;
+    Eigen::VectorXd stay_;                 // ρ + ℓ w_k per kept column
     // Workspace.
     gp::PointWorkspace pointWs_;
     FkState fk_;
