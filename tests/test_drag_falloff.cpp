@@ -132,3 +132,44 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     for (int t : {90, 100, 109, 120, 128}) CHECK(largestAngleChangeDeg(poseAt(t), clip.frames[t], clip.skeleton) == 0.0);
     CHECK_FALSE(doc.undo().empty());  // nothing else was pushed
 }
+
+TEST_CASE("editor: a hand drag's falloff keeps where an earlier foot drag put the foot on the neighbouring frames") {
+    // The user's sequence: on one frame drag the right foot up 15 cm (spread over ±20 frames), then
+    // drag the right hand. The hand drag's spread fades into the motion as edited so far, so the
+    // foot stays raised on t−1..t+1; it used to start from the capture and put the foot back on
+    // the ground there (a 15 cm one-frame spike).
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const Skeleton& sk = clip.skeleton;
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+    const int t = 140;
+    doc.setFrame(t);
+    REQUIRE(doc.beginDrag(Effector::kRFoot).empty());
+    doc.dragTo(effectorCm(sk, clip.frames[t], Effector::kRFoot) + Eigen::Vector3d(0, 15, 0), 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    doc.pollRegenerate();
+    auto footAt = [&](int s) {
+        doc.setFrame(s);
+        return effectorCm(sk, doc.currentPose(), Effector::kRFoot);
+    };
+    const Eigen::Vector3d footBefore[3] = {footAt(t - 1), footAt(t), footAt(t + 1)};
+    CHECK(footBefore[1].y() - effectorCm(sk, clip.frames[t], Effector::kRFoot).y() > 14.0);
+    doc.setFrame(t);
+    REQUIRE(doc.beginDrag(Effector::kRHand).empty());
+    doc.dragTo(effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 10, 5), 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    CHECK(doc.pollRegenerate().rfind("drag spread over frames", 0) == 0);
+    for (int k = 0; k < 3; ++k) {
+        const double moved = (footAt(t - 1 + k) - footBefore[k]).norm();
+        MESSAGE("frame " << t - 1 + k << ": the foot moved " << moved << " cm during the hand drag");
+        CHECK(moved <= 1.0);
+    }
+    // The hand drag is its own undo step: undoing it brings back the foot drag's motion exactly.
+    REQUIRE(doc.undo().empty());
+    for (int k = 0; k < 3; ++k) CHECK((footAt(t - 1 + k) - footBefore[k]).norm() == 0.0);
+}

@@ -306,8 +306,21 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
     const Clip& mc = v->model->clip;
     if (mc.frameCount() != frameCount() || mc.skeleton.jointCount() != clip().skeleton.jointCount()) return;
+    // The spread fades into the motion as it was before this drag, so what earlier gestures put on
+    // the neighbouring frames stays there (the dragged frame as it was before the drag: the
+    // displacement is measured from it).
+    auto base = std::make_shared<EditBase>();
+    base->frames.reserve(static_cast<std::size_t>(frameCount()));
+    base->x.assign(static_cast<std::size_t>(frameCount()), Eigen::VectorXd());
+    for (int t = 0; t < frameCount(); ++t) base->frames.push_back(store_.pose(t));
+    for (const auto& [t, record] : store_.edits())
+        if (record.x.size() == v->model->latentDim()) base->x[static_cast<std::size_t>(t)] = record.x;
+    const auto dragged = static_cast<std::size_t>(rec.frame);
+    base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
+    base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
     std::string problem;
-    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(), &problem);
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(),
+                                       &problem, std::move(base));
     if (!problem.empty()) return;  // the drag stays a one-frame edit
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;

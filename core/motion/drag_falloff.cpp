@@ -8,9 +8,11 @@ namespace mgp {
 int defaultFalloffRadius(double fps) { return std::max(1, static_cast<int>(std::lround(0.25 * fps))); }
 
 MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int frame, const Pose& dragPose,
-                             const Eigen::VectorXd& dragX, int radius, std::vector<Effector> pins, std::string* problem) {
+                             const Eigen::VectorXd& dragX, int radius, std::vector<Effector> pins, std::string* problem,
+                             std::shared_ptr<const EditBase> base) {
     MotionEditJob job;
     job.version = std::move(version);
+    job.base = std::move(base);
     job.effector = effector;
     job.mode = PathMode::kDisplacement;
     job.pins = std::move(pins);
@@ -31,6 +33,8 @@ MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int
     const Eigen::Vector3d targetCm = effectorCm(skeleton, dragPose, effector);
     if (!targetCm.allFinite()) return fail("expected a finite drag pose, found NaN or Inf");
     const int first = std::max(0, frame - radius), last = std::min(n - 1, frame + radius);
+    if (job.base)
+        if (const std::string invalid = validateEditBase(*job.version->model, *job.base); !invalid.empty()) return fail(invalid);
     const Eigen::Vector3d captured = job.capturedTrajectory()[frame];
     job.keyFrames = {first, frame, last};
     job.keyOffsetsCm = {Eigen::Vector3d::Zero(), targetCm - captured, Eigen::Vector3d::Zero()};

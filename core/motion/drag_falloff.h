@@ -9,6 +9,7 @@
 // (no job).
 // The keys are clamped to the clip, keeping one captured frame before and after the span so the
 // joins stay C¹; a frame with no room on one side gets a one-sided falloff.
+#include <memory>
 #include <string>
 
 #include "motion/motion_edit.h"
@@ -21,7 +22,10 @@ int defaultFalloffRadius(double fps);
 // The job for a drag of `effector` at `frame` (0-based) that ended in `dragPose` with latent point
 // `dragX` (empty: the frame's captured latent point); "" in *problem when it can run, else why
 // not (radius < 1, frame at the clip's first or last frame, a pose of another skeleton, NaN).
+// `base`: the motion as edited so far (MotionEditJob::base): the displacement fades into it, so
+// the neighbours keep what earlier edits put there. Null: the captured clip.
 MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int frame, const Pose& dragPose,
-                             const Eigen::VectorXd& dragX, int radius, std::vector<Effector> pins, std::string* problem);
+                             const Eigen::VectorXd& dragX, int radius, std::vector<Effector> pins, std::string* problem,
+                             std::shared_ptr<const EditBase> base = nullptr);
 
 }  // namespace mgp

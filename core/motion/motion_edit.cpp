@@ -34,6 +34,8 @@ std::string MotionEditJob::validate() const {
         if (c.first > c.last) return "expected contact intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
     }
     if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
+    if (base)
+        if (const std::string problem = validateEditBase(*version->model, *base); !problem.empty()) return problem;
     if (!(spanWeights.locality >= 0.0) || !std::isfinite(spanWeights.locality))
         return "expected a locality ≥ 0, found " + std::to_string(spanWeights.locality);
     if (heldPose) {
@@ -52,8 +54,15 @@ std::string MotionEditJob::validate() const {
     return "";
 }
 
+const std::vector<Pose>& MotionEditJob::baseFrames() const { return base ? base->frames : version->model->clip.frames; }
+
 std::vector<Eigen::Vector3d> MotionEditJob::capturedTrajectory() const {
-    return effectorTrajectory(version->model->clip, effector);
+    if (!base) return effectorTrajectory(version->model->clip, effector);
+    const Skeleton& sk = version->model->clip.skeleton;
+    std::vector<Eigen::Vector3d> out;
+    out.reserve(base->frames.size());
+    for (const Pose& p : base->frames) out.push_back(effectorCm(sk, p, effector));
+    return out;
 }
 
 std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& captured,
@@ -85,7 +94,8 @@ void MotionEditJob::run() {
     const std::vector<Eigen::Vector3d> target = editTargetPath(capturedTrajectory(), keyFrames, keyOffsetsCm, mode);
     const int first = keyFrames.front(), last = keyFrames.back();
 
-    frames = clip.frames;
+    const std::vector<Pose>& start = baseFrames();
+    frames = start;
     cancelled = false;
     solvedFrames.clear();
     pathCm.clear();
@@ -104,7 +114,7 @@ void MotionEditJob::run() {
     for (const ContactInterval& c : heldContacts)
         if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
     // Held effectors per inner frame: user pins on every frame, contacts on their frames; the
-    // edited effector is never held. Targets are the captured positions of that frame.
+    // edited effector is never held. Targets are the positions of that frame in the base motion.
     std::vector<std::vector<IkConstraint>> holds(count);
     {
         FkState fk;
@@ -118,7 +128,7 @@ void MotionEditJob::run() {
             std::sort(hold.begin(), hold.end());
             hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
             if (hold.empty()) continue;
-            forwardKinematics(clip.skeleton, clip.frames[t], fk);
+            forwardKinematics(clip.skeleton, start[t], fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
         }
     }
@@ -128,7 +138,7 @@ void MotionEditJob::run() {
         runPerFrame(holds);
     }
     if (cancelled) {
-        frames = clip.frames;
+        frames = start;
         return;
     }
     maxResidualCm = maxHeldResidualCm = 0.0;
@@ -151,7 +161,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
     if (solvedFrames.empty()) return;  // adjacent end keys: nothing inside
     SpanWeights w = spanWeights;
     w.lambda = lambda;
-    SpanSolver span(version, first, last, w);
+    SpanSolver span(version, first, last, w, base.get());
     std::vector<SpanTarget> targets;
     for (std::size_t i = 0; i < solvedFrames.size(); ++i) {
         targets.push_back({solvedFrames[i], effector, pathCm[i], SpanTarget::Kind::kPath});
@@ -197,7 +207,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
 }
 
 void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& holds) {
-    const Clip& clip = version->model->clip;
+    const std::vector<Pose>& start = baseFrames();
     const int count = static_cast<int>(solvedFrames.size());
     int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     workers = std::max(1, std::min(workers, count));
@@ -209,8 +219,8 @@ void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& ho
         for (int i = worker; i < count; i += workers) {  // fixed assignment: deterministic
             if (cancel && cancel->load()) return;
             const int t = solvedFrames[i];
-            req.start = clip.frames[t];
-            req.startX = latentStartForFrame(*version, t);
+            req.start = start[t];
+            req.startX = base && !base->x.empty() && base->x[t].size() > 0 ? base->x[t] : latentStartForFrame(*version, t);
             req.constraints = {{effector, pathCm[i], false}};
             req.constraints.insert(req.constraints.end(), holds[i].begin(), holds[i].end());
             solver.solve(req, results[i]);

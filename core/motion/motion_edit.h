@@ -66,6 +66,10 @@ struct MotionEditJob {
         Eigen::VectorXd x;
     };
     std::optional<HeldPose> heldPose;
+    // The motion to start from (motion/span_solver.h, EditBase): the path's "captured" trajectory,
+    // the held contacts' and pins' positions, the change the solvers smooth and the frames outside
+    // the span all come from it. Null: the model's captured clip.
+    std::shared_ptr<const EditBase> base;
     double lambda = 0.999;
     SpanWeights spanWeights;                     // kSpan only (lambda above overrides its λ)
     SpanMethod spanMethod = SpanMethod::kLevenbergMarquardt;
@@ -90,8 +94,11 @@ struct MotionEditJob {
 
     std::string validate() const;  // "" or "expected …, found …"
     void run();                    // throws std::invalid_argument if validate() fails
-    // The effector's captured position at every clip frame (needs validate() == "").
+    // The effector's position at every clip frame of the base motion (the captured clip when there
+    // is no base; needs validate() == "").
     std::vector<Eigen::Vector3d> capturedTrajectory() const;
+    // The base motion's frames (the captured clip's when there is no base).
+    const std::vector<Pose>& baseFrames() const;
 
 private:
     void runSpan(const std::vector<std::vector<IkConstraint>>& holds);

@@ -25,7 +25,7 @@ const char* spanStopName(SpanStop s) {
     return "?";
 }
 
-SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights)
+SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights, const EditBase* base)
     : version_(std::move(version)), layout_(version_->model->clip.skeleton), w_(weights), first_(first), last_(last) {
     const gp::GpModel& m = *version_->model;
     const Clip& clip = m.clip;
@@ -48,14 +48,15 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     jac_.resize(3, layout_.size());
     for (int k = 0; k < D_; ++k)
         if (m.keptColumns[k] < 3) rootKept_.push_back(k);
-    // Captured x̂, ŷ on frames first−1..last+1 (those inside the clip; others stay empty).
+    // Captured (or base) x̂, ŷ on frames first−1..last+1 (those inside the clip; others stay empty).
     xCap_.assign(n_ + 4, Eigen::VectorXd());
     yCap_.assign(n_ + 4, Eigen::VectorXd());
     for (int t = first - 1; t <= last + 1; ++t) {
         if (t < 0 || t >= clip.frameCount()) continue;
-        yCap_[t - first + 1] = m.keptPose(layout_.extract(clip.frames[t]));
+        yCap_[t - first + 1] = m.keptPose(layout_.extract(base ? base->frames[t] : clip.frames[t]));
         // Only inner frames need x̂ (outer frames have v = 0 by definition).
-        if (t > first && t < last) xCap_[t - first + 1] = latentStartForFrame(*version_, t);
+        if (t > first && t < last)
+            xCap_[t - first + 1] = base && !base->x.empty() && base->x[t].size() == d_ ? base->x[t] : latentStartForFrame(*version_, t);
     }
     resid_.assign(n_, Eigen::VectorXd::Zero(D_));
     z0_.resize(variableCount());
@@ -77,6 +78,21 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     priorGx_.assign(n_, Eigen::VectorXd::Zero(d_));
     priorGy_.assign(n_, Eigen::VectorXd::Zero(D_));
     priorVar_.assign(n_, 1.0);
+}
+
+std::string validateEditBase(const gp::GpModel& model, const EditBase& base) {
+    const int n = model.clip.frameCount();
+    if (static_cast<int>(base.frames.size()) != n)
+        return "expected a base motion of " + std::to_string(n) + " frames, found " + std::to_string(base.frames.size());
+    if (!base.x.empty() && base.x.size() != base.frames.size())
+        return "expected a base latent point per frame, found " + std::to_string(base.x.size());
+    for (const Pose& p : base.frames)
+        if (static_cast<int>(p.anglesDeg.size()) != model.clip.skeleton.jointCount() || !allFinite(p))
+            return "expected a finite base motion of the model's skeleton";
+    for (const Eigen::VectorXd& x : base.x)
+        if (x.size() != 0 && (x.size() != model.latentDim() || !x.allFinite()))
+            return "expected base latent points of " + std::to_string(model.latentDim()) + " finite values";
+    return "";
 }
 
 std::string SpanSolver::validate(const std::vector<SpanTarget>& targets) const {

@@ -59,6 +59,18 @@ struct SpanTarget {
     enum class Kind { kPath, kContact, kPin } kind = Kind::kPath;
 };
 
+// The motion an edit starts from (one entry per clip frame): each frame's pose and, where known,
+// its latent point (an empty entry: the frame's captured latent start). The solvers treat it as
+// "the capture": the change u, v, the stay and smoothness terms and the residual r_t are taken
+// from it, so a second edit builds on the first instead of starting over from the capture.
+struct EditBase {
+    std::vector<Pose> frames;
+    std::vector<Eigen::VectorXd> x;  // empty, or one per frame
+};
+
+// "" or what is wrong with `base` for `model` (frame count, skeleton, latent size, NaN).
+std::string validateEditBase(const gp::GpModel& model, const EditBase& base);
+
 struct SpanWeights {
     double lambda = 0.999;       // κ = (1 − λ)/λ on L_IK
     double target = 100.0;        // weight of every target, per cm² (scales the targets' term)
@@ -93,7 +105,9 @@ class SpanSolver {
 public:
     // first, last: the span's captured end frames (first + 1 < last). Throws
     // std::invalid_argument when the span does not fit the model's clip.
-    SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {});
+    // `base`: the motion to start from (EditBase; null: the model's captured clip), of the clip's
+    // frame count and skeleton (MotionEditJob::validate checks it).
+    SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {}, const EditBase* base = nullptr);
 
     int innerCount() const { return n_; }
     int variableCount() const { return n_ * (d_ + D_); }
