@@ -4,6 +4,7 @@
 // moves the middle keys (frames of --clip NAME, the model clip's file stem; default the first) by the offset, regenerates the span and writes the whole clip as BVH
 // (edited frames replaced). `span` (default) solves the span as one problem with smoothness and
 // held contacts (motion/span_solver.h); `per-frame` is the paper's independent per-frame IK.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
@@ -15,6 +16,7 @@
 #include "ik_cli.h"
 #include "motion/motion_edit.h"
 #include "motion_quality_json.h"
+#include "skeleton/centre_of_mass.h"
 
 namespace mgp::app {
 namespace {
@@ -60,6 +62,15 @@ int runEdit(const EditOptions& o) {
     nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm}, {"locality", o.locality},
                      {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
                      {"quality", spanQualityJson(job.quality)}};
+    // The largest horizontal move of the whole-body centre of mass from the capture over the span.
+    double comShift = 0.0;
+    bool comKnown = true;
+    for (int t : job.solvedFrames) {
+        const std::optional<double> s = horizontalComShiftCm(edited.skeleton, job.frames[t], job.version->model->clip.frames[t]);
+        if (!s) comKnown = false;
+        else comShift = std::max(comShift, *s);
+    }
+    j["max_com_shift_cm"] = comKnown ? nlohmann::json(comShift) : nlohmann::json(nullptr);
     if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
     if (o.adaptive) {
         // The solved poses of the moved keys join the model's samples (not the in-betweens).

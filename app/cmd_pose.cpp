@@ -23,6 +23,7 @@
 #include "ik/plain_ik.h"
 #include "ik_cli.h"
 #include "motion/foot_contacts.h"
+#include "skeleton/centre_of_mass.h"
 
 namespace mgp::app {
 namespace {
@@ -178,6 +179,9 @@ int runPose(const PoseOptions& o) {
     const NearestFrame nearest = nearestFrame(poseDeg, m.clipPoseMatrices());
     const std::string nearestClip = m.clipName(nearest.clip);
     j["clip"] = clip.name;
+    // How far the whole-body centre of mass moved over the ground from the captured frame.
+    const std::optional<double> comShift = horizontalComShiftCm(clip.skeleton, pose, clip.frames[frame]);
+    j["com_shift_cm"] = comShift ? nlohmann::json(*comShift) : nlohmann::json(nullptr);
     j["nearest"] = {{"clip", nearestClip}, {"frame", nearest.frame + 1}, {"rms_deg", nearest.rmsDeg}};
     Clip solved = clip;
     solved.frames = {pose};

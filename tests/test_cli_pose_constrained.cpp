@@ -83,8 +83,12 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
         }
         return std::sqrt(s);
     };
-    MESSAGE("head moves " << headMove(a) << " cm without the term, " << headMove(b) << " cm at 100");
+    MESSAGE("head moves " << headMove(a) << " cm without the term, " << headMove(b) << " cm at 100; the centre of mass "
+                          << a["com_shift_cm"].get<double>() << " and " << b["com_shift_cm"].get<double>() << " cm");
     CHECK(headMove(b) < headMove(a));
+    // The centre of mass moved 4.7 cm over the ground without the term, 0.8 cm with it.
+    CHECK(b["com_shift_cm"].get<double>() <= 2.0);
+    CHECK(b["com_shift_cm"].get<double>() < a["com_shift_cm"].get<double>());
     auto r = test::runCli(base + " --locality -1");
     CHECK(r.exitCode == 2);
     CHECK(r.err == "motiongp: error: expected a locality ≥ 0, found -1.000000\n");
@@ -107,7 +111,7 @@ TEST_CASE("motiongp pose: a foot target below the floor ends on it and is refuse
     CHECK(j["targets"][0]["below_floor"] == true);
     CHECK(j["targets"][0]["residual_cm"].get<double>() > 10.0);
     CHECK(j["natural"]["admitted"] == false);
-    CHECK(j["natural"]["reason"] == "a target is below the floor (the effector was held on the floor)");
+    CHECK(j["natural"]["reason"] == "a target is below the floor: the effector was held on it");
     CHECK(j["out"] == out);
     // The written clip: every frame, the solved one in place (its left foot where the JSON says).
     const Clip written = loadClip(out);

@@ -234,7 +234,7 @@ TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, r
         const gp::AdmissionVerdict verdict =
             gp::admitPose(version->range, res.reached, res.sigma2, res.lik, anyBelowFloor(res.constraints));
         CHECK_FALSE(verdict.admitted);
-        CHECK(verdict.reason == "a target is below the floor (the effector was held on the floor)");
+        CHECK(verdict.reason == "a target is below the floor: the effector was held on it");
         // Without a floor the same target is met below the ground.
         req.floorCm.reset();
         const ConstrainedIkResult sunk = solver.solve(req);

@@ -374,10 +374,15 @@ void drawIkReadout(EditorState& s) {
     ImGui::SetNextItemWidth(120.0f);
     if (ImGui::SliderFloat("body stiffness", &stiffness, 0.0f, 3.0f, "%.2f")) s.doc.setBodyStiffness(stiffness);
     s.recordControl("body stiffness");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves the "
-                          "dragged limb and the body only as much as the target needs, 0 lets the learned model move the "
-                          "whole body. Drags, their falloff and Regenerate use it.");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted("How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves "
+                               "the dragged limb, and the body only as much as the target needs; 0 lets the learned model "
+                               "move the whole body. Drags, their falloff and Regenerate use it.");
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -407,6 +412,12 @@ void drawIkReadout(EditorState& s) {
         ImGui::EndTable();
     }
     if (r.learned) ImGui::Text("sigma^2(x) %.4g   L_IK %.4g   %d it", r.sigma2, r.lik, r.iterations);
+    if (r.comShiftCm) {
+        ImGui::Text("centre of mass moved %.1f cm", *r.comShiftCm);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("How far the whole body's centre of mass moved sideways (over the ground) since the drag "
+                              "began, from de Leva's segment masses. A few cm on a standing frame can tip the character.");
+    }
     if (r.nearest.row >= 0) {
         ImGui::Checkbox("##nearestghost", &s.showNearestGhost);
         s.recordControl("nearest ghost");

@@ -5,6 +5,7 @@
 
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
+#include "skeleton/centre_of_mass.h"
 #include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
@@ -135,6 +136,7 @@ void DragSession::solveLearned(int maxIterations) {
     const NearestFrame nearest = nearestFrame(layout_->extract(pose_), capturedPoses_);
     readout_.nearestClip = nearest.clip >= 0 ? model_->model->clipName(nearest.clip) : model_->model->clip.name;
     readout_.nearest = {nearest.frame, nearest.rmsDeg};
+    readout_.comShiftCm = horizontalComShiftCm(*skeleton_, pose_, startPose_);
 }
 
 void DragSession::solvePlain() {
@@ -155,6 +157,7 @@ void DragSession::solvePlain() {
     readout_.sigma2 = readout_.lik = 0.0;
     readout_.iterations = job.iterations;
     readout_.diagnostic = "plain IK (no model): " + job.diagnostic;
+    readout_.comShiftCm = horizontalComShiftCm(*skeleton_, pose_, startPose_);
 }
 
 void DragSession::setCompare(CompareMode mode, gp::ModelVersionPtr compareModel, int frame) {

@@ -39,6 +39,9 @@ struct SolveReadout {
     // nearest to it, and how far (eval/nearest_pose.h; row -1 otherwise).
     std::string nearestClip;
     NearestPose nearest;
+    // Horizontal move of the whole-body centre of mass from the drag's start pose (cm;
+    // skeleton/centre_of_mass.h), or none for a skeleton without legs and trunk.
+    std::optional<double> comShiftCm;
 };
 
 class DragSession {

@@ -278,6 +278,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     lastDrag_.frame = frame_;
     lastDrag_.pose = rec.after.pose;
     lastDrag_.reached = r.valid ? r.reached : true;
+    lastDrag_.belowFloor = r.valid && anyBelowFloor(r.constraints);
     if (learnedPose && verdict.admitted) {
         AdaptiveSample s;
         s.x = drag_.x();
@@ -525,8 +526,8 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     double sigma2 = 0.0;
     v->posterior->predict(x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
-    const bool reached = !(lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose)) || lastDrag_.reached;
-    return gp::admitPose(v->range, reached, sigma2, lik);
+    const bool lastDragged = lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose);
+    return gp::admitPose(v->range, !lastDragged || lastDrag_.reached, sigma2, lik, lastDragged && lastDrag_.belowFloor);
 }
 
 }  // namespace mgp

@@ -271,11 +271,13 @@ private:
     DragSession drag_;
     std::optional<EditRecord> dragBefore_;  // the frame's edit when the drag began (none = captured)
     int dragVersionBefore_ = 0;             // the model version when the drag began
-    // Whether the last accepted drag reached its targets (constraints are not kept with an edit).
+    // Whether the last accepted drag reached its targets, and whether one was below the floor
+    // (constraints are not kept with an edit).
     struct {
         int frame = -1;
         Pose pose;
         bool reached = true;
+        bool belowFloor = false;
     } lastDrag_;
     std::optional<EditRecord> latentBefore_;
 

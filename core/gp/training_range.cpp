@@ -68,7 +68,7 @@ AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigm
     char buf[200];
     if (belowFloor) {
         v.admitted = false;
-        v.reason = "a target is below the floor (the effector was held on the floor)";
+        v.reason = "a target is below the floor: the effector was held on it";
     } else if (!v.reached) {
         v.reason = "a target or pin was not reached";
     } else if (!v.likInRange) {

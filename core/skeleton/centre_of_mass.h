@@ -1,0 +1,33 @@
+#pragma once
+// Whole-body centre of mass of a pose, from segment masses and centre-of-mass positions along each
+// segment: de Leva (1996), "Adjustments to Zatsiorsky–Seluyanov's segment inertia parameters",
+// J. Biomechanics 29(9), Table 4, male values. Each segment is one bone of the skeleton's ASF
+// roles (Joint::bone): its centre of mass lies at `ratio` of the way from the bone's start (the
+// joint) to its end (boneEndCm). The trunk's three parts (lower, middle, upper) are the lowerback,
+// upperback and thorax bones; the head and neck are the head bone. Segments the skeleton lacks are
+// left out and the rest renormalised; without both thighs and a trunk part there is no answer.
+#include <Eigen/Core>
+#include <optional>
+
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/skeleton.h"
+
+namespace mgp {
+
+struct BodySegment {
+    const char* bone;     // ASF role of the bone
+    double massFraction;  // of the whole body
+    double comRatio;      // centre of mass along the bone, from its start
+};
+
+// The table (de Leva 1996, male): fractions sum to 1.
+const BodySegment* bodySegments(int* count);
+
+// Centre of mass (world, cm) of the pose whose FK is `fk`, or none (see above).
+std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const FkState& fk);
+std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose& pose);
+
+// Horizontal (XZ) distance between the centres of mass of two poses (cm), or none.
+std::optional<double> horizontalComShiftCm(const Skeleton& skeleton, const Pose& a, const Pose& b);
+
+}  // namespace mgp
