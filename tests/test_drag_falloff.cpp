@@ -1,6 +1,7 @@
 // A handle drag with falloff (motion/drag_falloff.h): the dragged frame keeps the drag's pose bit
 // for bit, a smooth displacement over t−r..t+r, no frame-to-frame jump at the span's edges beyond
-// the capture's.
+// the capture's; a second drag's spread keeps what the first one put on the neighbouring frames,
+// and a pinned hand does not jump.
 #include <cmath>
 
 #include "eval/motion_quality.h"
@@ -172,4 +173,41 @@ TEST_CASE("editor: a hand drag's falloff keeps where an earlier foot drag put th
     // The hand drag is its own undo step: undoing it brings back the foot drag's motion exactly.
     REQUIRE(doc.undo().empty());
     for (int k = 0; k < 3; ++k) CHECK((footAt(t - 1 + k) - footBefore[k]).norm() == 0.0);
+}
+
+TEST_CASE("editor: a hand pinned after a head drag does not jump during a drag of the other hand") {
+    // The user's sequence on the walk: drag the head on frame 101, pin the left hand, drag the right
+    // hand. Both drags spread over ±20 frames. The pinned hand is held where the motion has it on
+    // every frame of the second spread, so its path has no one-frame jump at the dragged frame:
+    // its second difference there stays within the capture's + 0.5 cm.
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const Skeleton& sk = clip.skeleton;
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+    const int t = 100;
+    auto handAt = [&](int s) {
+        doc.setFrame(s);
+        return effectorCm(sk, doc.currentPose(), Effector::kLHand);
+    };
+    doc.setFrame(t);
+    REQUIRE(doc.beginDrag(Effector::kHead).empty());
+    doc.dragTo(effectorCm(sk, clip.frames[t], Effector::kHead) + Eigen::Vector3d(5, -8, 0), 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    doc.pollRegenerate();
+    doc.setFrame(t);
+    doc.setPinned(Effector::kLHand, true);
+    REQUIRE(doc.beginDrag(Effector::kRHand).empty());
+    doc.dragTo(effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5), 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    CHECK(doc.pollRegenerate().rfind("drag spread over frames", 0) == 0);
+    const double edited = (handAt(t - 1) - 2.0 * handAt(t) + handAt(t + 1)).norm();
+    const double captured = (effectorCm(sk, clip.frames[t - 1], Effector::kLHand) - 2.0 * effectorCm(sk, clip.frames[t], Effector::kLHand) +
+                             effectorCm(sk, clip.frames[t + 1], Effector::kLHand)).norm();
+    MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
+    CHECK(edited <= captured + 0.5);
 }
