@@ -35,6 +35,7 @@ nlohmann::json runOne(const gp::ModelVersionPtr& version, const EditCase& c, con
     job.keyFrames = {k, k + 14, k + 28, k + 42};
     job.keyOffsetsCm = {Eigen::Vector3d::Zero(), offset, offset, Eigen::Vector3d::Zero()};
     job.solver = span ? EditSolver::kSpan : EditSolver::kPerFrame;
+    job.mode = PathMode::kDirect;  // the paper's Hermite path: the rows' bars were set on it
     job.holdContacts = span;  // BEFORE: exactly today's per-frame regeneration
     job.threads = 1;          // one core each, comparable timings
     std::vector<double> seconds;

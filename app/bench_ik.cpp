@@ -280,6 +280,7 @@ const BenchRegistration ikBench("ik", "Learned IK drags on two clips, adaptive u
             job.keyFrames = {88, 102, 116, 130};
             job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d::Zero()};
             job.maxIterations = cap;
+            job.mode = PathMode::kDirect;
             job.solver = EditSolver::kPerFrame;  // the per-frame IK cost; `bench --only edit` times the span solver
             regen.push_back(secondsOf([&] { job.run(); }));
             residual = job.maxResidualCm;

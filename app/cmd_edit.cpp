@@ -22,7 +22,7 @@ namespace mgp::app {
 namespace {
 
 struct EditOptions {
-    std::string model, effector, keys, offset, mode = "direct", solver = "span", out, outModel, clip;
+    std::string model, effector, keys, offset, mode = "displacement", solver = "span", out, outModel, clip;
     std::vector<std::string> pins;
     bool adaptive = false, json = false, noContacts = false;
     int iterations = 500;
@@ -107,7 +107,9 @@ const CommandRegistration editCommand("edit", "Edit an effector path (Hermite ke
     sub.add_option("--clip", o->clip, "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
     sub.add_option("--keys", o->keys, "Key frames of that clip counted from 1, e.g. 89,103,117,131")->required();
     sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
-    sub.add_option("--mode", o->mode, "direct (the paper's Hermite) or displacement");
+    sub.add_option("--mode", o->mode,
+                   "displacement (default: the captured path plus a smooth offset through the keys) or direct (the paper's "
+                   "Hermite path through the moved keys)");
     sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
     sub.add_option("--pin", o->pins, "Hold this effector at its captured position on every frame of the span (repeatable)");
     sub.add_option("--locality", o->locality,

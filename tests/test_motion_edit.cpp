@@ -1,4 +1,8 @@
-// Motion regeneration (§10): keys met, untouched frames bit-identical, deterministic over threads.
+// Motion regeneration (§10): keys met, untouched frames bit-identical, deterministic over threads,
+// no change from an edit that moves no key.
+#include <algorithm>
+
+#include "eval/motion_quality.h"
 #include "motion/motion_edit.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -55,6 +59,29 @@ TEST_CASE("regeneration gives identical bits with 1 and 2 threads, displacement 
             CHECK(a.frames[a.solvedFrames[i]].anglesDeg[j] == b.frames[b.solvedFrames[i]].anglesDeg[j]);
     // Displacement mode: zero offset at the end keys means the path starts on the captured motion.
     CHECK((a.pathCm.front() - a.capturedTrajectory()[89]).norm() < 2.0);
+}
+
+TEST_CASE("no edit, no change: a path with every key at its captured position regenerates the capture in either mode") {
+    // The default mode is displacement; direct (the paper's) takes the captured path itself when no
+    // key moved: its Hermite curve through the unmoved keys is not the captured path between them
+    // (on the kick fixture it changed a joint by 33°).
+    CHECK(MotionEditJob{}.mode == PathMode::kDisplacement);
+    for (const gp::ModelVersionPtr& version : {test::walkModel35(), test::kickModel1003()}) {
+        for (PathMode mode : {PathMode::kDisplacement, PathMode::kDirect}) {
+            MotionEditJob job;
+            job.version = version;
+            job.effector = Effector::kRHand;
+            job.keyFrames = {40, 54, 68, 82};
+            job.keyOffsetsCm.assign(4, Eigen::Vector3d::Zero());
+            job.mode = mode;
+            job.run();
+            const Clip& clip = version->model->clip;
+            double worst = 0.0;
+            for (int t : job.solvedFrames) worst = std::max(worst, largestAngleChangeDeg(job.frames[t], clip.frames[t], clip.skeleton));
+            MESSAGE(clip.name << std::string(mode == PathMode::kDirect ? " direct" : " displacement") << ": largest change " << worst << "°");
+            CHECK(worst <= 0.1);
+        }
+    }
 }
 
 TEST_CASE("bad edit jobs say what is wrong") {

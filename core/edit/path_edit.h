@@ -12,7 +12,7 @@ struct PathEdit {
     Effector effector = Effector::kRFoot;
     std::vector<int> keyFrames;                // 0-based, strictly increasing, ≥ 2
     std::vector<Eigen::Vector3d> keyOffsetsCm;  // one per key (cm, from the captured position)
-    PathMode mode = PathMode::kDirect;
+    PathMode mode = PathMode::kDisplacement;
 };
 
 // The paper's pattern: four keys 14 frames apart centred on `frame` (frame 110 → 89, 103, 117,

@@ -75,7 +75,7 @@ struct SessionPathEdit {
     Effector effector = Effector::kRFoot;
     std::vector<int> keyFrames;  // 0-based clip frames
     std::vector<Eigen::Vector3d> keyOffsetsCm;
-    PathMode mode = PathMode::kDirect;
+    PathMode mode = PathMode::kDisplacement;
 };
 
 struct SessionData {

@@ -21,6 +21,7 @@ nlohmann::json SpanRangeJob::run() const {
         job.effector = effector;
         job.keyFrames = {f - 21, f, f + 21};
         job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, direction * delta, 0), Eigen::Vector3d::Zero()};
+        job.mode = PathMode::kDirect;  // the paper's Hermite path, as the protocol was measured
         job.run();
         const SpanQuality& q = job.quality;
         const Eigen::VectorXd poseDeg = layout.extract(job.frames[f]);
