@@ -71,6 +71,17 @@ int runEdit(const EditOptions& o) {
         else comShift = std::max(comShift, *s);
     }
     j["max_com_shift_cm"] = comKnown ? nlohmann::json(comShift) : nlohmann::json(nullptr);
+    // Whether every moved key was met, and by how much each missed (one warning line if not).
+    j["reached"] = job.keysReached();
+    j["keys"] = nlohmann::json::array();
+    for (const MotionEditJob::KeyResult& k : job.keys)
+        j["keys"].push_back({{"frame", k.frame + 1}, {"reached", k.reached}, {"error_cm", k.errorCm}});
+    for (const MotionEditJob::KeyResult& k : job.keys)
+        if (!k.reached) {
+            std::cerr << "motiongp: warning: the key on frame " << k.frame + 1 << " was missed by " << k.errorCm
+                      << " cm (out of reach with what is held?)\n";
+            break;
+        }
     if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
     if (o.adaptive) {
         // The solved poses of the moved keys join the model's samples (not the in-betweens).

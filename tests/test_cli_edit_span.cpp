@@ -1,5 +1,5 @@
 // `motiongp edit` with the span solver (default) and the paper's per-frame solver: the --json span
-// report, and one clear error line for bad --solver / --pin values.
+// report, missed keys, and one clear error line for bad --solver / --pin values.
 #include <nlohmann/json.hpp>
 
 #include "gp/model_file.h"
@@ -26,6 +26,12 @@ TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on 
     CHECK(q["contacts"][0]["foot"] == "rfoot");
     CHECK(std::abs(q["contacts"][0]["travel_cm"].get<double>() - q["contacts"][0]["captured_travel_cm"].get<double>()) <= 1.0);
     CHECK(j["max_held_residual_cm"].get<double>() < 0.1);
+    CHECK(j["reached"] == true);
+    REQUIRE(j["keys"].size() == 2);  // the two moved keys
+    CHECK(j["keys"][0]["frame"] == 103);
+    CHECK(j["keys"][1]["frame"] == 117);
+    for (const json& k : j["keys"]) CHECK(k["error_cm"].get<double>() < 0.5);
+    CHECK(r.err.find("warning") == std::string::npos);
 
     r = test::runCli(base + " --solver per-frame --no-contacts");
     REQUIRE(r.exitCode == 0);
@@ -33,6 +39,22 @@ TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on 
     CHECK(j["solver"] == "per-frame");
     CHECK(j["quality"]["contacts"].empty());  // nothing held
     CHECK_FALSE(j.contains("span"));
+}
+
+TEST_CASE("motiongp edit: a key out of reach is reported missed, in the JSON and in one warning line") {
+    // A right-hand key 150 cm above where the hand is: no arm reaches it with the feet held.
+    const std::string dir = test::scratchDir("cli_edit_missed");
+    const auto r = test::runCli("edit '" + test::walkModelPath() + "' --effector rhand --keys 89,103,117 --offset 0,150,0 --out '" + dir +
+                                "/e.bvh' --json");
+    REQUIRE(r.exitCode == 0);
+    const json j = json::parse(r.out);
+    CHECK(j["reached"] == false);
+    REQUIRE(j["keys"].size() == 1);
+    CHECK(j["keys"][0]["frame"] == 103);
+    CHECK(j["keys"][0]["reached"] == false);
+    MESSAGE("the key was missed by " << j["keys"][0]["error_cm"].get<double>() << " cm");
+    CHECK(j["keys"][0]["error_cm"].get<double>() > 20.0);
+    CHECK(r.err.find("motiongp: warning: the key on frame 103 was missed by ") == 0);
 }
 
 TEST_CASE("motiongp edit: bad --solver and --pin values are one error line") {

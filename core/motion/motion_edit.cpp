@@ -88,6 +88,10 @@ std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& 
     return out;
 }
 
+bool MotionEditJob::keysReached() const {
+    return std::all_of(keys.begin(), keys.end(), [](const KeyResult& k) { return k.reached; });
+}
+
 const char* editSolverName(EditSolver s) { return s == EditSolver::kSpan ? "span" : "per-frame"; }
 
 void MotionEditJob::run() {
@@ -153,6 +157,12 @@ void MotionEditJob::run() {
         maxResidualCm = std::max(maxResidualCm, results[i].constraints[0].residualCm);
         for (std::size_t k = 1; k < results[i].constraints.size(); ++k)
             maxHeldResidualCm = std::max(maxHeldResidualCm, results[i].constraints[k].residualCm);
+    }
+    keys.clear();
+    for (std::size_t k = 1; k + 1 < keyFrames.size(); ++k) {
+        const int t = keyFrames[k];
+        const double error = (effectorCm(clip.skeleton, frames[t], effector) - target[t - first]).norm();
+        keys.push_back({t, error, error <= kReachedToleranceCm});
     }
     std::vector<Eigen::Vector3d> path(target.begin(), target.end());
     quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, held);

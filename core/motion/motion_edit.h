@@ -86,6 +86,15 @@ struct MotionEditJob {
     std::vector<int> solvedFrames;               // frames that were re-solved
     std::vector<LearnedIkResult> results;        // one per solved frame
     std::vector<Eigen::Vector3d> pathCm;         // the target path at each solved frame
+    // Each inner key (not the two end keys, which keep their frames): where the effector ended
+    // against the path there, met within kReachedToleranceCm or not.
+    struct KeyResult {
+        int frame = 0;
+        double errorCm = 0.0;
+        bool reached = false;
+    };
+    std::vector<KeyResult> keys;
+    bool keysReached() const;
     double maxResidualCm = 0.0;                  // worst path target residual
     double maxHeldResidualCm = 0.0;              // worst contact / pin residual
     SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
