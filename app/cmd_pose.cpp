@@ -200,8 +200,8 @@ int runPose(const PoseOptions& o) {
         std::cout << (reached ? "reached" : "NOT reached") << " (" << j["diagnostic"].get<std::string>() << ")\n";
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
-                      << r.residualCm << " cm" << (r.belowFloor ? "  (below the floor: held on it)" : r.reached ? "" : "  (not reached)")
-                      << "\n";
+                      << r.residualCm << " cm"
+                      << (r.belowFloor ? "  (below the floor: held on it)" : r.reached ? "" : "  (not reached)") << "\n";
         std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " ("
                   << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
         if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";

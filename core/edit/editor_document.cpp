@@ -272,7 +272,8 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
     const gp::AdmissionVerdict verdict =
-        learnedPose ? gp::admitPose(solvedOn->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints)) : gp::AdmissionVerdict{};
+        learnedPose ? gp::admitPose(solvedOn->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints))
+                    : gp::AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
         models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
     lastDrag_.frame = frame_;

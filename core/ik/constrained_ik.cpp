@@ -508,7 +508,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
         if (belowFloor(c)) c.targetCm.y() = *request.floorCm;
     solveOnFloor(raised, result);
     scoreConstraints(request, result);
-    for (std::size_t i = 0; i < request.constraints.size(); ++i) result.constraints[i].belowFloor = belowFloor(request.constraints[i]);
+    for (std::size_t i = 0; i < request.constraints.size(); ++i)
+        result.constraints[i].belowFloor = belowFloor(request.constraints[i]);
 }
 
 void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, ConstrainedIkResult& result) {

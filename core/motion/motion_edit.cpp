@@ -69,7 +69,8 @@ std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& 
                                             const std::vector<int>& keyFrames,
                                             const std::vector<Eigen::Vector3d>& keyOffsetsCm, PathMode mode) {
     const int first = keyFrames.front(), last = keyFrames.back();
-    const bool unmoved = std::all_of(keyOffsetsCm.begin(), keyOffsetsCm.end(), [](const Eigen::Vector3d& o) { return o.isZero(0.0); });
+    const bool unmoved = std::all_of(keyOffsetsCm.begin(), keyOffsetsCm.end(),
+                                     [](const Eigen::Vector3d& o) { return o.isZero(0.0); });
     if (unmoved) return {captured.begin() + first, captured.begin() + last + 1};  // no edit: the captured path
     std::vector<HermiteKey> keys;
     for (std::size_t i = 0; i < keyFrames.size(); ++i) {

@@ -55,8 +55,10 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
         if (t < 0 || t >= clip.frameCount()) continue;
         yCap_[t - first + 1] = m.keptPose(layout_.extract(base ? base->frames[t] : clip.frames[t]));
         // Only inner frames need x̂ (outer frames have v = 0 by definition).
-        if (t > first && t < last)
-            xCap_[t - first + 1] = base && !base->x.empty() && base->x[t].size() == d_ ? base->x[t] : latentStartForFrame(*version_, t);
+        if (t > first && t < last) {
+            const bool known = base && !base->x.empty() && base->x[t].size() == d_;
+            xCap_[t - first + 1] = known ? base->x[t] : latentStartForFrame(*version_, t);
+        }
     }
     resid_.assign(n_, Eigen::VectorXd::Zero(D_));
     z0_.resize(variableCount());
