@@ -79,7 +79,7 @@ int runEdit(const EditOptions& o) {
     for (const MotionEditJob::KeyResult& k : job.keys)
         if (!k.reached) {
             std::cerr << "motiongp: warning: the key on frame " << k.frame + 1 << " was missed by " << k.errorCm
-                      << " cm (out of reach with what is held?)\n";
+                      << " cm (out of reach with what is held, or below the floor)\n";
             break;
         }
     if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};

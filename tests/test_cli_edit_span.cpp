@@ -1,8 +1,11 @@
 // `motiongp edit` with the span solver (default) and the paper's per-frame solver: the --json span
-// report, missed keys, and one clear error line for bad --solver / --pin values.
+// report, missed keys, the floor, and one clear error line for bad --solver / --pin values.
 #include <nlohmann/json.hpp>
 
 #include "gp/model_file.h"
+#include "io/clip_loader.h"
+#include "motion/foot_contacts.h"
+#include "skeleton/forward_kinematics.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -56,6 +59,26 @@ TEST_CASE("motiongp edit: a key out of reach is reported missed, in the JSON and
     MESSAGE("the key was missed by " << j["keys"][0]["error_cm"].get<double>() << " cm");
     CHECK(j["keys"][0]["error_cm"].get<double>() > 20.0);
     CHECK(r.err.find("motiongp: warning: the key on frame 103 was missed by ") == 0);
+}
+
+TEST_CASE("motiongp edit: a foot path pushed below the floor stays on it, and its keys are reported missed") {
+    const std::string dir = test::scratchDir("cli_edit_floor");
+    const std::string out = dir + "/e.bvh";
+    const auto r = test::runCli("edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,-30,0 --out '" +
+                                out + "' --json");
+    REQUIRE(r.exitCode == 0);
+    const json j = json::parse(r.out);
+    CHECK(j["reached"] == false);
+    REQUIRE(j["keys"].size() == 2);
+    for (const json& k : j["keys"]) CHECK(k["reached"] == false);
+    CHECK(r.err.find("below the floor") != std::string::npos);
+    const gp::ModelVersionPtr version = test::walkModel35();
+    const double floor = *detectFootContacts(version->model->clip).floorCm;
+    const Clip written = loadClip(out);
+    double lowest = 1e9;
+    for (int t = 88; t <= 130; ++t) lowest = std::min(lowest, effectorCm(written.skeleton, written.frames[t], Effector::kLFoot).y());
+    MESSAGE("the left foot's lowest point over the span: " << lowest - floor << " cm from the floor");
+    CHECK(lowest >= floor - 0.5);
 }
 
 TEST_CASE("motiongp edit: bad --solver and --pin values are one error line") {

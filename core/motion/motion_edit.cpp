@@ -104,18 +104,23 @@ void MotionEditJob::run() {
     const std::vector<Pose>& start = baseFrames();
     frames = start;
     cancelled = false;
+    // The floor (ContactSet::floorCm): a hand or foot is never asked below it. The keys still report
+    // their distance from the path that was asked, so a key below the floor is reported missed.
+    const ContactSet contactSet = contacts ? *contacts : detectFootContacts(clip);
+    const bool floored = contactSet.floorCm && effector != Effector::kHead;
     solvedFrames.clear();
     pathCm.clear();
     for (int t = first + 1; t < last; ++t) {
         solvedFrames.push_back(t);
-        pathCm.push_back(target[t - first]);
+        Eigen::Vector3d p = target[t - first];
+        if (floored) p.y() = std::max(p.y(), *contactSet.floorCm);
+        pathCm.push_back(p);
     }
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
     held.clear();
     if (holdContacts) {
-        const ContactSet set = contacts ? *contacts : detectFootContacts(clip);
-        for (const FootContact& c : set.contacts)
+        for (const FootContact& c : contactSet.contacts)
             if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
     }
     for (const ContactInterval& c : heldContacts)

@@ -1,7 +1,9 @@
 #pragma once
 // Motion regeneration along an edited effector path (docs/maths.md §12).
 //
-// Keys are clip frames t_0 < … < t_n (0-based) with an offset (cm) each; the paper's example is
+// A hand or foot path is held on or above the clip's floor (ContactSet::floorCm); `keys` report
+// the distance from the path as asked. Keys are clip frames t_0 < … < t_n (0-based) with an offset
+// (cm) each; the paper's example is
 // 89, 103, 117, 131 with the two middle keys moved. Displacement mode (the default): d(t) through
 // the offsets (0 and tangent 0 at the ends, Catmull–Rom inside), target p_e(t) + d(t), which keeps
 // the captured detail. Direct mode (the paper's): a cubic Hermite path through
