@@ -4,6 +4,7 @@
 // and a pinned hand does not jump.
 #include <cmath>
 
+#include "edit/editor_document.h"
 #include "eval/motion_quality.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
@@ -23,6 +24,23 @@ double jumpDeg(const std::vector<Pose>& f, const Skeleton& sk, int s) { return l
 ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector effector, const Eigen::Vector3d& target) {
     ConstrainedIkSolver solver(version);
     return solver.solve(capturedPoseRequest(*version, t, {{effector, target, false}}, detectFootContacts(version->model->clip), 200));
+}
+
+// A document on `version` whose drags spread over ±20 frames, the adaptive update off.
+void openWithFalloff(EditorDocument& doc, const gp::ModelVersionPtr& version) {
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+}
+
+// A drag of `effector` on the current frame to `target`, released, and its spread waited for;
+// returns the spread's summary.
+std::string dragAndSpread(EditorDocument& doc, Effector effector, const Eigen::Vector3d& target) {
+    REQUIRE(doc.beginDrag(effector).empty());
+    doc.dragTo(target, 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    return doc.pollRegenerate();
 }
 }  // namespace
 
@@ -93,7 +111,6 @@ TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     CHECK(j.keyFrames == std::vector<int>{0, 5, 35});
 }
 
-#include "edit/editor_document.h"
 
 TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is one undo step") {
     EditorDocument doc;
@@ -143,16 +160,10 @@ TEST_CASE("editor: a hand drag's falloff keeps where an earlier foot drag put th
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     const Skeleton& sk = clip.skeleton;
-    doc.setModel(version, true);
-    doc.setAdaptiveEnabled(false);
-    doc.setDragFalloff(20);
+    openWithFalloff(doc, version);
     const int t = 140;
     doc.setFrame(t);
-    REQUIRE(doc.beginDrag(Effector::kRFoot).empty());
-    doc.dragTo(effectorCm(sk, clip.frames[t], Effector::kRFoot) + Eigen::Vector3d(0, 15, 0), 200);
-    REQUIRE(doc.endDrag());
-    doc.waitIdle();
-    doc.pollRegenerate();
+    dragAndSpread(doc, Effector::kRFoot, effectorCm(sk, clip.frames[t], Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
     auto footAt = [&](int s) {
         doc.setFrame(s);
         return effectorCm(sk, doc.currentPose(), Effector::kRFoot);
@@ -160,11 +171,9 @@ TEST_CASE("editor: a hand drag's falloff keeps where an earlier foot drag put th
     const Eigen::Vector3d footBefore[3] = {footAt(t - 1), footAt(t), footAt(t + 1)};
     CHECK(footBefore[1].y() - effectorCm(sk, clip.frames[t], Effector::kRFoot).y() > 14.0);
     doc.setFrame(t);
-    REQUIRE(doc.beginDrag(Effector::kRHand).empty());
-    doc.dragTo(effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 10, 5), 200);
-    REQUIRE(doc.endDrag());
-    doc.waitIdle();
-    CHECK(doc.pollRegenerate().rfind("drag spread over frames", 0) == 0);
+    const std::string spread =
+        dragAndSpread(doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
+    CHECK(spread.rfind("drag spread over frames", 0) == 0);
     for (int k = 0; k < 3; ++k) {
         const double moved = (footAt(t - 1 + k) - footBefore[k]).norm();
         MESSAGE("frame " << t - 1 + k << ": the foot moved " << moved << " cm during the hand drag");
@@ -184,27 +193,19 @@ TEST_CASE("editor: a hand pinned after a head drag does not jump during a drag o
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     const Skeleton& sk = clip.skeleton;
-    doc.setModel(version, true);
-    doc.setAdaptiveEnabled(false);
-    doc.setDragFalloff(20);
+    openWithFalloff(doc, version);
     const int t = 100;
     auto handAt = [&](int s) {
         doc.setFrame(s);
         return effectorCm(sk, doc.currentPose(), Effector::kLHand);
     };
     doc.setFrame(t);
-    REQUIRE(doc.beginDrag(Effector::kHead).empty());
-    doc.dragTo(effectorCm(sk, clip.frames[t], Effector::kHead) + Eigen::Vector3d(5, -8, 0), 200);
-    REQUIRE(doc.endDrag());
-    doc.waitIdle();
-    doc.pollRegenerate();
+    dragAndSpread(doc, Effector::kHead, effectorCm(sk, clip.frames[t], Effector::kHead) + Eigen::Vector3d(5, -8, 0));
     doc.setFrame(t);
     doc.setPinned(Effector::kLHand, true);
-    REQUIRE(doc.beginDrag(Effector::kRHand).empty());
-    doc.dragTo(effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5), 200);
-    REQUIRE(doc.endDrag());
-    doc.waitIdle();
-    CHECK(doc.pollRegenerate().rfind("drag spread over frames", 0) == 0);
+    const std::string spread =
+        dragAndSpread(doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5));
+    CHECK(spread.rfind("drag spread over frames", 0) == 0);
     const double edited = (handAt(t - 1) - 2.0 * handAt(t) + handAt(t + 1)).norm();
     const double captured = (effectorCm(sk, clip.frames[t - 1], Effector::kLHand) - 2.0 * effectorCm(sk, clip.frames[t], Effector::kLHand) +
                              effectorCm(sk, clip.frames[t + 1], Effector::kLHand)).norm();

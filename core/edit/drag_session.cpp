@@ -34,6 +34,7 @@ void DragSession::begin(const Skeleton& skeleton, Effector e, const Pose& start,
     latent_ = false;
     effector_ = e;
     startPose_ = start;
+    startCom_ = centreOfMass(skeleton, start);
     pose_ = start;
     targetCm_ = effectorCm(skeleton, start, e);
     refineBudget_ = 0;
@@ -136,7 +137,13 @@ void DragSession::solveLearned(int maxIterations) {
     const NearestFrame nearest = nearestFrame(layout_->extract(pose_), capturedPoses_);
     readout_.nearestClip = nearest.clip >= 0 ? model_->model->clipName(nearest.clip) : model_->model->clip.name;
     readout_.nearest = {nearest.frame, nearest.rmsDeg};
-    readout_.comShiftCm = horizontalComShiftCm(*skeleton_, pose_, startPose_);
+    readout_.comShiftCm = comShiftFromStart();
+}
+
+std::optional<double> DragSession::comShiftFromStart() const {
+    const std::optional<Eigen::Vector3d> com = centreOfMass(*skeleton_, pose_);
+    if (!com || !startCom_) return std::nullopt;
+    return horizontalDistanceCm(*com, *startCom_);
 }
 
 void DragSession::solvePlain() {
@@ -157,7 +164,7 @@ void DragSession::solvePlain() {
     readout_.sigma2 = readout_.lik = 0.0;
     readout_.iterations = job.iterations;
     readout_.diagnostic = "plain IK (no model): " + job.diagnostic;
-    readout_.comShiftCm = horizontalComShiftCm(*skeleton_, pose_, startPose_);
+    readout_.comShiftCm = comShiftFromStart();
 }
 
 void DragSession::setCompare(CompareMode mode, gp::ModelVersionPtr compareModel, int frame) {

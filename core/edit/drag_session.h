@@ -112,6 +112,8 @@ private:
     void solveLearned(int maxIterations);
     void solvePlain();
     void solveCompare();
+    // The readout's centre-of-mass move, against the start's (computed once per drag).
+    std::optional<double> comShiftFromStart() const;
 
     const Skeleton* skeleton_ = nullptr;
     std::optional<PoseLayout> layout_;  // of *skeleton_, bound once per drag, not once per event
@@ -120,6 +122,7 @@ private:
     Effector effector_ = Effector::kRFoot;
     Eigen::Vector3d targetCm_ = Eigen::Vector3d::Zero();
     Pose startPose_, pose_;
+    std::optional<Eigen::Vector3d> startCom_;  // whole-body centre of mass of startPose_
     Eigen::VectorXd x_;
     int refineBudget_ = 0;
     std::optional<double> floorCm_;

@@ -103,16 +103,20 @@ ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
     return set;
 }
 
-std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effector) {
+std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames, Effector effector) {
     std::vector<Eigen::Vector3d> out;
-    if (!clip.skeleton.hasEffector(effector)) return out;
-    out.reserve(clip.frames.size());
+    if (!skeleton.hasEffector(effector)) return out;
+    out.reserve(frames.size());
     FkState fk;
-    for (const Pose& pose : clip.frames) {
-        forwardKinematics(clip.skeleton, pose, fk);
-        out.push_back(effectorCm(clip.skeleton, fk, effector));
+    for (const Pose& pose : frames) {
+        forwardKinematics(skeleton, pose, fk);
+        out.push_back(effectorCm(skeleton, fk, effector));
     }
     return out;
+}
+
+std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effector) {
+    return effectorTrajectory(clip.skeleton, clip.frames, effector);
 }
 
 ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule) {

@@ -66,8 +66,10 @@ ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
 // The rule on a clip's own feet (FK of every frame).
 ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule = {});
 
-// One effector's world position at every frame of the clip (cm).
+// One effector's world position at every frame of the clip, or of `frames` (cm; empty when the
+// skeleton has no such effector).
 std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effector);
+std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames, Effector effector);
 
 // The feet a pose solve holds by default on `frame`: each foot in ground contact there
 // (`contacts`), not released and not already in `constraints`, as a pin where it stands (`fk` of

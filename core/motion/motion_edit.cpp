@@ -57,12 +57,7 @@ std::string MotionEditJob::validate() const {
 const std::vector<Pose>& MotionEditJob::baseFrames() const { return base ? base->frames : version->model->clip.frames; }
 
 std::vector<Eigen::Vector3d> MotionEditJob::capturedTrajectory() const {
-    if (!base) return effectorTrajectory(version->model->clip, effector);
-    const Skeleton& sk = version->model->clip.skeleton;
-    std::vector<Eigen::Vector3d> out;
-    out.reserve(base->frames.size());
-    for (const Pose& p : base->frames) out.push_back(effectorCm(sk, p, effector));
-    return out;
+    return effectorTrajectory(version->model->clip.skeleton, baseFrames(), effector);
 }
 
 std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& captured,

@@ -57,10 +57,14 @@ std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose
     return centreOfMass(skeleton, fk);
 }
 
+double horizontalDistanceCm(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return Eigen::Vector2d(a.x() - b.x(), a.z() - b.z()).norm();
+}
+
 std::optional<double> horizontalComShiftCm(const Skeleton& skeleton, const Pose& a, const Pose& b) {
     const std::optional<Eigen::Vector3d> ca = centreOfMass(skeleton, a), cb = centreOfMass(skeleton, b);
     if (!ca || !cb) return std::nullopt;
-    return Eigen::Vector2d(ca->x() - cb->x(), ca->z() - cb->z()).norm();
+    return horizontalDistanceCm(*ca, *cb);
 }
 
 }  // namespace mgp

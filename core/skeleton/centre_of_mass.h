@@ -27,7 +27,9 @@ const BodySegment* bodySegments(int* count);
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const FkState& fk);
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose& pose);
 
-// Horizontal (XZ) distance between the centres of mass of two poses (cm), or none.
+// Horizontal (XZ) distance between two points (cm), and between the centres of mass of two
+// poses, or none.
+double horizontalDistanceCm(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 std::optional<double> horizontalComShiftCm(const Skeleton& skeleton, const Pose& a, const Pose& b);
 
 }  // namespace mgp
