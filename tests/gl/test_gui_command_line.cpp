@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -24,7 +25,9 @@ namespace {
 
 const std::string kBinary = MOTIONGP_TEST_BINARY;
 using mgp::test::kMocap;
-const std::string kOut = std::string(MOTIONGP_GL_OUT_DIR) + "/command_line";
+// One folder per process: ctest runs these test cases in parallel, and each run() captures into
+// kOut's stdout.txt and stderr.txt.
+const std::string kOut = std::string(MOTIONGP_GL_OUT_DIR) + "/command_line/" + std::to_string(::getpid());
 
 struct Run {
     int code = -1;
