@@ -232,7 +232,7 @@ const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model'
     sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
     sub.add_option("--locality", o->locality,
                    "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
-                   "(0 = off, the default for now)");
+                   "(0 = off; default " + std::to_string(static_cast<int>(kDefaultLocality)) + ")");
     sub.add_flag("--adaptive", o->adaptive,
                  "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and L_IK is within the "
                  "99th percentile (σ²: twice it) of the captured frames scored as new poses");

@@ -71,7 +71,7 @@ const CommandRegistration trainCommand(
             double priorWeight = 0.0;
             CLI::Option* priorWeightOption = nullptr;  // unset: gp::defaultPriorWeight(T)
             int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
-            double tol = 0.01;
+            double tol = 0.01, timeBudget = 0.0;
             bool json = false, backConstraints = false;
         };
         auto o = std::make_shared<Opts>();
@@ -95,9 +95,13 @@ const CommandRegistration trainCommand(
         sub.add_option("--frames", o->frames, "Keep frames A..B (from 1, inclusive) of each clip, e.g. 1:180");
         sub.add_option("--step", o->step, "Then keep every K-th frame of each clip (default 1)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 (default: all cores; results do not depend on it)");
+        sub.add_option("--time-budget", o->timeBudget,
+                       "Write the model as it stands once S seconds from the command's start would pass before "
+                       "another outer iteration ends (default: no budget; at least one iteration runs)");
         sub.add_option("--out", o->out, "Model file to write")->required();
         sub.add_flag("--json", o->json, "Print one JSON object");
         return [o]() {
+            const auto commandStart = std::chrono::steady_clock::now();  // the budget counts loading too
             gp::KernelKind kind;
             if (!gp::parseKernelKind(o->model, kind))
                 throw UsageError("expected --model fas or sgplvm, found '" + o->model + "'");
@@ -113,6 +117,8 @@ const CommandRegistration trainCommand(
             if (weightGiven && (!(o->priorWeight >= 0.0) || !std::isfinite(o->priorWeight)))
                 throw UsageError("expected --prior-weight ≥ 0, found " + std::to_string(o->priorWeight));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
+            if (!(o->timeBudget >= 0.0) || !std::isfinite(o->timeBudget))
+                throw UsageError("expected --time-budget ≥ 0 seconds, found " + std::to_string(o->timeBudget));
 
             // Every clip is loaded and checked before training starts (gp::prepareTrainingClips, the
             // editor's Train on clips… takes the same path). One range for all clips: each clip's own
@@ -163,9 +169,14 @@ const CommandRegistration trainCommand(
                       << (o->backConstraints ? ", back-constrained" : "") << "\n";
             gCancel.store(false);
             auto previous = std::signal(SIGINT, onSigint);
-            gp::TrainResult res = gp::train(data, opt, [&](const gp::IterationLog& e) {
-                printBar(e.iter, o->iters, e.L, elapsed(), tty);
-            }, &gCancel);
+            gp::TrainControl control;
+            control.afterIteration = [&](const gp::Trainer& t) { printBar(t.log().back().iter, o->iters, t.log().back().L, elapsed(), tty); };
+            control.cancel = &gCancel;
+            if (o->timeBudget > 0.0) {
+                const double spent = std::chrono::duration<double>(t0 - commandStart).count();
+                control.timeBudgetSeconds = std::max(1e-9, o->timeBudget - spent);
+            }
+            gp::TrainResult res = gp::train(data, opt, control);
             std::signal(SIGINT, previous);
             if (tty) std::cerr << "\n";
             if (res.cancelled) {
@@ -196,6 +207,7 @@ const CommandRegistration trainCommand(
             j["M"] = static_cast<int>(model.active.size());
             j["iterations"] = model.iterations;
             j["converged"] = res.converged;
+            j["stopped"] = res.converged ? "converged" : res.outOfTime ? "time budget" : "iterations";
             j["L_init"] = res.lInit;
             j["params"] = {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
                            {"eta", k.hasEta() ? nlohmann::json(k.eta()) : nlohmann::json(nullptr)}};
@@ -213,7 +225,7 @@ const CommandRegistration trainCommand(
             } else {
                 std::cout << "trained " << gp::kernelKindName(kind) << " on " << clipList << ": N = " << model.N()
                           << ", D = " << model.D() << ", M = " << model.active.size() << ", " << model.iterations
-                          << " iterations (" << (res.converged ? "converged" : "not converged") << "), L_GP "
+                          << " iterations (" << (res.converged ? "converged" : res.outOfTime ? "time budget" : "not converged") << "), L_GP "
                           << res.lInit << " -> " << (res.log.empty() ? res.lInit : res.log.back().L) << ", alpha "
                           << k.alpha() << " beta " << k.beta() << " gamma " << k.gamma();
                 if (k.hasEta()) std::cout << " eta " << k.eta();

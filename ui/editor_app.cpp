@@ -128,23 +128,46 @@ void EditorApp::pollJobs() {
     const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
     if (!regenerated.empty()) state_.setStatus(regenerated);
     else if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
-    if (gp::ModelVersionPtr v = state_.training.take()) {
-        const bool same = state_.doc.hasClip() && sameCapture(state_.doc.clip(), v->model->clip);
-        state_.doc.setModel(v, !same);
-        state_.modelLabel = std::string("trained ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
-        state_.setStatus(state_.training.message());
-        trainingSeen_ = false;
-    }
-    if (trainingSeen_ && !state_.training.running()) {
-        // Stopped without a model (cancelled or failed): say how it ended.
-        trainingSeen_ = false;
-        const std::string why = state_.training.message();
-        state_.setStatus(why.empty() ? "training stopped" : "training stopped: " + why);
-    }
+    pollTraining();
     pollExport();
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {
         state_.doc.setCompareModel(v);
         state_.setStatus("compare model: " + state_.compareTraining.message());
+    }
+}
+
+void EditorApp::pollTraining() {
+    EditorDocument& doc = state_.doc;
+    // Models change between gestures only: a drag, a latent drag or a regeneration keeps the
+    // version it started on, and the training's results wait (the worker keeps them until taken).
+    if (doc.dragging() || doc.latentDragging() || doc.regenerating()) return;
+    const auto sameClip = [&](const gp::ModelVersionPtr& v) { return doc.hasClip() && sameCapture(doc.clip(), v->model->clip); };
+    if (gp::ModelVersionPtr v = state_.training.takeRefinement()) {
+        doc.installRefinement(v, !sameClip(v));
+        state_.modelLabel = std::string("refining ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
+        state_.setStatus("a model from training iteration " + std::to_string(v->model->iterations) +
+                         " is ready to drag against; training goes on and replaces it between gestures");
+    }
+    if (gp::ModelVersionPtr v = state_.training.take()) {
+        const int taught = doc.refining() ? doc.finishRefinement(v, !sameClip(v)) : (doc.setModel(v, !sameClip(v)), 0);
+        state_.modelLabel = std::string("trained ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
+        std::string status = state_.training.message();
+        if (taught > 0) status += "; " + std::to_string(taught) + " pose(s) accepted meanwhile are being taught to it";
+        state_.setStatus(status);
+        trainingSeen_ = false;
+    }
+    if (trainingSeen_ && !state_.training.running()) {
+        // Stopped without a final model (cancelled or failed): say how it ended. A model it
+        // published meanwhile stays, and the poses that waited for the final one are taught to it.
+        trainingSeen_ = false;
+        const std::string why = state_.training.message();
+        std::string status = why.empty() ? "training stopped" : "training stopped: " + why;
+        if (doc.refining()) {
+            const gp::ModelVersionPtr kept = doc.model();
+            doc.finishRefinement(kept, false);
+            status += "; keeping the model from iteration " + std::to_string(kept->model->iterations);
+        }
+        state_.setStatus(status);
     }
 }
 

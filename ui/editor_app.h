@@ -146,6 +146,8 @@ public:
 
 private:
     void pollJobs();
+    // Installs the training run's published and final models between gestures.
+    void pollTraining();
     void pollExport();
     std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).

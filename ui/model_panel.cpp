@@ -275,6 +275,12 @@ void drawModelPanel(EditorState& s) {
     // Training and the model file first: reachable without scrolling, whatever the model shows.
     if (s.training.running()) {
         progressRow(s.training, "main");
+        if (doc.refining()) {
+            const TrainingProgress p = s.training.progress();
+            ImGui::TextWrapped("refining... (model %d, from iteration %d, L_GP %s): drag now; %d accepted pose(s) wait for "
+                               "the final model",
+                               p.published, p.publishedIteration, sig4(p.publishedObjective).c_str(), doc.waitingPoses());
+        }
     } else {
         drawTrainOptions(s.trainOptions);
         ImGui::BeginDisabled(!doc.trainable());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "edit/latent_refit.h"
 #include "edit/regeneration_step.h"
 #include "ik/learned_ik.h"
 #include "ik/locality.h"
@@ -16,6 +17,17 @@ namespace mgp {
 
 namespace {
 bool samePose(const Pose& a, const Pose& b) { return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg; }
+
+// The latent point of the model's training row that holds pose y (kept columns) for clip frame
+// `frame` of the primary (open) clip, if an update added one; the last such row when there are several.
+std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, const Eigen::VectorXd& y) {
+    for (Eigen::Index r = m.X.rows() - 1; r >= 0; --r) {
+        if (m.trainingFrames[static_cast<std::size_t>(r)] != frame || m.rowClip(static_cast<int>(r)) != 0) continue;
+        if (m.Y.cols() == y.size() && (m.Y.row(r).transpose() - y).cwiseAbs().maxCoeff() <= 1e-9)
+            return Eigen::VectorXd(m.X.row(r).transpose());
+    }
+    return std::nullopt;
+}
 }  // namespace
 
 EditorDocument::EditorDocument() = default;
@@ -40,6 +52,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     paths_.reset();
     ++revision_;
     store_.reset(std::move(clip), synthetic);
+    editLineage_.clear();
     falloffStepLabel_.clear();
     lastRegenerateQuality_.reset();
     contactReleased_.fill(false);
@@ -101,6 +114,8 @@ std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& 
 void EditorDocument::restoreEdits(std::map<int, EditRecord> edits) {
     drag_.finish();
     latentBefore_.reset();
+    editLineage_.clear();
+    for (const auto& [frame, edit] : edits) editLineage_[frame] = lineage_;  // saved with the model they belong to
     store_.replaceAll(std::move(edits));
     history_.clear();
     updatePinPositions();
@@ -120,6 +135,45 @@ Eigen::Vector3d EditorDocument::effectorPosition(Effector e) const {
 // ---- model ---------------------------------------------------------------------------------
 
 void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
+    refining_ = false;
+    deferred_.clear();
+    installModel(std::move(version), adoptClip);
+}
+
+void EditorDocument::installRefinement(gp::ModelVersionPtr version, bool adoptClip) {
+    std::vector<DeferredPose> waiting = std::move(deferred_);
+    installModel(std::move(version), adoptClip);
+    refining_ = hasModel();
+    if (adoptClip) waiting.clear();  // a new clip: the poses belonged to the old one
+    deferred_ = std::move(waiting);
+}
+
+int EditorDocument::finishRefinement(gp::ModelVersionPtr version, bool adoptClip) {
+    const std::vector<DeferredPose> waiting = adoptClip ? std::vector<DeferredPose>{} : latestPerFrame(deferred_);
+    setModel(std::move(version), adoptClip);
+    const gp::ModelVersionPtr v = model();
+    if (!v) return 0;
+    int posted = 0;
+    for (const DeferredPose& p : waiting) {
+        if (p.frame >= frameCount() || !samePose(store_.pose(p.frame), p.edited)) continue;  // undone or edited since
+        const std::optional<DeferredTeaching> t = teachingOnModel(*v, p);
+        if (!t) continue;
+        if (!t->verdict.admitted) {
+            models_.noteRefused(p.frame, *v, t->verdict.reason);
+            continue;
+        }
+        if (models_.post(t->sample) > 0) ++posted;
+    }
+    return posted;
+}
+
+long EditorDocument::teach(AdaptiveSample sample, const Pose& edited) {
+    if (!refining_) return models_.post(std::move(sample));
+    if (models_.updating()) deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited});
+    return 0;
+}
+
+void EditorDocument::installModel(gp::ModelVersionPtr version, bool adoptClip) {
     if (!version) {
         clearModel();
         return;
@@ -131,6 +185,7 @@ void EditorDocument::setModel(gp::ModelVersionPtr version, bool adoptClip) {
     drag_.finish();
     stopRegeneration();  // a running regeneration solves on the old model: its result is dropped
     if (!adoptClip) history_.forgetModels();  // the steps' versions belong to the old model
+    ++lineage_;
     installWorker(std::move(version));
     ++revision_;
 }
@@ -142,6 +197,8 @@ void EditorDocument::installWorker(gp::ModelVersionPtr version) {
 }
 
 void EditorDocument::clearModel() {
+    refining_ = false;
+    deferred_.clear();
     drag_.finish();
     latentBefore_.reset();
     regenerate_.cancel();  // its result would belong to the old model
@@ -165,14 +222,33 @@ Eigen::VectorXd EditorDocument::currentLatent() {
     const gp::ModelVersionPtr v = model();
     if (!v) return {};
     if ((drag_.active() || drag_.latentActive()) && drag_.x().size() > 0) return drag_.x();
+    return frameLatent(*v);
+}
+
+const Eigen::VectorXd& EditorDocument::frameLatent(const gp::ModelVersion& v) const {
     const auto it = store_.edits().find(frame_);
-    if (it != store_.edits().end() && it->second.x.size() == v->model->latentDim()) return it->second.x;
-    if (cacheFrame_ != frame_ || cacheVersion_ != v->number || cacheModel_ != v->model.get()) {
-        cacheX_ = latentStartForFrame(*v, frame_);
-        cacheFrame_ = frame_;
-        cacheVersion_ = v->number;
-        cacheModel_ = v->model.get();
+    const EditRecord* edit = it != store_.edits().end() ? &it->second : nullptr;
+    const auto lineage = editLineage_.find(frame_);
+    const bool current = edit && lineage != editLineage_.end() && lineage->second == lineage_;
+    if (cacheFrame_ == frame_ && cacheVersion_ == v.number && cacheModel_ == v.model.get() &&
+        cacheEdited_ == (edit != nullptr) && cacheCurrent_ == current && (!edit || samePose(cachePose_, edit->pose)))
+        return cacheX_;
+    cacheX_ = latentStartForFrame(v, frame_);
+    if (edit && v.model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
+        // A taught pose is a training row with its own point; an edit solved on this model's
+        // lineage keeps its x; one solved on an earlier model (a retrain, a refinement) is fitted here.
+        const Eigen::VectorXd y = v.model->keptPose(PoseLayout(clip().skeleton).extract(edit->pose));
+        const std::optional<Eigen::VectorXd> taught = taughtLatent(*v.model, frame_, y);
+        const bool own = current && edit->x.size() == v.model->latentDim();
+        const Eigen::VectorXd x = taught ? *taught : own ? edit->x : refitLatent(v, frame_, y, &edit->x);
+        if (x.allFinite()) cacheX_ = x;
+        cachePose_ = edit->pose;
     }
+    cacheFrame_ = frame_;
+    cacheVersion_ = v.number;
+    cacheModel_ = v.model.get();
+    cacheEdited_ = edit != nullptr;
+    cacheCurrent_ = current;
     return cacheX_;
 }
 
@@ -285,7 +361,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         s.x = drag_.x();
         s.yKept = drag_.keptPose();
         s.clipFrame = frame_;
-        if (const long seq = models_.post(std::move(s)); seq > 0) step.samples.push_back(seq);
+        if (const long seq = teach(std::move(s), rec.after.pose); seq > 0) step.samples.push_back(seq);
     }
     applyFrames(step.after);
     const std::string label = step.label;
@@ -342,7 +418,9 @@ bool EditorDocument::beginLatentDrag() {
 }
 
 void EditorDocument::latentDragTo(const Eigen::VectorXd& x) {
-    if (drag_.latentTo(x, clip().frames[frame_])) store_.set(frame_, EditRecord{drag_.pose(), x});
+    if (!drag_.latentTo(x, clip().frames[frame_])) return;
+    store_.set(frame_, EditRecord{drag_.pose(), x});
+    editLineage_[frame_] = lineage_;
 }
 
 void EditorDocument::endLatentDrag() {
@@ -366,6 +444,10 @@ void EditorDocument::pushStep(EditStep step) {
 
 void EditorDocument::applyFrames(const FrameEdits& frames) {
     store_.apply(frames);
+    for (const auto& [frame, edit] : frames) {
+        if (edit) editLineage_[frame] = lineage_;
+        else editLineage_.erase(frame);
+    }
     updatePinPositions();
 }
 
@@ -477,8 +559,11 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     }
     EditStep step = regenerationStep(*job, store_);
     if (models_.hasModel())
-        for (AdaptiveSample& sample : movedKeySamples(*job))
-            if (const long seq = models_.post(std::move(sample)); seq > 0) step.samples.push_back(seq);
+        for (AdaptiveSample& sample : movedKeySamples(*job)) {
+            const auto it = step.after.find(sample.clipFrame);
+            if (it == step.after.end() || !it->second) continue;  // a moved key is always a regenerated frame
+            if (const long seq = teach(std::move(sample), it->second->pose); seq > 0) step.samples.push_back(seq);
+        }
     applyFrames(step.after);
     pushStep(std::move(step));
     return regenerationSummary(*job, models_.updating());
@@ -488,21 +573,6 @@ void EditorDocument::waitIdle() {
     regenerate_.join();
     models_.waitIdle();
 }
-
-namespace {
-
-// The latent point of the model's training row that holds pose y (kept columns) for clip frame
-// `frame` of the primary (open) clip, if an update added one; the last such row when there are several.
-std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, const Eigen::VectorXd& y) {
-    for (Eigen::Index r = m.X.rows() - 1; r >= 0; --r) {
-        if (m.trainingFrames[static_cast<std::size_t>(r)] != frame || m.rowClip(static_cast<int>(r)) != 0) continue;
-        if (m.Y.cols() == y.size() && (m.Y.row(r).transpose() - y).cwiseAbs().maxCoeff() <= 1e-9)
-            return Eigen::VectorXd(m.X.row(r).transpose());
-    }
-    return std::nullopt;
-}
-
-}  // namespace
 
 std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     const gp::ModelVersionPtr v = model();
@@ -519,9 +589,9 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     if (v->model->clip.skeleton.jointCount() != clip().skeleton.jointCount()) return std::nullopt;
     const PoseLayout layout(clip().skeleton);
     const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
-    // A pose an update taught the model is a training row now, and that update re-fitted its latent
-    // point: judge it there, not at the x of the solve on the previous version.
-    const Eigen::VectorXd x = taughtLatent(*v->model, frame_, y).value_or(e.x);
+    // Judged at the pose's point on this model (frameLatent): a taught pose's training row, or its x
+    // fitted here when the edit was solved on another model (a retrain, a refinement).
+    const Eigen::VectorXd& x = frameLatent(*v);
     const double lik = v->posterior->evaluate(x, y, nullptr, nullptr);
     Eigen::VectorXd mean;
     double sigma2 = 0.0;

@@ -28,6 +28,7 @@
 #include "edit/clip_edits.h"
 #include "edit/compare_mode.h"
 #include "edit/drag_session.h"
+#include "edit/deferred_teaching.h"
 #include "edit/edit_history.h"
 #include "edit/edit_record.h"
 #include "edit/model_host.h"
@@ -94,6 +95,16 @@ public:
     // adaptive worker on it.
     void setModel(gp::ModelVersionPtr version, bool adoptClip);
     void clearModel();
+    // A model published while its training run goes on (TrainingJob::takeRefinement), installed
+    // as setModel does; until finishRefinement, accepted poses wait instead of being taught to
+    // a model the next refinement replaces (docs/maths.md §23).
+    void installRefinement(gp::ModelVersionPtr version, bool adoptClip);
+    // The run's final model: installed, and each waiting pose still on its frame is taught to it
+    // (its latent point found on this model, admitted as a drag's pose is). Returns how many were
+    // posted.
+    int finishRefinement(gp::ModelVersionPtr version, bool adoptClip);
+    bool refining() const { return refining_; }
+    int waitingPoses() const { return static_cast<int>(deferred_.size()); }
     gp::ModelVersionPtr model() const { return models_.current(); }  // the latest version (null if none)
     bool hasModel() const { return models_.hasModel(); }
     void setAdaptiveEnabled(bool on);
@@ -246,6 +257,13 @@ private:
     void applyFrames(const FrameEdits& frames);
     void installVersion(const gp::ModelVersionPtr& version);
     void installWorker(gp::ModelVersionPtr version);
+    void installModel(gp::ModelVersionPtr version, bool adoptClip);
+    // The current frame's point on `v`: the captured frame's start (learned_ik.h), or an edit's
+    // point fitted on this model (edit/latent_refit.h); cached per frame, version and pose.
+    const Eigen::VectorXd& frameLatent(const gp::ModelVersion& v) const;
+    // Posts an accepted pose to the adaptive worker, or keeps it for the final model while refining;
+    // the sequence number of the post (0: none).
+    long teach(AdaptiveSample sample, const Pose& edited);
     std::string undoOrRedo(bool undo);
 
     ClipEdits store_;
@@ -259,6 +277,12 @@ private:
     std::atomic<long> revision_{0};
     // After revision_: its worker thread counts accepted updates there until it is destroyed.
     ModelHost models_{[this] { ++revision_; }};
+    // Edits keep the x of their solve, which belongs to the model installed then: installModel
+    // starts a new lineage (adaptive updates continue one), and each edited frame remembers its own.
+    long lineage_ = 0;
+    std::map<int, long> editLineage_;
+    bool refining_ = false;
+    std::vector<DeferredPose> deferred_;  // accepted while refining, oldest first
 
     PathSession paths_{store_.clip(), [this] { ++revision_; }};
     RegenerateJob regenerate_;
@@ -281,10 +305,13 @@ private:
     } lastDrag_;
     std::optional<EditRecord> latentBefore_;
 
-    // latentStartForFrame cache
-    int cacheFrame_ = -1, cacheVersion_ = -1;
-    const void* cacheModel_ = nullptr;
-    Eigen::VectorXd cacheX_;
+    // The current frame's latent point on the current model (frameLatent's cache).
+    mutable int cacheFrame_ = -1, cacheVersion_ = -1;
+    mutable const void* cacheModel_ = nullptr;
+    mutable bool cacheEdited_ = false;
+    mutable bool cacheCurrent_ = false;  // the edit's x belonged to the installed model
+    mutable Pose cachePose_;  // the edit's pose the point was fitted to
+    mutable Eigen::VectorXd cacheX_;
 };
 
 }  // namespace mgp

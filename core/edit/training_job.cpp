@@ -2,8 +2,19 @@
 
 #include <chrono>
 #include <cstdio>
+#include <utility>
 
 namespace mgp {
+namespace {
+
+// Whether a running training publishes after iteration `iter`, `sinceLast` seconds after its last
+// publication (`count` so far).
+bool publishDue(const PublishPolicy& policy, int iter, double sinceLast, int count) {
+    if (!policy.enabled || iter < policy.firstIterations) return false;
+    return count == 0 || sinceLast >= policy.everySeconds;
+}
+
+}  // namespace
 
 TrainingJob::TrainingJob()
     : worker_(WorkerPolicy::kLatestRequest, [this](Request& r, const std::atomic<bool>& cancel) { return run(r, cancel); },
@@ -34,6 +45,7 @@ std::string TrainingJob::startRequest(Request request) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         progress_ = {};
+        refinement_.reset();
         progress_.running = true;
         progress_.total = request.options.outerIterations;
         progress_.kernel = gp::kernelKindName(request.options.kind);
@@ -53,7 +65,16 @@ TrainingProgress TrainingJob::progress() const {
 
 gp::ModelVersionPtr TrainingJob::take() {
     std::optional<gp::ModelVersionPtr> r = worker_.take();
+    if (r) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        refinement_.reset();  // superseded by the final model
+    }
     return r ? std::move(*r) : nullptr;
+}
+
+gp::ModelVersionPtr TrainingJob::takeRefinement() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::exchange(refinement_, nullptr);
 }
 
 JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::atomic<bool>& cancel) {
@@ -70,13 +91,34 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         }
     } finish{*this, elapsed};
     const gp::TrainOptions& options = request.options;
-    gp::TrainResult res = gp::train(gp::trainingDataOf(request.clips), options, [&](const gp::IterationLog& e) {
+    const PublishPolicy policy = policy_;
+    double lastPublished = 0.0;
+    gp::TrainControl control;
+    control.cancel = &cancel;
+    control.afterIteration = [&](const gp::Trainer& trainer) {
+        const gp::IterationLog& e = trainer.log().back();
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            progress_.iteration = e.iter;
+            progress_.objective = e.L;
+            progress_.elapsedSeconds = elapsed();
+            if (e.iter > 0) progress_.etaSeconds = progress_.elapsedSeconds / e.iter * (progress_.total - e.iter);
+        }
+        // The last iteration's model is the final one (take()); earlier ones are published by the policy.
+        const bool last = e.iter >= options.outerIterations;
+        const bool due = publishDue(policy, e.iter, elapsed() - lastPublished, progress().published);
+        if (last || !due || cancel.load()) return;
+        gp::GpModel snapshot = gp::snapshotModel(trainer);
+        gp::attachTrainingClips(snapshot, request.clips, request.selection);
+        gp::ModelVersionPtr version = gp::ModelVersion::make(std::move(snapshot));
+        lastPublished = elapsed();
         std::lock_guard<std::mutex> lock(mutex_);
-        progress_.iteration = e.iter;
-        progress_.objective = e.L;
-        progress_.elapsedSeconds = elapsed();
-        if (e.iter > 0) progress_.etaSeconds = progress_.elapsedSeconds / e.iter * (progress_.total - e.iter);
-    }, &cancel);
+        refinement_ = std::move(version);
+        ++progress_.published;
+        progress_.publishedIteration = e.iter;
+        progress_.publishedObjective = e.L;
+    };
+    gp::TrainResult res = gp::train(gp::trainingDataOf(request.clips), options, control);
     if (res.cancelled) return {std::nullopt, "training cancelled after " + std::to_string(res.log.size()) + " iterations"};
     gp::attachTrainingClips(res.model, std::move(request.clips), request.selection);
     char buf[160];

@@ -25,6 +25,20 @@ struct TrainingProgress {
     double elapsedSeconds = 0;
     double etaSeconds = -1;  // < 0 until one iteration has finished (an upper bound: Step 9 may stop early)
     std::string kernel;      // "fas" | "sgplvm"
+    // Models published while the run goes on (docs/maths.md §23): how many, and
+    // the outer iteration and L_GP of the latest.
+    int published = 0;
+    int publishedIteration = 0;
+    double publishedObjective = 0;
+};
+
+// When a running training publishes the model as it stands: first after `firstIterations` outer
+// iterations, then again once `everySeconds` have passed since the last publication. The defaults
+// are docs/maths.md §23's measured choice.
+struct PublishPolicy {
+    int firstIterations = 3;
+    double everySeconds = 4.0;
+    bool enabled = true;
 };
 
 class TrainingJob {
@@ -46,6 +60,11 @@ public:
     TrainingProgress progress() const;
     // The finished model, once (null while running, after a cancel, or when already taken).
     gp::ModelVersionPtr take();
+    // The latest model published while the run goes on, once (null when there is none newer than
+    // the last one taken). A finished run's final model comes from take(), never from here.
+    gp::ModelVersionPtr takeRefinement();
+    // For the next start() (tests: publish after every iteration).
+    void setPublishPolicy(const PublishPolicy& policy) { policy_ = policy; }
     // "" or the last job's outcome ("cancelled after 3 iterations", an error message, ...).
     std::string message() const { return worker_.message(); }
     void join() { worker_.waitIdle(); }
@@ -58,8 +77,10 @@ private:
     };
     std::string startRequest(Request request);
     JobOutcome<gp::ModelVersionPtr> run(Request& request, const std::atomic<bool>& cancel);
-    mutable std::mutex mutex_;  // guards progress_ and started_
+    mutable std::mutex mutex_;  // guards progress_, started_ and refinement_
     TrainingProgress progress_;
+    gp::ModelVersionPtr refinement_;
+    PublishPolicy policy_;  // read by the worker: changed only between runs
     std::chrono::steady_clock::time_point started_;
     BackgroundWorker<Request, gp::ModelVersionPtr> worker_;  // last: joined before the members above go
 };

@@ -303,25 +303,9 @@ TrainResult trainOnClip(Clip clip, const TrainOptions& options, const std::funct
     return result;
 }
 
-TrainResult train(const TrainingData& data, const TrainOptions& options,
-                  const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
-    Trainer trainer(data, options);
-    TrainResult res;
-    res.lInit = trainer.initialObjective();
-    for (int t = 0; t < options.outerIterations; ++t) {
-        const bool conv = trainer.step(cancel);
-        if (trainer.cancelled()) {
-            res.cancelled = true;
-            break;
-        }
-        if (progress) progress(trainer.log().back());
-        if (conv) {
-            res.converged = true;
-            if (options.stopOnConvergence) break;
-        }
-    }
-    res.log = trainer.log();
-    GpModel& m = res.model;
+GpModel snapshotModel(const Trainer& trainer, bool converged) {
+    const TrainOptions& options = trainer.options();
+    GpModel m;
     m.kind = options.kind;
     m.logParams = trainer.logParams();
     m.X = trainer.latent();
@@ -342,9 +326,47 @@ TrainResult train(const TrainingData& data, const TrainOptions& options,
     m.settings.prior = options.prior;
     m.settings.priorWeight = options.resolvedPriorWeight();
     m.settings.backConstraints = options.backConstraints;
-    m.iterations = static_cast<int>(res.log.size());
-    m.converged = res.converged;
+    m.iterations = static_cast<int>(trainer.log().size());
+    m.converged = converged;
     m.objectiveHistory = trainer.objectiveHistory();
+    return m;
+}
+
+TrainResult train(const TrainingData& data, const TrainOptions& options,
+                  const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
+    TrainControl control;
+    if (progress) control.afterIteration = [&progress](const Trainer& t) { progress(t.log().back()); };
+    control.cancel = cancel;
+    return train(data, options, control);
+}
+
+TrainResult train(const TrainingData& data, const TrainOptions& options, const TrainControl& control) {
+    const auto start = std::chrono::steady_clock::now();
+    Trainer trainer(data, options);
+    TrainResult res;
+    res.lInit = trainer.initialObjective();
+    double longestIteration = 0.0;
+    for (int t = 0; t < options.outerIterations; ++t) {
+        // The budget: an iteration that would end after it (judged by the longest so far) does not start.
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (control.timeBudgetSeconds > 0.0 && t > 0 && elapsed + longestIteration > control.timeBudgetSeconds) {
+            res.outOfTime = true;
+            break;
+        }
+        const bool conv = trainer.step(control.cancel);
+        if (trainer.cancelled()) {
+            res.cancelled = true;
+            break;
+        }
+        longestIteration = std::max(longestIteration, trainer.log().back().seconds);
+        if (control.afterIteration) control.afterIteration(trainer);
+        if (conv) {
+            res.converged = true;
+            if (options.stopOnConvergence) break;
+        }
+    }
+    res.log = trainer.log();
+    res.model = snapshotModel(trainer, res.converged);
     return res;
 }
 

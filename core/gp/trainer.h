@@ -165,6 +165,21 @@ struct TrainResult {
     std::vector<IterationLog> log;
     bool converged = false;
     bool cancelled = false;
+    bool outOfTime = false;  // stopped by TrainControl::timeBudgetSeconds
+};
+
+// The model of a run as it stands after its last finished outer iteration (what train() returns
+// at the end): an editor can drag against it while the run goes on (clip and provenance fields
+// are left to the caller).
+GpModel snapshotModel(const Trainer& trainer, bool converged = false);
+
+// How a run is watched and stopped from outside; every field is optional.
+struct TrainControl {
+    std::function<void(const Trainer&)> afterIteration;  // after each outer iteration (progress, snapshots)
+    const std::atomic<bool>* cancel = nullptr;
+    // > 0: no outer iteration starts that would end after this many seconds from the start,
+    // judged by the longest iteration so far (the first always runs: a model is trained at least once).
+    double timeBudgetSeconds = 0.0;
 };
 
 // Runs the whole loop and packs the model (clip and provenance fields are left to the caller).
@@ -172,6 +187,7 @@ struct TrainResult {
 TrainResult train(const TrainingData& data, const TrainOptions& options,
                   const std::function<void(const IterationLog&)>& progress = nullptr,
                   const std::atomic<bool>* cancel = nullptr);
+TrainResult train(const TrainingData& data, const TrainOptions& options, const TrainControl& control);
 
 // Trains on every frame of `clip` and stores the clip (unwrapped, so it matches the training rows)
 // in the model; provenance fields are left to the caller.
