@@ -340,12 +340,15 @@ void ViewportPanel::draw(EditorState& s) {
         // X, Y or Z during a handle drag: move along that world axis only (again: free).
         for (int a = 0; a < 3; ++a)
             if (mode_ == Mode::kDragHandle && chordPressed("XYZ"[a])) s.dragAxis = s.dragAxis == a ? -1 : a;
+        // P acts on the handle under the mouse only: over the floor it would pin what the user
+        // does not see they picked (Model > Pin and the `pin` action name the effector).
         if (chordPressed('P')) {
-            const int target = s.hoveredHandle >= 0 ? s.hoveredHandle : (s.selected ? int(*s.selected) : -1);
-            if (target >= 0) {
-                const auto e = static_cast<Effector>(target);
+            if (s.hoveredHandle >= 0) {
+                const auto e = static_cast<Effector>(s.hoveredHandle);
                 s.doc.togglePin(e);
                 s.setStatus(std::string(s.doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
+            } else {
+                s.setStatus("P pins the handle under the mouse: point at a hand, a foot or the head");
             }
         }
         if (chordPressed(256 /*Escape*/) && s.doc.dragging()) {

@@ -547,7 +547,6 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         if (error) *error = regenerate_.takeMessage();
         return "";
     }
-    lastRegenerateQuality_ = job->quality;
     // A drag's falloff joins the drag's own undo step when that step is still the latest.
     if (const std::string dragLabel = std::exchange(falloffStepLabel_, std::string()); !dragLabel.empty()) {
         EditStep* top = history_.topUndo();
@@ -557,6 +556,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         ++revision_;
         return falloffSummary(*job, falloffRadius_);
     }
+    lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
     EditStep step = regenerationStep(*job, store_);
     if (models_.hasModel())
         for (AdaptiveSample& sample : movedKeySamples(*job)) {

@@ -226,7 +226,8 @@ public:
     // the user can switch one off.
     const ContactSet& contacts() const { return store_.contacts(); }
     void setContactEnabled(std::size_t index, bool on);
-    // The last finished regeneration's span report (eval/motion_quality.h), if any.
+    // The last finished path regeneration's span report (eval/motion_quality.h), if any (a drag's
+    // falloff reports in the status line, not here).
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
 
     // ---- undo / redo -----------------------------------------------------------------------

@@ -96,7 +96,7 @@ TEST_CASE("gui input: shortcuts match their modifiers exactly") {
     CHECK(h->app->fileDialog().isOpen());
 }
 
-TEST_CASE("gui input: Save session as opens with a default name in a focused field, and a modal keeps P from pinning") {
+TEST_CASE("gui input: Save session as opens with a default name in a focused field, a modal keeps P from pinning, P pins only the handle under the mouse") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
@@ -120,7 +120,16 @@ TEST_CASE("gui input: Save session as opens with a default name in a focused fie
     tapKey(*h, key::kEscape);  // Cancel
     CHECK_FALSE(h->app->askingAboutUnsavedChanges());
     CHECK_FALSE(h->app->quitRequested());
-    tapKey(*h, 'P');  // no modal now: it pins
+    tapKey(*h, 'P');  // no modal now, but the mouse is not over a handle: nothing is pinned
+    CHECK_FALSE(s.doc.pinned(Effector::kRHand));
+    CHECK(s.messages.latestText().find("P pins the handle under the mouse") == 0);
+    float x = 0, y = 0;
+    REQUIRE(h->app->handleScreenPosition(Effector::kRHand, x, y));
+    h->input.mouseX = x;
+    h->input.mouseY = y;
+    h->frame(2);
+    REQUIRE(s.hoveredHandle == int(Effector::kRHand));
+    tapKey(*h, 'P');  // over the handle: it pins
     CHECK(s.doc.pinned(Effector::kRHand));
 }
 
