@@ -82,14 +82,14 @@ const CommandRegistration trainCommand(
         sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
         sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
         sub.add_option("--active", o->active, "Active set size M (default 200; M ≥ N uses every frame)");
-        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default 100)");
+        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default 30)");
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
         sub.add_option("--prior", o->prior,
                        std::string("Temporal prior on the latent points: paced (second differences over the pose's own "
                                    "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
         o->priorWeightOption = sub.add_option("--prior-weight", o->priorWeight,
-                                              "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 100, log-linear between)");
+                                              "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 30, log-linear between)");
         sub.add_flag("--back-constraints", o->backConstraints,
                      "Make the latent points a smooth function of the poses (X = K A; Step 8 is skipped)");
         sub.add_option("--frames", o->frames, "Keep frames A..B (from 1, inclusive) of each clip, e.g. 1:180");

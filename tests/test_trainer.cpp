@@ -150,19 +150,21 @@ TEST_CASE("trainer: the objective history is L_init then L_GP after each iterati
     CHECK(h.back() < h.front());
 }
 
-TEST_CASE("trainer: the default prior weight follows the budget T (100 up to T = 10, 30 from T = 100)") {
+TEST_CASE("trainer: the default prior weight follows the budget T (100 up to T = 10, 30 from the default T = 30)") {
     CHECK(defaultPriorWeight(1) == kQuickPriorWeight);
     CHECK(defaultPriorWeight(10) == kQuickPriorWeight);
+    CHECK(defaultPriorWeight(30) == doctest::Approx(kFullPriorWeight).epsilon(1e-12));
     CHECK(defaultPriorWeight(100) == doctest::Approx(kFullPriorWeight).epsilon(1e-12));
     CHECK(defaultPriorWeight(1000) == doctest::Approx(kFullPriorWeight).epsilon(1e-12));
-    // Log-linear in T between: T = 20 gives 100 · 0.3^(log10 20 − 1).
-    CHECK(defaultPriorWeight(20) > defaultPriorWeight(30));
-    const double mid = 100.0 * std::pow(0.3, std::log10(20.0) - 1.0);  // 69.598…
+    // Log-linear in T between: T = 20 gives 100 · 0.3^(ln 2 / ln 3).
+    CHECK(defaultPriorWeight(20) > defaultPriorWeight(25));
+    const double mid = 100.0 * std::pow(0.3, std::log(2.0) / std::log(3.0));  // 46.78…
     CHECK(defaultPriorWeight(20) == doctest::Approx(mid).epsilon(1e-12));
-    CHECK(mid == doctest::Approx(69.5982).epsilon(1e-5));
+    CHECK(mid == doctest::Approx(46.7843).epsilon(1e-5));
 
     TrainOptions o;
-    CHECK(o.resolvedPriorWeight() == doctest::Approx(kFullPriorWeight).epsilon(1e-12));  // T = 100
+    CHECK(o.outerIterations == 30);
+    CHECK(o.resolvedPriorWeight() == doctest::Approx(kFullPriorWeight).epsilon(1e-12));  // the default T
     o.outerIterations = 3;
     CHECK(o.resolvedPriorWeight() == kQuickPriorWeight);
     o.priorWeight = 7.0;  // given: used whatever T

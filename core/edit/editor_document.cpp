@@ -10,6 +10,7 @@
 #include "ik/learned_ik.h"
 #include "ik/locality.h"
 #include "motion/drag_falloff.h"
+#include "motion/pose_layer.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
@@ -27,6 +28,22 @@ std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, con
             return Eigen::VectorXd(m.X.row(r).transpose());
     }
     return std::nullopt;
+}
+// The hand, foot or head that a whole-pose change (paste, mirror, rotate) moves furthest: the
+// spread displaces its path, and the prior and the smoothness carry the rest of the body along.
+Effector mostMovedEffector(const Skeleton& skeleton, const Pose& from, const Pose& to) {
+    Effector best = Effector::kRHand;
+    double farthest = -1.0;
+    for (int k = 0; k < kEffectorCount; ++k) {
+        const auto e = static_cast<Effector>(k);
+        if (!skeleton.hasEffector(e)) continue;
+        const double moved = (effectorCm(skeleton, to, e) - effectorCm(skeleton, from, e)).norm();
+        if (moved > farthest) {
+            best = e;
+            farthest = moved;
+        }
+    }
+    return best;
 }
 }  // namespace
 
@@ -95,19 +112,30 @@ std::string EditorDocument::pastePose(const Pose& pose) {
 
 std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& stepLabel) {
     if (!hasClip()) return "no clip to edit";
+    finishRunningFalloff();  // a previous pose change's spread lands first, as before a drag
     if (regenerating()) return "wait for the regeneration to finish before editing a pose";
     if (pose.anglesDeg.size() != currentPose().anglesDeg.size())
         return "expected a pose of this clip's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) +
                " bones (copied from another clip?)";
     cancelDrag();
-    EditRecord rec;
-    rec.pose = pose;
+    DragRecord change;  // spread over the neighbours as a drag's release is (startDragFalloff)
+    change.frame = frame_;
+    change.before = store_.editAt(frame_);
+    change.effector = mostMovedEffector(clip().skeleton, store_.pose(frame_), pose);
+    change.after.pose = pose;
+    // Its point on the model, so that the range legend, the latent map and the spread see the pose.
+    if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
+        const Eigen::VectorXd y = v->model->keptPose(PoseLayout(clip().skeleton).extract(pose));
+        const Eigen::VectorXd x = refitLatent(*v, frame_, y);
+        if (x.allFinite()) change.after.x = x;
+    }
     EditStep step;
     step.label = stepLabel;
-    step.before[frame_] = store_.editAt(frame_);
-    step.after[frame_] = rec;
+    step.before[frame_] = change.before;
+    step.after[frame_] = change.after;
     applyFrames(step.after);
     pushStep(std::move(step));
+    startDragFalloff(change, stepLabel, true);
     return "";
 }
 
@@ -379,7 +407,7 @@ void EditorDocument::setBodyStiffness(double scale) {
     drag_.setLocality(kDefaultLocality * bodyStiffness_);
 }
 
-void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel) {
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
     const Clip& mc = v->model->clip;
@@ -396,6 +424,15 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     const auto dragged = static_cast<std::size_t>(rec.frame);
     base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
     base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
+    if (wholePose) {
+        // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
+        // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
+        addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);
+        const int first = std::max(0, rec.frame - falloffRadius_), last = std::min(frameCount() - 1, rec.frame + falloffRadius_);
+        for (int t = first; t <= last; ++t) base->x[static_cast<std::size_t>(t)] = Eigen::VectorXd();  // their poses moved
+        base->frames[dragged] = rec.after.pose;
+        base->x[dragged] = rec.after.x;
+    }
     std::string problem;
     MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(),
                                        &problem, std::move(base));
@@ -466,8 +503,9 @@ std::string EditorDocument::redoLabel() const {
 }
 
 void EditorDocument::finishRunningFalloff() {
-    // A new drag or a path regeneration right after a drag waits for that drag's falloff (tens of
-    // milliseconds) and applies it first, so the earlier drag is never left as a one-frame spike.
+    // A new drag, pose change or path regeneration right after a drag waits for that drag's
+    // falloff (tens of milliseconds) and applies it first, so the earlier drag is never left as a
+    // one-frame spike.
     if (falloffStepLabel_.empty() || !regenerate_.running()) return;
     regenerate_.join();
     pollRegenerate();
@@ -554,7 +592,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         mergeFalloff(*job, store_, *top);
         applyFrames(top->after);
         ++revision_;
-        return falloffSummary(*job, falloffRadius_);
+        return falloffSummary(*job, falloffRadius_, dragLabel);
     }
     lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
     EditStep step = regenerationStep(*job, store_);

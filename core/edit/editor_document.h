@@ -251,7 +251,9 @@ public:
 private:
     void updatePinPositions();
     void pushStep(EditStep step);
-    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel);
+    // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
+    // whole change over the span first (motion/pose_layer.h).
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false);
     void finishRunningFalloff();
     void dropRunningFalloff();
     void stopRegeneration();

@@ -58,11 +58,11 @@ std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
     return summary;
 }
 
-std::string falloffSummary(const MotionEditJob& job, int falloffRadius) {
-    char summary[160];
-    std::snprintf(summary, sizeof summary, "drag spread over frames %d-%d (falloff %d frames)", job.keyFrames.front() + 2,
+std::string falloffSummary(const MotionEditJob& job, int falloffRadius, const std::string& stepLabel) {
+    char summary[96];
+    std::snprintf(summary, sizeof summary, ": spread over frames %d-%d (falloff %d frames)", job.keyFrames.front() + 2,
                   job.keyFrames.back(), falloffRadius);
-    return summary;
+    return stepLabel + summary;
 }
 
 }  // namespace mgp

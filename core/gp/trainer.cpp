@@ -97,9 +97,9 @@ Eigen::VectorXd rawParams(const Eigen::VectorXd& psi) {
 }  // namespace
 
 double defaultPriorWeight(int outerIterations) {
-    constexpr double kQuickT = 10.0, kFullT = 100.0;
+    constexpr double kQuickT = 10.0, kFullT = 30.0;  // kFullT: the default T
     const double t = std::clamp(static_cast<double>(outerIterations), kQuickT, kFullT);
-    const double s = std::log(t / kQuickT) / std::log(kFullT / kQuickT);  // 0 at T ≤ 10, 1 at T ≥ 100
+    const double s = std::log(t / kQuickT) / std::log(kFullT / kQuickT);  // 0 at T ≤ 10, 1 at T ≥ 30
     return kQuickPriorWeight * std::pow(kFullPriorWeight / kQuickPriorWeight, s);
 }
 

@@ -32,8 +32,8 @@ namespace mgp::gp {
 enum class ConvergenceTest { kRaw, kLog };
 
 // λ of the temporal prior when none is given, by the outer-iteration budget T (docs/maths.md §19
-// says how it was chosen): kQuickPriorWeight for T ≤ 10, kFullPriorWeight for T ≥ 100, and
-// log-linear in T between. A short run starts from the PCA layout's fragments and needs the
+// says how it was chosen, §23 why the full weight starts at the default T = 30): kQuickPriorWeight
+// for T ≤ 10, kFullPriorWeight for T ≥ 30, and log-linear in T between. A short run starts from the PCA layout's fragments and needs the
 // stronger pull to join them within its few iterations; a long run joins them with the weaker
 // prior, which leaves the GP likelihood more say (better held-out reconstruction).
 constexpr double kQuickPriorWeight = 100.0;
@@ -43,7 +43,7 @@ double defaultPriorWeight(int outerIterations);
 struct TrainOptions {
     KernelKind kind = KernelKind::kFas;
     int activeSize = 200;       // M
-    int outerIterations = 100;  // T
+    int outerIterations = 30;   // T (docs/maths.md §23: what T = 100 bought over 30, measured)
     int scgIterations = 100;    // per Step 6
     int pointIterations = 100;  // per point in Step 8
     double tolerance = 0.01;    // C
