@@ -4,6 +4,7 @@
 //    repeats; each run is cancelled once it has published), and that model's outer iterations;
 //  - time_budget_5: `train --time-budget 5` on the same clip (the CLI's training call), its
 //    seconds and iterations, measured once;
+//  - default_run: the default `train` (T = 30) on the same clip, its seconds (measured once);
 //  - the first model's use: a 20 cm hand raise with both feet pinned on 10 frames across the
 //    clip, solved as `motiongp pose` solves it: how many reach, how many the model admits, and
 //    the median solve time.
@@ -79,6 +80,9 @@ const BenchRegistration firstModelBench("first_model", "From Train to a model th
         unwrapClip(unwrapped);
         std::vector<int> frames(unwrapped.frameCount());
         for (int t = 0; t < unwrapped.frameCount(); ++t) frames[t] = t;
+        gp::TrainResult full;
+        const double fullSeconds = secondsOf([&] { full = gp::train(gp::trainingDataFromClip(unwrapped, frames), defaults); });
+        out["default_run"] = {{"seconds", fullSeconds}, {"iterations", full.model.iterations}, {"T", defaults.outerIterations}};
         gp::TrainControl control;
         control.timeBudgetSeconds = 5.0;
         gp::TrainResult budget;

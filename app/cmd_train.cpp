@@ -70,7 +70,7 @@ const CommandRegistration trainCommand(
             std::string skel, model = "fas", frames, out, prior = gp::latentPriorName(gp::TrainOptions{}.prior);
             double priorWeight = 0.0;
             CLI::Option* priorWeightOption = nullptr;  // unset: gp::defaultPriorWeight(T)
-            int active = 200, iters = 100, scgIters = 100, step = 1, threads = 0;
+            int active = 200, iters = gp::TrainOptions{}.outerIterations, scgIters = 100, step = 1, threads = 0;
             double tol = 0.01, timeBudget = 0.0;
             bool json = false, backConstraints = false;
         };
@@ -82,7 +82,7 @@ const CommandRegistration trainCommand(
         sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
         sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
         sub.add_option("--active", o->active, "Active set size M (default 200; M ≥ N uses every frame)");
-        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default 30)");
+        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default " + std::to_string(gp::TrainOptions{}.outerIterations) + ")");
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
         sub.add_option("--prior", o->prior,
