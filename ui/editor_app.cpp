@@ -323,6 +323,7 @@ std::string EditorApp::trainOnClips(const std::vector<std::string>& a) {
 
 void EditorApp::dialogs() {
     if (auto path = dialog_.draw()) {
+        lastDialogFolder_ = std::filesystem::path(*path).parent_path().string();
         switch (purpose_) {
             case FileKind::kOpenAny: openAny(*path); break;
             case FileKind::kModel: openModel(*path); break;
@@ -350,6 +351,7 @@ void EditorApp::askForFile(FileKind kind, const std::string& what) {
 void EditorApp::openDialog(FileKind purpose) {
     if (purpose == FileKind::kNone) return;
     FileRequest r = fileRequest(purpose, state_.doc, sessionPath_, options_.mocapDir);
+    if (!lastDialogFolder_.empty()) r.startDir = lastDialogFolder_;  // where the user last was, as Blender does
     dialog_.open(std::move(r.title), r.mode, std::move(r.extensions), r.startDir, r.defaultName);
     purpose_ = purpose;
 }

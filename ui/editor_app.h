@@ -171,6 +171,7 @@ private:
     TimelinePanel timeline_;
     FileDialog dialog_;
     FileKind purpose_ = FileKind::kNone;  // what the open file dialog is for
+    std::string lastDialogFolder_;        // the folder of the last file a dialog gave ("" = none yet)
     float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
     EditorLayout layout_;
     EditorPrompts prompts_;

@@ -20,6 +20,7 @@ public:
     bool isOpen() const { return open_; }
     const std::string& title() const { return title_; }
     const char* typedPath() const { return path_; }
+    const std::string& folder() const { return dir_; }  // the folder listed
 
 private:
     void list(const std::string& dir);

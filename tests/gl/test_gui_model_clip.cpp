@@ -3,6 +3,7 @@
 // when there are edits), and a model of the open clip opens without a question.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "editor_app.h"
@@ -96,4 +97,24 @@ TEST_CASE("gui: a model of the open clip opens without a question") {
     h->frame(2);
     CHECK_FALSE(h->app->askingAboutModelClip());
     CHECK(h->app->state().doc.clip().name == "35_01");
+}
+
+TEST_CASE("gui: a file dialog opens in the folder of the last file a dialog gave") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    REQUIRE(h->app->runAction({"open-model"}) == "");
+    h->frame(2);
+    REQUIRE(h->app->fileDialog().isOpen());
+    const std::string path = test::fixtureModelPath();
+    h->input.chars.assign(path.begin(), path.end());
+    h->frame(2);
+    tapKey(*h, key::kEnter);
+    h->frame(3);
+    REQUIRE(h->app->state().doc.hasModel());
+    // Another dialog, another purpose: it starts where that model was, not in the data folder.
+    REQUIRE(h->app->runAction({"open"}) == "");
+    h->frame(2);
+    REQUIRE(h->app->fileDialog().isOpen());
+    CHECK(std::filesystem::equivalent(h->app->fileDialog().folder(), std::filesystem::path(path).parent_path()));
+    tapKey(*h, key::kEscape);
 }
