@@ -102,4 +102,9 @@ TEST_CASE("regeneration step: only the moved inner keys are taught to the model,
     CHECK(regenerationSummary(finishedJob(clip), true) ==
           "regenerated 5 frames, max residual 0.013 cm; angle 2nd difference p95 1.3° (captured 1.0°), max 3.5° "
           "(captured 3.0°); 2 contact(s) held (adaptive update queued)");
+    MotionEditJob missed = finishedJob(clip);
+    missed.keys = {{13, 17.31, false}, {14, 0.01, true}};
+    CHECK(regenerationSummary(missed, false) ==
+          "regenerated 5 frames, max residual 0.013 cm; angle 2nd difference p95 1.3° (captured 1.0°), max 3.5° "
+          "(captured 3.0°); 2 contact(s) held; the key on frame 14 missed its target by 17.3 cm");
 }

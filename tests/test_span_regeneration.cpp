@@ -120,6 +120,8 @@ TEST_CASE("editor: Regenerate holds the clip's contacts unless the user switches
         REQUIRE(doc.lastRegenerateQuality());
         CHECK(doc.lastRegenerateQuality()->contacts.size() == (on ? 1u : 0u));
         CHECK(doc.lastRegenerateQuality()->worstKeyErrorCm < 0.5);
+        REQUIRE(doc.lastRegenerateKeys().size() == 2);  // the inner keys, for the Path panel's rows
+        for (const MotionEditJob::KeyResult& k : doc.lastRegenerateKeys()) CHECK(k.reached);
         CHECK(doc.undo().empty());
         doc.endPathEdit();
     }

@@ -51,7 +51,18 @@ void keyTable(EditorState& s) {
         ImGui::TableNextColumn();
         char label[16];
         std::snprintf(label, sizeof label, "%d", k + 1);
+        // A key the last regeneration missed is red, with by how much.
+        const MotionEditJob::KeyResult* missed = nullptr;
+        for (const MotionEditJob::KeyResult& r : doc.lastRegenerateKeys())
+            if (r.frame == path.keyFrames[k] && !r.reached) missed = &r;
+        if (missed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
         if (ImGui::Selectable(label, s.selectedKey == k)) s.selectedKey = k;
+        if (missed) {
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("The last regeneration missed this key by %.1f cm (out of reach with the feet and pins held?)",
+                                  missed->errorCm);
+        }
         ImGui::TableNextColumn();
         int frame = path.keyFrames[k] + 1;
         ImGui::SetNextItemWidth(-1);

@@ -72,6 +72,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     editLineage_.clear();
     falloffStepLabel_.clear();
     lastRegenerateQuality_.reset();
+    lastRegenerateKeys_.clear();
     contactReleased_.fill(false);
     falloffRadius_ = defaultFalloffRadius(store_.clip().fps);
     frame_ = 0;
@@ -595,6 +596,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         return falloffSummary(*job, falloffRadius_, dragLabel);
     }
     lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
+    lastRegenerateKeys_ = job->keys;
     EditStep step = regenerationStep(*job, store_);
     if (models_.hasModel())
         for (AdaptiveSample& sample : movedKeySamples(*job)) {

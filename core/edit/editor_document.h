@@ -229,6 +229,8 @@ public:
     // The last finished path regeneration's span report (eval/motion_quality.h), if any (a drag's
     // falloff reports in the status line, not here).
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
+    // Its inner keys (frame, distance from the path, met or not); empty before the first one.
+    const std::vector<MotionEditJob::KeyResult>& lastRegenerateKeys() const { return lastRegenerateKeys_; }
 
     // ---- undo / redo -----------------------------------------------------------------------
     bool canUndo() const { return history_.canUndo(); }
@@ -290,6 +292,7 @@ private:
     PathSession paths_{store_.clip(), [this] { ++revision_; }};
     RegenerateJob regenerate_;
     std::optional<SpanQuality> lastRegenerateQuality_;
+    std::vector<MotionEditJob::KeyResult> lastRegenerateKeys_;
     int falloffRadius_ = 0;  // set by setClip
     double bodyStiffness_ = 1.0;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)

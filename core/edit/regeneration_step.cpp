@@ -55,7 +55,15 @@ std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
                   "(captured %.1f°); %zu contact(s) held%s",
                   job.solvedFrames.size(), job.maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
                   q.captured.maxDeg, job.held.size(), updateQueued ? " (adaptive update queued)" : "");
-    return summary;
+    std::string out = summary;
+    // A key the solve could not meet is said here too, not only in the Path panel's red rows.
+    for (const MotionEditJob::KeyResult& k : job.keys) {
+        if (k.reached) continue;
+        char missed[96];
+        std::snprintf(missed, sizeof missed, "; the key on frame %d missed its target by %.1f cm", k.frame + 1, k.errorCm);
+        out += missed;
+    }
+    return out;
 }
 
 std::string falloffSummary(const MotionEditJob& job, int falloffRadius, const std::string& stepLabel) {
