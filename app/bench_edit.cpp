@@ -78,7 +78,6 @@ const BenchRegistration editBench("edit", "Span regeneration vs per-frame: smoot
         gp::TrainOptions options;
         options.activeSize = ctx.quick ? 100 : 200;
         options.outerIterations = ctx.quick ? 3 : 20;
-        if (!ctx.quick) options.priorWeight = kEditBenchPriorWeight;
         const gp::ModelVersionPtr version =
             gp::ModelVersion::make(gp::trainOnClip(loadClip(ctx.mocapDir + "/asf_amc/" + c.clip + ".amc"), options).model);
         for (const char* dir : {"raise", "sideways"})

@@ -65,7 +65,6 @@ const BenchRegistration falloffBench("falloff", "Drag falloff: the dragged frame
             gp::TrainOptions options;
             options.activeSize = ctx.quick ? 100 : 200;
             options.outerIterations = ctx.quick ? 3 : 20;
-            if (!ctx.quick) options.priorWeight = kEditBenchPriorWeight;
             version = gp::ModelVersion::make(gp::trainOnClip(loadClip(ctx.mocapDir + "/asf_amc/" + c.clip + ".amc"), options).model);
             loaded = c.clip;
         }

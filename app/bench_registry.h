@@ -30,11 +30,6 @@ struct BenchRegistration {
     }
 };
 
-// The λ of the edit and falloff benches' T = 20 models: λ(20) of the prior rule they were
-// calibrated with (100 · 0.3^log10(2); docs/maths.md §19 before §23 moved the full weight to
-// T = 30), so that their rows stay comparable from round to round.
-constexpr double kEditBenchPriorWeight = 69.598;
-
 // Timing helpers: seconds of one call, and summary statistics of samples.
 double secondsOf(const std::function<void()>& fn);
 nlohmann::json summarizeSeconds(std::vector<double> samples);  // {"median", "p99", "min", "n"}
