@@ -462,11 +462,14 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     const float lh = ImGui::GetTextLineHeightWithSpacing();
     const float pad = 6.0f * ImGui::GetFontSize() / 15.0f;
     const char* labels[3] = {"in range", "near limit", "out of range"};
-    const int lines = v ? 3 : 1;
-    float textW = 0.0f;
-    for (const char* t : {l1, l2, l3}) textW = std::max(textW, ImGui::CalcTextSize(t).x);
-    const float barW = std::max(textW, ImGui::CalcTextSize("in range  near limit  out of range").x + 3 * pad);
-    const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + lh * lines + pad;
+    // A fixed width (the σ² line with 4 significant digits below 1), so the box does not change size from
+    // frame to frame; a longer line wraps inside it.
+    const float barW = std::max(ImGui::CalcTextSize("sigma^2 0.1234  (p99 0.1234, limit 0.1234)").x,
+                                ImGui::CalcTextSize("in range  near limit  out of range").x + 3 * pad);
+    const float gap = lh - ImGui::GetTextLineHeight();
+    const auto heightOf = [&](const char* t) { return t[0] ? ImGui::CalcTextSize(t, nullptr, false, barW).y + gap : 0.0f; };
+    const float h1 = heightOf(l1), h2 = heightOf(l2), h3 = heightOf(l3);
+    const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + h3 + pad;
     const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);
     dl->AddRectFilled(a, ImVec2(a.x + boxW, a.y + boxH), IM_COL32(20, 22, 26, 210), 4.0f);
     // The bar: one third per band; the middle third ramps from the neutral bone colour to amber.
@@ -493,11 +496,12 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
                            : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
                            : v->admitted ? IM_COL32(150, 230, 150, 255) : IM_COL32(255, 190, 90, 255);
-    float ty = by + bh + 6 + lh;
-    dl->AddText(ImVec2(bx, ty), IM_COL32(230, 232, 236, 255), l1);
+    const float ty = by + bh + 6 + lh;
+    const auto text = [&](float y, ImU32 c, const char* t) { dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(bx, y), c, t, nullptr, barW); };
+    text(ty, IM_COL32(230, 232, 236, 255), l1);
     if (v) {
-        dl->AddText(ImVec2(bx, ty + lh), IM_COL32(230, 232, 236, 255), l2);
-        dl->AddText(ImVec2(bx, ty + 2 * lh), stateCol, l3);
+        text(ty + h1, IM_COL32(230, 232, 236, 255), l2);
+        text(ty + h1 + h2, stateCol, l3);
     }
 }
 
