@@ -143,10 +143,13 @@ void EditorApp::pollTraining() {
     if (doc.dragging() || doc.latentDragging() || doc.regenerating()) return;
     const auto sameClip = [&](const gp::ModelVersionPtr& v) { return doc.hasClip() && sameCapture(doc.clip(), v->model->clip); };
     if (gp::ModelVersionPtr v = state_.training.takeRefinement()) {
+        const bool first = !doc.refining();
         doc.installRefinement(v, !sameClip(v));
         state_.modelLabel = std::string("refining ") + gp::kernelKindName(v->model->kind) + " (unsaved)";
-        state_.setStatus("a model from training iteration " + std::to_string(v->model->iterations) +
-                         " is ready to drag against; training goes on and replaces it between gestures");
+        // Said once; the later replacements show in the Model panel, not over the user's own messages.
+        if (first)
+            state_.setStatus("a model from training iteration " + std::to_string(v->model->iterations) +
+                             " is ready to drag against; training goes on and replaces it between gestures");
     }
     if (gp::ModelVersionPtr v = state_.training.take()) {
         const int taught = doc.refining() ? doc.finishRefinement(v, !sameClip(v)) : (doc.setModel(v, !sameClip(v)), 0);
