@@ -76,18 +76,13 @@ const BenchRegistration firstModelBench("first_model", "From Train to a model th
                      {"iterations", first->model->iterations},
                      {"hand_raise_20cm_feet_pinned", handRaises(first)}};
     if (!ctx.quick) {
-        Clip unwrapped = clip;
-        unwrapClip(unwrapped);
-        std::vector<int> frames(unwrapped.frameCount());
-        for (int t = 0; t < unwrapped.frameCount(); ++t) frames[t] = t;
         gp::TrainResult full;
-        const double fullSeconds = secondsOf([&] { full = gp::train(gp::trainingDataFromClip(unwrapped, frames), defaults); });
+        const double fullSeconds = secondsOf([&] { full = gp::trainOnClip(clip, defaults); });
         out["default_run"] = {{"seconds", fullSeconds}, {"iterations", full.model.iterations}, {"T", defaults.outerIterations}};
         gp::TrainControl control;
         control.timeBudgetSeconds = 5.0;
         gp::TrainResult budget;
-        const double seconds = secondsOf([&] { budget = gp::train(gp::trainingDataFromClip(unwrapped, frames), defaults, control); });
-        budget.model.clip = unwrapped;
+        const double seconds = secondsOf([&] { budget = gp::trainOnClip(clip, defaults, control); });
         out["time_budget_5"] = {{"seconds", seconds},
                                 {"iterations", budget.model.iterations},
                                 {"stopped_by_budget", budget.outOfTime},

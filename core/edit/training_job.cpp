@@ -93,6 +93,7 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
     const gp::TrainOptions& options = request.options;
     const PublishPolicy policy = policy_;
     double lastPublished = 0.0;
+    int published = 0;
     gp::TrainControl control;
     control.cancel = &cancel;
     control.afterIteration = [&](const gp::Trainer& trainer) {
@@ -106,7 +107,7 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         }
         // The last iteration's model is the final one (take()); earlier ones are published by the policy.
         const bool last = e.iter >= options.outerIterations;
-        const bool due = publishDue(policy, e.iter, elapsed() - lastPublished, progress().published);
+        const bool due = publishDue(policy, e.iter, elapsed() - lastPublished, published);
         if (last || !due || cancel.load()) return;
         gp::GpModel snapshot = gp::snapshotModel(trainer);
         gp::attachTrainingClips(snapshot, request.clips, request.selection);
@@ -114,7 +115,7 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         lastPublished = elapsed();
         std::lock_guard<std::mutex> lock(mutex_);
         refinement_ = std::move(version);
-        ++progress_.published;
+        progress_.published = ++published;
         progress_.publishedIteration = e.iter;
         progress_.publishedObjective = e.L;
     };

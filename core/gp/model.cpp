@@ -1,5 +1,6 @@
 #include "gp/model.h"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
@@ -45,6 +46,16 @@ std::string GpModel::clipNames() const {
     std::string out;
     for (int i = 0; i < clipCount(); ++i) out += (i ? ", " : "") + clipName(i);
     return out;
+}
+
+int GpModel::primaryRowNearest(int frame) const {
+    int nearest = -1;
+    for (int r = 0; r < static_cast<int>(trainingFrames.size()); ++r) {
+        if (rowClip(r) != 0) continue;
+        const int gap = std::abs(trainingFrames[static_cast<std::size_t>(r)] - frame);
+        if (nearest < 0 || gap < std::abs(trainingFrames[static_cast<std::size_t>(nearest)] - frame)) nearest = r;
+    }
+    return nearest < 0 ? 0 : nearest;
 }
 
 std::vector<int> GpModel::rowsOfClip(int c) const {

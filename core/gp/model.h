@@ -92,6 +92,9 @@ struct GpModel {
     int rowClip(int r) const { return trainingClips.empty() ? 0 : trainingClips[static_cast<std::size_t>(r)]; }
     // The training rows of clip c, in row order.
     std::vector<int> rowsOfClip(int c) const;
+    // The training row of the primary clip's `frame`, or of its nearest trained frame (the first
+    // such row; 0 when the primary clip has no rows, which training never produces).
+    int primaryRowNearest(int frame) const;
     // poseMatrix of every source clip, in clip order (one pose vector per frame).
     std::vector<Eigen::MatrixXd> clipPoseMatrices() const;
     int D() const { return static_cast<int>(mu.size()); }

@@ -94,6 +94,14 @@ Eigen::VectorXd rawParams(const Eigen::VectorXd& psi) {
     return out;
 }
 
+// The progress callback and cancel flag of the older train() signatures as a TrainControl.
+TrainControl controlOf(const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
+    TrainControl control;
+    if (progress) control.afterIteration = [&progress](const Trainer& t) { progress(t.log().back()); };
+    control.cancel = cancel;
+    return control;
+}
+
 }  // namespace
 
 double defaultPriorWeight(int outerIterations) {
@@ -295,10 +303,14 @@ TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const 
 
 TrainResult trainOnClip(Clip clip, const TrainOptions& options, const std::function<void(const IterationLog&)>& progress,
                         const std::atomic<bool>* cancel) {
+    return trainOnClip(std::move(clip), options, controlOf(progress, cancel));
+}
+
+TrainResult trainOnClip(Clip clip, const TrainOptions& options, const TrainControl& control) {
     unwrapClip(clip);
     std::vector<int> frames(clip.frameCount());
     for (int t = 0; t < clip.frameCount(); ++t) frames[t] = t;
-    TrainResult result = train(trainingDataFromClip(clip, frames), options, progress, cancel);
+    TrainResult result = train(trainingDataFromClip(clip, frames), options, control);
     result.model.clip = std::move(clip);
     return result;
 }
@@ -334,10 +346,7 @@ GpModel snapshotModel(const Trainer& trainer, bool converged) {
 
 TrainResult train(const TrainingData& data, const TrainOptions& options,
                   const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
-    TrainControl control;
-    if (progress) control.afterIteration = [&progress](const Trainer& t) { progress(t.log().back()); };
-    control.cancel = cancel;
-    return train(data, options, control);
+    return train(data, options, controlOf(progress, cancel));
 }
 
 TrainResult train(const TrainingData& data, const TrainOptions& options, const TrainControl& control) {

@@ -33,9 +33,10 @@ enum class ConvergenceTest { kRaw, kLog };
 
 // λ of the temporal prior when none is given, by the outer-iteration budget T (docs/maths.md §19
 // says how it was chosen, §23 why the full weight starts at the default T = 30): kQuickPriorWeight
-// for T ≤ 10, kFullPriorWeight for T ≥ 30, and log-linear in T between. A short run starts from the PCA layout's fragments and needs the
-// stronger pull to join them within its few iterations; a long run joins them with the weaker
-// prior, which leaves the GP likelihood more say (better held-out reconstruction).
+// for T ≤ 10, kFullPriorWeight for T ≥ 30, and log-linear in T between. A short run starts from
+// the PCA layout's fragments and needs the stronger pull to join them within its few iterations;
+// a long run joins them with the weaker prior, which leaves the GP likelihood more say (better
+// held-out reconstruction).
 constexpr double kQuickPriorWeight = 100.0;
 constexpr double kFullPriorWeight = 30.0;
 double defaultPriorWeight(int outerIterations);
@@ -194,6 +195,7 @@ TrainResult train(const TrainingData& data, const TrainOptions& options, const T
 TrainResult trainOnClip(Clip clip, const TrainOptions& options,
                         const std::function<void(const IterationLog&)>& progress = nullptr,
                         const std::atomic<bool>* cancel = nullptr);
+TrainResult trainOnClip(Clip clip, const TrainOptions& options, const TrainControl& control);
 
 // Fraction of `a` also in `b` (|a ∩ b| / |a|).
 double overlapFraction(const std::vector<int>& a, const std::vector<int>& b);

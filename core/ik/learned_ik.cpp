@@ -250,13 +250,9 @@ Eigen::VectorXd latentStartForFrame(const gp::ModelVersion& version, int frame) 
     const gp::GpModel& m = *version.model;
     // `frame` is a frame of the primary clip: only its rows count (another clip's frame numbers
     // say nothing about it). A multi-clip model has at least one row of every clip.
-    int nearest = -1;
-    for (int i = 0; i < m.N(); ++i) {
-        if (m.rowClip(i) != 0) continue;
-        if (m.trainingFrames[i] == frame) return m.X.row(i).transpose();
-        if (nearest < 0 || std::abs(m.trainingFrames[i] - frame) < std::abs(m.trainingFrames[nearest] - frame)) nearest = i;
-    }
-    if (nearest < 0) nearest = 0;
+    const int nearest = m.primaryRowNearest(frame);
+    if (m.rowClip(nearest) == 0 && m.trainingFrames[static_cast<std::size_t>(nearest)] == frame)
+        return m.X.row(nearest).transpose();
     const PoseLayout layout(m.clip.skeleton);
     const Eigen::VectorXd y = m.keptPose(layout.extract(m.clip.frames[frame]));
     const gp::ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
