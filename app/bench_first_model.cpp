@@ -13,6 +13,7 @@
 
 #include "bench_registry.h"
 #include "edit/training_job.h"
+#include "gp/admission.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
@@ -41,7 +42,9 @@ nlohmann::json handRaises(const gp::ModelVersionPtr& version) {
         seconds.push_back(secondsOf([&] { r = solver.solve(request); }));
         ++frames;
         reached += r.reached;
-        admitted += gp::admitPose(version->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints)).admitted;
+        admitted += gp::admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
+                                  r.sigma2, r.lik)
+                        .admitted;
     }
     return {{"frames", frames}, {"reached", reached}, {"admitted", admitted}, {"solve_seconds", summarizeSeconds(seconds)}};
 }

@@ -17,7 +17,7 @@
 #include "eval/nearest_pose.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
-#include "gp/training_range.h"
+#include "gp/admission.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
@@ -37,10 +37,18 @@ struct PoseOptions {
     double locality = kDefaultLocality;
 };
 
-nlohmann::json verdictJson(const gp::AdmissionVerdict& v) {
+nlohmann::json verdictJson(const gp::AdmissionVerdict& v, const gp::GpModel& model) {
     return {{"admitted", v.admitted},
+            {"judgement", gp::judgementWords(v.judgement)},
             {"reason", v.reason},
             {"reached", v.reached},
+            {"below_floor", v.belowFloor},
+            {"nearest_captured_cm", v.capture.nearestCm},
+            {"nearest_captured_limit_cm", v.nearestLimitCm},
+            {"nearest_captured_median_cm", v.nearestMedianCm},
+            {"nearest_captured_frame", v.capture.nearestFrame + 1},
+            {"nearest_captured_clip", v.capture.nearestClip >= 0 ? model.clipName(v.capture.nearestClip) : ""},
+            {"joint_range_violations", v.capture.rangeViolations},
             {"sigma2", v.sigma2},
             {"sigma2_limit", v.range.sigma2Limit},
             {"sigma2_percentile", v.range.sigma2Percentile},
@@ -151,8 +159,9 @@ int runPose(const PoseOptions& o) {
         j["x"] = std::vector<double>(x.data(), x.data() + x.size());
         j["sigma2"] = sigma2;
         j["L_IK"] = lik;
-        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, reached, sigma2, lik, anyBelowFloor(results));
-        j["natural"] = verdictJson(verdict);
+        const gp::AdmissionVerdict verdict =
+            gp::admitPose(*version, pose, movedEffectors(results), reached, anyBelowFloor(results), sigma2, lik);
+        j["natural"] = verdictJson(verdict, *version->model);
         if (o.adaptive) {
             if (!verdict.admitted) {
                 j["adaptive"] = {{"refused", true}, {"reason", verdict.reason}, {"rows", m.N()}};

@@ -1,15 +1,15 @@
 #pragma once
-// How far a solved pose lies outside the model's training range, as a bone tint (no GL).
-//
-// With p = TrainingRange::sigma2Percentile and L = sigma2Limit (= 2p, what admitPose allows):
-//   σ² ≤ p                    side colours (weight 0): the captured motion spans this much
-//   p < σ² ≤ L                amber, weight (σ² − p) / (L − p): admissible but nearing the limit
-//   σ² > L or L_IK > likLimit red, weight 1: admitPose refuses this pose
-// A non-finite σ² or L_IK counts as out of range. Amber starts at p rather than at L so the user
-// sees the limit coming while dragging, before the pose is refused.
+// How a solved pose is judged (gp/admission.h), as a bone tint (no GL):
+//   natural                         side colours (weight 0)
+//   unusual                         amber, weight = AdmissionVerdict::unusual: from the capture's
+//                                   median nearest-frame distance (0) to its limit (1); still taught
+//   unlike the captured data, out   red, weight 1: the adaptive update refuses this pose
+//   of reach, through the floor
+// Amber starts at the capture's median rather than at the limit, so the animator sees the limit
+// coming while dragging, before the pose is refused.
 #include <glm/glm.hpp>
 
-#include "gp/training_range.h"
+#include "gp/admission.h"
 #include "scene.h"
 
 namespace mgp::render {
@@ -25,9 +25,8 @@ struct RangeTint {
     float weight = 0.0f;  // 0: the side colours; 1: `colour` alone
 };
 
-RangeTint rangeTint(const gp::TrainingRange& range, double sigma2, double lik);
+RangeTint rangeTint(const gp::AdmissionVerdict& verdict);
 // Sets a figure's tint from rangeTint.
 void applyRangeTint(Figure& figure, const RangeTint& tint);
-const char* rangeBandLabel(RangeBand band);  // "sigma^2 in range", "near limit", "out of range"
 
 }  // namespace mgp::render

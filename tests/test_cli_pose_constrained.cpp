@@ -28,6 +28,14 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
     CHECK(j["natural"]["percentile"].get<double>() == 99.0);
     CHECK(j["natural"]["admitted"].is_boolean());
     CHECK(j["natural"]["L_IK_limit"].get<double>() > 0.0);
+    // The verdict in words and the capture's numbers behind it (gp/admission.h).
+    const std::string words = j["natural"]["judgement"].get<std::string>();
+    CHECK((words == "natural" || words == "unusual" || words == "unlike the captured data" || words == "out of reach"));
+    CHECK(j["natural"]["admitted"] == (words == "natural" || words == "unusual"));
+    CHECK(j["natural"]["nearest_captured_cm"].get<double>() >= 0.0);
+    CHECK(j["natural"]["nearest_captured_limit_cm"].get<double>() >= j["natural"]["nearest_captured_median_cm"].get<double>());
+    CHECK(j["natural"]["nearest_captured_frame"].get<int>() >= 1);
+    CHECK(j["natural"]["nearest_captured_clip"] == "35_01");
     // Frame 101 of the walk has a planted foot; it is held unless released.
     REQUIRE(j["contact_pins"].size() >= 1);
     const std::string foot = j["contact_pins"][0];

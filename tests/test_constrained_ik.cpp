@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 
+#include "gp/admission.h"
 #include "gp/trainer.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
@@ -182,8 +183,10 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
         CHECK(res.constraints[0].residualCm > 1.0);
         CHECK(res.constraints[1].residualCm <= 0.05);
         CHECK(res.constraints[2].residualCm <= 0.05);
-        const gp::AdmissionVerdict verdict = gp::admitPose(version->range, res.reached, res.sigma2, res.lik);
+        const gp::AdmissionVerdict verdict =
+            gp::admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, false, res.sigma2, res.lik);
         CHECK_FALSE(verdict.admitted);
+        CHECK(verdict.judgement == gp::PoseJudgement::kOutOfReach);
         CHECK(verdict.reason == "a target or pin was not reached");
         // The least-squares answer: no pose that holds the feet gets the hand closer (checked
         // against the same solve run 10× longer).
@@ -232,8 +235,10 @@ TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, r
         CHECK(res.constraints[0].residualCm >= 19.5);
         CHECK(res.constraints[1].residualCm <= 0.05);
         const gp::AdmissionVerdict verdict =
-            gp::admitPose(version->range, res.reached, res.sigma2, res.lik, anyBelowFloor(res.constraints));
+            gp::admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, anyBelowFloor(res.constraints),
+                          res.sigma2, res.lik);
         CHECK_FALSE(verdict.admitted);
+        CHECK(verdict.judgement == gp::PoseJudgement::kThroughFloor);
         CHECK(verdict.reason == "a target is below the floor: the effector was held on it");
         // Without a floor the same target is met below the ground.
         req.floorCm.reset();
@@ -459,7 +464,7 @@ TEST_CASE("constrained IK: bad requests give one clear diagnostic and the start 
     CHECK(res.diagnostic == "expected a 2-D latent start, found 3");
 }
 
-TEST_CASE("training range: the 99th percentiles of the captured frames scored as new poses, and the admission rule") {
+TEST_CASE("training range: the 99th percentiles of the captured frames scored as new poses") {
     const auto version = test::walkModel35();
     const gp::TrainingRange& r = version->range;
     CHECK(r.rows == version->model->N());
@@ -491,13 +496,6 @@ TEST_CASE("training range: the 99th percentiles of the captured frames scored as
     double sumOwn = 0.0, sumWindow = 0.0;
     for (std::size_t i = 0; i < lik.size(); ++i) sumOwn += likOwn[i], sumWindow += lik[i];
     CHECK(sumOwn < sumWindow);
-    CHECK(gp::admitPose(r, true, r.sigma2Median, r.likMedian).admitted);
-    CHECK(gp::admitPose(r, false, r.sigma2Median, r.likMedian).reason == "a target or pin was not reached");
-    const gp::AdmissionVerdict high = gp::admitPose(r, true, r.sigma2Median, 2.0 * std::abs(r.likLimit) + 1.0);
-    CHECK_FALSE(high.admitted);
-    CHECK(high.reason.find("L_IK") == 0);
-    CHECK_FALSE(gp::admitPose(r, true, 2.0 * r.sigma2Limit, r.likMedian).admitted);
-    CHECK_FALSE(gp::admitPose(r, true, NAN, r.likMedian).admitted);
 }
 
 TEST_CASE("point model: predicting while holding out active points equals a model built without them") {

@@ -48,6 +48,7 @@ void checkSameDoubles(const SessionData& a, const SessionData& b) {
         for (std::size_t k = 0; k < rec.pose.anglesDeg.size(); ++k) CHECK(rec.pose.anglesDeg[k] == other.pose.anglesDeg[k]);
         CHECK(rec.x.size() == other.x.size());
         CHECK(rec.x == other.x);
+        CHECK(rec.moved == other.moved);
     }
     CHECK(a.camera.yawDeg == b.camera.yawDeg);
     CHECK(a.camera.pitchDeg == b.camera.pitchDeg);
@@ -71,6 +72,7 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     Eigen::VectorXd x = model.X.row(12).transpose();
     x[0] += 1.0 / 3.0;
     s.edits[12] = nudgedEdit(model.clip, 12, x);
+    s.edits[12].moved = {Effector::kRHand, Effector::kHead};  // what the admission leaves out
     s.edits[40] = nudgedEdit(model.clip, 40, Eigen::VectorXd());  // solved by plain IK
     s.frame = 40;
     s.pins[static_cast<int>(Effector::kLFoot)] = true;
@@ -228,6 +230,9 @@ TEST_CASE("every damaged session file gives one exact error") {
     CHECK(mutated([](json& j) { j["camera"].erase("target_cm"); }) == f + ": expected field 'camera.target_cm', found none");
     CHECK(mutated([](json& j) { j["pins"] = json::array({"lknee"}); }) ==
           f + ": expected pins[0] as an effector name (lhand rhand lfoot rfoot head), found \"lknee\"");
+    CHECK(mutated([](json& j) { j["edits"][0]["moved"] = json::array({"lknee"}); }) ==
+          f + ": expected edits[0].moved[0] as an effector name (lhand rhand lfoot rfoot head), found \"lknee\"");
+    CHECK(mutated([](json& j) { j["edits"][0]["moved"] = 3; }) == f + ": expected edits[0].moved as an array, found 3");
     CHECK(mutated([](json& j) { j["compare_mode"] = "ghost"; }) ==
           f + ": expected compare_mode none, plain or model, found \"ghost\"");
     CHECK(mutated([](json& j) { j["edits"][0]["frame"] = -1; }) == f + ": expected edits[0].frame ≥ 0, found -1");

@@ -438,38 +438,34 @@ void ViewportPanel::draw(EditorState& s) {
     }
 }
 
-// Bottom-right corner (the hints are top-left, the caption bottom-left): the colour bar of render::rangeTint (side colour → amber at the σ² limit → red
-// beyond), the pose's σ² and L_IK against their limits, and whether an update would take it.
+// Bottom-right corner (the hints are top-left, the caption bottom-left): the colour bar of render::rangeTint (natural →
+// amber as the body nears the capture's limit → red when refused), the verdict in words and whether the model learns
+// from the pose; the numbers behind it in a tooltip over the box.
 void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     s.rangeLegend.clear();
     if (!s.showRangeTint || !s.doc.hasModel()) return;
     const std::optional<gp::AdmissionVerdict> v = s.doc.currentPoseVerdict();
-    const render::RangeTint tint = v ? render::rangeTint(v->range, v->sigma2, v->lik) : render::RangeTint{};
-    char l1[160], l2[160], l3[220];
+    const render::RangeTint tint = v ? render::rangeTint(*v) : render::RangeTint{};
+    std::string l1, l2;
     if (v) {
-        std::snprintf(l1, sizeof l1, "sigma^2 %.4g  (p%g %.4g, limit %.4g)", v->sigma2, v->range.percentile,
-                      v->range.sigma2Percentile, v->range.sigma2Limit);
-        std::snprintf(l2, sizeof l2, "L_IK %.4g  (limit %.4g)", v->lik, v->range.likLimit);
-        std::snprintf(l3, sizeof l3, "%s: %s", render::rangeBandLabel(tint.band),
-                      v->admitted ? "would be admitted" : ("refused (" + v->reason + ")").c_str());
+        l1 = std::string("this pose is ") + gp::judgementWords(v->judgement);
+        l2 = v->admitted ? "the model learns from it" : "kept as an edit, the model does not learn from it";
     } else {
-        std::snprintf(l1, sizeof l1, "no solved pose on this frame: not tinted");
-        l2[0] = l3[0] = '\0';
+        l1 = "no solved pose on this frame: not tinted";
     }
-    s.rangeLegend = std::string(l1) + (v ? "\n" + std::string(l2) + "\n" + l3 : "");
+    s.rangeLegend = l1 + (v ? "\n" + l2 : "");
 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float lh = ImGui::GetTextLineHeightWithSpacing();
     const float pad = 6.0f * ImGui::GetFontSize() / 15.0f;
-    const char* labels[3] = {"in range", "near limit", "out of range"};
-    // A fixed width (the σ² line with 4 significant digits below 1), so the box does not change size from
-    // frame to frame; a longer line wraps inside it.
-    const float barW = std::max(ImGui::CalcTextSize("sigma^2 0.1234  (p99 0.1234, limit 0.1234)").x,
-                                ImGui::CalcTextSize("in range  near limit  out of range").x + 3 * pad);
+    const char* labels[3] = {"natural", "unusual", "unlike the capture"};
+    // A fixed width, so the box does not change size from frame to frame; a longer line wraps inside it.
+    const float barW = std::max(ImGui::CalcTextSize("kept as an edit, the model does not learn from it").x,
+                                3.0f * (ImGui::CalcTextSize(labels[2]).x + pad));
     const float gap = lh - ImGui::GetTextLineHeight();
-    const auto heightOf = [&](const char* t) { return t[0] ? ImGui::CalcTextSize(t, nullptr, false, barW).y + gap : 0.0f; };
-    const float h1 = heightOf(l1), h2 = heightOf(l2), h3 = heightOf(l3);
-    const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + h3 + pad;
+    const auto heightOf = [&](const std::string& t) { return t.empty() ? 0.0f : ImGui::CalcTextSize(t.c_str(), nullptr, false, barW).y + gap; };
+    const float h1 = heightOf(l1), h2 = heightOf(l2);
+    const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + pad;
     const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);
     dl->AddRectFilled(a, ImVec2(a.x + boxW, a.y + boxH), IM_COL32(20, 22, 26, 210), 4.0f);
     // The bar: one third per band; the middle third ramps from the neutral bone colour to amber.
@@ -481,10 +477,10 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
                                 col(render::kRangeAmber), col(neutral));
     dl->AddRectFilled(ImVec2(bx + 2 * third, by), ImVec2(bx + barW, by + bh), col(render::kRangeRed));
     if (v) {
-        // Where this pose sits on the bar.
-        float at = tint.band == render::RangeBand::kOutOfRange ? 2.5f
-                   : tint.band == render::RangeBand::kNearLimit ? 1.0f + tint.weight
-                   : std::clamp(float(v->sigma2 / std::max(v->range.sigma2Percentile, 1e-300)), 0.0f, 1.0f);
+        // Where this pose sits on the bar: its nearest-frame distance against the capture's median, then the ramp.
+        const float at = tint.band == render::RangeBand::kOutOfRange ? 2.5f
+                         : tint.band == render::RangeBand::kNearLimit ? 1.0f + tint.weight
+                         : std::clamp(float(v->capture.nearestCm / std::max(v->nearestMedianCm, 1e-9)), 0.0f, 1.0f);
         const float px = bx + at * third;
         dl->AddTriangleFilled(ImVec2(px, by + bh + 1), ImVec2(px - 5, by + bh + 7), ImVec2(px + 5, by + bh + 7),
                               IM_COL32(255, 255, 255, 255));
@@ -495,14 +491,16 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     }
     const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
                            : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
-                           : v->admitted ? IM_COL32(150, 230, 150, 255) : IM_COL32(255, 190, 90, 255);
+                           : tint.band == render::RangeBand::kNearLimit ? IM_COL32(255, 190, 90, 255)
+                                                                         : IM_COL32(150, 230, 150, 255);
     const float ty = by + bh + 6 + lh;
-    const auto text = [&](float y, ImU32 c, const char* t) { dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(bx, y), c, t, nullptr, barW); };
-    text(ty, IM_COL32(230, 232, 236, 255), l1);
-    if (v) {
-        text(ty + h1, IM_COL32(230, 232, 236, 255), l2);
-        text(ty + h1 + h2, stateCol, l3);
-    }
+    const auto text = [&](float y, ImU32 c, const std::string& t) {
+        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(bx, y), c, t.c_str(), nullptr, barW);
+    };
+    text(ty, v ? stateCol : IM_COL32(230, 232, 236, 255), l1);
+    if (v) text(ty + h1, IM_COL32(230, 232, 236, 255), l2);
+    if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(a, ImVec2(a.x + boxW, a.y + boxH)))
+        ImGui::SetTooltip("%s", gp::admissionDetails(*v, *s.doc.model()->model).c_str());
 }
 
 }  // namespace mgp::ui

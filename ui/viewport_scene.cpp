@@ -67,7 +67,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
     if (s.showRangeTint && !s.posePreview)
         if (const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict())
-            render::applyRangeTint(scene.figures.back(), render::rangeTint(v->range, v->sigma2, v->lik));
+            render::applyRangeTint(scene.figures.back(), render::rangeTint(*v));
     scene.groundHeightCm = groundHeight_;
     scene.groundCentreCm = toGlm(fk.jointCm[0]);
     scene.handles = render::effectorHandles(doc.clip().skeleton, fk);

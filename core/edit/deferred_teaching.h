@@ -9,7 +9,7 @@
 
 #include "edit/adaptive_worker.h"
 #include "gp/model_version.h"
-#include "gp/training_range.h"
+#include "gp/admission.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp {
@@ -18,6 +18,7 @@ struct DeferredPose {
     int frame = 0;          // the edited clip frame (0-based)
     Eigen::VectorXd yKept;  // the accepted pose, the model's kept columns
     Pose edited;            // the frame's pose as accepted (it is taught only if the frame still has it)
+    std::vector<Effector> moved;  // what the edit put where the animator asked (gp/admission.h)
 };
 
 struct DeferredTeaching {

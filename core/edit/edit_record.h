@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "skeleton/pose_layout.h"
 
@@ -11,6 +12,9 @@ namespace mgp {
 struct EditRecord {
     Pose pose;
     Eigen::VectorXd x;  // latent point of the accepted pose (empty if solved without a model)
+    // The effectors the edit put where the animator asked (a drag's handle, a path's effector):
+    // the admission judges the rest of the body against the capture (gp/admission.h).
+    std::vector<Effector> moved;
 };
 
 // A change of edits, per frame (0-based): the new edit, or none for the captured pose.

@@ -196,9 +196,9 @@ int EditorDocument::finishRefinement(gp::ModelVersionPtr version, bool adoptClip
     return posted;
 }
 
-long EditorDocument::teach(AdaptiveSample sample, const Pose& edited) {
+long EditorDocument::teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved) {
     if (!refining_) return models_.post(std::move(sample));
-    if (models_.updating()) deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited});
+    if (models_.updating()) deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited, std::move(moved)});
     return 0;
 }
 
@@ -366,6 +366,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     rec.before = dragBefore_;
     rec.after.pose = drag_.pose();
     rec.after.x = drag_.x();
+    rec.after.moved = {rec.effector};
     rec.modelVersionBefore = dragVersionBefore_;
     drag_.finish();
     EditStep step;
@@ -377,7 +378,8 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
     const gp::AdmissionVerdict verdict =
-        learnedPose ? gp::admitPose(solvedOn->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints))
+        learnedPose ? gp::admitPose(*solvedOn, rec.after.pose, movedEffectors(r.constraints), r.reached,
+                                    anyBelowFloor(r.constraints), r.sigma2, r.lik)
                     : gp::AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
         models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
@@ -390,7 +392,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
         s.x = drag_.x();
         s.yKept = drag_.keptPose();
         s.clipFrame = frame_;
-        if (const long seq = teach(std::move(s), rec.after.pose); seq > 0) step.samples.push_back(seq);
+        if (const long seq = teach(std::move(s), rec.after.pose, rec.after.moved); seq > 0) step.samples.push_back(seq);
     }
     applyFrames(step.after);
     const std::string label = step.label;
@@ -602,7 +604,8 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         for (AdaptiveSample& sample : movedKeySamples(*job)) {
             const auto it = step.after.find(sample.clipFrame);
             if (it == step.after.end() || !it->second) continue;  // a moved key is always a regenerated frame
-            if (const long seq = teach(std::move(sample), it->second->pose); seq > 0) step.samples.push_back(seq);
+            if (const long seq = teach(std::move(sample), it->second->pose, it->second->moved); seq > 0)
+                step.samples.push_back(seq);
         }
     applyFrames(step.after);
     pushStep(std::move(step));
@@ -620,7 +623,8 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     if (drag_.active()) {
         const SolveReadout& r = drag_.readout();
         if (!r.valid || !r.learned) return std::nullopt;
-        return gp::admitPose(v->range, r.reached, r.sigma2, r.lik, anyBelowFloor(r.constraints));
+        return gp::admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints), r.sigma2,
+                             r.lik);
     }
     const auto it = store_.edits().find(frame_);
     if (it == store_.edits().end()) return std::nullopt;
@@ -638,7 +642,8 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     v->posterior->predict(x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
     const bool lastDragged = lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose);
-    return gp::admitPose(v->range, !lastDragged || lastDrag_.reached, sigma2, lik, lastDragged && lastDrag_.belowFloor);
+    return gp::admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor, sigma2,
+                         lik);
 }
 
 }  // namespace mgp

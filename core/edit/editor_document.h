@@ -35,7 +35,7 @@
 #include "edit/path_edit.h"
 #include "edit/path_session.h"
 #include "edit/regenerate_job.h"
-#include "gp/training_range.h"
+#include "gp/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/clip.h"
@@ -161,8 +161,8 @@ public:
     // (converged, no drag, or the refinement budget is spent).
     bool refine(int maxIterations = 50);
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
-    // the adaptive worker if gp::admitPose admits it (every constraint reached, σ² and L_IK
-    // within the training frames' range); a refused pose stays an edit, and the update table
+    // the adaptive worker if gp::admitPose admits it (every constraint reached, nothing through
+    // the floor, the body like the capture); a refused pose stays an edit, and the update table
     // and status say why. Returns what changed.
     std::optional<DragRecord> endDrag();
     // Drag falloff radius r in frames (motion/drag_falloff.h): with r > 0 and a model, a drag on
@@ -268,7 +268,7 @@ private:
     const Eigen::VectorXd& frameLatent(const gp::ModelVersion& v) const;
     // Posts an accepted pose to the adaptive worker, or keeps it for the final model while refining;
     // the sequence number of the post (0: none).
-    long teach(AdaptiveSample sample, const Pose& edited);
+    long teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved);
     std::string undoOrRedo(bool undo);
 
     ClipEdits store_;

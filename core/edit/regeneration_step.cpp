@@ -9,7 +9,7 @@ FrameEdits regeneratedFrames(const MotionEditJob& job) {
     FrameEdits out;
     for (std::size_t i = 0; i < job.solvedFrames.size(); ++i) {
         const int t = job.solvedFrames[i];
-        out[t] = EditRecord{job.frames[t], job.results[i].x};
+        out[t] = EditRecord{job.frames[t], job.results[i].x, {job.effector}};
     }
     return out;
 }

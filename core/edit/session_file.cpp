@@ -35,7 +35,13 @@ json editJson(const EditRecord& rec) {
     for (const auto& a : rec.pose.anglesDeg) angles.push_back(vec3Json(a));
     json x = json::array();
     for (Eigen::Index i = 0; i < rec.x.size(); ++i) x.push_back(rec.x[i]);
-    return {{"root_cm", vec3Json(rec.pose.rootCm)}, {"angles_deg", angles}, {"x", x}};
+    json out = {{"root_cm", vec3Json(rec.pose.rootCm)}, {"angles_deg", angles}, {"x", x}};
+    // Optional (older sessions have none): the effectors the edit put where the animator asked.
+    if (!rec.moved.empty()) {
+        out["moved"] = json::array();
+        for (Effector e : rec.moved) out["moved"].push_back(effectorName(e));
+    }
+    return out;
 }
 
 json frameEditsJson(const FrameEdits& frames) {
@@ -205,6 +211,11 @@ EditRecord readEdit(const Reader& r, const json& e, const std::string& what) {
     for (std::size_t k = 0; k < angles.size(); ++k)
         rec.pose.anglesDeg.push_back(r.vec3(angles[k], what + ".angles_deg[" + std::to_string(k) + "]"));
     rec.x = r.vector(r.field(e, "x", what), what + ".x");
+    if (e.contains("moved")) {
+        const json& moved = r.array(e["moved"], what + ".moved");
+        for (std::size_t k = 0; k < moved.size(); ++k)
+            rec.moved.push_back(r.effector(moved[k], what + ".moved[" + std::to_string(k) + "]"));
+    }
     return rec;
 }
 

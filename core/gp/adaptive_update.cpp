@@ -53,7 +53,7 @@ AdaptiveUpdateResult adaptiveUpdate(const ModelVersion& current, const Eigen::Ve
     for (std::size_t i = 0; i < m.active.size(); ++i) m.X.row(m.active[i]) = step.XI.row(static_cast<Eigen::Index>(i));
     m.w = step.w;
     try {
-        out.version = ModelVersion::make(std::move(m), current.number + 1);
+        out.version = ModelVersion::make(std::move(m), current.number + 1, &current);
     } catch (const std::exception& e) {
         out.diagnostic = std::string("expected a factorable kernel after the update, found: ") + e.what();
         return out;

@@ -5,6 +5,7 @@
 // never sees a half-updated model.
 #include <memory>
 
+#include "gp/capture_range.h"
 #include "gp/model.h"
 #include "gp/point_objective.h"
 #include "gp/training_range.h"
@@ -15,11 +16,16 @@ struct ModelVersion {
     int number = 0;  // 0 = as trained or loaded; +1 per accepted adaptive update
     std::shared_ptr<const GpModel> model;
     std::shared_ptr<const ActiveSetPosterior> posterior;
-    // σ² and L_IK percentiles over the training rows (what an admissible edited pose must meet).
+    // σ² and L_IK held-out percentiles over the training rows (what the model's score of a pose
+    // means; shown with every admission verdict).
     TrainingRange range;
+    // What the source clips' captured frames span (gp/capture_range.h): the admission's reference.
+    std::shared_ptr<const CaptureRange> capture;
 
-    // Builds the precomputation; throws std::runtime_error if K cannot be factored.
-    static std::shared_ptr<const ModelVersion> make(GpModel model, int number = 0);
+    // Builds the precomputation; throws std::runtime_error if K cannot be factored. `update`: the
+    // version this one updates (an adaptive update of the same clips), whose range and capture
+    // reference it keeps, so that teaching a pose never moves the limits the next pose is judged by.
+    static std::shared_ptr<const ModelVersion> make(GpModel model, int number = 0, const ModelVersion* update = nullptr);
 };
 
 using ModelVersionPtr = std::shared_ptr<const ModelVersion>;

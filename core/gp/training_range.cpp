@@ -56,31 +56,4 @@ TrainingRange computeTrainingRange(const GpModel& model, const ActiveSetPosterio
     return out;
 }
 
-AdmissionVerdict admitPose(const TrainingRange& range, bool reached, double sigma2, double lik, bool belowFloor) {
-    AdmissionVerdict v;
-    v.range = range;
-    v.reached = reached;
-    v.sigma2 = sigma2;
-    v.lik = lik;
-    v.sigma2InRange = std::isfinite(sigma2) && sigma2 <= range.sigma2Limit;
-    v.likInRange = std::isfinite(lik) && lik <= range.likLimit;
-    v.admitted = v.reached && v.sigma2InRange && v.likInRange;
-    char buf[200];
-    if (belowFloor) {
-        v.admitted = false;
-        v.reason = "a target is below the floor: the effector was held on it";
-    } else if (!v.reached) {
-        v.reason = "a target or pin was not reached";
-    } else if (!v.likInRange) {
-        std::snprintf(buf, sizeof buf, "L_IK %.4g is above the held-out training moments' %gth percentile %.4g", lik, range.percentile,
-                      range.likLimit);
-        v.reason = buf;
-    } else if (!v.sigma2InRange) {
-        std::snprintf(buf, sizeof buf, "σ² %.4g is above %g × the held-out training moments' %gth percentile %.4g", sigma2,
-                      kSigma2Margin, range.percentile, range.sigma2Percentile);
-        v.reason = buf;
-    }
-    return v;
-}
-
 }  // namespace mgp::gp

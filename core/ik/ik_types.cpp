@@ -8,6 +8,13 @@ bool anyBelowFloor(const std::vector<IkConstraintResult>& results) {
     return std::any_of(results.begin(), results.end(), [](const IkConstraintResult& r) { return r.belowFloor; });
 }
 
+std::vector<Effector> movedEffectors(const std::vector<IkConstraintResult>& results) {
+    std::vector<Effector> out;
+    for (const IkConstraintResult& r : results)
+        if (!r.pin) out.push_back(r.effector);
+    return out;
+}
+
 std::string validateConstraints(const Skeleton& skeleton, const std::vector<IkConstraint>& constraints) {
     bool seen[kEffectorCount] = {};
     for (const IkConstraint& c : constraints) {

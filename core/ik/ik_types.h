@@ -42,6 +42,8 @@ struct IkConstraintResult {
 
 // Whether any result is a target held on the floor instead of below it.
 bool anyBelowFloor(const std::vector<IkConstraintResult>& results);
+// The effectors a solve put somewhere (its targets, not its pins), in request order.
+std::vector<Effector> movedEffectors(const std::vector<IkConstraintResult>& results);
 
 // Checks targets before a solve; returns "" if fine, else what is wrong (NaN target, unknown
 // effector on this skeleton, the same effector twice, a strength outside (0, 1]).

@@ -1,6 +1,6 @@
 // The viewport's pose-range tint and legend, driven through the editor offscreen with the committed
-// walk model: a hand dragged far out of reach turns the figure red and the legend says the pose is
-// out of range and refused; a small drag stays admissible; a captured frame is never tinted. The
+// walk model: a hand dragged far out of reach turns the figure red and the legend says, in words,
+// that the model does not learn from it; a small drag stays admissible; a captured frame is never tinted. The
 // tint is read from the scene the viewport built (plain data), not from pixels.
 #include <doctest/doctest.h>
 
@@ -48,15 +48,14 @@ TEST_CASE("gui range tint: a hand dragged far out of reach is red and refused") 
     REQUIRE(doc.dragging());
     std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
     REQUIRE(v);
-    INFO("sigma2 " << v->sigma2 << " (limit " << v->range.sigma2Limit << ")  lik " << v->lik << " (limit "
-                   << v->range.likLimit << ")  reached " << v->reached << "  legend: " << s.rangeLegend);
+    INFO("reason '" << v->reason << "'  legend: " << s.rangeLegend);
     CHECK_FALSE(v->admitted);
-    CHECK((v->sigma2 > v->range.sigma2Limit || v->lik > v->range.likLimit));
+    CHECK((v->judgement == gp::PoseJudgement::kOutOfReach || v->judgement == gp::PoseJudgement::kUnlikeCapture));
     const render::Figure& live = shownFigure(*h->app);
     CHECK(live.tintWeight == 1.0f);
     CHECK(live.tint == render::kRangeRed);
-    CHECK(contains(s.rangeLegend, "out of range"));
-    CHECK(contains(s.rangeLegend, "refused"));
+    CHECK(contains(s.rangeLegend, std::string("this pose is ") + gp::judgementWords(v->judgement)));
+    CHECK(contains(s.rangeLegend, "the model does not learn from it"));
 
     errors = h->play(ui::GuiScript::parse("0 up left\n"));
     REQUIRE(errors.empty());
@@ -70,8 +69,7 @@ TEST_CASE("gui range tint: a hand dragged far out of reach is red and refused") 
     CHECK_FALSE(v->admitted);
     CHECK(shownFigure(*h->app).tint == render::kRangeRed);
     CHECK(shownFigure(*h->app).tintWeight == 1.0f);
-    CHECK(contains(s.rangeLegend, "out of range"));
-    CHECK(contains(s.rangeLegend, "refused"));
+    CHECK(contains(s.rangeLegend, "the model does not learn from it"));
     CHECK(contains(doc.adaptiveStatus(), "not added to the model"));
 
     // View > Pose range tint off: side colours and no legend.
@@ -96,28 +94,28 @@ TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
     doc.setDragFalloff(0);
     doc.setFrame(40);
     h->frame(2);
-    const auto errors = h->play(ui::GuiScript::parse("0 hover rhand\n2 down left\n4 moveby 0 -4\n6 moveby 0 -4\n"));
+    const auto errors = h->play(ui::GuiScript::parse("0 hover rhand\n2 down left\n4 moveby 0 -2\n"));
     REQUIRE(errors.empty());
     REQUIRE(doc.dragging());
     const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
     REQUIRE(v);
-    INFO("sigma2 " << v->sigma2 << " (p " << v->range.sigma2Percentile << ", limit " << v->range.sigma2Limit << ")  lik "
-                   << v->lik << " (limit " << v->range.likLimit << ")  legend: " << s.rangeLegend);
+    INFO("reason '" << v->reason << "'  nearest captured frame " << v->capture.nearestCm << " cm (median " << v->nearestMedianCm << ", limit "
+                                   << v->nearestLimitCm << ")  legend: " << s.rangeLegend);
     CHECK(v->admitted);
-    const render::RangeTint expected = render::rangeTint(v->range, v->sigma2, v->lik);
+    const render::RangeTint expected = render::rangeTint(*v);
     CHECK(expected.band != render::RangeBand::kOutOfRange);
     const render::Figure& f = shownFigure(*h->app);
     CHECK(f.tintWeight == expected.weight);
     CHECK(f.tintWeight < 1.0f);
     CHECK(f.tint != render::kRangeRed);
-    CHECK(contains(s.rangeLegend, "would be admitted"));
-    CHECK_FALSE(contains(s.rangeLegend, "out of range"));
+    CHECK(contains(s.rangeLegend, "the model learns from it"));
+    CHECK_FALSE(contains(s.rangeLegend, "unlike"));
     const int rowsBefore = static_cast<int>(doc.model()->model->X.rows());
     REQUIRE(h->play(ui::GuiScript::parse("0 up left\n")).empty());
     REQUIRE(doc.isEdited(40));
     h->app->waitIdle();
     h->frame(2);
-    CHECK(contains(s.rangeLegend, "would be admitted"));
+    CHECK(contains(s.rangeLegend, "the model learns from it"));
     // The update taught the model the pose: it is judged at the latent point the update gave its
     // new training row, not at the x solved on the previous version.
     const gp::ModelVersionPtr now = doc.model();
