@@ -2,7 +2,7 @@
 // naturalness (docs/maths-ik.md §5)? On four CMU clips, a default model is trained on each; on six
 // frames a hand, foot or the head is moved 5–40 cm up, forward, sideways and (feet) down, solved
 // as `motiongp pose` solves it. Each pose is judged by
-//  - the rule (gp/admission.h): reached, not through the floor, and like the capture (the
+//  - the rule (eval/admission.h): reached, not through the floor, and like the capture (the
 //    training clip's joint ranges and nearest frame);
 //  - the model's score alone (the former rule): L_IK and σ² within the held-out percentiles;
 //  - the judge, which the rule never sees: the editing-range protocol's joint-range, nearest-frame
@@ -13,7 +13,7 @@
 #include "bench_registry.h"
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
@@ -94,8 +94,9 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
                         capturedPoseRequest(*version, t, {{e, target, false}}, contacts, 200);
                     const ConstrainedIkResult r = solver.solve(request);
                     const bool belowFloor = anyBelowFloor(r.constraints);
-                    const gp::AdmissionVerdict verdict =
-                        gp::admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, belowFloor, r.sigma2, r.lik);
+                    const AdmissionVerdict verdict =
+                        admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, belowFloor, r.sigma2, r.lik,
+                                  judgeBalance(trained.skeleton, start, r.pose, contacts, t));
                     const bool ruleAdmits = verdict.admitted;
                     // The former rule: the model's held-out score percentiles.
                     const bool scoreAdmits = r.reached && !belowFloor && r.lik <= version->range.likLimit &&
@@ -106,7 +107,7 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
                     score.add(scoreAdmits, judgeAdmits);
                     samples.push_back({{"clip", spec.training}, {"frame", t + 1}, {"effector", effectorName(e)},
                                        {"direction", dirName}, {"delta_cm", delta}, {"reached", r.reached},
-                                       {"below_floor", belowFloor}, {"lik", r.lik}, {"sigma2", r.sigma2},
+                                       {"below_floor", belowFloor}, {"off_balance", verdict.balance.offBalance}, {"lik", r.lik}, {"sigma2", r.sigma2},
                                        {"nearest_cm", verdict.capture.nearestCm}, {"capture_ranges", verdict.capture.ranges},
                                        {"rule", ruleAdmits}, {"score", scoreAdmits}, {"judge", judgeAdmits},
                                        {"judge_ranges", v.ranges}, {"judge_nearest", v.nearest},

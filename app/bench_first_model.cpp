@@ -13,7 +13,7 @@
 
 #include "bench_registry.h"
 #include "edit/training_job.h"
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
@@ -42,8 +42,8 @@ nlohmann::json handRaises(const gp::ModelVersionPtr& version) {
         seconds.push_back(secondsOf([&] { r = solver.solve(request); }));
         ++frames;
         reached += r.reached;
-        admitted += gp::admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
-                                  r.sigma2, r.lik)
+        admitted += admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
+                              r.sigma2, r.lik, judgeBalance(clip.skeleton, pose, r.pose, contacts, t))
                         .admitted;
     }
     return {{"frames", frames}, {"reached", reached}, {"admitted", admitted}, {"solve_seconds", summarizeSeconds(seconds)}};

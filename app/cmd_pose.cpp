@@ -17,7 +17,7 @@
 #include "eval/nearest_pose.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
@@ -37,12 +37,14 @@ struct PoseOptions {
     double locality = kDefaultLocality;
 };
 
-nlohmann::json verdictJson(const gp::AdmissionVerdict& v, const gp::GpModel& model) {
+nlohmann::json verdictJson(const AdmissionVerdict& v, const gp::GpModel& model) {
     return {{"admitted", v.admitted},
-            {"judgement", gp::judgementWords(v.judgement)},
+            {"judgement", judgementWords(v.judgement)},
             {"reason", v.reason},
             {"reached", v.reached},
             {"below_floor", v.belowFloor},
+            {"balance_judged", v.balance.judged},
+            {"com_outside_support_cm", v.balance.outsideCm},
             {"nearest_captured_cm", v.capture.nearestCm},
             {"nearest_captured_limit_cm", v.nearestLimitCm},
             {"nearest_captured_median_cm", v.nearestMedianCm},
@@ -159,8 +161,9 @@ int runPose(const PoseOptions& o) {
         j["x"] = std::vector<double>(x.data(), x.data() + x.size());
         j["sigma2"] = sigma2;
         j["L_IK"] = lik;
-        const gp::AdmissionVerdict verdict =
-            gp::admitPose(*version, pose, movedEffectors(results), reached, anyBelowFloor(results), sigma2, lik);
+        const AdmissionVerdict verdict =
+            admitPose(*version, pose, movedEffectors(results), reached, anyBelowFloor(results), sigma2, lik,
+                      judgeBalance(clip.skeleton, clip.frames[frame], pose, contacts, frame));
         j["natural"] = verdictJson(verdict, *version->model);
         if (o.adaptive) {
             if (!verdict.admitted) {

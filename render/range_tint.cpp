@@ -5,7 +5,7 @@
 
 namespace mgp::render {
 
-RangeTint rangeTint(const gp::AdmissionVerdict& verdict) {
+RangeTint rangeTint(const AdmissionVerdict& verdict) {
     RangeTint t;
     if (!verdict.admitted) {
         t.band = RangeBand::kOutOfRange;
@@ -13,7 +13,7 @@ RangeTint rangeTint(const gp::AdmissionVerdict& verdict) {
         t.weight = 1.0f;
         return t;
     }
-    if (verdict.judgement == gp::PoseJudgement::kNatural) return t;
+    if (verdict.judgement == PoseJudgement::kNatural) return t;
     t.band = RangeBand::kNearLimit;
     t.colour = kRangeAmber;
     t.weight = static_cast<float>(std::clamp(std::isfinite(verdict.unusual) ? verdict.unusual : 1.0, 0.0, 1.0));

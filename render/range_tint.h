@@ -1,5 +1,5 @@
 #pragma once
-// How a solved pose is judged (gp/admission.h), as a bone tint (no GL):
+// How a solved pose is judged (eval/admission.h), as a bone tint (no GL):
 //   natural                         side colours (weight 0)
 //   unusual                         amber, weight = AdmissionVerdict::unusual: from the capture's
 //                                   median nearest-frame distance (0) to its limit (1); still taught
@@ -9,7 +9,7 @@
 // coming while dragging, before the pose is refused.
 #include <glm/glm.hpp>
 
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "scene.h"
 
 namespace mgp::render {
@@ -25,7 +25,7 @@ struct RangeTint {
     float weight = 0.0f;  // 0: the side colours; 1: `colour` alone
 };
 
-RangeTint rangeTint(const gp::AdmissionVerdict& verdict);
+RangeTint rangeTint(const AdmissionVerdict& verdict);
 // Sets a figure's tint from rangeTint.
 void applyRangeTint(Figure& figure, const RangeTint& tint);
 

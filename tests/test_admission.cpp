@@ -1,4 +1,4 @@
-// The adaptive update's admission (core/gp/admission.h, core/gp/capture_range.h): judged against
+// The adaptive update's admission (core/eval/admission.h, core/gp/capture_range.h): judged against
 // the captured frames, not the model; its limits never move with an update; it agrees with the
 // editing-range protocol's naturalness tests at least as well as the model's own score did.
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
 #include "gp/adaptive_update.h"
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
 #include "skeleton/forward_kinematics.h"
@@ -20,8 +20,8 @@ using namespace mgp;
 
 namespace {
 
-gp::AdmissionVerdict admitCaptured(const gp::ModelVersion& v, const Pose& pose, std::vector<Effector> moved = {}) {
-    return gp::admitPose(v, pose, moved, true, false, 0.0, 0.0);
+AdmissionVerdict admitCaptured(const gp::ModelVersion& v, const Pose& pose, std::vector<Effector> moved = {}) {
+    return admitPose(v, pose, moved, true, false, 0.0, 0.0);
 }
 
 }  // namespace
@@ -40,12 +40,12 @@ TEST_CASE("capture range: every captured frame's angles and body shape, the root
     CHECK(c.nearestLimitCm >= c.nearestMedianCm);
     // Each captured frame is its own nearest frame, like the capture and, unmoved, natural.
     for (int t : {0, 100, 357}) {
-        const gp::AdmissionVerdict v = admitCaptured(*version, clip.frames[t]);
+        const AdmissionVerdict v = admitCaptured(*version, clip.frames[t]);
         CHECK(v.capture.nearestCm == 0.0);
         CHECK(v.capture.nearestFrame == t);
         CHECK(v.capture.ranges);
         CHECK(v.admitted);
-        CHECK(v.judgement == gp::PoseJudgement::kNatural);
+        CHECK(v.judgement == PoseJudgement::kNatural);
         CHECK(v.reason.empty());
     }
     // The shape is root-relative: moving the whole body changes nothing.
@@ -96,10 +96,10 @@ TEST_CASE("admission: a moved limb is left out of the distance, the rest of the 
     // captured frame's exactly; judged as a whole body it is not.
     Pose pose = version->model->clip.frames[100];
     pose.anglesDeg[sk.findBone("rhumerus")].x() += 20.0;
-    const gp::AdmissionVerdict handMoved = admitCaptured(*version, pose, {Effector::kRHand});
+    const AdmissionVerdict handMoved = admitCaptured(*version, pose, {Effector::kRHand});
     CHECK(handMoved.capture.nearestCm == 0.0);
     CHECK(handMoved.capture.nearestFrame == 100);
-    const gp::AdmissionVerdict whole = admitCaptured(*version, pose);
+    const AdmissionVerdict whole = admitCaptured(*version, pose);
     CHECK(whole.capture.nearestCm > 0.5);
 }
 
@@ -118,7 +118,7 @@ TEST_CASE("admission: an angle past its captured range by more than the margin i
     Eigen::VectorXd q = layout.extract(pose);
     q[dof] = c.qMax[dof] + margin - 0.1;  // just inside
     layout.apply(q.data(), pose);
-    gp::AdmissionVerdict v = admitCaptured(*version, pose, {Effector::kRFoot});
+    AdmissionVerdict v = admitCaptured(*version, pose, {Effector::kRFoot});
     CHECK(v.capture.ranges);
     q[dof] = c.qMax[dof] + margin + 3.0;  // 3° outside
     layout.apply(q.data(), pose);
@@ -127,27 +127,35 @@ TEST_CASE("admission: an angle past its captured range by more than the margin i
     CHECK(v.capture.worstDof == dof);
     CHECK(v.capture.worstExcessDeg == doctest::Approx(3.0));
     CHECK_FALSE(v.admitted);
-    CHECK(v.judgement == gp::PoseJudgement::kUnlikeCapture);
+    CHECK(v.judgement == PoseJudgement::kUnlikeCapture);
     CHECK(v.reason == "unlike the captured data (" + layout.dofName(sk, dof) + " is 3 deg past its captured range)");
-    CHECK(std::string(gp::judgementWords(v.judgement)) == "unlike the captured data");
+    CHECK(std::string(judgementWords(v.judgement)) == "unlike the captured data");
     // A whole turn is the same angle.
     q[dof] = c.qMax[dof] + margin - 0.1 + 360.0;
     layout.apply(q.data(), pose);
     CHECK(admitCaptured(*version, pose, {Effector::kRFoot}).capture.ranges);
 }
 
-TEST_CASE("admission: the floor and reach come first, then the capture, and the amber ramp runs from the median to the limit") {
+TEST_CASE("admission: the floor, reach and balance come first, then the capture, and the amber ramp runs from the median to the limit") {
     const auto version = test::walkModel35();
     const Pose& captured = version->model->clip.frames[100];
-    gp::AdmissionVerdict v = gp::admitPose(*version, captured, {}, true, true, 0.1, 1.0);
-    CHECK(v.judgement == gp::PoseJudgement::kThroughFloor);
+    AdmissionVerdict v = admitPose(*version, captured, {}, true, true, 0.1, 1.0);
+    CHECK(v.judgement == PoseJudgement::kThroughFloor);
     CHECK(v.reason == "a target is below the floor: the effector was held on it");
-    v = gp::admitPose(*version, captured, {}, false, false, 0.1, 1.0);
-    CHECK(v.judgement == gp::PoseJudgement::kOutOfReach);
+    v = admitPose(*version, captured, {}, false, false, 0.1, 1.0);
+    CHECK(v.judgement == PoseJudgement::kOutOfReach);
     CHECK(v.reason == "a target or pin was not reached");
     CHECK_FALSE(v.admitted);
+    Balance tipped;
+    tipped.judged = tipped.offBalance = true;
+    tipped.outsideCm = 6.25;
+    v = admitPose(*version, captured, {}, true, false, 0.1, 1.0, tipped);
+    CHECK(v.judgement == PoseJudgement::kOffBalance);
+    CHECK(v.reason == "off balance (the centre of mass is 6.2 cm outside the planted feet's support)");
+    CHECK(std::string(judgementWords(v.judgement)) == "off balance");
+    CHECK_FALSE(v.admitted);
     // The model's score is reported, never judged: a huge L_IK on a captured pose is admitted.
-    v = gp::admitPose(*version, captured, {}, true, false, 1e9, 1e12);
+    v = admitPose(*version, captured, {}, true, false, 1e9, 1e12);
     CHECK(v.admitted);
     CHECK(v.lik == 1e12);
     // Bend the spine step by step: the verdict goes natural → unusual → unlike (by distance or
@@ -162,18 +170,18 @@ TEST_CASE("admission: the floor and reach come first, then the capture, and the 
         const double d = v.capture.nearestCm;
         if (!v.capture.ranges) {
             sawUnlike = true;
-            CHECK(v.judgement == gp::PoseJudgement::kUnlikeCapture);
+            CHECK(v.judgement == PoseJudgement::kUnlikeCapture);
             CHECK(v.reason.find("past its captured range") != std::string::npos);
         } else if (d <= c.nearestMedianCm) {
-            CHECK(v.judgement == gp::PoseJudgement::kNatural);
+            CHECK(v.judgement == PoseJudgement::kNatural);
         } else if (d <= c.nearestLimitCm) {
             sawUnusual = true;
-            CHECK(v.judgement == gp::PoseJudgement::kUnusual);
+            CHECK(v.judgement == PoseJudgement::kUnusual);
             CHECK(v.admitted);
             CHECK(v.unusual == doctest::Approx((d - c.nearestMedianCm) / (c.nearestLimitCm - c.nearestMedianCm)));
         } else {
             sawUnlike = true;
-            CHECK(v.judgement == gp::PoseJudgement::kUnlikeCapture);
+            CHECK(v.judgement == PoseJudgement::kUnlikeCapture);
             CHECK_FALSE(v.admitted);
             CHECK(v.reason.rfind("unlike the captured data (the body is ", 0) == 0);
         }
@@ -220,7 +228,7 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
                 const NaturalnessVerdict j = judge.judge(clip.skeleton, layout.extract(r.pose), nullptr);
                 const bool natural = r.reached && !floor && j.ranges && j.nearest && j.density;
                 const bool admitted =
-                    gp::admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, floor, r.sigma2, r.lik).admitted;
+                    admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, floor, r.sigma2, r.lik).admitted;
                 const bool byScore = r.reached && !floor && r.lik <= version->range.likLimit && r.sigma2 <= version->range.sigma2Limit;
                 ++n;
                 rule += admitted == natural;

@@ -28,7 +28,7 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
     CHECK(j["natural"]["percentile"].get<double>() == 99.0);
     CHECK(j["natural"]["admitted"].is_boolean());
     CHECK(j["natural"]["L_IK_limit"].get<double>() > 0.0);
-    // The verdict in words and the capture's numbers behind it (gp/admission.h).
+    // The verdict in words and the capture's numbers behind it (eval/admission.h).
     const std::string words = j["natural"]["judgement"].get<std::string>();
     CHECK((words == "natural" || words == "unusual" || words == "unlike the captured data" || words == "out of reach"));
     CHECK(j["natural"]["admitted"] == (words == "natural" || words == "unusual"));

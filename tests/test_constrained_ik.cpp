@@ -6,7 +6,7 @@
 #include <map>
 #include <mutex>
 
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "gp/trainer.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
@@ -183,10 +183,10 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
         CHECK(res.constraints[0].residualCm > 1.0);
         CHECK(res.constraints[1].residualCm <= 0.05);
         CHECK(res.constraints[2].residualCm <= 0.05);
-        const gp::AdmissionVerdict verdict =
-            gp::admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, false, res.sigma2, res.lik);
+        const AdmissionVerdict verdict =
+            admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, false, res.sigma2, res.lik);
         CHECK_FALSE(verdict.admitted);
-        CHECK(verdict.judgement == gp::PoseJudgement::kOutOfReach);
+        CHECK(verdict.judgement == PoseJudgement::kOutOfReach);
         CHECK(verdict.reason == "a target or pin was not reached");
         // The least-squares answer: no pose that holds the feet gets the hand closer (checked
         // against the same solve run 10× longer).
@@ -234,11 +234,11 @@ TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, r
         CHECK(res.constraints[0].residualCm == doctest::Approx((got - asked).norm()));
         CHECK(res.constraints[0].residualCm >= 19.5);
         CHECK(res.constraints[1].residualCm <= 0.05);
-        const gp::AdmissionVerdict verdict =
-            gp::admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, anyBelowFloor(res.constraints),
+        const AdmissionVerdict verdict =
+            admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, anyBelowFloor(res.constraints),
                           res.sigma2, res.lik);
         CHECK_FALSE(verdict.admitted);
-        CHECK(verdict.judgement == gp::PoseJudgement::kThroughFloor);
+        CHECK(verdict.judgement == PoseJudgement::kThroughFloor);
         CHECK(verdict.reason == "a target is below the floor: the effector was held on it");
         // Without a floor the same target is met below the ground.
         req.floorCm.reset();

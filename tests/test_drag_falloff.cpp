@@ -125,7 +125,7 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     doc.dragTo(target, 200);
     REQUIRE(doc.endDrag());
     const Pose released = doc.currentPose();  // what the user saw on release
-    const std::optional<gp::AdmissionVerdict> releasedVerdict = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> releasedVerdict = doc.currentPoseVerdict();
     REQUIRE(releasedVerdict);
     doc.waitIdle();
     const std::string summary = doc.pollRegenerate();
@@ -139,7 +139,7 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     const Pose dragged = poseAt(109);
     for (int j = 0; j < clip.skeleton.jointCount(); ++j) CHECK(dragged.anglesDeg[j] == released.anglesDeg[j]);
     // So the range legend still judges the pose the user released (it judged a re-solved one).
-    const std::optional<gp::AdmissionVerdict> verdict = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> verdict = doc.currentPoseVerdict();
     REQUIRE(verdict);
     CHECK(verdict->lik == releasedVerdict->lik);
     CHECK(verdict->sigma2 == releasedVerdict->sigma2);

@@ -68,7 +68,7 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
         REQUIRE(doc.undo() == "");  // back to v1
         REQUIRE(doc.model() == v1);
         doc.setFrame(200);
-        dragBy(doc, Effector::kLFoot, {3, 0, 0});
+        dragBy(doc, Effector::kLFoot, {0, 0, 3});  // a move the admission takes (balanced, like the capture)
         CHECK_FALSE(doc.canRedo());
         doc.waitIdle();
         INFO("adaptive: " << doc.adaptiveStatus());

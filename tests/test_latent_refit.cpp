@@ -21,7 +21,7 @@ TEST_CASE("latent refit: a solved point is kept on its model, and on the mirrore
     doc.waitIdle();
     REQUIRE(doc.isEdited(99));
     const Eigen::VectorXd solved = doc.currentLatent();
-    const std::optional<gp::AdmissionVerdict> before = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> before = doc.currentPoseVerdict();
     REQUIRE(before.has_value());
 
     // Kept as it is on the model it was solved on.
@@ -36,7 +36,7 @@ TEST_CASE("latent refit: a solved point is kept on its model, and on the mirrore
     const Eigen::VectorXd refitted = doc.currentLatent();
     INFO("solved " << solved.transpose() << ", refitted " << refitted.transpose());
     CHECK((refitted + solved).cwiseAbs().maxCoeff() <= 1e-3);
-    const std::optional<gp::AdmissionVerdict> after = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> after = doc.currentPoseVerdict();
     REQUIRE(after.has_value());
     CHECK(after->admitted == before->admitted);
     CHECK(after->lik == doctest::Approx(before->lik).epsilon(1e-4));

@@ -14,7 +14,8 @@ SessionData editorSession(const EditorState& s) {
     d.camera.targetCm = {s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z};
     d.camera.followCharacter = s.followCharacter;
     d.ui = {{"show_captured_path", s.showCapturedPath}, {"show_before_ghost", s.showBeforeGhost},
-            {"show_nearest_ghost", s.showNearestGhost}, {"clip_label", s.clipLabel}, {"model_label", s.modelLabel}};
+            {"show_nearest_ghost", s.showNearestGhost}, {"show_balance", s.showBalance}, {"clip_label", s.clipLabel},
+            {"model_label", s.modelLabel}};
     return d;
 }
 
@@ -41,6 +42,7 @@ void applyEditorSession(EditorState& s, const SessionData& d) {
     s.showCapturedPath = flag("show_captured_path", true);
     s.showBeforeGhost = flag("show_before_ghost", false);
     s.showNearestGhost = flag("show_nearest_ghost", false);
+    s.showBalance = flag("show_balance", false);
     s.clipLabel = text("clip_label", s.doc.clip().name);
     s.modelLabel = s.doc.hasModel() ? text("model_label", "from session") : "";
 }

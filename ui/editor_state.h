@@ -63,6 +63,10 @@ struct EditorState {
     // (render/range_tint.h). Only a solved pose is tinted (a drag, an edited frame) and only with a model.
     bool showRangeTint = true;
     std::string rangeLegend;  // the legend's text as last drawn, lines joined by '\n' ("" when hidden)
+    // View > Balance: the current pose's centre of mass over the ground and the planted feet's
+    // support polygon (motion/support_polygon.h), drawn over the viewport.
+    bool showBalance = false;
+    std::string balanceCaption;  // what the overlay last said ("" when hidden)
 
     // Where the viewport's image was last drawn (window pixels), so points can be projected to
     // the window outside the viewport's draw (scripts, tests).

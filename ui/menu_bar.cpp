@@ -80,6 +80,7 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
     t.menuItem(app, "reset-layout", "Reset layout");
     ImGui::MenuItem("Follow character", nullptr, &s.followCharacter);
     ImGui::MenuItem("Pose range tint", nullptr, &s.showRangeTint, s.doc.hasModel());
+    ImGui::MenuItem("Balance (centre of mass, support)", nullptr, &s.showBalance, s.doc.hasClip());
     if (beginMenu("Compare ghost", escape)) {
         const CompareMode mode = s.doc.compareMode();
         t.menuItem(app, "compare", "Off", {compareModeName(CompareMode::kNone)}, mode == CompareMode::kNone);

@@ -419,11 +419,11 @@ void drawIkReadout(EditorState& s) {
     }
     // The current frame's pose judged as the viewport legend judges it (one verdict, one sigma^2 per frame); the numbers
     // behind it in the tooltip.
-    if (const std::optional<gp::AdmissionVerdict> v = r.learned ? s.doc.currentPoseVerdict() : std::nullopt) {
-        ImGui::Text("this pose is %s, %s", gp::judgementWords(v->judgement),
+    if (const std::optional<AdmissionVerdict> v = r.learned ? s.doc.currentPoseVerdict() : std::nullopt) {
+        ImGui::Text("this pose is %s, %s", judgementWords(v->judgement),
                     v->admitted ? "the model learns from it" : "kept as an edit only");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\nsolve: %d iterations", gp::admissionDetails(*v, *s.doc.model()->model).c_str(), r.iterations);
+            ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(), r.iterations);
     } else if (r.learned) {
         ImGui::Text("%d iterations", r.iterations);
     }

@@ -14,6 +14,8 @@
 #include "range_tint.h"
 #include "scene_builder.h"
 #include "shortcuts.h"
+#include "motion/support_polygon.h"
+#include "skeleton/centre_of_mass.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::ui {
@@ -424,6 +426,7 @@ void ViewportPanel::draw(EditorState& s) {
     } else {
         s.dragReadout.clear();
     }
+    drawBalance(s, origin.x, origin.y + h);
     drawRangeLegend(s, origin.x + w, origin.y + h);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
@@ -438,17 +441,67 @@ void ViewportPanel::draw(EditorState& s) {
     }
 }
 
+// The balance overlay: the planted feet's support polygon on the ground (yellow), the centre of mass with a line down to
+// its ground point (green over the support, red when more than the tolerance outside, grey with no foot planted), and a
+// caption above the bottom-left corner (x0, y1).
+void ViewportPanel::drawBalance(EditorState& s, float x0, float y1) {
+    s.balanceCaption.clear();
+    if (!s.showBalance || !s.doc.hasClip()) return;
+    const Skeleton& skeleton = s.doc.clip().skeleton;
+    FkState fk;
+    forwardKinematics(skeleton, s.doc.currentPose(), fk);
+    const std::optional<Eigen::Vector3d> com = centreOfMass(skeleton, fk);
+    if (!com) {
+        s.balanceCaption = "balance: this skeleton has no thighs or trunk to weigh";
+    } else {
+        const double groundY = lastScene_.groundHeightCm;
+        const std::optional<SupportPolygon> support = supportPolygon(skeleton, fk, s.doc.contacts(), s.doc.frame());
+        const double outside = support ? support->outsideCm({com->x(), com->z()}) : 0.0;
+        const ImU32 green = IM_COL32(90, 220, 120, 255), red = IM_COL32(255, 90, 80, 255), grey = IM_COL32(190, 190, 190, 255);
+        const ImU32 comCol = !support ? grey : outside > kBalanceToleranceCm ? red : green;
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        if (support) {
+            std::vector<ImVec2> ring;
+            const std::vector<Eigen::Vector2d> outline = support->grownOutline();
+            for (const Eigen::Vector2d& p : outline) {
+                float x = 0.0f, y = 0.0f;
+                if (viewportWindowPosition(s, Eigen::Vector3d(p.x(), groundY, p.y()), x, y)) ring.emplace_back(x, y);
+            }
+            if (ring.size() == outline.size() && !ring.empty())
+                dl->AddPolyline(ring.data(), int(ring.size()), IM_COL32(240, 220, 90, 255), ImDrawFlags_Closed, 2.0f);
+        }
+        float cx = 0.0f, cy = 0.0f, gx = 0.0f, gy = 0.0f;
+        const bool comShown = viewportWindowPosition(s, *com, cx, cy);
+        const bool groundShown = viewportWindowPosition(s, Eigen::Vector3d(com->x(), groundY, com->z()), gx, gy);
+        if (comShown && groundShown) dl->AddLine(ImVec2(cx, cy), ImVec2(gx, gy), comCol, 1.5f);
+        if (comShown) dl->AddCircleFilled(ImVec2(cx, cy), 5.0f, comCol);
+        if (groundShown) dl->AddCircle(ImVec2(gx, gy), 7.0f, comCol, 0, 2.0f);
+        char buf[160];
+        if (!support)
+            std::snprintf(buf, sizeof buf, "balance: no foot planted on this frame");
+        else
+            std::snprintf(buf, sizeof buf, "balance: centre of mass %s (%.1f cm outside the support)",
+                          outside > kBalanceToleranceCm ? "off the planted feet" : "over the planted feet", outside);
+        s.balanceCaption = buf;
+    }
+    const float lh = ImGui::GetTextLineHeightWithSpacing();
+    const ImVec2 at(x0 + 8, y1 - 8 - 2 * lh), size = ImGui::CalcTextSize(s.balanceCaption.c_str());
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2), IM_COL32(20, 22, 26, 190), 3.0f);
+    dl->AddText(at, IM_COL32(230, 232, 236, 255), s.balanceCaption.c_str());
+}
+
 // Bottom-right corner (the hints are top-left, the caption bottom-left): the colour bar of render::rangeTint (natural →
 // amber as the body nears the capture's limit → red when refused), the verdict in words and whether the model learns
 // from the pose; the numbers behind it in a tooltip over the box.
 void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     s.rangeLegend.clear();
     if (!s.showRangeTint || !s.doc.hasModel()) return;
-    const std::optional<gp::AdmissionVerdict> v = s.doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> v = s.doc.currentPoseVerdict();
     const render::RangeTint tint = v ? render::rangeTint(*v) : render::RangeTint{};
     std::string l1, l2;
     if (v) {
-        l1 = std::string("this pose is ") + gp::judgementWords(v->judgement);
+        l1 = std::string("this pose is ") + judgementWords(v->judgement);
         l2 = v->admitted ? "the model learns from it" : "kept as an edit, the model does not learn from it";
     } else {
         l1 = "no solved pose on this frame: not tinted";
@@ -500,7 +553,7 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     text(ty, v ? stateCol : IM_COL32(230, 232, 236, 255), l1);
     if (v) text(ty + h1, IM_COL32(230, 232, 236, 255), l2);
     if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(a, ImVec2(a.x + boxW, a.y + boxH)))
-        ImGui::SetTooltip("%s", gp::admissionDetails(*v, *s.doc.model()->model).c_str());
+        ImGui::SetTooltip("%s", admissionDetails(*v, *s.doc.model()->model).c_str());
 }
 
 }  // namespace mgp::ui

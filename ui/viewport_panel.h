@@ -75,6 +75,7 @@ private:
     long sceneDraws_ = 0;
     render::Scene lastScene_;
     void drawRangeLegend(EditorState& state, float x1, float y1);  // bottom-right corner at (x1, y1)
+    void drawBalance(EditorState& state, float x0, float y1);      // bottom-left corner at (x0, y1)
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;
 };

@@ -25,7 +25,7 @@ std::optional<DeferredTeaching> teachingOnModel(const gp::ModelVersion& version,
     gp::PointWorkspace ws;
     const double lik = version.posterior->evaluate(t.sample.x, pose.yKept, ws, nullptr, nullptr);
     if (!std::isfinite(lik)) return std::nullopt;
-    t.verdict = gp::admitPose(version, pose.edited, pose.moved, true, false, ws.variance, lik);
+    t.verdict = admitPose(version, pose.edited, pose.moved, true, false, ws.variance, lik, pose.balance);
     return t;
 }
 

@@ -13,7 +13,7 @@ struct EditRecord {
     Pose pose;
     Eigen::VectorXd x;  // latent point of the accepted pose (empty if solved without a model)
     // The effectors the edit put where the animator asked (a drag's handle, a path's effector):
-    // the admission judges the rest of the body against the capture (gp/admission.h).
+    // the admission judges the rest of the body against the capture (eval/admission.h).
     std::vector<Effector> moved;
 };
 

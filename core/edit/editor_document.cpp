@@ -198,7 +198,8 @@ int EditorDocument::finishRefinement(gp::ModelVersionPtr version, bool adoptClip
 
 long EditorDocument::teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved) {
     if (!refining_) return models_.post(std::move(sample));
-    if (models_.updating()) deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited, std::move(moved)});
+    if (models_.updating())
+        deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited, std::move(moved), balanceOf(sample.clipFrame, edited)});
     return 0;
 }
 
@@ -377,10 +378,10 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const gp::ModelVersionPtr& solvedOn = drag_.model();
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
-    const gp::AdmissionVerdict verdict =
-        learnedPose ? gp::admitPose(*solvedOn, rec.after.pose, movedEffectors(r.constraints), r.reached,
-                                    anyBelowFloor(r.constraints), r.sigma2, r.lik)
-                    : gp::AdmissionVerdict{};
+    const AdmissionVerdict verdict =
+        learnedPose ? admitPose(*solvedOn, rec.after.pose, movedEffectors(r.constraints), r.reached,
+                                anyBelowFloor(r.constraints), r.sigma2, r.lik, balanceOf(frame_, rec.after.pose))
+                    : AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
         models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
     lastDrag_.frame = frame_;
@@ -617,14 +618,18 @@ void EditorDocument::waitIdle() {
     models_.waitIdle();
 }
 
-std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
+Balance EditorDocument::balanceOf(int frame, const Pose& edited) const {
+    return judgeBalance(clip().skeleton, clip().frames[frame], edited, store_.contacts(), frame);
+}
+
+std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     const gp::ModelVersionPtr v = model();
     if (!v || !hasClip()) return std::nullopt;
     if (drag_.active()) {
         const SolveReadout& r = drag_.readout();
         if (!r.valid || !r.learned) return std::nullopt;
-        return gp::admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints), r.sigma2,
-                             r.lik);
+        return admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints), r.sigma2,
+                         r.lik, balanceOf(frame_, drag_.pose()));
     }
     const auto it = store_.edits().find(frame_);
     if (it == store_.edits().end()) return std::nullopt;
@@ -642,8 +647,8 @@ std::optional<gp::AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     v->posterior->predict(x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
     const bool lastDragged = lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose);
-    return gp::admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor, sigma2,
-                         lik);
+    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor, sigma2, lik,
+                     balanceOf(frame_, e.pose));
 }
 
 }  // namespace mgp

@@ -35,7 +35,7 @@
 #include "edit/path_edit.h"
 #include "edit/path_session.h"
 #include "edit/regenerate_job.h"
-#include "gp/admission.h"
+#include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/clip.h"
@@ -161,7 +161,7 @@ public:
     // (converged, no drag, or the refinement budget is spent).
     bool refine(int maxIterations = 50);
     // Accepts the pose (refining a little more first if it has not converged) and posts it to
-    // the adaptive worker if gp::admitPose admits it (every constraint reached, nothing through
+    // the adaptive worker if admitPose admits it (every constraint reached, nothing through
     // the floor, the body like the capture); a refused pose stays an edit, and the update table
     // and status say why. Returns what changed.
     std::optional<DragRecord> endDrag();
@@ -186,7 +186,9 @@ public:
     // re-evaluated at its x, or, once an update taught the model the pose, at the latent point that
     // update gave the new training row, so the verdict judges the model that holds it). None without a
     // model, on a captured frame, or for an edit without a latent point (plain IK).
-    std::optional<gp::AdmissionVerdict> currentPoseVerdict() const;
+    std::optional<AdmissionVerdict> currentPoseVerdict() const;
+    // Whether `edited` on clip frame `frame` keeps the balance its captured pose had on the planted feet.
+    Balance balanceOf(int frame, const Pose& edited) const;
 
     // Latent drag: pose the current frame from the model mean f(x) (root translation kept).
     bool beginLatentDrag();

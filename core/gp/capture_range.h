@@ -3,15 +3,15 @@
 // joint angle's range and the body shape of every frame. An edited pose is "like the capture"
 // when its angles stay within the ranges (plus a margin) and the rest of its body (the moved
 // limbs left out) is near some captured frame's. The adaptive update admits only such poses
-// (gp/training_range.h, docs/maths-ik.md §5), so what the model learns from never depends on
+// (eval/admission.h, docs/maths-ik.md §5), so what the model learns from never depends on
 // what it learned before: the reference is the capture, which no update changes.
 //
 //  - ranges: q_k ∈ [min_k − m_k, max_k + m_k] over every captured frame, m_k = max(5°, 0.1·(max_k
 //    − min_k)) (the editing-range protocol's margin, docs/maths.md §14); the root's rotation is
 //    not judged (the heading is free). The moved limbs' angles are judged too, with the same
-//    margin: on 2 040 moves the verdicts agreed with the naturalness tests on 91 % of them, 89 %
-//    with a 10° margin on the moved limbs, 82 % with 20° and 65 % with those angles not judged
-//    (docs/maths-ik.md §5). So a hand dragged where the capture never put it is "unlike the
+//    margin: on 2 040 moves the verdicts (balance aside) agreed with the naturalness tests on
+//    91 %, 89 % with a 10° margin on the moved limbs, 82 % with 20° and 65 % with those angles
+//    not judged (docs/maths-ik.md §5). So a hand dragged where the capture never put it is "unlike the
 //    captured data" once its elbow or shoulder leaves the captured range (a walk's elbow moves
 //    little: a 4 cm hand raise on 35_01 can do it); more clips widen the ranges;
 //  - nearest frame: d(y) = min over captured frames of the mean distance (cm) of the joints, root

@@ -1,6 +1,6 @@
 #pragma once
 // The range a model's training frames span in σ²(x) and L_IK(x, y): what the model's own score of
-// a pose means (the editor shows it with every verdict; the admission itself, gp/admission.h, is
+// a pose means (the editor shows it with every verdict; the admission itself, eval/admission.h, is
 // judged against the capture).
 //
 // The reference is the captured motion scored as NEW poses: for every training row i, the GP

@@ -46,15 +46,15 @@ TEST_CASE("gui range tint: a hand dragged far out of reach is red and refused") 
     auto errors = h->play(ui::GuiScript::parse(script));
     REQUIRE(errors.empty());
     REQUIRE(doc.dragging());
-    std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
+    std::optional<AdmissionVerdict> v = doc.currentPoseVerdict();
     REQUIRE(v);
     INFO("reason '" << v->reason << "'  legend: " << s.rangeLegend);
     CHECK_FALSE(v->admitted);
-    CHECK((v->judgement == gp::PoseJudgement::kOutOfReach || v->judgement == gp::PoseJudgement::kUnlikeCapture));
+    CHECK((v->judgement == PoseJudgement::kOutOfReach || v->judgement == PoseJudgement::kUnlikeCapture));
     const render::Figure& live = shownFigure(*h->app);
     CHECK(live.tintWeight == 1.0f);
     CHECK(live.tint == render::kRangeRed);
-    CHECK(contains(s.rangeLegend, std::string("this pose is ") + gp::judgementWords(v->judgement)));
+    CHECK(contains(s.rangeLegend, std::string("this pose is ") + judgementWords(v->judgement)));
     CHECK(contains(s.rangeLegend, "the model does not learn from it"));
 
     errors = h->play(ui::GuiScript::parse("0 up left\n"));
@@ -97,7 +97,7 @@ TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
     const auto errors = h->play(ui::GuiScript::parse("0 hover rhand\n2 down left\n4 moveby 0 -2\n"));
     REQUIRE(errors.empty());
     REQUIRE(doc.dragging());
-    const std::optional<gp::AdmissionVerdict> v = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> v = doc.currentPoseVerdict();
     REQUIRE(v);
     INFO("reason '" << v->reason << "'  nearest captured frame " << v->capture.nearestCm << " cm (median " << v->nearestMedianCm << ", limit "
                                    << v->nearestLimitCm << ")  legend: " << s.rangeLegend);
@@ -126,7 +126,38 @@ TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
     const Eigen::VectorXd yRow = m.Y.row(m.Y.rows() - 1).transpose();
     CHECK(m.trainingFrames.back() == 40);
     CHECK((xRow - doc.edits().at(40).x).norm() > 0.0);  // the update moved it
-    const std::optional<gp::AdmissionVerdict> after = doc.currentPoseVerdict();
+    const std::optional<AdmissionVerdict> after = doc.currentPoseVerdict();
     REQUIRE(after);
     CHECK(after->lik == doctest::Approx(now->posterior->evaluate(xRow, yRow, nullptr, nullptr)).epsilon(1e-12));
+}
+
+TEST_CASE("gui balance: View > Balance draws the support and says where the centre of mass falls") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    h->frame(2);
+    CHECK(s.balanceCaption.empty());  // off by default
+    s.showBalance = true;
+    int planted = 0, inAir = 0;
+    for (int t = 0; t < doc.frameCount(); t += 7) {
+        doc.setFrame(t);
+        h->frame(1);
+        CAPTURE(t);
+        const bool anyFoot = doc.contacts().at(Effector::kLFoot, t) || doc.contacts().at(Effector::kRFoot, t);
+        if (anyFoot) {
+            ++planted;
+            // The captured walk never tips past its support by much: the caption says which side of the limit it is.
+            CHECK(contains(s.balanceCaption, "balance: centre of mass "));
+            CHECK(contains(s.balanceCaption, "cm outside the support"));
+        } else {
+            ++inAir;
+            CHECK(s.balanceCaption == "balance: no foot planted on this frame");
+        }
+    }
+    CHECK(planted > 0);
+    CHECK(inAir > 0);
+    s.showBalance = false;
+    h->frame(1);
+    CHECK(s.balanceCaption.empty());
 }

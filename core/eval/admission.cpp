@@ -1,11 +1,11 @@
-#include "gp/admission.h"
+#include "eval/admission.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "skeleton/pose_layout.h"
 
-namespace mgp::gp {
+namespace mgp {
 
 const char* judgementWords(PoseJudgement j) {
     switch (j) {
@@ -14,21 +14,23 @@ const char* judgementWords(PoseJudgement j) {
         case PoseJudgement::kUnlikeCapture: return "unlike the captured data";
         case PoseJudgement::kOutOfReach: return "out of reach";
         case PoseJudgement::kThroughFloor: return "through the floor";
+        case PoseJudgement::kOffBalance: return "off balance";
     }
     return "?";
 }
 
-AdmissionVerdict admitPose(const ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved, bool reached,
-                           bool belowFloor, double sigma2, double lik) {
+AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved, bool reached,
+                           bool belowFloor, double sigma2, double lik, const Balance& balance) {
     AdmissionVerdict v;
     v.reached = reached;
+    v.balance = balance;
     v.belowFloor = belowFloor;
     v.sigma2 = sigma2;
     v.lik = lik;
     v.range = version.range;
-    const CaptureRange& capture = *version.capture;
+    const gp::CaptureRange& capture = *version.capture;
     const Skeleton& skeleton = version.model->clip.skeleton;
-    v.capture = judgeAgainstCapture(capture, skeleton, pose, moved);
+    v.capture = gp::judgeAgainstCapture(capture, skeleton, pose, moved);
     v.nearestLimitCm = capture.nearestLimitCm;
     v.nearestMedianCm = capture.nearestMedianCm;
     const double ramp = capture.nearestLimitCm - capture.nearestMedianCm;
@@ -40,6 +42,11 @@ AdmissionVerdict admitPose(const ModelVersion& version, const Pose& pose, const 
     } else if (!reached) {
         v.judgement = PoseJudgement::kOutOfReach;
         v.reason = "a target or pin was not reached";
+    } else if (balance.offBalance) {
+        v.judgement = PoseJudgement::kOffBalance;
+        std::snprintf(buf, sizeof buf, "off balance (the centre of mass is %.1f cm outside the planted feet's support)",
+                      balance.outsideCm);
+        v.reason = buf;
     } else if (!v.capture.ranges) {
         v.judgement = PoseJudgement::kUnlikeCapture;
         const PoseLayout layout(skeleton);
@@ -58,7 +65,7 @@ AdmissionVerdict admitPose(const ModelVersion& version, const Pose& pose, const 
     return v;
 }
 
-std::string admissionDetails(const AdmissionVerdict& v, const GpModel& model) {
+std::string admissionDetails(const AdmissionVerdict& v, const gp::GpModel& model) {
     char buf[320];
     std::string out;
     if (v.capture.nearestClip >= 0) {
@@ -79,10 +86,15 @@ std::string admissionDetails(const AdmissionVerdict& v, const GpModel& model) {
     }
     if (!v.reached) out += "a target or pin was not reached\n";
     if (v.belowFloor) out += "a target is below the floor\n";
+    if (v.balance.judged) {
+        std::snprintf(buf, sizeof buf, "balance: the centre of mass is %.1f cm outside the planted feet's support (tolerance %.0f cm)\n",
+                      v.balance.outsideCm, kBalanceToleranceCm);
+        out += buf;
+    }
     std::snprintf(buf, sizeof buf, "model's score: sigma^2 %.4g (held-out p%g %.4g), L_IK %.4g (held-out p%g %.4g)", v.sigma2,
                   v.range.percentile, v.range.sigma2Percentile, v.lik, v.range.percentile, v.range.likLimit);
     out += buf;
     return out;
 }
 
-}  // namespace mgp::gp
+}  // namespace mgp
