@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gp/capture_range.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp {
@@ -97,17 +98,11 @@ double NaturalnessTests::nearestDistance(const Eigen::VectorXd& shape, int skipG
 NaturalnessVerdict NaturalnessTests::judge(const Skeleton& skeleton, const Eigen::VectorXd& pose,
                                            const Eigen::VectorXd* previous) const {
     NaturalnessVerdict v;
-    for (int k = 0; k < static_cast<int>(qMax_.size()); ++k) {
-        const double margin = std::max(5.0, 0.1 * (qMax_[k] - qMin_[k]));
-        const double excess = std::max(qMin_[k] - margin - pose[k], pose[k] - qMax_[k] - margin);
-        if (excess > 0.0) {
-            ++v.rangeViolations;
-            if (excess > v.worstRangeExcessDeg) {
-                v.worstRangeExcessDeg = excess;
-                v.worstRangeDof = k;
-            }
-        }
-    }
+    // The protocol's margin, the one the admission also uses (gp/capture_range.h).
+    const gp::RangeCheck check = gp::checkRanges(pose, qMin_, qMax_, nullptr, false);
+    v.rangeViolations = check.violations;
+    v.worstRangeDof = check.worstDof;
+    v.worstRangeExcessDeg = check.worstExcessDeg;
     v.ranges = v.rangeViolations == 0;
     v.dNN = nearestDistance(bodyShape(skeleton, pose));
     v.nearest = v.dNN <= tauNN_;

@@ -128,27 +128,35 @@ std::shared_ptr<const CaptureRange> computeCaptureRange(const GpModel& model) {
     return range;
 }
 
+RangeCheck checkRanges(const Eigen::VectorXd& q, const Eigen::VectorXd& qMin, const Eigen::VectorXd& qMax,
+                       const std::vector<bool>* judged, bool wholeTurns) {
+    RangeCheck out;
+    for (Eigen::Index k = 0; k < std::min(q.size(), qMin.size()); ++k) {
+        if (judged && !(*judged)[static_cast<std::size_t>(k)]) continue;
+        const double margin = std::max(kCaptureRangeMarginDeg, kCaptureRangeMarginFraction * (qMax[k] - qMin[k]));
+        const double a = wholeTurns ? nearestTurn(q[k], qMin[k], qMax[k]) : q[k];
+        const double excess = std::max(qMin[k] - margin - a, a - qMax[k] - margin);
+        if (excess <= 0.0) continue;
+        ++out.violations;
+        if (excess > out.worstExcessDeg) {
+            out.worstExcessDeg = excess;
+            out.worstDof = static_cast<int>(k);
+        }
+    }
+    return out;
+}
+
 CaptureLikeness judgeAgainstCapture(const CaptureRange& range, const Skeleton& skeleton, const Pose& pose,
                                     const std::vector<Effector>& moved) {
     CaptureLikeness out;
     const PoseLayout layout(skeleton);
     const Eigen::VectorXd q = layout.extract(pose);
     const std::vector<bool> leftOut = movedLimbJoints(skeleton, moved);
-    for (int k = 0; k < layout.size() && k < range.qMin.size(); ++k) {
-        if (!range.judged[k]) continue;
-        const double span = range.qMax[k] - range.qMin[k];
-        const double margin = std::max(kCaptureRangeMarginDeg, kCaptureRangeMarginFraction * span);
-        const double a = nearestTurn(q[k], range.qMin[k], range.qMax[k]);
-        const double excess = std::max(range.qMin[k] - margin - a, a - range.qMax[k] - margin);
-        if (excess > 0.0) {
-            ++out.rangeViolations;
-            if (excess > out.worstExcessDeg) {
-                out.worstExcessDeg = excess;
-                out.worstDof = k;
-            }
-        }
-    }
-    out.ranges = out.rangeViolations == 0;
+    const RangeCheck check = checkRanges(q, range.qMin, range.qMax, &range.judged, true);
+    out.rangeViolations = check.violations;
+    out.worstDof = check.worstDof;
+    out.worstExcessDeg = check.worstExcessDeg;
+    out.ranges = check.violations == 0;
     const auto [dist, at] = nearestShape(range, captureShape(skeleton, pose), leftOut, -1, 0, 0);
     out.nearestCm = dist;
     if (at >= 0) {

@@ -61,6 +61,17 @@ struct CaptureLikeness {
     bool like() const { return nearest && ranges; }
 };
 
+// The angles of q outside [qMin − m, qMax + m], m = max(5°, 0.1·(qMax − qMin)) per DOF: how many and
+// the worst. `judged` (optional) skips DOFs marked false; `wholeTurns` compares each angle a whole
+// turn apart where that is nearer (a solved pose need not be unwrapped like the capture).
+struct RangeCheck {
+    int violations = 0;
+    int worstDof = -1;
+    double worstExcessDeg = 0.0;
+};
+RangeCheck checkRanges(const Eigen::VectorXd& q, const Eigen::VectorXd& qMin, const Eigen::VectorXd& qMax,
+                       const std::vector<bool>* judged, bool wholeTurns);
+
 // Body shape of a pose (root-relative joints, heading removed), the rows of CaptureRange::shapes.
 Eigen::VectorXd captureShape(const Skeleton& skeleton, const Pose& pose);
 // The joints d(y) leaves out for these moved effectors (true = left out), per skeleton joint.
