@@ -219,7 +219,8 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
         const NaturalnessTests judge(table2Reference(clip, t, {}), Effector::kRHand);
         FkState fk;
         forwardKinematics(clip.skeleton, clip.frames[t], fk);
-        for (const Eigen::Vector3d& u : {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(fk.global[0].col(2).x(), 0, fk.global[0].col(2).z()).normalized()})
+        const Eigen::Vector3d forward = Eigen::Vector3d(fk.global[0].col(2).x(), 0, fk.global[0].col(2).z()).normalized();
+        for (const Eigen::Vector3d& u : {Eigen::Vector3d(0, 1, 0), forward})
             for (double delta : {5.0, 10.0, 20.0, 40.0}) {
                 const Eigen::Vector3d target = effectorCm(clip.skeleton, fk, Effector::kRHand) + delta * u;
                 const ConstrainedIkResult r =
@@ -229,7 +230,8 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
                 const bool natural = r.reached && !floor && j.ranges && j.nearest && j.density;
                 const bool admitted =
                     admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, floor, r.sigma2, r.lik).admitted;
-                const bool byScore = r.reached && !floor && r.lik <= version->range.likLimit && r.sigma2 <= version->range.sigma2Limit;
+                const bool byScore =
+                    r.reached && !floor && r.lik <= version->range.likLimit && r.sigma2 <= version->range.sigma2Limit;
                 ++n;
                 rule += admitted == natural;
                 score += byScore == natural;

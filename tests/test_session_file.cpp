@@ -24,7 +24,7 @@ namespace {
 
 // An edit: the clip's pose at `frame` nudged by values with long binary expansions.
 EditRecord nudgedEdit(const Clip& clip, int frame, Eigen::VectorXd x) {
-    EditRecord e{clip.frames[frame], std::move(x)};
+    EditRecord e{clip.frames[frame], std::move(x), {}};
     e.pose.rootCm += Eigen::Vector3d(0.1, 1.0 / 3.0, -2.0 / 7.0);
     for (auto& a : e.pose.anglesDeg) a += Eigen::Vector3d(1e-13, M_PI, -1.0 / 9.0);
     return e;

@@ -516,7 +516,9 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     const float barW = std::max(ImGui::CalcTextSize("kept as an edit, the model does not learn from it").x,
                                 3.0f * (ImGui::CalcTextSize(labels[2]).x + pad));
     const float gap = lh - ImGui::GetTextLineHeight();
-    const auto heightOf = [&](const std::string& t) { return t.empty() ? 0.0f : ImGui::CalcTextSize(t.c_str(), nullptr, false, barW).y + gap; };
+    const auto heightOf = [&](const std::string& t) {
+        return t.empty() ? 0.0f : ImGui::CalcTextSize(t.c_str(), nullptr, false, barW).y + gap;
+    };
     const float h1 = heightOf(l1), h2 = heightOf(l2);
     const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + pad;
     const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);

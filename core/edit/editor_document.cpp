@@ -199,7 +199,8 @@ int EditorDocument::finishRefinement(gp::ModelVersionPtr version, bool adoptClip
 long EditorDocument::teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved) {
     if (!refining_) return models_.post(std::move(sample));
     if (models_.updating())
-        deferred_.push_back({sample.clipFrame, std::move(sample.yKept), edited, std::move(moved), balanceOf(sample.clipFrame, edited)});
+        deferred_.push_back(
+            {sample.clipFrame, std::move(sample.yKept), edited, std::move(moved), balanceOf(sample.clipFrame, edited)});
     return 0;
 }
 
@@ -460,7 +461,7 @@ bool EditorDocument::beginLatentDrag() {
 
 void EditorDocument::latentDragTo(const Eigen::VectorXd& x) {
     if (!drag_.latentTo(x, clip().frames[frame_])) return;
-    store_.set(frame_, EditRecord{drag_.pose(), x});
+    store_.set(frame_, EditRecord{drag_.pose(), x, {}});
     editLineage_[frame_] = lineage_;
 }
 

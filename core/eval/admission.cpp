@@ -55,7 +55,8 @@ AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, co
         v.reason = buf;
     } else if (!v.capture.nearest) {
         v.judgement = PoseJudgement::kUnlikeCapture;
-        std::snprintf(buf, sizeof buf, "unlike the captured data (the body is %.1f cm from the nearest captured frame, limit %.1f cm)",
+        std::snprintf(buf, sizeof buf,
+                      "unlike the captured data (the body is %.1f cm from the nearest captured frame, limit %.1f cm)",
                       v.capture.nearestCm, capture.nearestLimitCm);
         v.reason = buf;
     } else {
@@ -87,7 +88,8 @@ std::string admissionDetails(const AdmissionVerdict& v, const gp::GpModel& model
     if (!v.reached) out += "a target or pin was not reached\n";
     if (v.belowFloor) out += "a target is below the floor\n";
     if (v.balance.judged) {
-        std::snprintf(buf, sizeof buf, "balance: the centre of mass is %.1f cm outside the planted feet's support (tolerance %.0f cm)\n",
+        std::snprintf(buf, sizeof buf,
+                      "balance: the centre of mass is %.1f cm outside the planted feet's support (tolerance %.0f cm)\n",
                       v.balance.outsideCm, kBalanceToleranceCm);
         out += buf;
     }
