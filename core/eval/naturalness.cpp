@@ -28,10 +28,7 @@ Eigen::VectorXd NaturalnessTests::bodyShape(const Skeleton& skeleton, const Eige
     PoseLayout(skeleton).apply(poseDeg.data(), pose);
     FkState fk;
     forwardKinematics(skeleton, pose, fk);
-    // Heading: yaw of the root's forward (+z) axis.
-    const Eigen::Vector3d forward = fk.global[0].col(2);
-    const double psi = std::atan2(forward.x(), forward.z());
-    const Eigen::Matrix3d unturn = axisRotation(kAxisY, -psi);
+    const Eigen::Matrix3d unturn = headingRemoval(fk);
     Eigen::VectorXd out = Eigen::VectorXd::Zero(3 * kModelBones);
     for (int b = 0; b < kModelBones; ++b) {
         const int j = skeleton.findBone(modelBoneNames()[b]);

@@ -7,7 +7,6 @@
 #include "gp/training_range.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
-#include "skeleton/rotation.h"
 
 namespace mgp::gp {
 
@@ -43,15 +42,6 @@ std::pair<double, int> nearestShape(const CaptureRange& range, const Eigen::Vect
     return {best, at};
 }
 
-double percentileOf(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const double pos = p / 100.0 * static_cast<double>(v.size() - 1);
-    const auto lo = static_cast<std::size_t>(std::floor(pos));
-    const std::size_t hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
-}
-
 // The angle a + 360k nearest to [lo, hi] (the clips are unwrapped; a solved pose may not be).
 double nearestTurn(double a, double lo, double hi) {
     const double mid = 0.5 * (lo + hi);
@@ -63,9 +53,7 @@ double nearestTurn(double a, double lo, double hi) {
 Eigen::VectorXd captureShape(const Skeleton& skeleton, const Pose& pose) {
     FkState fk;
     forwardKinematics(skeleton, pose, fk);
-    // Heading: yaw of the root's forward (+z) axis, as the naturalness tests take it.
-    const Eigen::Vector3d forward = fk.global[0].col(2);
-    const Eigen::Matrix3d unturn = axisRotation(kAxisY, -std::atan2(forward.x(), forward.z()));
+    const Eigen::Matrix3d unturn = headingRemoval(fk);
     Eigen::VectorXd out(3 * skeleton.jointCount());
     for (int j = 0; j < skeleton.jointCount(); ++j) out.segment<3>(3 * j) = unturn * (fk.jointCm[j] - fk.jointCm[0]);
     return out;

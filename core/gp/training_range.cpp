@@ -7,8 +7,6 @@
 
 namespace mgp::gp {
 
-namespace {
-// Linear interpolation between order statistics (the "R-7" definition).
 double percentileOf(std::vector<double> v, double p) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
@@ -17,7 +15,6 @@ double percentileOf(std::vector<double> v, double p) {
     const std::size_t hi = std::min(lo + 1, v.size() - 1);
     return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
-}  // namespace
 
 void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,
                          std::vector<double>& lik) {

@@ -37,6 +37,11 @@ struct TrainingRange {
     int rows = 0;
 };
 
+// The p-th percentile (0–100) of v by linear interpolation between order statistics (the "R-7"
+// definition); 0 for an empty v. The training range and the capture range (gp/capture_range.h)
+// both use it.
+double percentileOf(std::vector<double> v, double p);
+
 // The held-out σ²_i and L_IK,i of every training row (in row order) of `model` under `point`
 // (its §6.2 precomputation), each row's moment hidden by ±windowFrames clip frames.
 void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include <Eigen/Geometry>
 #include <limits>
@@ -28,6 +29,11 @@ void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk) 
         }
         fk.global[j] = fk.parentFrame[j] * local * joint.axis.transpose();
     }
+}
+
+Eigen::Matrix3d headingRemoval(const FkState& fk) {
+    const Eigen::Vector3d forward = fk.global[0].col(2);
+    return axisRotation(kAxisY, -std::atan2(forward.x(), forward.z()));
 }
 
 Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint) {

@@ -19,6 +19,11 @@ struct FkState {
 
 void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk);
 
+// The rotation about world Y that takes the root's forward (+z) axis onto +z: applied to
+// root-relative points it removes the heading (the yaw ψ = atan2(f_x, f_z) of that axis), so poses
+// facing different ways compare as body shapes.
+Eigen::Matrix3d headingRemoval(const FkState& fk);
+
 // End point of joint j's bone (p_j + G_j · tail_j).
 Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint);
 Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector e);
