@@ -8,12 +8,15 @@
 # read), runs each target for SECONDS_PER_TARGET and prints its executions and coverage.
 # Crash/timeout/OOM inputs land in build-fuzz/artifacts/<target>/; the exit status is 1 if any
 # target found one (reproduce: build-fuzz/fuzz_<target> FILE). Environment: MOTIONGP_FUZZ_JOBS
-# (targets run in parallel, default 1), MOTIONGP_FUZZ_TARGETS (default "asf amc bvh model session").
+# (targets run in parallel, default 1), MOTIONGP_FUZZ_TARGETS (default "asf amc bvh model session"),
+# MOTIONGP_FUZZ_BUILD (a build folder configured with clang, -DMOTIONGP_SANITIZE=ON and
+# -DMOTIONGP_FUZZ=ON, e.g. CI's build-asan: its fuzzers are used instead of configuring build-fuzz,
+# so the sanitizer build's core library serves both; tests/fuzz/CMakeLists.txt).
 set -euo pipefail
 
 SECONDS_PER_TARGET=${1:-60}
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-BUILD="$ROOT/build-fuzz"
+BUILD=${MOTIONGP_FUZZ_BUILD:-$ROOT/build-fuzz}
 MOCAP=${MOTIONGP_DATA:-$ROOT/../shared/mocap}
 [ -d "$MOCAP/asf_amc" ] || MOCAP="$ROOT/assets/mocap"
 TARGETS=${MOTIONGP_FUZZ_TARGETS:-asf amc bvh model session}
@@ -23,12 +26,17 @@ start=$(date +%s)
 
 command -v clang++ >/dev/null || { echo "run_fuzz.sh: expected clang++ (apt-get install clang libclang-rt-14-dev), found none" >&2; exit 2; }
 
-mkdir -p "$BUILD"
 # 1. Build (-O1 without NDEBUG: asserts stay on; line tables only, for readable stack traces
-#    and a faster build).
-CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -G Ninja -DMOTIONGP_FUZZ=ON \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1" >"$BUILD/configure.log" 2>&1 \
-  || { cat "$BUILD/configure.log" >&2; exit 2; }
+#    and a faster build), or take the fuzzers of a build that has them.
+if [ -n "${MOTIONGP_FUZZ_BUILD:-}" ]; then
+  grep -q '^MOTIONGP_FUZZ:BOOL=ON$' "$BUILD/CMakeCache.txt" 2>/dev/null ||
+    { echo "run_fuzz.sh: expected MOTIONGP_FUZZ_BUILD=$BUILD to be a build folder configured with -DMOTIONGP_FUZZ=ON, found none" >&2; exit 2; }
+else
+  mkdir -p "$BUILD"
+  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -G Ninja -DMOTIONGP_FUZZ=ON \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1" >"$BUILD/configure.log" 2>&1 \
+    || { cat "$BUILD/configure.log" >&2; exit 2; }
+fi
 cmake --build "$BUILD" -j2 --target motiongp_fuzzers
 
 # 2. Seed corpora (regenerated every run; the evolving corpus lives in build-fuzz/corpus).
