@@ -2,7 +2,8 @@
 // here), the whole UI (ImGui panels, viewport without MSAA, latent map) while dragging the right
 // foot with live learned IK. Drags are released between rounds, so adaptive updates and the
 // latent-map recomputation (a 160×160 σ² image on a worker thread) run during later rounds. A
-// second pass of the same drags reports where the time goes (drag_profile_seconds).
+// second pass of the same drags reports where the time goes (drag_profile_seconds); a third
+// alternates rounds with and without onion skins and motion trails (overlays).
 #include <GL/gl.h>
 
 #include <filesystem>
@@ -44,9 +45,9 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     for (int i = 0; i < 30; ++i) idle.push_back(secondsOf(frame));
     const int rounds = ctx.quick ? 2 : std::max(3, ctx.repeats);
     // Drags the right foot up 30 px and back in 1.5 px steps (0.25–0.5 cm per event at this zoom),
-    // like a hand on a mouse, `rounds` times; `perFrame` runs after each drag frame.
-    auto dragRounds = [&](const std::function<void(double)>& perFrame) {
-        for (int r = 0; r < rounds; ++r) {
+    // like a hand on a mouse, `count` times; `perFrame` runs after each drag frame.
+    auto dragRounds = [&](const std::function<void(double)>& perFrame, int count) {
+        for (int r = 0; r < count; ++r) {
             float x, y;
             if (!app.handleScreenPosition(Effector::kRFoot, x, y)) break;
             in.mouseX = x;
@@ -63,8 +64,25 @@ nlohmann::json benchUi(const BenchContext& ctx) {
         }
         app.waitIdle();
     };
-    dragRounds([&](double seconds) { drag.push_back(seconds); });
+    dragRounds([&](double seconds) { drag.push_back(seconds); }, rounds);
     const int dragFrames = static_cast<int>(drag.size());
+    // The same drags with onion skins (2 before, 2 after, 10 frames apart) and trails of both feet
+    // and the right hand over ±30 frames, alternating with rounds without them (A B A B, as the
+    // machine's load drifts): what the overlays cost a dragging frame.
+    std::vector<double> dragPlain, dragOverlays;
+    auto setOverlays = [&](bool on) {
+        ui::EditorState& s = app.state();
+        s.showOnionSkin = on;
+        s.onionSkin = {2, 2, 10};
+        for (render::TrailPart p : {render::TrailPart::kLFoot, render::TrailPart::kRFoot, render::TrailPart::kRHand})
+            s.trails[static_cast<int>(p)] = on;
+    };
+    for (int r = 0; r < rounds; ++r)
+        for (bool on : {false, true}) {
+            setOverlays(on);
+            dragRounds([&](double seconds) { (on ? dragOverlays : dragPlain).push_back(seconds); }, 1);
+        }
+    setOverlays(false);
     // The same drags again with every phase ending in glFinish (ui/frame_profile.h): where a
     // dragging frame's time goes. The stalls make these frames a little longer than the above.
     ui::FrameProfile& profile = app.state().profile;
@@ -78,7 +96,7 @@ nlohmann::json benchUi(const BenchContext& ctx) {
         pUpload.push_back(profile.latentUploadSeconds);
         pRest.push_back(seconds - profile.solveSeconds - profile.sceneSeconds - profile.imguiRenderSeconds -
                         profile.latentUploadSeconds);
-    });
+    }, rounds);
     profile.measure = false;
     // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
     // UI frame that is the renderer's, not the editor's.
@@ -106,6 +124,11 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     j["idle_frame_seconds"] = summarizeSeconds(idle);
     j["drag_frame_seconds"] = summarizeSeconds(drag);
     j["drag_frames"] = dragFrames;
+    j["overlays"] = {{"onion_skin", "2:2:10"},
+                     {"trails", {"lfoot", "rfoot", "rhand"}},
+                     {"trail_frames_each_side", 30},
+                     {"drag_frame_seconds_without", summarizeSeconds(dragPlain)},
+                     {"drag_frame_seconds_with", summarizeSeconds(dragOverlays)}};
     j["scene_only_seconds"] = summarizeSeconds(sceneOnly);
     j["scene_only_size"] = {kW - 380, kH - 123};
     j["drag_profile_seconds"] = {{"frame", summarizeSeconds(pFrame)},

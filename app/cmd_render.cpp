@@ -1,6 +1,7 @@
 // `motiongp render (CLIP [--skel ASF] | MODEL [--clip NAME]) --frame T --out FILE.png [--size WxH]
 //  [--camera front|side|three-quarter] [--ghost-captured] [--path EFFECTOR]... [--select EFFECTOR]
-//  [--no-handles]`: draws one frame offscreen (EGL surfaceless, no display) and writes a PNG.
+//  [--no-handles] [--onion BEFORE:AFTER:SPACING] [--trail PART]... [--trail-frames N]`: draws one
+//  frame offscreen (EGL surfaceless, no display) and writes a PNG.
 // The MODEL form (a trained model file) draws one of the model's source clips (--clip NAME, its
 // file stem; default the first; --frame counts within it) with the model's own
 // reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
@@ -28,6 +29,27 @@ Effector effectorFromCli(const std::string& option, const std::string& name) {
     return e;
 }
 
+// "BEFORE:AFTER:SPACING" (e.g. 2:2:5): ghosts before and after the frame, frames apart.
+render::OnionSkin onionFromCli(const std::string& text) {
+    std::smatch m;
+    const std::string expected = "expected --onion BEFORE:AFTER:SPACING with BEFORE and AFTER in 0.." +
+                                 std::to_string(render::kMaxOnionGhosts) + " and SPACING in 1.." +
+                                 std::to_string(render::kMaxOnionSpacing) + " (e.g. 2:2:5), found '" + text + "'";
+    if (!std::regex_match(text, m, std::regex(R"((\d{1,2}):(\d{1,2}):(\d{1,3}))"))) throw UsageError(expected);
+    const render::OnionSkin o{std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3])};
+    if (o.before > render::kMaxOnionGhosts || o.after > render::kMaxOnionGhosts || o.spacing < 1 ||
+        o.spacing > render::kMaxOnionSpacing)
+        throw UsageError(expected);
+    return o;
+}
+
+render::TrailPart trailFromCli(const std::string& name) {
+    render::TrailPart part{};
+    if (!render::parseTrailPart(name, part))
+        throw UsageError("expected --trail among {lhand, rhand, lfoot, rfoot, head, root}, found '" + name + "'");
+    return part;
+}
+
 const CommandRegistration renderCommand("render", "Draw one frame offscreen to a PNG (no display needed)",
                               [](CLI::App& sub) -> CommandRunner {
     auto input = std::make_shared<std::string>();
@@ -41,6 +63,9 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
     auto select = std::make_shared<std::string>();
     auto clipName = std::make_shared<std::string>();
     auto noHandles = std::make_shared<bool>(false);
+    auto onion = std::make_shared<std::string>();
+    auto trails = std::make_shared<std::vector<std::string>>();
+    auto trailFrames = std::make_shared<int>(30);
     sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (a file written by `motiongp train`)")
         ->required();
     sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
@@ -53,6 +78,9 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
     sub.add_option("--path", *paths, "Draw this effector's trajectory (±60 frames, keys every 20)");
     sub.add_option("--select", *select, "Show this effector's handle as selected");
     sub.add_flag("--no-handles", *noHandles, "Hide the effector handles");
+    sub.add_option("--onion", *onion, "BEFORE:AFTER:SPACING: onion skins, e.g. 2:2:5 (two ghosts each side, 5 frames apart)");
+    sub.add_option("--trail", *trails, "Draw this point's motion trail, a tick per frame (lhand rhand lfoot rfoot head root)");
+    sub.add_option("--trail-frames", *trailFrames, "Frames each side the trails span (default 30)");
     return [=]() {
         std::smatch m;
         if (!std::regex_match(*size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
@@ -87,6 +115,16 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
         opt.handles = !*noHandles;
         for (const std::string& p : *paths) opt.paths.push_back(effectorFromCli("--path", p));
         if (!select->empty()) opt.selected = effectorFromCli("--select", *select);
+        if (!onion->empty()) opt.onion = onionFromCli(*onion);
+        for (const std::string& t : *trails) {
+            opt.trails.push_back(trailFromCli(t));
+            if (!render::hasTrailPart(clip.skeleton, opt.trails.back()))
+                throw UsageError("expected --trail a point this skeleton has, found '" + t + "' (no such joint in " +
+                                 clip.name + ")");
+        }
+        if (*trailFrames < 1)
+            throw UsageError("expected --trail-frames of at least 1, found " + std::to_string(*trailFrames));
+        opt.trailHalfSpan = *trailFrames;
         const render::Scene scene = render::buildClipScene(clip, opt);
 
         FkState fk;

@@ -86,8 +86,12 @@ struct Path {
     float radiusCm = 0.6f;
     int hoveredKey = -1;   // index into keysCm drawn in the handle hover colour, -1 for none
     int selectedKey = -1;  // index into keysCm drawn in the handle selected colour, -1 for none
-    // Key balls are this big (the editor picks keys with the same radius).
-    float keyRadiusCm() const { return radiusCm * 3.2f; }
+    float tickRadiusCm = 0.0f;  // > 0: a tick (a small ball) on every point, e.g. one per frame
+    bool onTop = false;         // drawn over everything else (a gizmo), not hidden by the body
+    // Key balls are this big (the editor picks keys with the same radius); the editor sets
+    // minKeyRadiusCm so that a key stays large enough to grab when the camera is far away.
+    float minKeyRadiusCm = 0.0f;
+    float keyRadiusCm() const { return radiusCm * 3.2f > minKeyRadiusCm ? radiusCm * 3.2f : minKeyRadiusCm; }
 };
 
 struct Scene {

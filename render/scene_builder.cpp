@@ -8,11 +8,11 @@
 
 namespace mgp::render {
 
-namespace {
-
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
     return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
 }
+
+namespace {
 
 struct BoneStyle {
     float startRadius, endRadius;
@@ -216,6 +216,18 @@ Scene buildClipScene(const Clip& clip, const ClipSceneOptions& o) {
     for (Effector e : o.paths)
         scene.paths.push_back(effectorPath(clip, e, o.frameIndex - o.pathHalfSpan, o.frameIndex + o.pathHalfSpan,
                                            o.pathKeyEvery, o.frameIndex));
+    if (o.onion)
+        for (const OnionGhostFrame& g : onionFrames(*o.onion, o.frameIndex, clip.frameCount()))
+            scene.figures.push_back(onionGhost(clip.skeleton, clip.frames[g.frame], g.step, *o.onion));
+    const auto framePose = [&clip](int f) -> const Pose& { return clip.frames[f]; };
+    for (TrailPart part : o.trails)
+        scene.paths.push_back(motionTrail(clip.skeleton, framePose, clip.frameCount(), part,
+                                          o.frameIndex - o.trailHalfSpan, o.frameIndex + o.trailHalfSpan,
+                                          o.frameIndex, false));
+    if (o.gizmoJoint >= 0)
+        addRotateGizmo(scene, rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, o.gizmoJoint,
+                                          o.gizmoRadiusCm),
+                       -1);
     if (o.caption)
         scene.caption = clip.name + "  frame " + std::to_string(o.frameIndex + 1) + "/" +
                         std::to_string(clip.frameCount()) + "  grid 1 m";

@@ -4,11 +4,16 @@
 #include <optional>
 #include <vector>
 
+#include "motion_overlays.h"
+#include "rotate_gizmo.h"
 #include "scene.h"
 #include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::render {
+
+// A core point (cm, world Y up) as the renderer takes it: the same axes, in float.
+glm::vec3 toGlm(const Eigen::Vector3d& v);
 
 // Side of a bone from its ASF role: 'l…' left, 'r…' right (root excluded), else centre.
 BodySide sideOfBone(const std::string& boneRole);
@@ -53,6 +58,11 @@ struct ClipSceneOptions {
     int pathHalfSpan = 60;
     int pathKeyEvery = 20;
     bool caption = true;
+    std::optional<OnionSkin> onion;  // ghosts of the clip's frames around this one
+    std::vector<TrailPart> trails;   // motion trails (a tick per frame) over ±trailHalfSpan frames
+    int trailHalfSpan = 30;
+    int gizmoJoint = -1;  // the rotate gizmo of this joint (-1 none), rings of gizmoRadiusCm
+    float gizmoRadiusCm = 16.0f;
 };
 Scene buildClipScene(const Clip& clip, const ClipSceneOptions& options);
 

@@ -192,7 +192,7 @@ constexpr int kShadowRes = 128;
 
 struct SceneRenderer::Impl {
     ShaderProgram lit, ground, background, text;
-    GpuMesh sphere, smallSphere, tube, thinTube, quad;
+    GpuMesh sphere, smallSphere, tinySphere, tube, thinTube, quad;
     unsigned instanceVbo = 0;
     unsigned shadowTexture = 0;
     std::vector<std::uint8_t> shadowTexels;
@@ -248,6 +248,7 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     // llvmpipe's cost is mostly per triangle: small and thin things get coarser meshes.
     r.sphere = GpuMesh(makeSphere(20, 12));
     r.smallSphere = GpuMesh(makeSphere(10, 6));
+    r.tinySphere = GpuMesh(makeSphere(6, 4));  // trail ticks: hundreds, a centimetre across
     r.tube = GpuMesh(makeTube(20));
     r.thinTube = GpuMesh(makeTube(8));
     r.quad = GpuMesh(makeQuadXZ());
@@ -259,7 +260,8 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kShadowRes, kShadowRes, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-    for (const GpuMesh* m : {&r.sphere, &r.smallSphere, &r.tube, &r.thinTube}) m->attachInstanceBuffer(r.instanceVbo, 2, 4);
+    for (const GpuMesh* m : {&r.sphere, &r.smallSphere, &r.tinySphere, &r.tube, &r.thinTube})
+        m->attachInstanceBuffer(r.instanceVbo, 2, 4);
     glGenVertexArrays(1, &r.emptyVao);
     glGenVertexArrays(1, &r.textVao);
     glGenBuffers(1, &r.textVbo);
@@ -304,10 +306,11 @@ struct Drawer {
     ShaderProgram& lit;
     const GpuMesh& sphere;
     const GpuMesh& smallSphere;
+    const GpuMesh& tinySphere;
     const GpuMesh& tube;
     const GpuMesh& thinTube;
     unsigned instanceVbo;
-    std::vector<Instance> tubes, thinTubes, balls, smallBalls;
+    std::vector<Instance> tubes, thinTubes, balls, smallBalls, tinyBalls;
     glm::vec4 current{1.0f};
     float emissive = 0.0f;
 
@@ -317,6 +320,9 @@ struct Drawer {
     }
     void ball(const glm::vec3& centre, float radius) {
         (radius < 2.7f ? smallBalls : balls).push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
+    }
+    void tinyBall(const glm::vec3& centre, float radius) {
+        tinyBalls.push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void segment(const glm::vec3& a, const glm::vec3& b, float r0, float r1) {
         if (glm::length(b - a) < 1e-4f) return;
@@ -349,12 +355,14 @@ struct Drawer {
         drawBatch(thinTubes, thinTube, 1);
         drawBatch(balls, sphere, 0);
         drawBatch(smallBalls, smallSphere, 0);
+        drawBatch(tinyBalls, tinySphere, 0);
         glDisable(GL_CULL_FACE);
         if (!keep) {
             tubes.clear();
             thinTubes.clear();
             balls.clear();
             smallBalls.clear();
+            tinyBalls.clear();
         }
     }
 };
@@ -456,14 +464,23 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     r.lit.set("uEye", eye);
     r.lit.set("uKeyDir", keyDir);
     r.lit.set("uFillDir", fillDir);
-    Drawer d{r.lit, r.sphere, r.smallSphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {}, {}, glm::vec4(1.0f), 0.0f};
+    Drawer d{r.lit, r.sphere, r.smallSphere, r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {}, {}, {},
+             glm::vec4(1.0f), 0.0f};
     for (const Figure& f : scene.figures)
         if (!f.ghost) d.figure(f, s, false);
-    for (const Path& p : scene.paths) {
+    auto drawPath = [&](const Path& p) {
         d.colour(p.colour);
         for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
-            d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
-        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
+            // Where two ticks overlap they already draw the line (llvmpipe pays per instance).
+            if (p.tickRadiusCm <= 0.0f || glm::length(p.pointsCm[i] - p.pointsCm[i - 1]) > 1.5f * p.tickRadiusCm)
+                d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
+        // Balls round the joins of a thick path; a ticked path's ticks cover them.
+        if (p.tickRadiusCm <= 0.0f)
+            for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
+        if (p.tickRadiusCm > 0.0f) {
+            d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.35f));
+            for (const glm::vec3& q : p.pointsCm) d.tinyBall(q, p.tickRadiusCm);
+        }
         for (std::size_t k = 0; k < p.keysCm.size(); ++k) {
             const int i = static_cast<int>(k);
             if (i == p.selectedKey) d.colour(s.handleSelected, 1.0f, 0.45f);
@@ -475,7 +492,9 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
             d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
             d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);
         }
-    }
+    };
+    for (const Path& p : scene.paths)
+        if (!p.onTop) drawPath(p);
     for (const Target& t : scene.targets) {
         const glm::vec3 c = t.reached ? s.targetReached : s.targetMissed;
         d.colour(c, 1.0f, 0.15f);
@@ -554,13 +573,19 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     glDepthMask(GL_TRUE);
     r.lit.use();
 
-    // 5. Ghosts: a depth-only pass first so overlapping parts of one ghost blend once.
+    // 5. Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the
+    // ghost nearest to the eye there, once (onion skins draw several ghosts: two passes in all
+    // instead of two per ghost).
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    bool anyGhost = false;
     for (const Figure& f : scene.figures) {
         if (!f.ghost) continue;
         d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
         d.figure(f, s, true);
+        anyGhost = true;
+    }
+    if (anyGhost) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         d.flush(true);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -595,6 +620,19 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         d.ball(h.positionCm, handleRadius(h));
     }
     d.flush();
+
+    // 6b. Paths drawn over everything (a gizmo): a fresh depth buffer, so that they hide only
+    // themselves.
+    bool anyOnTop = false;
+    for (const Path& p : scene.paths) anyOnTop = anyOnTop || p.onTop;
+    if (anyOnTop) {
+        glDisable(GL_BLEND);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        for (const Path& p : scene.paths)
+            if (p.onTop) drawPath(p);
+        d.flush();
+        glEnable(GL_BLEND);
+    }
 
     // 7. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
     if (!scene.caption.empty()) {

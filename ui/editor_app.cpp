@@ -410,6 +410,8 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     jointWindow_.draw(*this);
     trainClips_.draw(*this);
     viewport_->setJointPicking(jointWindow_.shown());
+    state_.gizmoJoint = jointWindow_.shown() ? jointWindow_.joint() : -1;
+    state_.gizmoFollowPrior = jointWindow_.followPrior();
     drawHelpWindow(showHelp_, layout_.leftWidth() * 0.5f, float(height) * 0.5f, options_.autosaveSeconds);
     runRequests();
     dialogs();

@@ -9,6 +9,7 @@
 
 #include "frame_profile.h"
 #include "camera.h"
+#include "motion_overlays.h"
 #include "edit/editor_document.h"
 #include "edit/export_job.h"
 #include "edit/training_job.h"
@@ -67,6 +68,19 @@ struct EditorState {
     // support polygon (motion/support_polygon.h), drawn over the viewport.
     bool showBalance = false;
     std::string balanceCaption;  // what the overlay last said ("" when hidden)
+    // The rotate gizmo (render/rotate_gizmo.h): the joint it turns, the Rotate joint window's
+    // (-1 while that window is hidden), and whether the rest of the pose follows the learned prior
+    // (the window's option); EditorApp sets both each frame. The ring under the mouse or being
+    // dragged (its DOF axis, -1 none).
+    int gizmoJoint = -1;
+    bool gizmoFollowPrior = false;
+    int gizmoRing = -1;
+    // View > Onion skins and View > Motion trails (render/motion_overlays.h), over the edited motion.
+    bool showOnionSkin = false;
+    render::OnionSkin onionSkin;
+    bool trails[render::kTrailPartCount] = {};  // by TrailPart
+    int trailHalfSpan = 30;                     // frames each side of the current one
+    bool showCapturedTrails = true;             // the captured motion's trail beneath each
 
     // Where the viewport's image was last drawn (window pixels), so points can be projected to
     // the window outside the viewport's draw (scripts, tests).

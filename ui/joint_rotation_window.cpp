@@ -51,8 +51,9 @@ void JointRotationWindow::draw(EditorApp& app) {
         ImGui::EndCombo();
     }
     s.recordControl("rotate joint: joint");
-    // Between gestures the sliders show the frame's pose (frame changes, undo, other edits).
-    if (!gesture_) values_ = doc.currentPose().anglesDeg[joint_];
+    // Between gestures the sliders show the frame's pose (frame changes, undo, other edits), or
+    // the rotation the viewport's gizmo is previewing.
+    if (!gesture_) values_ = (s.posePreview ? *s.posePreview : doc.currentPose()).anglesDeg[joint_];
     bool changed = false, active = false, released = false;
     const Joint& jt = sk.joints[joint_];
     for (int a = 0; a < 3; ++a) {

@@ -81,6 +81,24 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
     ImGui::MenuItem("Follow character", nullptr, &s.followCharacter);
     ImGui::MenuItem("Pose range tint", nullptr, &s.showRangeTint, s.doc.hasModel());
     ImGui::MenuItem("Balance (centre of mass, support)", nullptr, &s.showBalance, s.doc.hasClip());
+    if (beginMenu("Onion skins", escape)) {
+        ImGui::MenuItem("Show", nullptr, &s.showOnionSkin, s.doc.hasClip());
+        ImGui::SliderInt("Before", &s.onionSkin.before, 0, render::kMaxOnionGhosts);
+        ImGui::SliderInt("After", &s.onionSkin.after, 0, render::kMaxOnionGhosts);
+        ImGui::SliderInt("Spacing (frames)", &s.onionSkin.spacing, 1, render::kMaxOnionSpacing);
+        ImGui::EndMenu();
+    }
+    if (beginMenu("Motion trails", escape)) {
+        static const char* const kLabels[render::kTrailPartCount] = {"Left hand", "Right hand", "Left foot",
+                                                                     "Right foot", "Head", "Root"};
+        for (int i = 0; i < render::kTrailPartCount; ++i)
+            ImGui::MenuItem(kLabels[i], nullptr, &s.trails[i],
+                            s.doc.hasClip() && render::hasTrailPart(s.doc.clip().skeleton, static_cast<render::TrailPart>(i)));
+        ImGui::Separator();
+        ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, 240);
+        ImGui::MenuItem("Captured motion beneath", nullptr, &s.showCapturedTrails);
+        ImGui::EndMenu();
+    }
     if (beginMenu("Compare ghost", escape)) {
         const CompareMode mode = s.doc.compareMode();
         t.menuItem(app, "compare", "Off", {compareModeName(CompareMode::kNone)}, mode == CompareMode::kNone);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "edit/joint_rotation.h"
 #include "picking.h"
 #include "range_tint.h"
 #include "scene_builder.h"
@@ -179,10 +180,14 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
         handles = render::effectorHandles(doc.clip().skeleton, fk);
     }
     const std::vector<render::Handle> keys = keyHandles(s);
+    const render::RotateGizmo gizmo = mode_ == Mode::kNone ? viewportGizmo(s) : render::RotateGizmo{};
     if (mode_ == Mode::kNone) {
         s.hoveredHandle = -1;
         s.hoveredKey = -1;
-        if (hovered) {
+        s.gizmoRing = -1;
+        // The gizmo's rings are drawn over everything, so they win over handles and keys.
+        if (hovered && gizmo.joint >= 0) s.gizmoRing = render::pickGizmoRing(gizmo, s.camera, mx, my, width_, height_);
+        if (hovered && s.gizmoRing < 0) {
             // Effector handles first: a key lying on a handle must not hide it.
             const int i = render::pickHandleAtPixel(handles, s.camera, mx, my, width_, height_, 2.5f);
             if (i >= 0) s.hoveredHandle = handles[i].id;
@@ -193,7 +198,14 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
 
     if (mode_ == Mode::kNone && hovered) {
         if (io.MouseClicked[0]) {
-            if (s.hoveredHandle >= 0) {
+            if (s.gizmoRing >= 0) {
+                mode_ = Mode::kRotateRing;
+                ringGizmo_ = gizmo;
+                ringAxis_ = s.gizmoRing;
+                ringStartAngles_ = doc.currentPose().anglesDeg[gizmo.joint];
+                ringSweepDeg_ = 0.0;
+                s.playing = false;
+            } else if (s.hoveredHandle >= 0) {
                 const auto e = static_cast<Effector>(s.hoveredHandle);
                 const Eigen::Vector3d start = doc.effectorPosition(e);
                 const std::string err = doc.beginDrag(e);
@@ -279,10 +291,55 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 }
             }
             break;
+        case Mode::kRotateRing:
+            if (movedThisFrame_ || !io.MouseDown[0]) rotateRing(s, mx, my, io.KeyCtrl, !io.MouseDown[0]);
+            break;
         case Mode::kNone: break;
     }
     lastX_ = mx;
     lastY_ = my;
+}
+
+void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bool released) {
+    EditorDocument& doc = s.doc;
+    const int joint = ringGizmo_.joint;
+    if (!doc.hasClip() || joint < 0 || joint >= doc.clip().skeleton.jointCount() || s.gizmoJoint != joint) {
+        s.posePreview.reset();
+        mode_ = Mode::kNone;
+        return;
+    }
+    // Summed frame by frame, so that a drag once round the joint is a whole turn.
+    ringSweepDeg_ += render::gizmoSweepDeg(ringGizmo_, ringAxis_, s.camera, lastX_, lastY_, mx, my, width_, height_);
+    // Ctrl snaps the change (not the angle) to 5° steps, as Blender's and Maya's rotate tools do.
+    const double delta = snap ? 5.0 * std::round(ringSweepDeg_ / 5.0) : ringSweepDeg_;
+    JointRotation rot;
+    rot.joint = joint;
+    rot.anglesDeg = ringStartAngles_;
+    rot.anglesDeg[ringAxis_] += delta;
+    rot.followPrior = s.gizmoFollowPrior && doc.hasModel();
+    const Joint& jt = doc.clip().skeleton.joints[joint];
+    char text[96];
+    std::snprintf(text, sizeof text, "%s r%c %+.1f deg%s", jt.name.c_str(), "xyz"[ringAxis_], delta, snap ? " (5 deg steps)" : "");
+    s.dragReadout = text;
+    if (!released) {
+        // Live preview: a short solve per move (the action solves fully on release).
+        const JointRotationResult r = solveJointRotation(doc, rot, 30);
+        if (r.error.empty()) s.posePreview = r.pose;
+        else s.setStatus(r.error, true);
+        return;
+    }
+    s.posePreview.reset();
+    s.dragReadout.clear();
+    mode_ = Mode::kNone;
+    if (delta == 0.0) return;
+    std::vector<std::string> args{jt.name};
+    for (int a = 0; a < 3; ++a) {
+        if (!jt.dof[a]) continue;
+        char number[40];
+        std::snprintf(number, sizeof number, "%.17g", rot.anglesDeg[a]);
+        args.push_back(number);
+    }
+    s.request("rotate-joint", std::move(args));  // one undo step, spread like the other pose edits
 }
 
 int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
@@ -298,7 +355,9 @@ int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
         bones.push_back({toGlm(fk.jointCm[j]), toGlm(boneEndCm(sk, fk, j))});
         joints.push_back(j);
     }
-    const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 3.0f);
+    // Within 5 cm of the bone's axis: a click on the surface of a drawn thigh (6 cm thick at the
+    // hip) still picks it; the nearest bone along the ray wins where several qualify.
+    const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 5.0f);
     return i < 0 ? -1 : joints[i];
 }
 
@@ -363,6 +422,12 @@ void ViewportPanel::draw(EditorState& s) {
             mode_ = Mode::kNone;
             s.setStatus("key drag cancelled");
         }
+        if (chordPressed(256 /*Escape*/) && mode_ == Mode::kRotateRing) {
+            s.posePreview.reset();
+            s.dragReadout.clear();
+            mode_ = Mode::kNone;
+            s.setStatus("rotation cancelled");
+        }
     }
 
     if (s.doc.hasClip()) {
@@ -410,6 +475,7 @@ void ViewportPanel::draw(EditorState& s) {
     // Overlay: what the mouse does.
     const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
                        : mode_ == Mode::kDragKey  ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
+                       : mode_ == Mode::kRotateRing ? "Rotating the joint: release to apply  |  Ctrl: 5 deg steps  |  Esc: cancel"
                        : s.doc.pathEdit()
                            ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
                            : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
@@ -423,11 +489,17 @@ void ViewportPanel::draw(EditorState& s) {
         s.dragReadout = buf;
         const float lh = ImGui::GetTextLineHeightWithSpacing();
         dl->AddText(ImVec2(origin.x + 8, origin.y + 6 + lh), IM_COL32(255, 214, 120, 255), buf);
+    } else if (mode_ == Mode::kRotateRing) {
+        const float lh = ImGui::GetTextLineHeightWithSpacing();
+        dl->AddText(ImVec2(origin.x + 8, origin.y + 6 + lh), IM_COL32(255, 214, 120, 255), s.dragReadout.c_str());
     } else {
         s.dragReadout.clear();
     }
     drawBalance(s, origin.x, origin.y + h);
     drawRangeLegend(s, origin.x + w, origin.y + h);
+    if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 && s.gizmoJoint < s.doc.clip().skeleton.jointCount())
+        ImGui::SetTooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
+                          s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",

@@ -14,6 +14,7 @@
 
 #include "editor_state.h"
 #include "png_capture.h"
+#include "scene_builder.h"
 #include "skeleton_renderer.h"
 
 namespace mgp::ui {
@@ -50,7 +51,7 @@ private:
     void ensureTarget(int w, int h);
     void interact(EditorState& state, float mx, float my, bool hovered);
     render::Scene buildScene(const EditorState& state) const;
-    // The animated joint whose bone is under viewport pixel (mx, my) within 3 cm, -1 none.
+    // The animated joint whose bone is under viewport pixel (mx, my) within 5 cm, -1 none.
     int pickJoint(const EditorState& state, float mx, float my) const;
 
     std::unique_ptr<render::SceneRenderer> renderer_;
@@ -60,7 +61,14 @@ private:
     int rw_ = 16, rh_ = 16;  // the part of the target the last scene was drawn into
     int presentX_ = 0, presentY_ = 0, presentW_ = 0, presentH_ = 0;  // where draw() put the panel (0 wide: nowhere)
     static constexpr float kMovingScale = 0.7f;
-    enum class Mode { kNone, kOrbit, kPan, kDragHandle, kDragKey } mode_ = Mode::kNone;
+    enum class Mode { kNone, kOrbit, kPan, kDragHandle, kDragKey, kRotateRing } mode_ = Mode::kNone;
+    // A kRotateRing drag: the gizmo as it was when the drag began, the ring's DOF axis, the
+    // joint's angles then, and the mouse sweep so far (degrees).
+    render::RotateGizmo ringGizmo_;
+    int ringAxis_ = -1;
+    Eigen::Vector3d ringStartAngles_ = Eigen::Vector3d::Zero();
+    double ringSweepDeg_ = 0.0;
+    void rotateRing(EditorState& state, float mx, float my, bool snap, bool released);
     int dragKey_ = -1;                                        // the key of a kDragKey drag
     Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
     float lastX_ = 0, lastY_ = 0;
@@ -80,8 +88,7 @@ private:
     mutable float groundHeight_ = 0.0f;
 };
 
-// A core point (cm, world Y up) as the renderer takes it: the same axes, in float.
-inline glm::vec3 toGlm(const Eigen::Vector3d& v) { return {float(v.x()), float(v.y()), float(v.z())}; }
+using render::toGlm;
 // Window pixel of a world point (cm) in the viewport as last drawn (EditorState::viewport*);
 // false when behind the camera or outside the viewport. Usable without the panel (scripts, tests).
 bool viewportWindowPosition(const EditorState& state, const Eigen::Vector3d& pointCm, float& x, float& y);
@@ -93,5 +100,9 @@ std::optional<Pose> beforeGhostPose(const EditorState& state);
 std::optional<render::Path> editedPath(const EditorState& state);
 // Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
 bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
+// The rotate gizmo of EditorState::gizmoJoint on the shown pose (a rotation's preview while one
+// is dragged), its rings kGizmoRadiusPx across on screen; an empty gizmo (joint −1) when none.
+constexpr float kGizmoRadiusPx = 70.0f;
+render::RotateGizmo viewportGizmo(const EditorState& state);
 
 }  // namespace mgp::ui

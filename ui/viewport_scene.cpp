@@ -2,6 +2,8 @@
 // figure with its range tint, handles, ghosts, paths, the drag target, pins and planted feet).
 #include "viewport_panel.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,6 +28,33 @@ std::optional<Pose> nearestGhostPose(const EditorState& s) {
     return pose;
 }
 
+// Onion skins and motion trails over the edited motion (a trail of the captured motion beneath).
+void addMotionOverlays(const EditorState& s, render::Scene& scene) {
+    const EditorDocument& doc = s.doc;
+    const Skeleton& skeleton = doc.clip().skeleton;
+    if (s.showOnionSkin)
+        for (const render::OnionGhostFrame& g : render::onionFrames(s.onionSkin, doc.frame(), doc.frameCount()))
+            scene.figures.push_back(render::onionGhost(skeleton, doc.poseAt(g.frame), g.step, s.onionSkin));
+    const auto edited = [&doc](int f) -> const Pose& { return f == doc.frame() ? doc.currentPose() : doc.poseAt(f); };
+    const auto captured = [&doc](int f) -> const Pose& { return doc.clip().frames[f]; };
+    const int first = doc.frame() - s.trailHalfSpan, last = doc.frame() + s.trailHalfSpan;
+    for (int i = 0; i < render::kTrailPartCount; ++i) {
+        if (!s.trails[i]) continue;
+        const auto part = static_cast<render::TrailPart>(i);
+        render::Path editedTrail =
+            render::motionTrail(skeleton, edited, doc.frameCount(), part, first, last, doc.frame(), false);
+        // The captured trail only where the edit moved the point: elsewhere the edited trail
+        // covers it exactly, and llvmpipe pays for every segment drawn.
+        if (s.showCapturedTrails) {
+            const render::Path capturedTrail =
+                render::motionTrail(skeleton, captured, doc.frameCount(), part, first, last, doc.frame(), true);
+            for (render::Path& moved : render::differingParts(capturedTrail, editedTrail, 0.05f))
+                scene.paths.push_back(std::move(moved));
+        }
+        scene.paths.push_back(std::move(editedTrail));
+    }
+}
+
 }  // namespace
 
 std::optional<Pose> beforeGhostPose(const EditorState& s) {
@@ -47,9 +76,33 @@ std::optional<render::Path> editedPath(const EditorState& s) {
     p.radiusCm = 0.7f;
     const int first = path->keyFrames.front(), last = path->keyFrames.back();
     if (s.doc.frame() >= first && s.doc.frame() <= last) p.currentPoint = s.doc.frame() - first;
+    // Keys at least kMinKeyRadiusPx in radius on screen (12 px across), measured at the farthest
+    // key from the camera, so that each can be grabbed at any zoom.
+    if (s.viewportHeight > 0 && !p.keysCm.empty()) {
+        constexpr float kMinKeyRadiusPx = 6.0f;
+        float farthest = 0.0f;
+        for (const glm::vec3& k : p.keysCm) farthest = std::max(farthest, glm::length(k - s.camera.eye()));
+        const float cmPerPixel = 2.0f * farthest * std::tan(glm::radians(s.camera.fovYDeg) * 0.5f) /
+                                 static_cast<float>(s.viewportHeight);
+        p.minKeyRadiusCm = kMinKeyRadiusPx * cmPerPixel;
+    }
     p.hoveredKey = s.hoveredKey < keys ? s.hoveredKey : -1;
     p.selectedKey = s.selectedKey < keys ? s.selectedKey : -1;
     return p;
+}
+
+render::RotateGizmo viewportGizmo(const EditorState& s) {
+    const EditorDocument& doc = s.doc;
+    if (s.gizmoJoint < 0 || !doc.hasClip() || s.gizmoJoint >= doc.clip().skeleton.jointCount() || s.viewportHeight <= 0)
+        return {};
+    const Pose& pose = s.posePreview ? *s.posePreview : doc.currentPose();
+    FkState fk;
+    forwardKinematics(doc.clip().skeleton, pose, fk);
+    // Rings of the same size on screen at any zoom: kGizmoRadiusPx at the joint's distance.
+    const float distance = glm::length(toGlm(fk.jointCm[s.gizmoJoint]) - s.camera.eye());
+    const float cmPerPixel =
+        2.0f * distance * std::tan(glm::radians(s.camera.fovYDeg) * 0.5f) / static_cast<float>(s.viewportHeight);
+    return render::rotateGizmo(doc.clip().skeleton, pose, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel);
 }
 
 render::Scene ViewportPanel::buildScene(const EditorState& s) const {
@@ -91,6 +144,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     // Green: the captured frame nearest to the last solve, laid over the current pose's root.
     if (s.showNearestGhost)
         if (const std::optional<Pose> nearest = nearestGhostPose(s)) addGhost(*nearest, glm::vec3(0.3f, 0.9f, 0.5f));
+    addMotionOverlays(s, scene);
     if (doc.pathEdit() && s.showCapturedPath) {
         // Fainter and thinner than the edited path, which covers it where the two agree.
         render::Path captured;
@@ -108,6 +162,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
         t.reached = doc.readout().valid && doc.readout().reached;
         scene.targets.push_back(t);
     }
+    if (s.gizmoJoint >= 0) render::addRotateGizmo(scene, viewportGizmo(s), s.gizmoRing);
     for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
     // Feet planted on this frame that a drag or Regenerate holds (not switched off, not released).
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot})

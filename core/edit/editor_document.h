@@ -72,6 +72,9 @@ public:
     void setFrame(int frame);  // clamped; ends a drag in progress (accepting it)
     const Pose& currentPose() const;
     const Pose& capturedPose() const { return clip().frames[frame_]; }
+    // Frame `frame`'s pose in the edited motion (its edit, else the captured pose); a drag in
+    // progress shows only on the current frame (currentPose).
+    const Pose& poseAt(int frame) const { return store_.pose(frame); }
     bool isEdited(int frame) const { return store_.isEdited(frame); }
     const std::map<int, EditRecord>& edits() const { return store_.edits(); }
     void clearEdit(int frame);  // one undo step

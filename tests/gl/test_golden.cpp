@@ -71,14 +71,15 @@ struct GoldenScene {
 };
 
 // A frame of a clip exactly as `motiongp render CLIP --frame T --camera C` draws it.
-GoldenScene clipScene(const std::string& amc, int frame1, CameraPreset preset, ClipSceneOptions opt = {}) {
+GoldenScene clipScene(const std::string& amc, int frame1, CameraPreset preset, ClipSceneOptions opt = {},
+                      int width = kWidth, int height = kHeight) {
     const Clip clip = loadClip(kMocap + "/asf_amc/" + amc);
     opt.frameIndex = frame1 - 1;
     GoldenScene g;
     g.scene = buildClipScene(clip, opt);
     FkState fk;
     forwardKinematics(clip.skeleton, clip.frames[opt.frameIndex], fk);
-    g.camera = framedPresetCamera(preset, g.scene, characterForward(clip.skeleton, fk), kWidth, kHeight);
+    g.camera = framedPresetCamera(preset, g.scene, characterForward(clip.skeleton, fk), width, height);
     return g;
 }
 
@@ -163,8 +164,8 @@ void compareWithGolden(const std::string& name, const Image& actual) {
     CHECK(fraction >= kMinMatching);
 }
 
-void runGolden(const std::string& name, const GoldenScene& g) {
-    auto ctx = referenceContext(kWidth, kHeight);
+void runGolden(const std::string& name, const GoldenScene& g, int width = kWidth, int height = kHeight) {
+    auto ctx = referenceContext(width, height);
     if (!ctx) return;
     const Image img = renderOnce(g, *ctx);
     // Not an empty frame: the figure and the grid put many distinct colours in the picture.
@@ -200,6 +201,26 @@ TEST_CASE("golden: 10_02 kick (frame 362), side camera, right-foot path selected
 
 TEST_CASE("golden: editor overlays (hover, selected, targets, pins, path)") {
     runGolden("35_01_f100_overlays", overlayScene());
+}
+
+TEST_CASE("golden: onion skins (2 before, 2 after, 10 frames apart) and motion trails, 1280x720") {
+    ClipSceneOptions opt;
+    opt.onion = OnionSkin{2, 2, 10};
+    opt.trails = {TrailPart::kLFoot, TrailPart::kRFoot, TrailPart::kRHand, TrailPart::kRoot};
+    opt.trailHalfSpan = 30;
+    opt.handles = false;
+    runGolden("35_01_f100_onion_trails",
+              clipScene("35_01.amc", 100, CameraPreset::kThreeQuarter, opt, 1280, 720), 1280, 720);
+}
+
+TEST_CASE("golden: the rotate gizmo on the right thigh (three rings over the figure), 1280x720") {
+    const Clip clip = loadClip(kMocap + "/asf_amc/35_01.amc");
+    ClipSceneOptions opt;
+    opt.gizmoJoint = clip.skeleton.findBone("rfemur");
+    REQUIRE(opt.gizmoJoint >= 0);
+    opt.handles = false;
+    runGolden("35_01_f100_rotate_gizmo", clipScene("35_01.amc", 100, CameraPreset::kThreeQuarter, opt, 1280, 720), 1280,
+              720);
 }
 
 TEST_CASE("determinism: two fresh contexts draw byte-identical PNGs") {

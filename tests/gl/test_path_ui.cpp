@@ -290,3 +290,36 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     REQUIRE(p.click("Done"));
     CHECK_FALSE(doc.pathEdit().has_value());
 }
+
+TEST_CASE("gui path: key handles stay at least 10 px across when the camera moves away, and can be grabbed") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    beginFootPath(*h, Effector::kLFoot);  // the left foot swings here: its keys lie apart
+    ui::EditorState& s = h->app->state();
+    s.followCharacter = false;
+    for (const float zoom : {1.0f, 3.0f}) {
+        CAPTURE(zoom);
+        if (zoom > 1.0f) s.camera.distanceCm *= zoom;
+        h->frame(2);
+        const render::Scene& scene = h->app->viewport().lastScene();
+        REQUIRE_FALSE(scene.paths.empty());
+        const render::Path& edited = scene.paths.back();
+        REQUIRE(edited.keysCm.size() == 4);
+        // The screen radius of each key: its centre and a point one radius away across the view.
+        const glm::mat4 view = s.camera.view();
+        const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+        for (std::size_t k = 0; k < edited.keysCm.size(); ++k) {
+            glm::vec3 c, e;
+            REQUIRE(s.camera.project(edited.keysCm[k], s.viewportWidth, s.viewportHeight, c));
+            REQUIRE(s.camera.project(edited.keysCm[k] + right * edited.keyRadiusCm(), s.viewportWidth, s.viewportHeight, e));
+            CHECK(glm::length(glm::vec2(e - c)) >= 5.0f);
+        }
+        // The mouse 4 px off a key's centre still hovers it.
+        float x = 0, y = 0;
+        REQUIRE(ui::pathKeyWindowPosition(s, 3, x, y));
+        h->input.mouseX = x + 4.0f;
+        h->input.mouseY = y;
+        h->frame(2);
+        CHECK(s.hoveredKey == 3);
+    }
+}

@@ -1,0 +1,50 @@
+#pragma once
+// The rotate gizmo of one joint (Edit > Rotate joint): a ring per rotation DOF the joint animates,
+// centred on the joint, about that DOF's world axis at the current angles. This is the "gimbal"
+// orientation of Maya's rotate tool: each ring turns exactly one Euler channel of the joint, so a
+// one-DOF knee shows one ring and no drag asks for an axis the joint does not have. Rings are red,
+// green and blue for the x, y and z channels and drawn over the figure; the joint's bone is
+// highlighted. Plain data and screen maths, no GL.
+#include <vector>
+
+#include "camera.h"
+#include "scene.h"
+#include "skeleton/clip.h"
+
+namespace mgp::render {
+
+struct GizmoRing {
+    int axis = 0;             // the joint's DOF: 0 x, 1 y, 2 z
+    glm::vec3 axisWorld{0.0f};  // unit
+    std::vector<glm::vec3> pointsCm;  // closed: the last point is the first
+};
+
+struct RotateGizmo {
+    int joint = -1;  // -1: no gizmo
+    glm::vec3 pivotCm{0.0f};
+    glm::vec3 boneEndCm{0.0f};
+    float radiusCm = 15.0f;
+    std::vector<GizmoRing> rings;  // one per animated DOF, in x, y, z order
+};
+
+// The gizmo of `joint` in `pose` with rings of `radiusCm` (-1 joints and joints without rotation
+// DOFs give an empty gizmo).
+RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, int joint, float radiusCm);
+glm::vec3 gizmoAxisColour(int axis);
+// Adds the rings (the hovered or dragged one, by DOF axis, brighter and thicker; -1 none) and the
+// highlighted bone to the scene, drawn over everything else.
+void addRotateGizmo(Scene& scene, const RotateGizmo& gizmo, int highlightedAxis);
+
+// The DOF axis of the ring whose outline passes within `slackPx` of pixel (x, y) of a w×h viewport,
+// the nearest if several; -1 for none.
+int pickGizmoRing(const RotateGizmo& gizmo, const OrbitCamera& camera, float x, float y, int w, int h,
+                  float slackPx = 7.0f);
+// The rotation (degrees) about the ring of DOF `axis` that moving the mouse from (x0, y0) to
+// (x1, y1) sweeps around the joint on screen: the angle between the two pixels as seen from the
+// projected pivot, positive counter-clockwise on screen when the axis points towards the camera
+// (a right-handed turn as the viewer sees it) and negated when it points away. One degree of
+// mouse sweep is one degree of rotation. 0 if the pivot is behind the camera or a pixel lies on it.
+double gizmoSweepDeg(const RotateGizmo& gizmo, int axis, const OrbitCamera& camera, float x0, float y0, float x1,
+                     float y1, int w, int h);
+
+}  // namespace mgp::render

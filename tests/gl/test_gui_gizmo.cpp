@@ -1,0 +1,190 @@
+// The rotate gizmo in the viewport, driven with synthetic mouse input offscreen: a ring turns its
+// one Euler channel by the angle the mouse sweeps around the joint on screen (within 0.5°), Ctrl
+// snaps the change to 5° steps, Esc cancels, the result is one undo step, and a click on the thigh
+// picks the thigh.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "editor_app.h"
+#include "editor_harness.h"
+#include "joint_rotation_window.h"
+#include "skeleton/forward_kinematics.h"
+#include "viewport_panel.h"
+
+using namespace mgp;
+using test::makeHarness;
+
+namespace {
+
+struct RingGrip {
+    float x = 0, y = 0;            // a window pixel on the ring, clear of the other rings
+    float pivotX = 0, pivotY = 0;  // the joint's window pixel
+};
+
+Eigen::Vector3d gizmoEigen(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// Distance from window pixel (x, y) to the projected outline of `ring`.
+float pixelsToRing(const ui::EditorState& s, const render::GizmoRing& ring, float x, float y) {
+    float best = 1e9f;
+    for (std::size_t i = 1; i < ring.pointsCm.size(); ++i) {
+        float ax, ay, bx, by;
+        if (!ui::viewportWindowPosition(s, gizmoEigen(ring.pointsCm[i - 1]), ax, ay) ||
+            !ui::viewportWindowPosition(s, gizmoEigen(ring.pointsCm[i]), bx, by))
+            continue;
+        const float vx = bx - ax, vy = by - ay, len2 = vx * vx + vy * vy;
+        const float t = len2 > 0 ? std::clamp(((x - ax) * vx + (y - ay) * vy) / len2, 0.0f, 1.0f) : 0.0f;
+        best = std::min(best, std::hypot(x - (ax + t * vx), y - (ay + t * vy)));
+    }
+    return best;
+}
+
+// A point of ring `axis` at least 15 px from the other rings and 40 px from the pivot.
+RingGrip gripOf(const ui::EditorState& s, const render::RotateGizmo& g, int axis) {
+    RingGrip grip;
+    REQUIRE(ui::viewportWindowPosition(s, gizmoEigen(g.pivotCm), grip.pivotX, grip.pivotY));
+    for (const render::GizmoRing& ring : g.rings) {
+        if (ring.axis != axis) continue;
+        for (const glm::vec3& q : ring.pointsCm) {
+            float x, y;
+            if (!ui::viewportWindowPosition(s, gizmoEigen(q), x, y)) continue;
+            if (std::hypot(x - grip.pivotX, y - grip.pivotY) < 40.0f) continue;
+            bool clear = true;
+            for (const render::GizmoRing& other : g.rings)
+                if (other.axis != axis && pixelsToRing(s, other, x, y) < 15.0f) clear = false;
+            if (clear) {
+                grip.x = x;
+                grip.y = y;
+                return grip;
+            }
+        }
+    }
+    FAIL("no point of ring " << axis << " lies clear of the others");
+    return grip;
+}
+
+// The angle (degrees, counter-clockwise on screen) from pixel (x0, y0) to (x1, y1) round the grip's
+// pivot, with both pixels floored as ImGui floors the mouse position.
+double screenSweepDeg(const RingGrip& g, float x0, float y0, float x1, float y1) {
+    const double ax = std::floor(x0) - g.pivotX, ay = g.pivotY - std::floor(y0);
+    const double bx = std::floor(x1) - g.pivotX, by = g.pivotY - std::floor(y1);
+    return std::atan2(ax * by - ay * bx, ax * bx + ay * by) * 180.0 / 3.14159265358979;
+}
+
+// Presses on the grip, sweeps the mouse `degrees` counter-clockwise on screen round the pivot in
+// 10 moves (Ctrl held if `ctrl`), and releases unless `release` is false. Returns the sweep the
+// editor saw (the mouse positions floored).
+double sweep(test::Harness& h, const RingGrip& g, double degrees, bool ctrl, bool release = true) {
+    h.input.mouseX = g.x;
+    h.input.mouseY = g.y;
+    h.frame(2);
+    if (ctrl) h.input.setKey(ui::key::kLeftCtrl, true);
+    h.input.setButton(0, true);
+    h.frame(1);
+    const double r = std::hypot(g.x - g.pivotX, g.y - g.pivotY);
+    const double start = std::atan2(-(g.y - g.pivotY), g.x - g.pivotX);  // y up: counter-clockwise positive
+    for (int k = 1; k <= 10; ++k) {
+        const double a = start + degrees * k / 10.0 * 3.14159265358979 / 180.0;
+        h.input.mouseX = static_cast<float>(g.pivotX + r * std::cos(a));
+        h.input.mouseY = static_cast<float>(g.pivotY - r * std::sin(a));
+        h.frame(1);
+    }
+    const double seen = screenSweepDeg(g, g.x, g.y, h.input.mouseX, h.input.mouseY);
+    if (!release) return seen;
+    h.input.setButton(0, false);
+    h.frame(2);
+    if (ctrl) h.input.setKey(ui::key::kLeftCtrl, false);
+    h.frame(2);
+    return seen;
+}
+
+}  // namespace
+
+TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snaps to 5 degrees, one undo step") {
+    auto h = makeHarness(false, false);  // no model: the rotation is exactly the joint's angles
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(60);
+    const int femur = doc.clip().skeleton.findBone("rfemur");
+    REQUIRE(femur >= 0);
+    h->app->jointWindow().selectJoint(femur);
+    h->frame(3);
+    REQUIRE(s.gizmoJoint == femur);
+    const render::RotateGizmo g = ui::viewportGizmo(s);
+    REQUIRE(g.rings.size() == 3);  // rfemur animates rx ry rz
+    CHECK(h->app->viewport().lastScene().paths.size() == 4);  // the highlighted bone and three rings
+
+    for (int axis = 0; axis < 3; ++axis) {
+        CAPTURE(axis);
+        const render::GizmoRing& ring = g.rings[static_cast<std::size_t>(axis)];
+        const bool towards = glm::dot(ring.axisWorld, s.camera.eye() - g.pivotCm) > 0.0f;
+        const Eigen::Vector3d before = doc.currentPose().anglesDeg[femur];
+        const int undoBefore = doc.history().undoCount();
+        const RingGrip grip = gripOf(s, ui::viewportGizmo(s), axis);
+        const double seen = sweep(*h, grip, 30.0, false);
+        CHECK(std::abs(seen - 30.0) < 2.0);  // 30° less what flooring the pixels took off
+        const Eigen::Vector3d after = doc.currentPose().anglesDeg[femur];
+        // Counter-clockwise on screen is a positive turn about an axis that points at the viewer.
+        const double expected = towards ? seen : -seen;
+        INFO("the angle changed by " << after[axis] - before[axis] << " deg, expected " << expected);
+        CHECK(std::abs(after[axis] - before[axis] - expected) <= 0.5);
+        for (int other = 0; other < 3; ++other)
+            if (other != axis) CHECK(after[other] == before[other]);
+        CHECK(doc.history().undoCount() == undoBefore + 1);
+        REQUIRE(h->app->runAction({"undo"}).empty());
+        CHECK(doc.currentPose().anglesDeg[femur] == before);
+    }
+
+    // Ctrl: a 32° sweep becomes 30° (the change snapped to 5° steps).
+    {
+        const Eigen::Vector3d before = doc.currentPose().anglesDeg[femur];
+        sweep(*h, gripOf(s, ui::viewportGizmo(s), 1), 32.0, true);
+        const double change = doc.currentPose().anglesDeg[femur][1] - before[1];
+        CHECK(std::abs(std::abs(change) - 30.0) < 1e-9);
+        REQUIRE(h->app->runAction({"undo"}).empty());
+    }
+
+    // Esc during the drag cancels it: nothing changes and no undo step is added.
+    {
+        const Eigen::Vector3d before = doc.currentPose().anglesDeg[femur];
+        const int undoBefore = doc.history().undoCount();
+        sweep(*h, gripOf(s, ui::viewportGizmo(s), 2), 25.0, false, false);
+        REQUIRE(s.posePreview.has_value());  // the preview shows the rotation
+        test::tapKey(*h, ui::key::kEscape);
+        h->input.setButton(0, false);
+        h->frame(3);
+        CHECK_FALSE(s.posePreview.has_value());
+        CHECK(doc.currentPose().anglesDeg[femur] == before);
+        CHECK(doc.history().undoCount() == undoBefore);
+    }
+}
+
+TEST_CASE("gui gizmo: a one-DOF knee shows one ring, and a click on the thigh's surface picks the thigh") {
+    auto h = makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(60);
+    const Skeleton& sk = doc.clip().skeleton;
+    const int tibia = sk.findBone("ltibia"), femur = sk.findBone("lfemur");
+    REQUIRE(tibia >= 0);
+    REQUIRE(femur >= 0);
+    h->app->jointWindow().selectJoint(tibia);
+    h->frame(3);
+    CHECK(ui::viewportGizmo(s).rings.size() == 1);
+
+    // A click 4 cm off the thigh's axis (its surface is 4–6 cm from it), across the view.
+    FkState fk;
+    forwardKinematics(sk, doc.currentPose(), fk);
+    const Eigen::Vector3d mid = 0.5 * (fk.jointCm[femur] + boneEndCm(sk, fk, femur));
+    const glm::mat4 view = s.camera.view();
+    const Eigen::Vector3d right(view[0][0], view[1][0], view[2][0]);
+    float x = 0, y = 0;
+    REQUIRE(ui::viewportWindowPosition(s, mid + 4.0 * right, x, y));
+    test::clickAt(*h, x, y);
+    h->frame(2);
+    CHECK(h->app->jointWindow().joint() == femur);
+    CHECK(s.gizmoJoint == femur);
+}
