@@ -51,7 +51,8 @@ int pickSegment(const std::vector<Segment>& segments, const Ray& ray, float radi
     float bestT = 0.0f;
     for (std::size_t i = 0; i < segments.size(); ++i) {
         float t = 0.0f;
-        if (raySegmentDistance(ray, segments[i].a, segments[i].b, &t) > radiusCm) continue;
+        const float r = segments[i].radiusCm > 0.0f ? segments[i].radiusCm : radiusCm;
+        if (raySegmentDistance(ray, segments[i].a, segments[i].b, &t) > r) continue;
         if (best < 0 || t < bestT) {
             best = static_cast<int>(i);
             bestT = t;

@@ -17,10 +17,11 @@ int pickHandle(const std::vector<Handle>& handles, const Ray& ray, float slackCm
 // Distance (cm) between the ray (t ≥ 0) and the segment [a, b]; `along` gets the ray parameter of
 // the closest point.
 float raySegmentDistance(const Ray& ray, const glm::vec3& a, const glm::vec3& b, float* along = nullptr);
-// Index into `segments` (bones as start/end pairs) of the one the ray passes within radiusCm of,
-// the nearest along the ray; -1 for none.
+// Index into `segments` (bones as start/end pairs) of the one the ray passes within radiusCm of
+// (a segment's own radiusCm where it has one), the nearest along the ray; -1 for none.
 struct Segment {
     glm::vec3 a, b;
+    float radiusCm = 0.0f;  // > 0: this segment's pick radius
 };
 int pickSegment(const std::vector<Segment>& segments, const Ray& ray, float radiusCm);
 

@@ -36,6 +36,11 @@ BoneStyle styleOf(const std::string& role) {
 
 }  // namespace
 
+float boneRadiusCm(const std::string& boneRole) {
+    const BoneStyle style = styleOf(boneRole);
+    return std::max(style.startRadius, style.endRadius);
+}
+
 BodySide sideOfBone(const std::string& role) {
     if (role.size() < 2 || role == "root" || role == "lowerback" || role == "lowerneck") return BodySide::kCentre;
     if (role[0] == 'l') return BodySide::kLeft;

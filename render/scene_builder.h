@@ -18,6 +18,8 @@ glm::vec3 toGlm(const Eigen::Vector3d& v);
 // Side of a bone from its ASF role: 'l…' left, 'r…' right (root excluded), else centre.
 BodySide sideOfBone(const std::string& boneRole);
 
+// How thick a bone of ASF role `boneRole` is drawn: its larger end radius (cm).
+float boneRadiusCm(const std::string& boneRole);
 // Solid bones and joint balls of one posed skeleton (bones shorter than 0.5 cm are skipped).
 Figure makeFigure(const Skeleton& skeleton, const FkState& fk);
 // Moves every bone and joint of a figure by `offsetCm`.

@@ -88,3 +88,16 @@ TEST_CASE("editor: mirror and a joint rotation spread over the falloff too") {
     CHECK(s.doc.edits().size() > 1);
     CHECK(s.stepDeg(100) < 30.0);  // the 30° is not a one-frame jump any more
 }
+
+TEST_CASE("editor: a pose change on the clip's first frame stays there, and the document says why") {
+    SpreadDoc s;
+    const Pose source = s.poseAt(40);
+    s.doc.setFrame(0);
+    REQUIRE(s.doc.pastePose(source).empty());
+    s.doc.waitIdle();
+    const std::string said = s.doc.pollRegenerate();
+    CHECK(said.find("paste pose on frame 1: kept on frame 1 alone, not spread (expected a frame with a captured frame on each "
+                    "side") == 0);
+    CHECK(s.doc.pollRegenerate().empty());  // said once
+    CHECK(s.doc.edits().size() == 1);
+}

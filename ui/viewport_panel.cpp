@@ -352,12 +352,13 @@ int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
     for (int j = 1; j < sk.jointCount(); ++j) {
         const Joint& jt = sk.joints[j];
         if (!(jt.dof[0] || jt.dof[1] || jt.dof[2]) || jt.tailCm.norm() < 0.1) continue;
-        bones.push_back({toGlm(fk.jointCm[j]), toGlm(boneEndCm(sk, fk, j))});
+        // Each bone as thick as it is drawn, and 1 cm more: a click on a thigh's surface picks
+        // the thigh, and a finger does not reach beyond its own size.
+        bones.push_back({toGlm(fk.jointCm[j]), toGlm(boneEndCm(sk, fk, j)), render::boneRadiusCm(jt.bone) + 1.0f});
         joints.push_back(j);
     }
-    // Within 5 cm of the bone's axis: a click on the surface of a drawn thigh (6 cm thick at the
-    // hip) still picks it; the nearest bone along the ray wins where several qualify.
-    const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 5.0f);
+    // The nearest bone along the ray wins where several qualify.
+    const int i = render::pickSegment(bones, s.camera.rayFromPixel(mx, my, width_, height_), 3.0f);
     return i < 0 ? -1 : joints[i];
 }
 

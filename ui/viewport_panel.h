@@ -51,7 +51,8 @@ private:
     void ensureTarget(int w, int h);
     void interact(EditorState& state, float mx, float my, bool hovered);
     render::Scene buildScene(const EditorState& state) const;
-    // The animated joint whose bone is under viewport pixel (mx, my) within 5 cm, -1 none.
+    // The animated joint whose bone is under viewport pixel (mx, my) (within its drawn radius
+    // + 1 cm), -1 none.
     int pickJoint(const EditorState& state, float mx, float my) const;
 
     std::unique_ptr<render::SceneRenderer> renderer_;

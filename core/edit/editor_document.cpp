@@ -441,7 +441,10 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     std::string problem;
     MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(),
                                        &problem, std::move(base));
-    if (!problem.empty()) return;  // the drag stays a one-frame edit
+    if (!problem.empty()) {  // the change stays a one-frame edit: say so
+        falloffSkipped_ = stepLabel + ": kept on frame " + std::to_string(rec.frame + 1) + " alone, not spread (" + problem + ")";
+        return;
+    }
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
@@ -588,7 +591,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     std::optional<MotionEditJob> job = regenerate_.take();
     if (!job) {
         if (error) *error = regenerate_.takeMessage();
-        return "";
+        return std::exchange(falloffSkipped_, std::string());
     }
     // A drag's falloff joins the drag's own undo step when that step is still the latest.
     if (const std::string dragLabel = std::exchange(falloffStepLabel_, std::string()); !dragLabel.empty()) {

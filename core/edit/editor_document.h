@@ -224,8 +224,9 @@ public:
     int regenerateTotal() const { return regenerate_.framesTotal(); }
     void cancelRegenerate() { regenerate_.cancel(); }
     // Call once per UI frame: a finished regeneration becomes one undo step (and the moved keys'
-    // poses are posted to the adaptive worker). Returns a summary when it applied one, else "";
-    // `error` is set when the job failed or was cancelled.
+    // poses are posted to the adaptive worker). Returns a summary when it applied one, or why the
+    // last pose change could not be spread (it stays a one-frame edit: e.g. on the clip's first
+    // or last frame), else ""; `error` is set when the job failed or was cancelled.
     std::string pollRegenerate(std::string* error = nullptr);
     // Foot contacts of the clip (motion/foot_contacts.h), held by Regenerate and drag falloff;
     // the user can switch one off.
@@ -301,6 +302,7 @@ private:
     int falloffRadius_ = 0;  // set by setClip
     double bodyStiffness_ = 1.0;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
+    std::string falloffSkipped_;    // why the last change was not spread, until pollRegenerate says it
 
     CompareMode compare_ = CompareMode::kNone;
     DragSession drag_;

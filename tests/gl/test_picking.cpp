@@ -54,4 +54,9 @@ TEST_CASE("picking: ray to segment distance, and the nearest bone under the ray 
                                              {glm::vec3(8, -5, 5), glm::vec3(8, 5, 5)}};     // too far to the side
     CHECK(pickSegment(bones, ray, 3.0f) == 1);
     CHECK(pickSegment(bones, ray, 0.5f) == -1);
+    // A segment's own radius replaces the call's: a thin front bone is missed, the thick one behind it is hit.
+    const std::vector<Segment> sized{{glm::vec3(1, -5, -20), glm::vec3(1, 5, -20), 1.5f},
+                                     {glm::vec3(-2, -5, 0), glm::vec3(-2, 5, 0), 1.0f}};
+    CHECK(pickSegment(sized, ray, 3.0f) == 0);
+    CHECK(pickSegment(sized, ray, 0.5f) == 0);
 }
