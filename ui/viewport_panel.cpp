@@ -497,7 +497,7 @@ void ViewportPanel::draw(EditorState& s) {
         s.dragReadout.clear();
     }
     drawBalance(s, origin.x, origin.y + h);
-    drawRangeLegend(s, origin.x + w, origin.y + h);
+    drawRangeLegend(s, origin.y, origin.x + w, origin.y + h);
     if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 && s.gizmoJoint < s.doc.clip().skeleton.jointCount())
         ImGui::SetTooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
                           s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
@@ -567,8 +567,38 @@ void ViewportPanel::drawBalance(EditorState& s, float x0, float y1) {
 // Bottom-right corner (the hints are top-left, the caption bottom-left): the colour bar of render::rangeTint (natural →
 // amber as the body nears the capture's limit → red when refused), the verdict in words and whether the model learns
 // from the pose; the numbers behind it in a tooltip over the box.
-void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
+namespace {
+
+// The window rectangle the character covers on screen (its joints and bone ends, padded by a
+// few pixels); empty (x0 > x1) when none of it is in view.
+EditorState::ControlRect characterScreenRect(const EditorState& s) {
+    EditorState::ControlRect r{1e9f, 1e9f, -1e9f, -1e9f, false};
+    const Skeleton& sk = s.doc.clip().skeleton;
+    FkState fk;
+    forwardKinematics(sk, s.posePreview ? *s.posePreview : s.doc.currentPose(), fk);
+    auto add = [&](const Eigen::Vector3d& p) {
+        float x, y;
+        if (!viewportWindowPosition(s, p, x, y)) return;
+        r.x0 = std::min(r.x0, x - 8.0f), r.y0 = std::min(r.y0, y - 8.0f);
+        r.x1 = std::max(r.x1, x + 8.0f), r.y1 = std::max(r.y1, y + 8.0f);
+        r.visible = true;
+    };
+    for (int j = 0; j < sk.jointCount(); ++j) {
+        add(fk.jointCm[j]);
+        add(boneEndCm(sk, fk, j));
+    }
+    return r;
+}
+
+bool rectsOverlap(const EditorState::ControlRect& a, const EditorState::ControlRect& b) {
+    return a.visible && b.visible && a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+}  // namespace
+
+void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1) {
     s.rangeLegend.clear();
+    s.controls.erase("range legend");
     if (!s.showRangeTint || !s.doc.hasModel()) return;
     const std::optional<AdmissionVerdict> v = s.doc.currentPoseVerdict();
     const render::RangeTint tint = v ? render::rangeTint(*v) : render::RangeTint{};
@@ -595,6 +625,27 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
     const float h1 = heightOf(l1), h2 = heightOf(l2);
     const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + pad;
     const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);
+    const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
+                           : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
+                           : tint.band == render::RangeBand::kNearLimit ? IM_COL32(255, 190, 90, 255)
+                                                                         : IM_COL32(150, 230, 150, 255);
+    const auto tooltip = [&](const ImVec2& p0, const ImVec2& p1) {
+        if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(p0, p1))
+            ImGui::SetTooltip("%s\n%s", l2.c_str(), admissionDetails(*v, *s.doc.model()->model).c_str());
+    };
+    // In a small viewport the box would cover the character: one line at the top-right instead,
+    // the rest in its tooltip (as in Blender, overlays give way to the model).
+    if (rectsOverlap({a.x, a.y, a.x + boxW, a.y + boxH, true}, characterScreenRect(s))) {
+        const ImVec2 size = ImGui::CalcTextSize(l1.c_str());
+        const ImVec2 c(x1 - size.x - 2 * pad - 8.0f, y0 + 2.0f * lh + 8.0f);
+        const ImVec2 c1(c.x + size.x + 2 * pad, c.y + size.y + 2 * pad);
+        dl->AddRectFilled(c, c1, IM_COL32(20, 22, 26, 210), 4.0f);
+        dl->AddText(ImVec2(c.x + pad, c.y + pad), v ? stateCol : IM_COL32(230, 232, 236, 255), l1.c_str());
+        s.controls["range legend"] = {c.x, c.y, c1.x, c1.y, true};
+        tooltip(c, c1);
+        return;
+    }
+    s.controls["range legend"] = {a.x, a.y, a.x + boxW, a.y + boxH, true};
     dl->AddRectFilled(a, ImVec2(a.x + boxW, a.y + boxH), IM_COL32(20, 22, 26, 210), 4.0f);
     // The bar: one third per band; the middle third ramps from the neutral bone colour to amber.
     const auto col = [](const glm::vec3& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)); };
@@ -617,10 +668,6 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float x1, float y1) {
         const float tw = ImGui::CalcTextSize(labels[i]).x;
         dl->AddText(ImVec2(bx + third * (i + 0.5f) - tw * 0.5f, by + bh + 6), IM_COL32(220, 222, 226, 255), labels[i]);
     }
-    const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
-                           : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
-                           : tint.band == render::RangeBand::kNearLimit ? IM_COL32(255, 190, 90, 255)
-                                                                         : IM_COL32(150, 230, 150, 255);
     const float ty = by + bh + 6 + lh;
     const auto text = [&](float y, ImU32 c, const std::string& t) {
         dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(bx, y), c, t.c_str(), nullptr, barW);

@@ -83,7 +83,9 @@ private:
     std::vector<float> lastSignature_;
     long sceneDraws_ = 0;
     render::Scene lastScene_;
-    void drawRangeLegend(EditorState& state, float x1, float y1);  // bottom-right corner at (x1, y1)
+    // Bottom-right corner at (x1, y1), or one line at the top-right (the viewport's top at y0)
+    // where the box would cover the character.
+    void drawRangeLegend(EditorState& state, float y0, float x1, float y1);
     void drawBalance(EditorState& state, float x0, float y1);      // bottom-left corner at (x0, y1)
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;

@@ -6,9 +6,12 @@
 #include <imgui.h>
 
 #include <filesystem>
+#include <utility>
 
 #include "editor_app.h"
 #include "editor_harness.h"
+#include "skeleton/forward_kinematics.h"
+#include "viewport_panel.h"
 
 using namespace mgp;
 
@@ -125,4 +128,37 @@ TEST_CASE("gui layout: dragging the splitters resizes the panels, and the next e
     frames(*h, 1280, 800, 3);
     CHECK(h->app->state().viewportWidth == 800);
     CHECK(h->app->state().viewportHeight == viewportH - 60);
+}
+
+TEST_CASE("gui layout: the range legend never covers the character, at 1280x800, 1024x600 and 800x500") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    s.doc.setFrame(60);
+    for (const auto& [W, H] : {std::pair{1280, 800}, std::pair{1024, 600}, std::pair{800, 500}}) {
+        CAPTURE(W);
+        s.cameraNeedsFraming = true;  // framed for this window, as a resize and F would
+        frames(*h, W, H, 4);
+        const auto legend = s.controls.find("range legend");
+        REQUIRE(legend != s.controls.end());
+        const ui::EditorState::ControlRect& r = legend->second;
+        INFO("legend " << r.x0 << "," << r.y0 << " .. " << r.x1 << "," << r.y1);
+        CHECK(r.x0 >= 0.0f);
+        CHECK(r.y0 >= 0.0f);
+        CHECK(r.x1 <= float(W));
+        CHECK(r.y1 <= float(H));
+        // Every joint and bone end of the shown pose lies outside the legend's box.
+        const Skeleton& sk = s.doc.clip().skeleton;
+        FkState fk;
+        forwardKinematics(sk, s.doc.currentPose(), fk);
+        int inView = 0;
+        for (int j = 0; j < sk.jointCount(); ++j)
+            for (const Eigen::Vector3d& p : {fk.jointCm[j], boneEndCm(sk, fk, j)}) {
+                float x, y;
+                if (!ui::viewportWindowPosition(s, p, x, y)) continue;
+                ++inView;
+                CHECK_FALSE((x > r.x0 && x < r.x1 && y > r.y0 && y < r.y1));
+            }
+        CHECK(inView > sk.jointCount());
+    }
 }
