@@ -43,9 +43,13 @@ void OrbitCamera::orbit(float dYawDeg, float dPitchDeg) {
     pitchDeg = std::clamp(pitchDeg + dPitchDeg, -89.0f, 89.0f);
 }
 
+float OrbitCamera::cmPerPixel(const glm::vec3& atCm, int viewportHeight) const {
+    const float depth = glm::dot(atCm - eye(), glm::normalize(targetCm - eye()));
+    return 2.0f * depth * std::tan(glm::radians(fovYDeg) * 0.5f) / static_cast<float>(std::max(1, viewportHeight));
+}
+
 void OrbitCamera::pan(float dxPixels, float dyPixels, int viewportHeight) {
-    const float cmPerPixel =
-        2.0f * distanceCm * std::tan(glm::radians(fovYDeg) * 0.5f) / static_cast<float>(std::max(1, viewportHeight));
+    const float cmPerPixel = this->cmPerPixel(targetCm, viewportHeight);  // at the target's depth
     const glm::mat4 v = view();
     const glm::vec3 right(v[0][0], v[1][0], v[2][0]);
     const glm::vec3 up(v[0][1], v[1][1], v[2][1]);

@@ -39,6 +39,9 @@ struct OrbitCamera {
     // Centres on a bounding sphere and sets the distance so it fits the viewport with a margin.
     void frame(const glm::vec3& centreCm, float radiusCm, float aspect, float margin = 1.1f);
 
+    // How many cm one pixel spans at the depth of world point `atCm` (its distance along the view
+    // direction) in a viewport `viewportHeight` pixels high.
+    float cmPerPixel(const glm::vec3& atCm, int viewportHeight) const;
     // The ray through pixel (x, y) (pixel centres at +0.5) of a width×height viewport.
     Ray rayFromPixel(float x, float y, int width, int height) const;
     // World point -> pixel (x right, y down) and depth in [0,1]; false if behind the eye.

@@ -9,6 +9,13 @@
 
 namespace mgp::render {
 
+// A hand's, foot's or the head's TrailPart is its Effector (hasTrailPart, motionTrail cast).
+static_assert(static_cast<int>(TrailPart::kLHand) == static_cast<int>(Effector::kLHand) &&
+              static_cast<int>(TrailPart::kRHand) == static_cast<int>(Effector::kRHand) &&
+              static_cast<int>(TrailPart::kLFoot) == static_cast<int>(Effector::kLFoot) &&
+              static_cast<int>(TrailPart::kRFoot) == static_cast<int>(Effector::kRFoot) &&
+              static_cast<int>(TrailPart::kHead) == static_cast<int>(Effector::kHead));
+
 namespace {
 
 constexpr float kOnionThickness = 0.5f;
@@ -18,8 +25,8 @@ OnionSkin clamped(const OnionSkin& o) {
             std::clamp(o.spacing, 1, kMaxOnionSpacing)};
 }
 
-// The colour of the trail of `part`: left parts blue, right parts magenta, head and root green
-// (the same as a clip's effector paths).
+// The colour of the trail of `part`: left parts blue, right parts magenta, the head green (as a
+// clip's effector paths), the root amber.
 glm::vec3 trailColour(TrailPart part) {
     switch (part) {
         case TrailPart::kLHand: case TrailPart::kLFoot: return {0.25f, 0.55f, 0.95f};

@@ -29,8 +29,7 @@ struct OnionGhostFrame {
     int frame = 0;  // 0-based clip frame
     int step = 0;   // −before..−1 before the current frame, 1..after after it
 };
-// The ghosts' frames, farthest first so that nearer ghosts blend over them; frames outside
-// 0..frameCount−1 are left out. Counts and spacing are clamped to 0..kMaxOnionGhosts and
+// The ghosts' frames, farthest first on each side; frames outside 0..frameCount−1 are left out. Counts and spacing are clamped to 0..kMaxOnionGhosts and
 // 1..kMaxOnionSpacing.
 std::vector<OnionGhostFrame> onionFrames(const OnionSkin& onion, int current, int frameCount);
 // The ghost of `step` (its tint by side, its opacity falling with |step|).

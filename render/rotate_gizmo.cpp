@@ -84,10 +84,10 @@ int pickGizmoRing(const RotateGizmo& g, const OrbitCamera& camera, float x, floa
     float bestDistance = slackPx;
     const glm::vec2 mouse(x, y);
     for (const GizmoRing& ring : g.rings) {
-        glm::vec3 prev;
+        glm::vec3 prev(0.0f);
         bool havePrev = false;
         for (const glm::vec3& q : ring.pointsCm) {
-            glm::vec3 pix;
+            glm::vec3 pix(0.0f);
             const bool ok = camera.project(q, w, h, pix);
             if (ok && havePrev) {
                 const float d = pixelSegmentDistance(mouse, glm::vec2(prev), glm::vec2(pix));

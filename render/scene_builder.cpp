@@ -225,10 +225,10 @@ Scene buildClipScene(const Clip& clip, const ClipSceneOptions& o) {
         for (const OnionGhostFrame& g : onionFrames(*o.onion, o.frameIndex, clip.frameCount()))
             scene.figures.push_back(onionGhost(clip.skeleton, clip.frames[g.frame], g.step, *o.onion));
     const auto framePose = [&clip](int f) -> const Pose& { return clip.frames[f]; };
+    const int half = std::clamp(o.trailHalfSpan, 1, clip.frameCount());  // no overflow for a huge span
     for (TrailPart part : o.trails)
-        scene.paths.push_back(motionTrail(clip.skeleton, framePose, clip.frameCount(), part,
-                                          o.frameIndex - o.trailHalfSpan, o.frameIndex + o.trailHalfSpan,
-                                          o.frameIndex, false));
+        scene.paths.push_back(motionTrail(clip.skeleton, framePose, clip.frameCount(), part, o.frameIndex - half,
+                                          o.frameIndex + half, o.frameIndex, false));
     if (o.gizmoJoint >= 0)
         addRotateGizmo(scene, rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, o.gizmoJoint,
                                           o.gizmoRadiusCm),

@@ -126,8 +126,8 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
 void EditorApp::pollJobs() {
     std::string regenerateError;
     const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
-    if (!regenerated.empty()) state_.setStatus(regenerated);
-    else if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
+    if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
+    else if (!regenerated.empty()) state_.setStatus(regenerated);
     pollTraining();
     pollExport();
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {

@@ -16,12 +16,18 @@ constexpr const char* kAxisNames[3] = {"rx", "ry", "rz"};
 
 bool animates(const Joint& j) { return j.dof[0] || j.dof[1] || j.dof[2]; }
 
-std::string number(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 }  // namespace
+
+std::vector<std::string> rotateJointAction(const Joint& joint, const Eigen::Vector3d& anglesDeg) {
+    std::vector<std::string> args{"rotate-joint", joint.name};
+    for (int a = 0; a < 3; ++a) {
+        if (!joint.dof[a]) continue;
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", anglesDeg[a]);  // round-trips the double exactly
+        args.push_back(buf);
+    }
+    return args;
+}
 
 void JointRotationWindow::draw(EditorApp& app) {
     EditorState& s = app.state();
@@ -86,10 +92,7 @@ void JointRotationWindow::draw(EditorApp& app) {
         gesture_ = true;
     }
     if (released) {
-        std::vector<std::string> args{"rotate-joint", jt.name};
-        for (int a = 0; a < 3; ++a)
-            if (jt.dof[a]) args.push_back(number(values_[a]));
-        const std::string err = app.runAction(args);
+        const std::string err = app.runAction(rotateJointAction(jt, values_));
         if (!err.empty()) s.setStatus(err, true);
         s.posePreview.reset();
         gesture_ = false;

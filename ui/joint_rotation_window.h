@@ -8,7 +8,15 @@
 #include <string>
 #include <vector>
 
+namespace mgp {
+struct Joint;
+}
+
 namespace mgp::ui {
+
+// The `rotate-joint` action that sets `joint`'s animated DOFs to anglesDeg (x, y, z; the axes it
+// lacks left out): what the window's sliders and the viewport's gizmo run on release.
+std::vector<std::string> rotateJointAction(const Joint& joint, const Eigen::Vector3d& anglesDeg);
 
 class EditorApp;
 struct EditorState;

@@ -83,9 +83,11 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
     ImGui::MenuItem("Balance (centre of mass, support)", nullptr, &s.showBalance, s.doc.hasClip());
     if (beginMenu("Onion skins", escape)) {
         ImGui::MenuItem("Show", nullptr, &s.showOnionSkin, s.doc.hasClip());
-        ImGui::SliderInt("Before", &s.onionSkin.before, 0, render::kMaxOnionGhosts);
-        ImGui::SliderInt("After", &s.onionSkin.after, 0, render::kMaxOnionGhosts);
-        ImGui::SliderInt("Spacing (frames)", &s.onionSkin.spacing, 1, render::kMaxOnionSpacing);
+        // AlwaysClamp: a value typed with Ctrl+click stays in range too.
+        ImGui::SliderInt("Before", &s.onionSkin.before, 0, render::kMaxOnionGhosts, "%d", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SliderInt("After", &s.onionSkin.after, 0, render::kMaxOnionGhosts, "%d", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SliderInt("Spacing (frames)", &s.onionSkin.spacing, 1, render::kMaxOnionSpacing, "%d",
+                         ImGuiSliderFlags_AlwaysClamp);
         ImGui::EndMenu();
     }
     if (beginMenu("Motion trails", escape)) {
@@ -95,7 +97,7 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
             ImGui::MenuItem(kLabels[i], nullptr, &s.trails[i],
                             s.doc.hasClip() && render::hasTrailPart(s.doc.clip().skeleton, static_cast<render::TrailPart>(i)));
         ImGui::Separator();
-        ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, 240);
+        ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, 240, "%d", ImGuiSliderFlags_AlwaysClamp);
         ImGui::MenuItem("Captured motion beneath", nullptr, &s.showCapturedTrails);
         ImGui::EndMenu();
     }

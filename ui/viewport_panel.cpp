@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "edit/joint_rotation.h"
+#include "joint_rotation_window.h"
 #include "picking.h"
 #include "range_tint.h"
 #include "scene_builder.h"
@@ -204,6 +205,10 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 ringAxis_ = s.gizmoRing;
                 ringStartAngles_ = doc.currentPose().anglesDeg[gizmo.joint];
                 ringSweepDeg_ = 0.0;
+                ringFrame_ = doc.frame();
+                ringUndoCount_ = doc.history().undoCount();
+                lastX_ = mx;  // the sweep starts at the press, not where the mouse was a frame ago
+                lastY_ = my;
                 s.playing = false;
             } else if (s.hoveredHandle >= 0) {
                 const auto e = static_cast<Effector>(s.hoveredHandle);
@@ -292,7 +297,9 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
             }
             break;
         case Mode::kRotateRing:
-            if (movedThisFrame_ || !io.MouseDown[0]) rotateRing(s, mx, my, io.KeyCtrl, !io.MouseDown[0]);
+            if (movedThisFrame_ || !io.MouseDown[0] || doc.frame() != ringFrame_ ||
+                doc.history().undoCount() != ringUndoCount_)
+                rotateRing(s, mx, my, io.KeyCtrl, !io.MouseDown[0]);
             break;
         case Mode::kNone: break;
     }
@@ -303,8 +310,12 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
 void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bool released) {
     EditorDocument& doc = s.doc;
     const int joint = ringGizmo_.joint;
-    if (!doc.hasClip() || joint < 0 || joint >= doc.clip().skeleton.jointCount() || s.gizmoJoint != joint) {
+    // The drag belongs to the frame and the pose it started on: playback, a frame change or an
+    // undo during it cancels it rather than writing the old angles onto another pose.
+    if (!doc.hasClip() || joint < 0 || joint >= doc.clip().skeleton.jointCount() || s.gizmoJoint != joint ||
+        doc.frame() != ringFrame_ || doc.history().undoCount() != ringUndoCount_) {
         s.posePreview.reset();
+        s.dragReadout.clear();
         mode_ = Mode::kNone;
         return;
     }
@@ -332,14 +343,10 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     s.dragReadout.clear();
     mode_ = Mode::kNone;
     if (delta == 0.0) return;
-    std::vector<std::string> args{jt.name};
-    for (int a = 0; a < 3; ++a) {
-        if (!jt.dof[a]) continue;
-        char number[40];
-        std::snprintf(number, sizeof number, "%.17g", rot.anglesDeg[a]);
-        args.push_back(number);
-    }
-    s.request("rotate-joint", std::move(args));  // one undo step, spread like the other pose edits
+    std::vector<std::string> args = rotateJointAction(jt, rot.anglesDeg);
+    const std::string action = args.front();
+    args.erase(args.begin());
+    s.request(action, std::move(args));  // one undo step, spread like the other pose edits
 }
 
 int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
@@ -446,7 +453,7 @@ void ViewportPanel::draw(EditorState& s) {
                                   s.camera.yawDeg, s.camera.pitchDeg, s.camera.distanceCm, s.camera.fovYDeg};
         auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
         for (const render::Figure& f : scene.figures) {
-            sig.push_back(f.ghost ? 1.0f : 0.0f);
+            sig.insert(sig.end(), {f.ghost ? 1.0f : 0.0f, f.ghostAlpha});
             addVec(f.ghostTint);
             addVec(f.tint);
             sig.push_back(f.tintWeight);
@@ -457,7 +464,8 @@ void ViewportPanel::draw(EditorState& s) {
         for (const render::Pin& p : scene.pins) addVec(p.positionCm);
         for (const render::Path& p : scene.paths) {
             sig.insert(sig.end(), {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
-                                   p.radiusCm});
+                                   p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
+            addVec(p.colour);
             for (const glm::vec3& v : p.pointsCm) addVec(v);
             for (const glm::vec3& v : p.keysCm) addVec(v);
         }

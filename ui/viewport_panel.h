@@ -69,6 +69,7 @@ private:
     int ringAxis_ = -1;
     Eigen::Vector3d ringStartAngles_ = Eigen::Vector3d::Zero();
     double ringSweepDeg_ = 0.0;
+    int ringFrame_ = -1, ringUndoCount_ = 0;  // the frame and history the drag started on
     void rotateRing(EditorState& state, float mx, float my, bool snap, bool released);
     int dragKey_ = -1;                                        // the key of a kDragKey drag
     Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
@@ -104,7 +105,7 @@ std::optional<render::Path> editedPath(const EditorState& state);
 // Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
 bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
 // The rotate gizmo of EditorState::gizmoJoint on the shown pose (a rotation's preview while one
-// is dragged), its rings kGizmoRadiusPx across on screen; an empty gizmo (joint −1) when none.
+// is dragged), its rings kGizmoRadiusPx in radius on screen; an empty gizmo (joint −1) when none.
 constexpr float kGizmoRadiusPx = 70.0f;
 render::RotateGizmo viewportGizmo(const EditorState& state);
 

@@ -37,7 +37,8 @@ void addMotionOverlays(const EditorState& s, render::Scene& scene) {
             scene.figures.push_back(render::onionGhost(skeleton, doc.poseAt(g.frame), g.step, s.onionSkin));
     const auto edited = [&doc](int f) -> const Pose& { return f == doc.frame() ? doc.currentPose() : doc.poseAt(f); };
     const auto captured = [&doc](int f) -> const Pose& { return doc.clip().frames[f]; };
-    const int first = doc.frame() - s.trailHalfSpan, last = doc.frame() + s.trailHalfSpan;
+    const int half = std::clamp(s.trailHalfSpan, 1, doc.frameCount());  // no overflow for any typed value
+    const int first = doc.frame() - half, last = doc.frame() + half;
     for (int i = 0; i < render::kTrailPartCount; ++i) {
         if (!s.trails[i]) continue;
         const auto part = static_cast<render::TrailPart>(i);
@@ -80,10 +81,8 @@ std::optional<render::Path> editedPath(const EditorState& s) {
     // key from the camera, so that each can be grabbed at any zoom.
     if (s.viewportHeight > 0 && !p.keysCm.empty()) {
         constexpr float kMinKeyRadiusPx = 6.0f;
-        float farthest = 0.0f;
-        for (const glm::vec3& k : p.keysCm) farthest = std::max(farthest, glm::length(k - s.camera.eye()));
-        const float cmPerPixel = 2.0f * farthest * std::tan(glm::radians(s.camera.fovYDeg) * 0.5f) /
-                                 static_cast<float>(s.viewportHeight);
+        float cmPerPixel = 0.0f;
+        for (const glm::vec3& k : p.keysCm) cmPerPixel = std::max(cmPerPixel, s.camera.cmPerPixel(k, s.viewportHeight));
         p.minKeyRadiusCm = kMinKeyRadiusPx * cmPerPixel;
     }
     p.hoveredKey = s.hoveredKey < keys ? s.hoveredKey : -1;
@@ -99,9 +98,7 @@ render::RotateGizmo viewportGizmo(const EditorState& s) {
     FkState fk;
     forwardKinematics(doc.clip().skeleton, pose, fk);
     // Rings of the same size on screen at any zoom: kGizmoRadiusPx at the joint's distance.
-    const float distance = glm::length(toGlm(fk.jointCm[s.gizmoJoint]) - s.camera.eye());
-    const float cmPerPixel =
-        2.0f * distance * std::tan(glm::radians(s.camera.fovYDeg) * 0.5f) / static_cast<float>(s.viewportHeight);
+    const float cmPerPixel = s.camera.cmPerPixel(toGlm(fk.jointCm[s.gizmoJoint]), s.viewportHeight);
     return render::rotateGizmo(doc.clip().skeleton, pose, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel);
 }
 

@@ -6,8 +6,9 @@
 # -DMOTIONGP_FUZZ=ON, builds the fuzz targets, makes the seed corpora in build-fuzz/seeds (from
 # $MOTIONGP_DATA, else ../shared/mocap, else the shipped clips in assets/mocap; the files are only
 # read), runs each target for SECONDS_PER_TARGET and prints its executions and coverage.
-# Crash/timeout/OOM inputs land in build-fuzz/artifacts/<target>/; the exit status is 1 if any
-# target found one (reproduce: build-fuzz/fuzz_<target> FILE). Environment: MOTIONGP_FUZZ_JOBS
+# Crash/timeout/OOM inputs land in <build>/artifacts/<target>/ (<build>: build-fuzz, or
+# MOTIONGP_FUZZ_BUILD); the exit status is 1 if any target found one (reproduce:
+# <build>/fuzz_<target> FILE). Environment: MOTIONGP_FUZZ_JOBS
 # (targets run in parallel, default 1), MOTIONGP_FUZZ_TARGETS (default "asf amc bvh model session"),
 # MOTIONGP_FUZZ_BUILD (a build folder configured with clang, -DMOTIONGP_SANITIZE=ON and
 # -DMOTIONGP_FUZZ=ON, e.g. CI's build-asan: its fuzzers are used instead of configuring build-fuzz,

@@ -11,6 +11,7 @@
 #include "editor_harness.h"
 #include "joint_rotation_window.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
 #include "viewport_panel.h"
 
 using namespace mgp;
@@ -99,6 +100,16 @@ double sweep(test::Harness& h, const RingGrip& g, double degrees, bool ctrl, boo
     return seen;
 }
 
+// The knee's screen angle (degrees, counter-clockwise, y up) round the hip as the viewport shows it.
+double kneeScreenDeg(const ui::EditorState& s, int femur, const RingGrip& g) {
+    const Skeleton& sk = s.doc.clip().skeleton;
+    FkState fk;
+    forwardKinematics(sk, s.doc.currentPose(), fk);
+    float x = 0, y = 0;
+    REQUIRE(ui::viewportWindowPosition(s, boneEndCm(sk, fk, femur), x, y));
+    return std::atan2(-(y - g.pivotY), x - g.pivotX) * 180.0 / 3.14159265358979;
+}
+
 }  // namespace
 
 TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snaps to 5 degrees, one undo step") {
@@ -116,6 +127,7 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
     REQUIRE(g.rings.size() == 3);  // rfemur animates rx ry rz
     CHECK(h->app->viewport().lastScene().paths.size() == 4);  // the highlighted bone and three rings
 
+    int kneeChecks = 0;  // rings whose turn moves the knee visibly on screen
     for (int axis = 0; axis < 3; ++axis) {
         CAPTURE(axis);
         const render::GizmoRing& ring = g.rings[static_cast<std::size_t>(axis)];
@@ -123,7 +135,16 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
         const Eigen::Vector3d before = doc.currentPose().anglesDeg[femur];
         const int undoBefore = doc.history().undoCount();
         const RingGrip grip = gripOf(s, ui::viewportGizmo(s), axis);
+        const double kneeBefore = kneeScreenDeg(s, femur, grip);
         const double seen = sweep(*h, grip, 30.0, false);
+        // The limb follows the mouse round the joint on screen (checked on the picture, not with
+        // the code's own sign rule): where the knee visibly turns, it turns the way the mouse went.
+        const double kneeTurn = wrap180(kneeScreenDeg(s, femur, grip) - kneeBefore);
+        INFO("the knee turned " << kneeTurn << " deg on screen for a mouse sweep of " << seen);
+        if (std::abs(kneeTurn) > 3.0) {
+            CHECK(kneeTurn * seen > 0.0);
+            ++kneeChecks;
+        }
         CHECK(std::abs(seen - 30.0) < 2.0);  // 30° less what flooring the pixels took off
         const Eigen::Vector3d after = doc.currentPose().anglesDeg[femur];
         // Counter-clockwise on screen is a positive turn about an axis that points at the viewer.
@@ -136,6 +157,8 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
         REQUIRE(h->app->runAction({"undo"}).empty());
         CHECK(doc.currentPose().anglesDeg[femur] == before);
     }
+
+    CHECK(kneeChecks >= 2);
 
     // Ctrl: a 32° sweep becomes 30° (the change snapped to 5° steps).
     {
@@ -158,6 +181,22 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
         CHECK_FALSE(s.posePreview.has_value());
         CHECK(doc.currentPose().anglesDeg[femur] == before);
         CHECK(doc.history().undoCount() == undoBefore);
+    }
+
+    // A frame change during the drag cancels it: the old frame's angles are not written anywhere.
+    {
+        const int undoBefore = doc.history().undoCount();
+        sweep(*h, gripOf(s, ui::viewportGizmo(s), 0), 25.0, false, false);
+        REQUIRE(s.posePreview.has_value());
+        doc.setFrame(61);
+        const Eigen::Vector3d next = doc.currentPose().anglesDeg[femur];
+        h->frame(2);
+        h->input.setButton(0, false);
+        h->frame(3);
+        CHECK_FALSE(s.posePreview.has_value());
+        CHECK(doc.currentPose().anglesDeg[femur] == next);
+        CHECK(doc.history().undoCount() == undoBefore);
+        CHECK_FALSE(doc.isEdited(61));
     }
 }
 

@@ -291,7 +291,7 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     CHECK_FALSE(doc.pathEdit().has_value());
 }
 
-TEST_CASE("gui path: key handles stay at least 10 px across when the camera moves away, and can be grabbed") {
+TEST_CASE("gui path: key handles stay at least 12 px across when the camera moves away, and can be grabbed") {
     auto h = makeHarness(false);
     if (!h) return;
     beginFootPath(*h, Effector::kLFoot);  // the left foot swings here: its keys lie apart
@@ -312,7 +312,7 @@ TEST_CASE("gui path: key handles stay at least 10 px across when the camera move
             glm::vec3 c, e;
             REQUIRE(s.camera.project(edited.keysCm[k], s.viewportWidth, s.viewportHeight, c));
             REQUIRE(s.camera.project(edited.keysCm[k] + right * edited.keyRadiusCm(), s.viewportWidth, s.viewportHeight, e));
-            CHECK(glm::length(glm::vec2(e - c)) >= 5.0f);
+            CHECK(glm::length(glm::vec2(e - c)) >= 5.9f);  // 6 px in radius (perspective rounds a little)
         }
         // The mouse 4 px off a key's centre still hovers it.
         float x = 0, y = 0;
