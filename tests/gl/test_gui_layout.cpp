@@ -135,7 +135,9 @@ TEST_CASE("gui layout: the range legend never covers the character, at 1280x800,
     if (!h) return;
     ui::EditorState& s = h->app->state();
     s.doc.setFrame(60);
-    for (const auto& [W, H] : {std::pair{1280, 800}, std::pair{1024, 600}, std::pair{800, 500}}) {
+    // Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.
+    for (const std::pair<int, int>& size : {std::pair{1280, 800}, std::pair{1024, 600}, std::pair{800, 500}}) {
+        const int W = size.first, H = size.second;
         CAPTURE(W);
         s.cameraNeedsFraming = true;  // framed for this window, as a resize and F would
         frames(*h, W, H, 4);
