@@ -25,8 +25,8 @@ OnionSkin clamped(const OnionSkin& o) {
             std::clamp(o.spacing, 1, kMaxOnionSpacing)};
 }
 
-// The colour of the trail of `part`: left parts blue, right parts magenta, the head green (as a
-// clip's effector paths), the root amber.
+// The colour of the trail of `part` (and of a clip's effector path, scene_builder.h): left parts
+// blue, right parts magenta, the head green, the root amber.
 glm::vec3 trailColour(TrailPart part) {
     switch (part) {
         case TrailPart::kLHand: case TrailPart::kLFoot: return {0.25f, 0.55f, 0.95f};

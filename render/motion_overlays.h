@@ -7,7 +7,6 @@
 //   trail       one body point (a hand, a foot, the head or the root) over a window of frames, a
 //               tick on every frame, so that even spacing shows as even ticks; drawn for the
 //               edited motion and, fainter and thinner beneath it, for the captured one.
-#include <array>
 #include <functional>
 #include <string>
 #include <vector>

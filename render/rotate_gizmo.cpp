@@ -22,13 +22,11 @@ float pixelSegmentDistance(const glm::vec2& p, const glm::vec2& a, const glm::ve
 
 }  // namespace
 
-RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, int joint, float radiusCm) {
+RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm) {
     RotateGizmo g;
     if (joint < 0 || joint >= skeleton.jointCount()) return g;
     const Joint& jt = skeleton.joints[joint];
     if (!(jt.dof[0] || jt.dof[1] || jt.dof[2])) return g;
-    FkState fk;
-    forwardKinematics(skeleton, pose, fk);
     g.joint = joint;
     g.pivotCm = toGlm(fk.jointCm[joint]);
     g.boneEndCm = toGlm(boneEndCm(skeleton, fk, joint));

@@ -10,6 +10,7 @@
 #include "camera.h"
 #include "scene.h"
 #include "skeleton/clip.h"
+#include "skeleton/forward_kinematics.h"
 
 namespace mgp::render {
 
@@ -27,9 +28,9 @@ struct RotateGizmo {
     std::vector<GizmoRing> rings;  // one per animated DOF, in x, y, z order
 };
 
-// The gizmo of `joint` in `pose` with rings of `radiusCm` (-1 joints and joints without rotation
-// DOFs give an empty gizmo).
-RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, int joint, float radiusCm);
+// The gizmo of `joint` in `pose` (`fk` its forward kinematics) with rings of `radiusCm` (-1 joints
+// and joints without rotation DOFs give an empty gizmo).
+RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm);
 glm::vec3 gizmoAxisColour(int axis);
 // Adds the rings (the hovered or dragged one, by DOF axis, brighter and thicker; -1 none) and the
 // highlighted bone to the scene, drawn over everything else.

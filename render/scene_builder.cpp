@@ -167,23 +167,14 @@ float clipGroundHeight(const Clip& clip) {
 }
 
 Path effectorPath(const Clip& clip, Effector e, int first, int last, int keyEvery, int current) {
-    Path path;
-    if (!clip.skeleton.hasEffector(e) || clip.frames.empty()) return path;
-    first = std::clamp(first, 0, clip.frameCount() - 1);
-    last = std::clamp(last, first, clip.frameCount() - 1);
-    FkState fk;
-    for (int f = first; f <= last; ++f) {
-        forwardKinematics(clip.skeleton, clip.frames[f], fk);
-        const glm::vec3 p = toGlm(effectorCm(clip.skeleton, fk, e));
-        if (f == current) path.currentPoint = static_cast<int>(path.pointsCm.size());
-        path.pointsCm.push_back(p);
-        if (keyEvery > 0 && (f - first) % keyEvery == 0) path.keysCm.push_back(p);
-    }
-    switch (e) {
-        case Effector::kLHand: case Effector::kLFoot: path.colour = {0.25f, 0.55f, 0.95f}; break;
-        case Effector::kRHand: case Effector::kRFoot: path.colour = {0.85f, 0.25f, 0.55f}; break;
-        default: path.colour = {0.20f, 0.70f, 0.45f}; break;
-    }
+    // The effector's motion trail, drawn as a path: the default thickness, keys instead of ticks.
+    Path path = motionTrail(clip.skeleton, [&clip](int f) -> const Pose& { return clip.frames[f]; }, clip.frameCount(),
+                            static_cast<TrailPart>(static_cast<int>(e)), first, last, current, false);
+    path.radiusCm = Path{}.radiusCm;
+    path.tickRadiusCm = 0.0f;
+    if (keyEvery > 0)
+        for (std::size_t i = 0; i < path.pointsCm.size(); i += static_cast<std::size_t>(keyEvery))
+            path.keysCm.push_back(path.pointsCm[i]);
     return path;
 }
 
@@ -230,7 +221,7 @@ Scene buildClipScene(const Clip& clip, const ClipSceneOptions& o) {
         scene.paths.push_back(motionTrail(clip.skeleton, framePose, clip.frameCount(), part, o.frameIndex - half,
                                           o.frameIndex + half, o.frameIndex, false));
     if (o.gizmoJoint >= 0)
-        addRotateGizmo(scene, rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, o.gizmoJoint,
+        addRotateGizmo(scene, rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, fk, o.gizmoJoint,
                                           o.gizmoRadiusCm),
                        -1);
     if (o.caption)

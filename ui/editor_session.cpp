@@ -27,7 +27,7 @@ void applyOverlays(EditorState& s, const nlohmann::json& ui) {
         s.onionSkin.spacing = clampedInt(*onion, "spacing", s.onionSkin.spacing, 1, render::kMaxOnionSpacing);
     }
     for (bool& on : s.trails) on = false;
-    s.trailHalfSpan = 30;
+    s.trailHalfSpan = EditorState::kDefaultTrailHalfSpan;
     s.showCapturedTrails = true;
     const auto trails = ui.find("trails");
     if (trails == ui.end() || !trails->is_object()) return;
@@ -38,7 +38,8 @@ void applyOverlays(EditorState& s, const nlohmann::json& ui) {
             if (name.is_string() && render::parseTrailPart(name.get<std::string>(), part))
                 s.trails[static_cast<int>(part)] = true;
         }
-    s.trailHalfSpan = clampedInt(*trails, "frames_each_side", 30, 1, 240);
+    s.trailHalfSpan = clampedInt(*trails, "frames_each_side", EditorState::kDefaultTrailHalfSpan, 1,
+                                 EditorState::kMaxTrailHalfSpan);
     const auto captured = trails->find("captured");
     s.showCapturedTrails = captured == trails->end() || !captured->is_boolean() || captured->get<bool>();
 }

@@ -79,7 +79,8 @@ struct EditorState {
     bool showOnionSkin = false;
     render::OnionSkin onionSkin;
     bool trails[render::kTrailPartCount] = {};  // by TrailPart
-    int trailHalfSpan = 30;                     // frames each side of the current one
+    static constexpr int kDefaultTrailHalfSpan = 30, kMaxTrailHalfSpan = 240;
+    int trailHalfSpan = kDefaultTrailHalfSpan;  // frames each side of the current one
     bool showCapturedTrails = true;             // the captured motion's trail beneath each
 
     // Where the viewport's image was last drawn (window pixels), so points can be projected to

@@ -97,7 +97,8 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
             ImGui::MenuItem(kLabels[i], nullptr, &s.trails[i],
                             s.doc.hasClip() && render::hasTrailPart(s.doc.clip().skeleton, static_cast<render::TrailPart>(i)));
         ImGui::Separator();
-        ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, 240, "%d", ImGuiSliderFlags_AlwaysClamp);
+        ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, EditorState::kMaxTrailHalfSpan, "%d",
+                         ImGuiSliderFlags_AlwaysClamp);
         ImGui::MenuItem("Captured motion beneath", nullptr, &s.showCapturedTrails);
         ImGui::EndMenu();
     }

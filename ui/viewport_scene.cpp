@@ -99,7 +99,7 @@ render::RotateGizmo viewportGizmo(const EditorState& s) {
     forwardKinematics(doc.clip().skeleton, pose, fk);
     // Rings of the same size on screen at any zoom: kGizmoRadiusPx at the joint's distance.
     const float cmPerPixel = s.camera.cmPerPixel(toGlm(fk.jointCm[s.gizmoJoint]), s.viewportHeight);
-    return render::rotateGizmo(doc.clip().skeleton, pose, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel);
+    return render::rotateGizmo(doc.clip().skeleton, pose, fk, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel);
 }
 
 render::Scene ViewportPanel::buildScene(const EditorState& s) const {
