@@ -70,6 +70,13 @@ struct Pin {
     glm::vec3 positionCm{0.0f};
 };
 
+// A hand, foot or head an earlier edit placed on this frame, which later gestures hold there until
+// the user releases it: an amber ring around it, level with the ground (a pin stands on its point,
+// a footprint lies on the ground).
+struct HeldMark {
+    glm::vec3 positionCm{0.0f};
+};
+
 // A planted foot (a detected ground contact held by the IK and regeneration): a flat green disc
 // on the ground under the foot.
 struct Footprint {
@@ -99,6 +106,7 @@ struct Scene {
     std::vector<Handle> handles;
     std::vector<Target> targets;
     std::vector<Pin> pins;
+    std::vector<HeldMark> heldMarks;
     std::vector<Footprint> footprints;
     std::vector<Path> paths;
     float groundHeightCm = 0.0f;

@@ -519,6 +519,18 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         d.segment(tip + glm::vec3(-3.5f, 0.0f, 0.0f), tip + glm::vec3(3.5f, 0.0f, 0.0f), 0.5f, 0.5f);
         d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
     }
+    for (const HeldMark& m : scene.heldMarks) {
+        // Sixteen short segments around the point, outside the effector's handle ball (4–5 cm): a
+        // ring that reads as "held" from above and from the side.
+        d.colour(glm::vec3(1.0f, 0.66f, 0.18f), 1.0f, 0.2f);
+        constexpr int kSides = 16;
+        constexpr float kRadius = 7.5f;
+        for (int k = 0; k < kSides; ++k) {
+            const float a0 = 6.2831853f * static_cast<float>(k) / kSides, a1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
+            d.segment(m.positionCm + kRadius * glm::vec3(std::cos(a0), 0.0f, std::sin(a0)),
+                      m.positionCm + kRadius * glm::vec3(std::cos(a1), 0.0f, std::sin(a1)), 0.8f, 0.8f);
+        }
+    }
 
     for (const Footprint& f : scene.footprints) {
         // A flat rosette just above the ground (the grid is drawn after the solids and loses the

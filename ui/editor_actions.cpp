@@ -172,6 +172,16 @@ std::vector<EditorAction> makeActions() {
              app.state().doc.togglePin(e);
              return std::string();
          }});
+    add({"release", "EFFECTOR", "Alt+click on handle", {},
+         "release a held effector on the current frame and the neighbouring frames that hold it, one undo step",
+         [](const EditorApp& app) { return !docOf(app).heldEffectors().empty(); }, false,
+         [](EditorApp& app, const ActionArgs& a) {
+             Effector e;
+             if (std::string err = effectorArg(a, e); !err.empty()) return err;
+             return app.state().doc.releaseHeld(e);
+         }});
+    add({"release-all", "", "", {}, "release every held effector on every frame, one undo step", hasClip, true,
+         [](EditorApp& app, const ActionArgs&) { return app.state().doc.releaseAllHeld(); }});
     add({"path", "EFFECTOR", "", {}, "edit that effector's path (default keys around the current frame)", hasClip, false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;

@@ -64,6 +64,15 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
         }
         ImGui::EndMenu();
     }
+    if (beginMenu("Held", escape)) {  // what earlier edits placed on this frame (edit/held_effectors.h)
+        for (int i = 0; i < kEffectorCount; ++i) {
+            const auto e = static_cast<Effector>(i);
+            t.menuItem(app, "release", std::string("Release ") + effectorName(e), {effectorName(e)}, doc.held(e), doc.held(e));
+        }
+        ImGui::Separator();
+        t.menuItem(app, "release-all", "Release all held (whole clip)");
+        ImGui::EndMenu();
+    }
     ImGui::Separator();
     const Effector pathEffector = app.state().selected.value_or(Effector::kRFoot);
     t.menuItem(app, "path", std::string("Edit path of ") + effectorName(pathEffector), {effectorName(pathEffector)}, false,

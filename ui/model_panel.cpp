@@ -366,6 +366,34 @@ void drawModelPanel(EditorState& s) {
     }
 }
 
+namespace {
+// What the current frame holds because the animator placed it there (edit/held_effectors.h), each
+// with a button that releases it, and one that releases everything held in the clip.
+void drawHeldEffectors(EditorState& s) {
+    const std::vector<Effector> held = s.doc.heldEffectors();
+    if (held.empty()) {
+        ImGui::TextDisabled("held here: nothing");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("A hand, foot or head you drag stays where you put it: later drags and their falloff hold it "
+                              "until you release it (Alt+click its handle).");
+        return;
+    }
+    ImGui::TextUnformatted("held here:");
+    for (Effector e : held) {
+        ImGui::SameLine();
+        const std::string label = std::string(effectorName(e)) + " x##release";
+        if (ImGui::SmallButton(label.c_str())) s.request("release", {effectorName(e)});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s was placed by an edit and is held by later drags and falloffs here. Click to release it "
+                              "on this frame and the neighbouring frames that hold it (one undo step).",
+                              effectorName(e));
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("release all")) s.request("release-all");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Release every held hand, foot and head on every frame (one undo step).");
+}
+}  // namespace
+
 void drawIkReadout(EditorState& s) {
     // Drag falloff radius (core/motion/drag_falloff.h): 0 edits the dragged frame only.
     int radius = s.doc.dragFalloff();
@@ -389,6 +417,7 @@ void drawIkReadout(EditorState& s) {
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
+    drawHeldEffectors(s);
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -408,7 +437,9 @@ void drawIkReadout(EditorState& s) {
         for (const IkConstraintResult& c : r.constraints) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%s%s", effectorName(c.effector), c.pin ? " (pin)" : "");
+            // An exact constraint is the user's pin, a placement an earlier edit holds, or a planted foot.
+            const char* kind = !c.pin ? "" : s.doc.pinned(c.effector) ? " (pin)" : s.doc.held(c.effector) ? " (held)" : " (planted)";
+            ImGui::Text("%s%s", effectorName(c.effector), kind);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", c.residualCm);
             ImGui::TableNextColumn();

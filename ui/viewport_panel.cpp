@@ -210,6 +210,11 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 lastX_ = mx;  // the sweep starts at the press, not where the mouse was a frame ago
                 lastY_ = my;
                 s.playing = false;
+            } else if (s.hoveredHandle >= 0 && io.KeyAlt) {
+                // Alt+click lets go of what an earlier gesture placed (edit/held_effectors.h).
+                const auto e = static_cast<Effector>(s.hoveredHandle);
+                const std::string err = doc.releaseHeld(e);
+                s.setStatus(err.empty() ? doc.undoLabel() : err, !err.empty());
             } else if (s.hoveredHandle >= 0) {
                 const auto e = static_cast<Effector>(s.hoveredHandle);
                 const Eigen::Vector3d start = doc.effectorPosition(e);
@@ -461,7 +466,11 @@ void ViewportPanel::draw(EditorState& s) {
         }
         for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
         for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
+        // Counts first: a pin, a held ring and a footprint at the same point are different pictures.
+        sig.insert(sig.end(), {float(scene.pins.size()), float(scene.heldMarks.size()), float(scene.footprints.size())});
         for (const render::Pin& p : scene.pins) addVec(p.positionCm);
+        for (const render::HeldMark& m : scene.heldMarks) addVec(m.positionCm);
+        for (const render::Footprint& f : scene.footprints) addVec(f.positionCm);
         for (const render::Path& p : scene.paths) {
             sig.insert(sig.end(), {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
                                    p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
@@ -511,8 +520,10 @@ void ViewportPanel::draw(EditorState& s) {
                           s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
-        ImGui::SetTooltip("%s%s\nLMB drag to pose, RMB or P to %s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
-                          s.doc.pinned(e) ? "unpin" : "pin");
+        const bool held = s.doc.held(e);
+        ImGui::SetTooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
+                          held ? " (held: placed by an edit)" : "", s.doc.pinned(e) ? "unpin" : "pin",
+                          held ? "\nAlt+click to release it here" : "");
     }
     const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
     if (key >= 0 && s.doc.pathEdit() && key < static_cast<int>(s.doc.pathEdit()->keyFrames.size())) {

@@ -161,6 +161,10 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     }
     if (s.gizmoJoint >= 0) render::addRotateGizmo(scene, viewportGizmo(s), s.gizmoRing);
     for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
+    // Held where an earlier edit placed it (not while that effector is being dragged again).
+    for (Effector e : doc.heldEffectors())
+        if (doc.hasEffector(e) && !(doc.dragging() && doc.dragEffector() == e))
+            scene.heldMarks.push_back({toGlm(doc.effectorPosition(e))});
     // Feet planted on this frame that a drag or Regenerate holds (not switched off, not released).
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
         if (doc.hasEffector(foot) && doc.inContact(foot) && !doc.contactReleased(foot))

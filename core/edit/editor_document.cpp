@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "edit/held_effectors.h"
 #include "edit/latent_refit.h"
 #include "edit/regeneration_step.h"
 #include "ik/learned_ik.h"
@@ -124,6 +125,7 @@ std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& 
     change.before = store_.editAt(frame_);
     change.effector = mostMovedEffector(clip().skeleton, store_.pose(frame_), pose);
     change.after.pose = pose;
+    if (change.before) change.after.moved = change.before->moved;  // what was placed here stays held
     // Its point on the model, so that the range legend, the latent map and the spread see the pose.
     if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
         const Eigen::VectorXd y = v->model->keptPose(PoseLayout(clip().skeleton).extract(pose));
@@ -292,7 +294,7 @@ void EditorDocument::setPinned(Effector e, bool on) {
     if (pins_[static_cast<int>(e)] != on) ++revision_;
     pins_[static_cast<int>(e)] = on;
     if (on) pinPositions_[static_cast<int>(e)] = effectorPosition(e);
-    if (drag_.active()) drag_.setPins(pinConstraints());
+    if (drag_.active()) drag_.setPins(holdConstraints());
 }
 
 std::vector<IkConstraint> EditorDocument::pinConstraints() const {
@@ -300,6 +302,48 @@ std::vector<IkConstraint> EditorDocument::pinConstraints() const {
     for (int i = 0; i < kEffectorCount; ++i)
         if (pins_[i]) out.push_back({static_cast<Effector>(i), pinPositions_[i], true});
     return out;
+}
+
+std::vector<Effector> EditorDocument::heldEffectors() const { return hasClip() ? heldOn(store_, frame_) : std::vector<Effector>{}; }
+
+bool EditorDocument::held(Effector e) const { return hasClip() && isHeld(store_, frame_, e); }
+
+std::vector<IkConstraint> EditorDocument::holdConstraints() const {
+    std::vector<IkConstraint> out = pinConstraints();
+    for (Effector e : heldEffectors())
+        if (hasEffector(e) && !pinned(e)) out.push_back({e, effectorPosition(e), true});  // a pin wins: held once
+    return out;
+}
+
+std::string EditorDocument::applyRelease(const FrameEdits& change, std::string label) {
+    finishRunningFalloff();
+    if (regenerating()) return "wait for the regeneration to finish before releasing";
+    EditStep step;
+    step.label = std::move(label);
+    step.before = store_.current(change);
+    step.after = change;
+    applyFrames(step.after);
+    pushStep(std::move(step));
+    if (drag_.active()) drag_.setPins(holdConstraints());
+    return "";
+}
+
+std::string EditorDocument::releaseHeld(Effector e) {
+    if (!hasClip()) return "no clip is open";
+    finishRunningFalloff();
+    const FrameEdits change = releaseRun(store_, frame_, e);
+    if (change.empty()) return std::string(effectorName(e)) + " is not held on frame " + std::to_string(frame_ + 1);
+    const int first = change.begin()->first, last = change.rbegin()->first;
+    return applyRelease(change, std::string("release ") + effectorName(e) + " on frames " + std::to_string(first + 1) + "-" +
+                                    std::to_string(last + 1));
+}
+
+std::string EditorDocument::releaseAllHeld() {
+    if (!hasClip()) return "no clip is open";
+    finishRunningFalloff();
+    const FrameEdits change = releaseEverywhere(store_);
+    if (change.empty()) return "nothing is held";
+    return applyRelease(change, "release everything held (" + std::to_string(change.size()) + " frames)");
 }
 
 std::vector<Effector> EditorDocument::pinnedEffectors() const {
@@ -315,7 +359,7 @@ void EditorDocument::updatePinPositions() {
     forwardKinematics(clip().skeleton, currentPose(), fk);
     for (int i = 0; i < kEffectorCount; ++i)
         if (pins_[i]) pinPositions_[i] = effectorCm(clip().skeleton, fk, static_cast<Effector>(i));
-    if (drag_.active()) drag_.setPins(pinConstraints());
+    if (drag_.active()) drag_.setPins(holdConstraints());
 }
 
 // ---- drag ----------------------------------------------------------------------------------
@@ -351,7 +395,7 @@ std::string EditorDocument::beginDrag(Effector e) {
     updatePinPositions();
     drag_.setCompare(compare_, compareModel_, frame_);
     drag_.setFloor(store_.contacts().floorCm);
-    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), pinConstraints(), contactHolds());
+    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holdConstraints(), contactHolds());
     return "";
 }
 
@@ -368,7 +412,8 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     rec.before = dragBefore_;
     rec.after.pose = drag_.pose();
     rec.after.x = drag_.x();
-    rec.after.moved = {rec.effector};
+    // The frame keeps what earlier gestures placed on it (held through this drag) and now this effector.
+    rec.after.moved = withHeld(rec.before ? rec.before->moved : std::vector<Effector>{}, {rec.effector});
     rec.modelVersionBefore = dragVersionBefore_;
     drag_.finish();
     EditStep step;
@@ -446,6 +491,8 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
         return;
     }
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
+    // What earlier gestures placed on the spread's frames stays where the edited motion has it.
+    job.heldPlaced = heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), rec.effector);
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }

@@ -155,6 +155,20 @@ public:
     std::vector<IkConstraint> contactHolds() const;
     bool contactReleased(Effector foot) const { return contactReleased_[static_cast<int>(foot)]; }
 
+    // ---- held effectors (edit/held_effectors.h) ----------------------------------------------
+    // What the animator placed on the current frame and has not released, in effector order: a
+    // drag here holds these where they are, and a later falloff holds them on its frames.
+    std::vector<Effector> heldEffectors() const;
+    bool held(Effector e) const;
+    // Releases `e` on the current frame and the neighbouring frames the same gesture held it on
+    // (one undo step); "" or why not.
+    std::string releaseHeld(Effector e);
+    // Releases every held effector on every frame (one undo step); "" or why not.
+    std::string releaseAllHeld();
+    // What a drag of the current frame holds exactly: every pin at its pin position and every held
+    // effector where it is (a drag leaves out its own effector).
+    std::vector<IkConstraint> holdConstraints() const;
+
     // ---- drag ------------------------------------------------------------------------------
     // Returns "" when the drag started, else why not (no clip, effector absent).
     std::string beginDrag(Effector e);
@@ -259,6 +273,7 @@ public:
 private:
     void updatePinPositions();
     void pushStep(EditStep step);
+    std::string applyRelease(const FrameEdits& change, std::string label);
     // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
     // whole change over the span first (motion/pose_layer.h).
     void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false);

@@ -16,10 +16,10 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
     return held;
 }
 
-std::vector<IkConstraint> heldEffectors(const EditorDocument& doc) {
-    std::vector<IkConstraint> out = doc.pinConstraints();
+std::vector<IkConstraint> rotationHolds(const EditorDocument& doc) {
+    std::vector<IkConstraint> out = doc.holdConstraints();
     for (const IkConstraint& c : doc.contactHolds())
-        if (!doc.pinned(c.effector)) out.push_back(c);  // a pinned foot is held once, by its pin
+        if (!doc.pinned(c.effector) && !doc.held(c.effector)) out.push_back(c);  // held once, by its pin or placement
     return out;
 }
 
@@ -59,7 +59,12 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     ConstrainedIkRequest req;
     req.start = out.pose;
     req.startX = fitted.x.allFinite() && fitted.x.size() == fit.startX.size() ? fitted.x : fit.startX;
-    req.constraints = heldEffectors(doc);
+    // A held hand or foot below the rotated joint moves with it: holding it would turn the rotation
+    // into a reach by the rest of the body. Pins and planted feet stay held wherever they are.
+    for (const IkConstraint& c : rotationHolds(doc))
+        if (doc.pinned(c.effector) || (doc.inContact(c.effector) && !doc.contactReleased(c.effector)) || !doc.held(c.effector) ||
+            !sk.isAncestorOrSelf(r.joint, sk.effectorSite(c.effector).joint))
+            req.constraints.push_back(c);
     req.held = heldDofsOf(sk, r.joint, r.anglesDeg);
     req.maxIterations = maxIterations;
     solver.solve(req, out.ik);

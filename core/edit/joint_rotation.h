@@ -33,9 +33,9 @@ struct JointRotationResult {
 Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg);
 // The held DOFs of a rotation: one per axis the joint animates.
 std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg);
-// The document's pins and feet in contact (not released) on the current frame, at their current
-// positions: what a rotation with the prior holds.
-std::vector<IkConstraint> heldEffectors(const EditorDocument& doc);
+// The document's pins, held effectors and feet in contact (not released) on the current frame, at
+// their current positions: what a rotation with the prior holds (less the held ones it moves).
+std::vector<IkConstraint> rotationHolds(const EditorDocument& doc);
 
 // The rotated current pose (nothing changes in the document). With followPrior and no model,
 // the error says so.

@@ -3,13 +3,19 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "edit/held_effectors.h"
+
 namespace mgp {
 
 FrameEdits regeneratedFrames(const MotionEditJob& job) {
     FrameEdits out;
     for (std::size_t i = 0; i < job.solvedFrames.size(); ++i) {
         const int t = job.solvedFrames[i];
-        out[t] = EditRecord{job.frames[t], job.results[i].x, {job.effector}};
+        // The effector the gesture placed, and those it held there because earlier ones placed them.
+        std::vector<Effector> placed{job.effector};
+        for (const ContactInterval& c : job.heldPlaced)
+            if (t >= c.first && t <= c.last) placed.push_back(c.foot);
+        out[t] = EditRecord{job.frames[t], job.results[i].x, withHeld({}, placed)};
     }
     return out;
 }

@@ -28,10 +28,10 @@ std::string MotionEditJob::validate() const {
     for (Effector e : pins)
         if (!version->model->clip.skeleton.hasEffector(e))
             return std::string("expected pins on effectors of this skeleton, found ") + effectorName(e);
-    for (const ContactInterval& c : heldContacts) {
+    for (const ContactInterval& c : heldPlaced) {
         if (!version->model->clip.skeleton.hasEffector(c.foot))
-            return std::string("expected contacts on effectors of this skeleton, found ") + effectorName(c.foot);
-        if (c.first > c.last) return "expected contact intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
+            return std::string("expected held effectors of this skeleton, found ") + effectorName(c.foot);
+        if (c.first > c.last) return "expected held intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
     }
     if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
     if (base)
@@ -118,7 +118,7 @@ void MotionEditJob::run() {
         for (const FootContact& c : contactSet.contacts)
             if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
     }
-    for (const ContactInterval& c : heldContacts)
+    for (const ContactInterval& c : heldPlaced)
         if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
     // Held effectors per inner frame: user pins on every frame, contacts on their frames; the
     // edited effector is never held. Targets are the positions of that frame in the base motion.

@@ -59,8 +59,10 @@ struct MotionEditJob {
     // when not given) whose foot is not the edited effector.
     bool holdContacts = true;
     std::shared_ptr<const ContactSet> contacts;
-    // Further intervals held the same way (frames outside the span are ignored).
-    std::vector<ContactInterval> heldContacts;
+    // Effectors the animator placed earlier (edit/held_effectors.h), held the same way on their
+    // frames: where the base motion has them (frames outside the span are ignored). The solved
+    // frames they cover keep them placed (regeneratedFrames).
+    std::vector<ContactInterval> heldPlaced;
     // An inner frame kept exactly at a given pose and latent point (a drag's accepted pose, which
     // the falloff around it must not re-solve); kSpan only. An empty x holds the frame's
     // captured latent point.
@@ -102,7 +104,7 @@ struct MotionEditJob {
     SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
     int spanIterations = 0;                      // kSpan only (−1: unknown, line search ended it)
     SpanQuality quality;                         // the span's report (motion_quality.h)
-    std::vector<ContactInterval> held;           // the contact intervals that were held
+    std::vector<ContactInterval> held;           // the contact and placed intervals that were held
     bool cancelled = false;                      // `frames` is then the unedited clip
 
     std::string validate() const;  // "" or "expected …, found …"

@@ -1,0 +1,159 @@
+// Held effectors (edit/held_effectors.h): what the animator placed on a frame stays there through
+// later drags on that frame and through later falloffs on the frames that hold it, until released;
+// the record of what is held follows undo and redo.
+#include "edit/editor_document.h"
+#include "edit/held_effectors.h"
+#include "test_support.h"
+#include "trained_model_fixture.h"
+
+using namespace mgp;
+
+namespace {
+// A drag of `effector` on the current frame to `target`, released, and its spread (if any) waited for.
+std::string heldTestDrag(EditorDocument& doc, Effector effector, const Eigen::Vector3d& target) {
+    REQUIRE(doc.beginDrag(effector).empty());
+    doc.dragTo(target, 200);
+    REQUIRE(doc.endDrag());
+    doc.waitIdle();
+    return doc.pollRegenerate();
+}
+
+Eigen::Vector3d heldTestEffector(EditorDocument& doc, int frame, Effector e) {
+    doc.setFrame(frame);
+    return effectorCm(doc.clip().skeleton, doc.currentPose(), e);
+}
+
+ClipEdits heldTestEdits(std::map<int, std::vector<Effector>> moved) {
+    ClipEdits edits;
+    edits.reset(test::walkModel35()->model->clip, false);
+    for (auto& [t, m] : moved) edits.set(t, EditRecord{edits.pose(t), Eigen::VectorXd(), m});
+    return edits;
+}
+}  // namespace
+
+TEST_CASE("held effectors: runs per effector, release of one run, release everywhere") {
+    const ClipEdits edits = heldTestEdits({{10, {Effector::kRFoot}},
+                                           {11, {Effector::kRFoot, Effector::kLHand}},
+                                           {12, {Effector::kRFoot}},
+                                           {14, {Effector::kRFoot}},
+                                           {20, {}}});
+    CHECK(isHeld(edits, 11, Effector::kLHand));
+    CHECK_FALSE(isHeld(edits, 13, Effector::kRFoot));
+    CHECK(heldOn(edits, 11) == std::vector<Effector>{Effector::kLHand, Effector::kRFoot});
+    CHECK(heldOn(edits, 20).empty());
+    CHECK(heldOn(edits, 50).empty());  // a captured frame holds nothing
+    // Runs inside 0..13: the foot on 10..12 (14 is outside), the hand on 11; the excepted effector never.
+    const std::vector<ContactInterval> runs = heldRuns(edits, 0, 13, Effector::kHead);
+    REQUIRE(runs.size() == 2);
+    CHECK((runs[0].foot == Effector::kLHand && runs[0].first == 11 && runs[0].last == 11));
+    CHECK((runs[1].foot == Effector::kRFoot && runs[1].first == 10 && runs[1].last == 12));
+    CHECK(heldRuns(edits, 0, 30, Effector::kRFoot).size() == 1);
+    CHECK(heldRuns(edits, 11, 11, Effector::kHead).size() == 2);  // a run clipped to the window
+    // Releasing the foot on frame 11 releases its run 10..12, not frame 14 beyond the gap; the hand stays.
+    const FrameEdits release = releaseRun(edits, 11, Effector::kRFoot);
+    REQUIRE(release.size() == 3);
+    CHECK(release.begin()->first == 10);
+    CHECK(release.rbegin()->first == 12);
+    CHECK(release.at(11)->moved == std::vector<Effector>{Effector::kLHand});
+    CHECK(release.at(11)->pose.anglesDeg[3] == edits.pose(11).anglesDeg[3]);  // only what is held changes
+    CHECK(releaseRun(edits, 13, Effector::kRFoot).empty());
+    CHECK(releaseEverywhere(edits).size() == 4);  // frame 20 holds nothing already
+    CHECK(withHeld({Effector::kHead}, {Effector::kLHand, Effector::kHead}) == std::vector<Effector>{Effector::kLHand, Effector::kHead});
+}
+
+TEST_CASE("editor: a second drag on the same frame holds the first drag's foot, with no falloff") {
+    // The user's sequence with falloff 0: drag the right foot up 15 cm, then drag the right hand on
+    // the same frame. The foot was placed, so the hand drag holds it where it is (it used to be
+    // re-solved away unless pinned); the frame then holds both.
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(0);
+    const int t = 140;
+    const Skeleton& sk = doc.clip().skeleton;
+    doc.setFrame(t);
+    CHECK(doc.heldEffectors().empty());
+    heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, t, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRFoot});
+    const Eigen::Vector3d foot = heldTestEffector(doc, t, Effector::kRFoot);
+    const Eigen::Vector3d hand = heldTestEffector(doc, t, Effector::kRHand);
+    heldTestDrag(doc, Effector::kRHand, hand + Eigen::Vector3d(0, 12, 6));
+    const double footMoved = (effectorCm(sk, doc.currentPose(), Effector::kRFoot) - foot).norm();
+    MESSAGE("the held foot moved " << footMoved << " cm during the hand drag");
+    CHECK(footMoved < 0.05);
+    CHECK((effectorCm(sk, doc.currentPose(), Effector::kRHand) - (hand + Eigen::Vector3d(0, 12, 6))).norm() < 0.05);
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRHand, Effector::kRFoot});
+    // The hold constraints name both, at their places, exactly.
+    const std::vector<IkConstraint> holds = doc.holdConstraints();
+    REQUIRE(holds.size() == 2);
+    for (const IkConstraint& c : holds) CHECK(c.pin);
+    // Undo brings back the state after the first drag: the foot alone is held; redo both again.
+    REQUIRE(doc.undo().empty());
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRFoot});
+    REQUIRE(doc.redo().empty());
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRHand, Effector::kRFoot});
+    // A pinned foot is held once, by its pin.
+    doc.setPinned(Effector::kRFoot, true);
+    CHECK(doc.holdConstraints().size() == 2);
+}
+
+TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand drag's falloff, until released") {
+    // Foot up 15 cm on frame 140 spread over ±20 frames, then a hand drag on frame 150 spread over
+    // ±20: on every frame both spreads cover, the foot stays where the first spread put it (≤ 1 cm).
+    // Releasing the foot on frame 150 releases the whole run the first spread held, as one undo step.
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+    const Skeleton& sk = doc.clip().skeleton;
+    doc.setFrame(140);
+    const std::string first =
+        heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, 140, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
+    REQUIRE(first.find(": spread over frames") != std::string::npos);
+    std::map<int, Eigen::Vector3d> footBefore;
+    for (int s = 121; s <= 159; ++s) {
+        footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
+        CHECK(doc.held(Effector::kRFoot));  // every frame of the spread holds the foot
+    }
+    doc.setFrame(150);
+    const std::string second =
+        heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, 150, Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
+    REQUIRE(second.find(": spread over frames") != std::string::npos);
+    double worst = 0.0;
+    int worstFrame = -1;
+    for (int s = 131; s <= 159; ++s) {
+        const double moved = (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm();
+        if (moved > worst) worst = moved, worstFrame = s + 1;
+        CHECK(doc.held(Effector::kRFoot));
+        CHECK(doc.held(Effector::kRHand));  // the hand's spread placed it too
+    }
+    MESSAGE("the held foot moved at most " << worst << " cm (frame " << worstFrame << ") during the hand's spread");
+    CHECK(worst <= 1.0);
+    // Release the foot where the user is (frame 150): its run over the first spread lets go.
+    doc.setFrame(150);
+    const int undoBefore = doc.history().undoCount();
+    REQUIRE(doc.releaseHeld(Effector::kRFoot).empty());
+    CHECK(doc.history().undoCount() == undoBefore + 1);
+    for (int s = 115; s <= 165; ++s) {
+        doc.setFrame(s);
+        CHECK_FALSE(doc.held(Effector::kRFoot));
+    }
+    doc.setFrame(150);
+    CHECK(doc.held(Effector::kRHand));
+    CHECK_FALSE(doc.releaseHeld(Effector::kRFoot).empty());  // nothing left to release: says so
+    REQUIRE(doc.undo().empty());
+    doc.setFrame(150);
+    CHECK(doc.held(Effector::kRFoot));
+    // Release everything: nothing is held anywhere, one step; the poses are untouched.
+    const Pose pose150 = doc.currentPose();
+    REQUIRE(doc.releaseAllHeld().empty());
+    for (int s = 120; s <= 170; ++s) {
+        doc.setFrame(s);
+        CHECK(doc.heldEffectors().empty());
+    }
+    doc.setFrame(150);
+    CHECK(doc.currentPose().anglesDeg[sk.findBone("rfemur")] == pose150.anglesDeg[sk.findBone("rfemur")]);
+    CHECK_FALSE(doc.releaseAllHeld().empty());
+}
