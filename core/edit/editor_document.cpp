@@ -316,7 +316,6 @@ std::vector<IkConstraint> EditorDocument::holdConstraints() const {
 }
 
 std::string EditorDocument::applyRelease(const FrameEdits& change, std::string label) {
-    finishRunningFalloff();
     if (regenerating()) return "wait for the regeneration to finish before releasing";
     EditStep step;
     step.label = std::move(label);
@@ -324,22 +323,24 @@ std::string EditorDocument::applyRelease(const FrameEdits& change, std::string l
     step.after = change;
     applyFrames(step.after);
     pushStep(std::move(step));
-    if (drag_.active()) drag_.setPins(holdConstraints());
     return "";
 }
 
 std::string EditorDocument::releaseHeld(Effector e) {
     if (!hasClip()) return "no clip is open";
+    if (drag_.active()) return "finish the drag before releasing";  // its record is written on release
     finishRunningFalloff();
     const FrameEdits change = releaseRun(store_, frame_, e);
     if (change.empty()) return std::string(effectorName(e)) + " is not held on frame " + std::to_string(frame_ + 1);
-    const int first = change.begin()->first, last = change.rbegin()->first;
-    return applyRelease(change, std::string("release ") + effectorName(e) + " on frames " + std::to_string(first + 1) + "-" +
-                                    std::to_string(last + 1));
+    const int first = change.begin()->first + 1, last = change.rbegin()->first + 1;
+    const std::string frames = first == last ? "frame " + std::to_string(first)
+                                             : "frames " + std::to_string(first) + "-" + std::to_string(last);
+    return applyRelease(change, std::string("release ") + effectorName(e) + " on " + frames);
 }
 
 std::string EditorDocument::releaseAllHeld() {
     if (!hasClip()) return "no clip is open";
+    if (drag_.active()) return "finish the drag before releasing";
     finishRunningFalloff();
     const FrameEdits change = releaseEverywhere(store_);
     if (change.empty()) return "nothing is held";
