@@ -374,6 +374,7 @@ void EditorApp::prompts() {
     hooks.save = [this](const std::string& path) { return saveSession(path).empty(); };
     hooks.askForSessionFile = [this] { openDialog(FileKind::kSaveSession); };
     hooks.restore = [this](const std::string& path) { restoreAutosave(path); };
+    hooks.recordControl = [this](const std::string& name) { state_.recordControl(name); };
     prompts_.draw(dialog_.isOpen(), hooks);
 }
 

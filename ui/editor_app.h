@@ -106,7 +106,11 @@ public:
     bool layoutCustomized() const { return layout_.customized(); }
     void resetLayout() { layout_.reset(); }
 
-    bool dirty() const { return state_.doc.revision() != savedRevision_; }
+    // Unsaved work: edits since the last save or open, or a model this editor trained or changed
+    // that no model file or session holds (it outlives opening a clip and switching clips, and so
+    // does the question).
+    bool dirty() const { return state_.doc.revision() != savedRevision_ || modelUnsaved(); }
+    bool modelUnsaved() const;
     bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
     bool askingAboutModelClip() const { return prompts_.askingModelClip(); }  // the modal is up
     const FileDialog& fileDialog() const { return dialog_; }
@@ -153,7 +157,9 @@ private:
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
-    void markSaved();
+    // The document's edits count as saved; so does its model when `modelSaved` (a session saved or
+    // opened, a model file opened), else an unsaved model stays unsaved (a clip opened beside it).
+    void markSaved(bool modelSaved);
     void installModel(gp::ModelVersionPtr version, const std::string& path);  // with its clip
     void remember(const std::string& path, RecentKind kind);
     std::string openAny(const std::string& path);  // by extension: session, model or clip
@@ -186,6 +192,7 @@ private:
 
     std::string sessionPath_;  // "" until saved or opened
     long savedRevision_ = 0;   // doc.revision() when last saved or opened
+    std::weak_ptr<const gp::GpModel> savedModel_;  // the model a file or session holds (weak: never a reused address)
     std::unique_ptr<RecentFiles> recent_;  // null when the options turn the list off
     AutosavePolicy autosave_;
     bool quitAsked_ = false;  // Quit was chosen: the unsaved-changes question comes first

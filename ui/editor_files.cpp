@@ -30,6 +30,7 @@ std::string EditorApp::openClip(const std::string& path) {
     return reportingErrors([&] {
         Clip clip = loadClip(path);
         state_.training.cancel();
+        const bool modelSaved = !modelUnsaved();
         state_.doc.setClip(std::move(clip), false);
         state_.clipLabel = fileNameOf(path);
         state_.modelLabel.clear();
@@ -39,19 +40,20 @@ std::string EditorApp::openClip(const std::string& path) {
         const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
         state_.setStatus("opened " + (ec ? path : shown));
         sessionPath_.clear();
-        markSaved();
+        markSaved(modelSaved);
         remember(path, RecentKind::kClip);
     });
 }
 
 void EditorApp::openSyntheticClip(const std::string& why) {
+    const bool modelSaved = !modelUnsaved();
     state_.doc.setClip(makeSyntheticWalk(), true);
     state_.clipLabel = "synthetic demo clip";
     state_.modelLabel.clear();
     state_.cameraNeedsFraming = true;
     state_.setStatus(why.empty() ? "synthetic demo clip" : why);
     sessionPath_.clear();
-    markSaved();
+    markSaved(modelSaved);
 }
 
 std::string EditorApp::openModel(const std::string& path) {
@@ -85,7 +87,8 @@ std::string EditorApp::openModel(const std::string& path) {
         state_.setStatus("the model was trained on " + modelClip + ", not on the open clip: asking first");
         return "";
     }
-    installModel(std::move(v), path);
+    // The open clip and its edits stay; only a model no file holds is lost by replacing it.
+    prompts_.guard(modelUnsaved(), [this, v, path] { installModel(v, path); }, "replacing the model");
     return "";
 }
 
@@ -96,7 +99,7 @@ void EditorApp::installModel(gp::ModelVersionPtr v, const std::string& path) {
     state_.cameraNeedsFraming = true;
     state_.setStatus("opened model " + path);
     sessionPath_.clear();
-    markSaved();
+    markSaved(true);
     remember(path, RecentKind::kModel);
 }
 
@@ -126,6 +129,7 @@ std::string EditorApp::openModelClip(const std::string& name, int frame) {
             }
             const gp::ModelVersionPtr relabelled = i == 0 ? now : gp::ModelVersion::make(gp::withPrimaryClip(*now->model, i));
             const std::string before = state_.clipLabel;
+            const bool modelSaved = !modelUnsaved();  // relabelled, it is the same model: saved or not
             state_.training.cancel();  // a training of the old clip must not land on this one
             state_.compareTraining.cancel();
             state_.doc.setModel(relabelled, true);
@@ -134,7 +138,7 @@ std::string EditorApp::openModelClip(const std::string& name, int frame) {
             state_.playing = false;
             state_.cameraNeedsFraming = true;
             sessionPath_.clear();  // the session file holds the other clip
-            markSaved();
+            markSaved(modelSaved);
             state_.setStatus("switched from " + before + " to " + where + " (same model)");
         },
         "switching to clip " + name);
@@ -150,14 +154,24 @@ std::string EditorApp::saveModel(const std::string& path) {
     }
     return reportingErrors([&] {
         gp::saveModel(path, *v->model);
+        savedModel_ = v->model;
         state_.modelLabel = fileNameOf(path);
         state_.setStatus("saved model " + path);
         remember(path, RecentKind::kModel);
     });
 }
 
-void EditorApp::markSaved() {
+bool EditorApp::modelUnsaved() const {
+    const gp::ModelVersionPtr v = state_.doc.model();
+    return v && v->model != savedModel_.lock();
+}
+
+void EditorApp::markSaved(bool modelSaved) {
     savedRevision_ = state_.doc.revision();
+    if (modelSaved) {
+        if (const gp::ModelVersionPtr v = state_.doc.model()) savedModel_ = v->model;
+        else savedModel_.reset();
+    }
     state_.selectedKey = state_.hoveredKey = -1;
 }
 
@@ -176,7 +190,7 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
     return reportingErrors([&] {
         mgp::saveSession(path, editorSession(state_));
         sessionPath_ = absolutePath(path);
-        markSaved();
+        markSaved(true);
         forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
         state_.setStatus("saved session " + path);
@@ -200,7 +214,7 @@ std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
         applyEditorSession(state_, checked.data);
         const SessionData& d = checked.data;
         sessionPath_ = absolutePath(path);
-        markSaved();
+        markSaved(true);
         forgetAutosave();
         if (addToRecent) remember(path, RecentKind::kSession);
         std::string status = "opened session " + path;

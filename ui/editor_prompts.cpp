@@ -61,7 +61,9 @@ void EditorPrompts::unsavedChanges(bool dialogOpen, const Hooks& hooks) {
     const std::string file = std::filesystem::path(hooks.sessionPath).filename().string();
     ImGui::Text("This session has changes that are not saved%s.", hooks.sessionPath.empty() ? "" : (" to " + file).c_str());
     ImGui::Text("Save them before %s?", pendingWhat_.c_str());
-    if (ImGui::Button("Save", ImVec2(110, 0))) {
+    const bool save = ImGui::Button("Save", ImVec2(110, 0));
+    if (hooks.recordControl) hooks.recordControl("unsaved: Save");
+    if (save) {
         std::function<void()> action = std::exchange(pending_, nullptr);
         if (hooks.sessionPath.empty()) {
             hooks.askForSessionFile();  // the action runs once the file is saved
@@ -72,7 +74,9 @@ void EditorPrompts::unsavedChanges(bool dialogOpen, const Hooks& hooks) {
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Don't save", ImVec2(110, 0))) {
+    const bool discard = ImGui::Button("Don't save", ImVec2(110, 0));
+    if (hooks.recordControl) hooks.recordControl("unsaved: Don't save");
+    if (discard) {
         std::exchange(pending_, nullptr)();
         ImGui::CloseCurrentPopup();
     }

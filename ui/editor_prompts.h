@@ -20,6 +20,7 @@ public:
         std::function<bool(const std::string&)> save;   // saves the session there; true on success
         std::function<void()> askForSessionFile;        // opens the Save session dialog
         std::function<void(const std::string&)> restore;  // restores that autosave
+        std::function<void(const std::string&)> recordControl;  // the last item's rectangle, by name (tests)
     };
 
     // Runs `action` now when nothing is unsaved, else after the user answered (Save, Don't

@@ -232,3 +232,58 @@ TEST_CASE("gui: with unsaved edits, clicking another clip's dot asks first and C
     CHECK(h->app->dirty());
     std::filesystem::remove_all(std::filesystem::path(model).parent_path());
 }
+
+TEST_CASE("gui: a model trained here and never saved is asked about on every path that drops it, even after a clip switch") {
+    // The user's sequence: a model trained in the editor (here: the opened model replaced by a copy,
+    // as a finished training installs one), click the other clip's dot, answer "Don't save"; the
+    // model stays, still unsaved, so opening a BVH clip, quitting or opening the demo clip asks
+    // again. Once the model is saved to a file, opening a clip asks nothing.
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    const std::string model = twoKickModel();
+    openTwoKicks(*h, model);
+    EditorDocument& doc = h->app->state().doc;
+    CHECK_FALSE(h->app->dirty());
+    CHECK_FALSE(h->app->modelUnsaved());
+    doc.setModel(gp::ModelVersion::make(gp::GpModel(*doc.model()->model)), false);
+    CHECK(h->app->modelUnsaved());
+    h->frame(2);
+    float x = 0, y = 0;
+    REQUIRE(loneDotOf1002(*h, x, y) >= 0);
+    test::clickAt(*h, x, y);
+    REQUIRE(h->app->askingAboutUnsavedChanges());
+    const auto& dontSave = h->app->state().controls.at("unsaved: Don't save");
+    test::clickAt(*h, (dontSave.x0 + dontSave.x1) / 2, (dontSave.y0 + dontSave.y1) / 2);
+    h->frame(2);
+    CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+    REQUIRE(doc.clip().name == "10_02");  // switched, the model staying
+    CHECK(h->app->modelUnsaved());
+    CHECK(h->app->dirty());
+    // Every way of dropping it asks first (File > Open and Open model ask before their dialogs; a
+    // model file of the open clip would replace this one), and Cancel keeps it.
+    const std::vector<std::vector<std::string>> drops = {{"open"}, {"open-model"}, {"open-model", model}, {"demo-clip"}, {"quit"}};
+    for (const std::vector<std::string>& action : drops) {
+        INFO(action.front());
+        REQUIRE(h->app->runAction(action) == "");
+        h->frame(2);
+        CHECK(h->app->askingAboutUnsavedChanges());
+        tapKey(*h, key::kEscape);
+        h->frame(1);
+        CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+        CHECK(doc.clip().name == "10_02");
+        CHECK(doc.hasModel());
+        CHECK(h->app->modelUnsaved());
+        CHECK_FALSE(h->app->fileDialog().isOpen());
+        CHECK_FALSE(h->app->quitRequested());
+    }
+    // Saved to a file, the model is safe: opening a clip no longer asks.
+    const std::string saved = std::filesystem::path(model).parent_path().string() + "/saved.model";
+    REQUIRE(h->app->runAction({"save-model", saved}) == "");
+    CHECK_FALSE(h->app->modelUnsaved());
+    CHECK_FALSE(h->app->dirty());
+    REQUIRE(h->app->runAction({"open", test::mocapDir() + "/bvh/02_03.bvh"}) == "");
+    h->frame(2);
+    CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+    CHECK(doc.clip().name == "02_03");
+    std::filesystem::remove_all(std::filesystem::path(model).parent_path());
+}
