@@ -8,7 +8,8 @@
 //    contacts held), judged on frame t.
 // Reported per case: how far the head, the other hand and each foot moved, as a fraction of the
 // raise (the bar: ≤ 0.15), the centre of mass's horizontal shift (de Leva; the bar: ≤ 2 cm), the
-// hand's residual, and the nearest captured frame of the clip in degrees RMS (learned ≤ plain).
+// hand's residual (a case meets the bars only with the target reached, ≤ 0.1 cm), and the nearest
+// captured frame of the clip in degrees RMS (learned ≤ plain).
 #include "bench_registry.h"
 #include "eval/nearest_pose.h"
 #include "gp/trainer.h"
@@ -85,7 +86,7 @@ nlohmann::json caseJson(const Skeleton& sk, const Pose& before, const Pose& afte
             {"com_shift_cm", com ? nlohmann::json(*com) : nlohmann::json(nullptr)},
             {"hand_residual_cm", (effectorCm(sk, after, Effector::kRHand) - target).norm()},
             {"nearest_captured_deg", nearestPoseRmsDeg(layout.extract(after), captured)},
-            {"meets", ratio <= 0.15 && com && *com <= 2.0}};
+            {"meets", ratio <= 0.15 && com && *com <= 2.0 && (effectorCm(sk, after, Effector::kRHand) - target).norm() <= 0.1}};
 }
 
 nlohmann::json runClip(const BenchContext& ctx, const LocalityClip& spec, const gp::TrainOptions& options, const char* label) {

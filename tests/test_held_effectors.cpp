@@ -3,6 +3,7 @@
 // the record of what is held follows undo and redo.
 #include "edit/editor_document.h"
 #include "edit/held_effectors.h"
+#include "edit/joint_rotation.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -55,16 +56,16 @@ TEST_CASE("held effectors: runs per effector, release of one run, release everyw
     CHECK(release.begin()->first == 10);
     CHECK(release.rbegin()->first == 12);
     CHECK(release.at(11)->moved == std::vector<Effector>{Effector::kLHand});
-    CHECK(release.at(11)->pose.anglesDeg[3] == edits.pose(11).anglesDeg[3]);  // only what is held changes
     CHECK(releaseRun(edits, 13, Effector::kRFoot).empty());
     CHECK(releaseEverywhere(edits).size() == 4);  // frame 20 holds nothing already
     CHECK(withHeld({Effector::kHead}, {Effector::kLHand, Effector::kHead}) == std::vector<Effector>{Effector::kLHand, Effector::kHead});
 }
 
-TEST_CASE("editor: a second drag on the same frame holds the first drag's foot, with no falloff") {
-    // The user's sequence with falloff 0: drag the right foot up 15 cm, then drag the right hand on
-    // the same frame. The foot was placed, so the hand drag holds it where it is (it used to be
-    // re-solved away unless pinned); the frame then holds both.
+TEST_CASE("editor: a second drag on the same frame holds the first drag's hand, with no falloff") {
+    // The user's sequence with falloff 0: drag the left hand forward, then drag the right hand up on
+    // the same frame. The left hand was placed, so the second drag holds it exactly where it is
+    // (before, only the locality term kept it, approximately); the frame then holds both. (A foot
+    // would not show this on a planted frame: the contact holds it anyway.)
     EditorDocument doc;
     const auto version = test::walkModel35();
     doc.setModel(version, true);
@@ -74,28 +75,39 @@ TEST_CASE("editor: a second drag on the same frame holds the first drag's foot, 
     const Skeleton& sk = doc.clip().skeleton;
     doc.setFrame(t);
     CHECK(doc.heldEffectors().empty());
-    heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, t, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
-    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRFoot});
-    const Eigen::Vector3d foot = heldTestEffector(doc, t, Effector::kRFoot);
-    const Eigen::Vector3d hand = heldTestEffector(doc, t, Effector::kRHand);
-    heldTestDrag(doc, Effector::kRHand, hand + Eigen::Vector3d(0, 12, 6));
-    const double footMoved = (effectorCm(sk, doc.currentPose(), Effector::kRFoot) - foot).norm();
-    MESSAGE("the held foot moved " << footMoved << " cm during the hand drag");
-    CHECK(footMoved < 0.05);
-    CHECK((effectorCm(sk, doc.currentPose(), Effector::kRHand) - (hand + Eigen::Vector3d(0, 12, 6))).norm() < 0.05);
-    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRHand, Effector::kRFoot});
-    // The hold constraints name both, at their places, exactly.
+    heldTestDrag(doc, Effector::kLHand, heldTestEffector(doc, t, Effector::kLHand) + Eigen::Vector3d(0, 5, 8));
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kLHand});
+    const Eigen::Vector3d left = heldTestEffector(doc, t, Effector::kLHand);
+    const Eigen::Vector3d right = heldTestEffector(doc, t, Effector::kRHand);
+    const Eigen::Vector3d target = right + Eigen::Vector3d(0, 25, 10);
+    heldTestDrag(doc, Effector::kRHand, target);
+    const double leftMoved = (effectorCm(sk, doc.currentPose(), Effector::kLHand) - left).norm();
+    MESSAGE("the held left hand moved " << leftMoved << " cm during the right hand's drag");
+    CHECK(leftMoved < 0.01);
+    CHECK((effectorCm(sk, doc.currentPose(), Effector::kRHand) - target).norm() < 0.05);
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kLHand, Effector::kRHand});
+    // What a drag here holds: both hands, each once, where they are.
     const std::vector<IkConstraint> holds = doc.holdConstraints();
     REQUIRE(holds.size() == 2);
-    for (const IkConstraint& c : holds) CHECK(c.pin);
-    // Undo brings back the state after the first drag: the foot alone is held; redo both again.
+    CHECK((holds[0].targetCm - left).norm() < 0.01);
+    // Undo brings back the state after the first drag: the left hand alone is held; redo both again.
     REQUIRE(doc.undo().empty());
-    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRFoot});
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kLHand});
     REQUIRE(doc.redo().empty());
-    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kRHand, Effector::kRFoot});
-    // A pinned foot is held once, by its pin.
-    doc.setPinned(Effector::kRFoot, true);
+    CHECK(doc.heldEffectors() == std::vector<Effector>{Effector::kLHand, Effector::kRHand});
+    // A pinned hand is held once, by its pin.
+    doc.setPinned(Effector::kLHand, true);
     CHECK(doc.holdConstraints().size() == 2);
+    doc.setPinned(Effector::kLHand, false);
+    // The same right-hand drag with the left hand released first: it is no longer held, and moves.
+    REQUIRE(doc.undo().empty());
+    REQUIRE(doc.releaseHeld(Effector::kLHand).empty());
+    CHECK(doc.undoLabel() == "release lhand on frame " + std::to_string(t + 1));
+    CHECK(doc.heldEffectors().empty());
+    heldTestDrag(doc, Effector::kRHand, target);
+    const double unheld = (effectorCm(sk, doc.currentPose(), Effector::kLHand) - left).norm();
+    MESSAGE("released first, the left hand moved " << unheld << " cm");
+    CHECK(unheld > 10.0 * leftMoved);
 }
 
 TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand drag's falloff, until released") {
@@ -131,6 +143,23 @@ TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand 
     }
     MESSAGE("the held foot moved at most " << worst << " cm (frame " << worstFrame << ") during the hand's spread");
     CHECK(worst <= 1.0);
+    // The same hand drag with the foot released first: the spread only starts from the edited
+    // motion, nothing holds the foot, and it moves (what the holds are for).
+    REQUIRE(doc.undo().empty());
+    REQUIRE(doc.releaseAllHeld().empty());
+    doc.setFrame(150);
+    heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, 150, Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
+    double unheld = 0.0;
+    for (int s = 131; s <= 159; ++s) unheld = std::max(unheld, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    MESSAGE("released first, the foot moved up to " << unheld << " cm");
+    CHECK(unheld > 10.0 * worst);
+    REQUIRE(doc.undo().empty());  // the unheld hand drag
+    REQUIRE(doc.undo().empty());  // the release
+    REQUIRE(doc.redo().empty());  // the release again …
+    REQUIRE(doc.undo().empty());  // … and back: the foot held, the hand drag undone
+    doc.setFrame(150);
+    REQUIRE(doc.held(Effector::kRFoot));
+    heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, 150, Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
     // Release the foot where the user is (frame 150): its run over the first spread lets go.
     doc.setFrame(150);
     const int undoBefore = doc.history().undoCount();
@@ -156,4 +185,30 @@ TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand 
     doc.setFrame(150);
     CHECK(doc.currentPose().anglesDeg[sk.findBone("rfemur")] == pose150.anglesDeg[sk.findBone("rfemur")]);
     CHECK_FALSE(doc.releaseAllHeld().empty());
+}
+
+TEST_CASE("rotate joint holds a placed hand unless the rotated joint is above it") {
+    EditorDocument doc;
+    const auto version = test::walkModel35();
+    doc.setModel(version, true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(0);
+    const int t = 140;
+    doc.setFrame(t);
+    heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, t, Effector::kRHand) + Eigen::Vector3d(0, 6, 4));
+    REQUIRE(doc.held(Effector::kRHand));
+    const Skeleton& sk = doc.clip().skeleton;
+    auto holdsRHand = [&](const char* bone) {
+        const std::vector<IkConstraint> holds = rotationHolds(doc, sk.findBone(bone));
+        return std::count_if(holds.begin(), holds.end(), [](const IkConstraint& c) { return c.effector == Effector::kRHand; });
+    };
+    CHECK(holdsRHand("rradius") == 0);  // the elbow carries the hand: it moves with the rotation
+    CHECK(holdsRHand("lfemur") == 1);   // the other leg: the hand stays
+    doc.setPinned(Effector::kRHand, true);
+    CHECK(holdsRHand("rradius") == 1);  // a pin holds wherever it is
+    // Each planted foot once, whether a contact, a placement or both hold it.
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+        const std::vector<IkConstraint> holds = rotationHolds(doc, sk.findBone("rradius"));
+        CHECK(std::count_if(holds.begin(), holds.end(), [&](const IkConstraint& c) { return c.effector == foot; }) <= 1);
+    }
 }

@@ -33,6 +33,12 @@ std::string effectorArg(const ActionArgs& a, Effector& e) {
     return "";
 }
 
+// A release's step names what it let go of, on the status line; an error is returned as it is.
+std::string reportRelease(EditorApp& app, std::string err) {
+    if (err.empty()) app.state().setStatus(app.state().doc.undoLabel());
+    return err;
+}
+
 // A PATH argument runs `withPath`; none asks for the file with the dialog of `kind`.
 Run pathOrDialog(std::function<std::string(EditorApp&, const std::string&)> withPath, std::function<void(EditorApp&)> ask) {
     return [withPath = std::move(withPath), ask = std::move(ask)](EditorApp& app, const ActionArgs& a) {
@@ -178,10 +184,11 @@ std::vector<EditorAction> makeActions() {
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;
              if (std::string err = effectorArg(a, e); !err.empty()) return err;
-             return app.state().doc.releaseHeld(e);
+             return reportRelease(app, app.state().doc.releaseHeld(e));
          }});
-    add({"release-all", "", "", {}, "release every held effector on every frame, one undo step", hasClip, true,
-         [](EditorApp& app, const ActionArgs&) { return app.state().doc.releaseAllHeld(); }});
+    add({"release-all", "", "", {}, "release every held effector on every frame, one undo step",
+         [](const EditorApp& app) { return docOf(app).anythingHeld(); }, true,
+         [](EditorApp& app, const ActionArgs&) { return reportRelease(app, app.state().doc.releaseAllHeld()); }});
     add({"path", "EFFECTOR", "", {}, "edit that effector's path (default keys around the current frame)", hasClip, false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;

@@ -116,6 +116,7 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
     // editor's autosave before the old file goes, so a second crash loses nothing either.
     sessionPath_.clear();
     savedRevision_ = -1;
+    savedModel_.reset();  // only the autosave holds its model
     if (!autosaveNow().empty()) return "could not keep the restored autosave: " + state_.messages.latestText();
     discardAutosave(file);
     prompts_.dropAutosaveOffer();
@@ -329,7 +330,7 @@ void EditorApp::dialogs() {
         lastDialogFolder_ = std::filesystem::path(*path).parent_path().string();
         switch (purpose_) {
             case FileKind::kOpenAny: openAny(*path); break;
-            case FileKind::kModel: openModel(*path); break;
+            case FileKind::kModel: openModel(*path, true); break;  // asked before the dialog opened
             case FileKind::kSaveModel: saveModel(*path); break;
             case FileKind::kSaveSession:
                 if (saveSession(*path).empty())

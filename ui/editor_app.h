@@ -59,7 +59,8 @@ public:
     void openSyntheticClip(const std::string& why);
     // Opens a model with the clip it was trained on. When that is not the open clip, it asks
     // first (Open its clip, or Cancel) and returns "" while the question is up.
-    std::string openModel(const std::string& path);
+    // `askedAboutUnsaved`: the caller already asked (before a file dialog, a recent file).
+    std::string openModel(const std::string& path, bool askedAboutUnsaved = false);
     std::string saveModel(const std::string& path);
     // Makes the model's training clip `name` the open clip at `frame` (0-based), the model staying
     // (gp::withPrimaryClip); asks about unsaved changes first. "" or the error.
@@ -157,8 +158,9 @@ private:
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
-    // The document's edits count as saved; so does its model when `modelSaved` (a session saved or
-    // opened, a model file opened), else an unsaved model stays unsaved (a clip opened beside it).
+    // The document's edits count as saved; so does its model when `modelSaved` (a session or a
+    // model file opened, a clip opened without one), else an unsaved model stays unsaved (a switch
+    // to the model's other clip keeps the model).
     void markSaved(bool modelSaved);
     void installModel(gp::ModelVersionPtr version, const std::string& path);  // with its clip
     void remember(const std::string& path, RecentKind kind);

@@ -30,8 +30,7 @@ std::string EditorApp::openClip(const std::string& path) {
     return reportingErrors([&] {
         Clip clip = loadClip(path);
         state_.training.cancel();
-        const bool modelSaved = !modelUnsaved();
-        state_.doc.setClip(std::move(clip), false);
+        state_.doc.setClip(std::move(clip), false);  // the model goes with the old clip
         state_.clipLabel = fileNameOf(path);
         state_.modelLabel.clear();
         state_.cameraNeedsFraming = true;
@@ -40,23 +39,22 @@ std::string EditorApp::openClip(const std::string& path) {
         const std::string shown = std::filesystem::weakly_canonical(path, ec).string();
         state_.setStatus("opened " + (ec ? path : shown));
         sessionPath_.clear();
-        markSaved(modelSaved);
+        markSaved(true);
         remember(path, RecentKind::kClip);
     });
 }
 
 void EditorApp::openSyntheticClip(const std::string& why) {
-    const bool modelSaved = !modelUnsaved();
     state_.doc.setClip(makeSyntheticWalk(), true);
     state_.clipLabel = "synthetic demo clip";
     state_.modelLabel.clear();
     state_.cameraNeedsFraming = true;
     state_.setStatus(why.empty() ? "synthetic demo clip" : why);
     sessionPath_.clear();
-    markSaved(modelSaved);
+    markSaved(true);
 }
 
-std::string EditorApp::openModel(const std::string& path) {
+std::string EditorApp::openModel(const std::string& path, bool askedAboutUnsaved) {
     gp::ModelVersionPtr v;
     const std::string err = reportingErrors([&] { v = gp::ModelVersion::make(gp::loadModel(path)); });
     if (!err.empty()) return err;
@@ -83,12 +81,14 @@ std::string EditorApp::openModel(const std::string& path) {
              "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
                  " frames): " + difference + ".",
              "Opening the model replaces the open clip with " + modelClip + "."},
-            [this, v, path] { guardUnsaved([this, v, path] { installModel(v, path); }, "opening the model's clip"); });
+            [this, v, path, askedAboutUnsaved] {
+                prompts_.guard(!askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); }, "opening the model's clip");
+            });
         state_.setStatus("the model was trained on " + modelClip + ", not on the open clip: asking first");
         return "";
     }
-    // The open clip and its edits stay; only a model no file holds is lost by replacing it.
-    prompts_.guard(modelUnsaved(), [this, v, path] { installModel(v, path); }, "replacing the model");
+    // Installing a model restarts the document on its clip: the edits and the old model go.
+    prompts_.guard(!askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); }, "opening a model");
     return "";
 }
 
@@ -188,9 +188,12 @@ void EditorApp::remember(const std::string& path, RecentKind kind) {
 std::string EditorApp::saveSession(const std::string& pathIn) {
     const std::string path = withExtension(pathIn, ".mgsession");
     return reportingErrors([&] {
+        const gp::ModelVersionPtr written = state_.doc.model();  // an update may land while writing
         mgp::saveSession(path, editorSession(state_));
         sessionPath_ = absolutePath(path);
-        markSaved(true);
+        markSaved(false);
+        if (written) savedModel_ = written->model;
+        else savedModel_.reset();
         forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
         state_.setStatus("saved session " + path);
@@ -268,7 +271,7 @@ void EditorApp::openRecent(const std::string& path) {
 std::string EditorApp::openAny(const std::string& path) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext == ".mgsession") return openSession(path);
-    if (ext == ".json" || ext == ".model") return openModel(path);
+    if (ext == ".json" || ext == ".model") return openModel(path, true);  // every caller asked already
     return openClip(path);
 }
 

@@ -67,7 +67,7 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     if (beginMenu("Held", escape)) {  // what earlier edits placed on this frame (edit/held_effectors.h)
         for (int i = 0; i < kEffectorCount; ++i) {
             const auto e = static_cast<Effector>(i);
-            t.menuItem(app, "release", std::string("Release ") + effectorName(e), {effectorName(e)}, doc.held(e), doc.held(e));
+            t.menuItem(app, "release", std::string("Release ") + effectorName(e), {effectorName(e)}, false, doc.held(e));
         }
         ImGui::Separator();
         t.menuItem(app, "release-all", "Release all held (whole clip)");

@@ -212,9 +212,7 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 s.playing = false;
             } else if (s.hoveredHandle >= 0 && io.KeyAlt) {
                 // Alt+click lets go of what an earlier gesture placed (edit/held_effectors.h).
-                const auto e = static_cast<Effector>(s.hoveredHandle);
-                const std::string err = doc.releaseHeld(e);
-                s.setStatus(err.empty() ? doc.undoLabel() : err, !err.empty());
+                s.request("release", {effectorName(static_cast<Effector>(s.hoveredHandle))});
             } else if (s.hoveredHandle >= 0) {
                 const auto e = static_cast<Effector>(s.hoveredHandle);
                 const Eigen::Vector3d start = doc.effectorPosition(e);
@@ -523,7 +521,7 @@ void ViewportPanel::draw(EditorState& s) {
         const bool held = s.doc.held(e);
         ImGui::SetTooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
                           held ? " (held: placed by an edit)" : "", s.doc.pinned(e) ? "unpin" : "pin",
-                          held ? "\nAlt+click to release it here" : "");
+                          held ? "\nAlt+click to release it (here and on the neighbouring frames that hold it)" : "");
     }
     const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
     if (key >= 0 && s.doc.pathEdit() && key < static_cast<int>(s.doc.pathEdit()->keyFrames.size())) {

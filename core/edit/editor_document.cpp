@@ -125,7 +125,9 @@ std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& 
     change.before = store_.editAt(frame_);
     change.effector = mostMovedEffector(clip().skeleton, store_.pose(frame_), pose);
     change.after.pose = pose;
-    if (change.before) change.after.moved = change.before->moved;  // what was placed here stays held
+    // What was placed here stays held (held where the new pose puts it). The pose change itself
+    // places nothing: its spread marks no effector placed (MotionEditJob::placesEffector).
+    if (change.before) change.after.moved = change.before->moved;
     // Its point on the model, so that the range legend, the latent map and the spread see the pose.
     if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
         const Eigen::VectorXd y = v->model->keptPose(PoseLayout(clip().skeleton).extract(pose));
@@ -308,6 +310,12 @@ std::vector<Effector> EditorDocument::heldEffectors() const { return hasClip() ?
 
 bool EditorDocument::held(Effector e) const { return hasClip() && isHeld(store_, frame_, e); }
 
+bool EditorDocument::anythingHeld() const {
+    for (const auto& [t, record] : store_.edits())
+        if (!record.moved.empty()) return true;
+    return false;
+}
+
 std::vector<IkConstraint> EditorDocument::holdConstraints() const {
     std::vector<IkConstraint> out = pinConstraints();
     for (Effector e : heldEffectors())
@@ -315,8 +323,15 @@ std::vector<IkConstraint> EditorDocument::holdConstraints() const {
     return out;
 }
 
-std::string EditorDocument::applyRelease(const FrameEdits& change, std::string label) {
+std::string EditorDocument::releaseBlocked() {
+    if (!hasClip()) return "no clip is open";
+    if (drag_.active()) return "finish the drag before releasing";  // its record is written on release
+    finishRunningFalloff();
     if (regenerating()) return "wait for the regeneration to finish before releasing";
+    return "";
+}
+
+std::string EditorDocument::applyRelease(const FrameEdits& change, std::string label) {
     EditStep step;
     step.label = std::move(label);
     step.before = store_.current(change);
@@ -327,9 +342,7 @@ std::string EditorDocument::applyRelease(const FrameEdits& change, std::string l
 }
 
 std::string EditorDocument::releaseHeld(Effector e) {
-    if (!hasClip()) return "no clip is open";
-    if (drag_.active()) return "finish the drag before releasing";  // its record is written on release
-    finishRunningFalloff();
+    if (std::string blocked = releaseBlocked(); !blocked.empty()) return blocked;
     const FrameEdits change = releaseRun(store_, frame_, e);
     if (change.empty()) return std::string(effectorName(e)) + " is not held on frame " + std::to_string(frame_ + 1);
     const int first = change.begin()->first + 1, last = change.rbegin()->first + 1;
@@ -339,9 +352,7 @@ std::string EditorDocument::releaseHeld(Effector e) {
 }
 
 std::string EditorDocument::releaseAllHeld() {
-    if (!hasClip()) return "no clip is open";
-    if (drag_.active()) return "finish the drag before releasing";
-    finishRunningFalloff();
+    if (std::string blocked = releaseBlocked(); !blocked.empty()) return blocked;
     const FrameEdits change = releaseEverywhere(store_);
     if (change.empty()) return "nothing is held";
     return applyRelease(change, "release everything held (" + std::to_string(change.size()) + " frames)");
@@ -426,7 +437,7 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
     const AdmissionVerdict verdict =
-        learnedPose ? admitPose(*solvedOn, rec.after.pose, movedEffectors(r.constraints), r.reached,
+        learnedPose ? admitPose(*solvedOn, rec.after.pose, rec.after.moved, r.reached,
                                 anyBelowFloor(r.constraints), r.sigma2, r.lik, balanceOf(frame_, rec.after.pose))
                     : AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
@@ -492,8 +503,12 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
         return;
     }
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
-    // What earlier gestures placed on the spread's frames stays where the edited motion has it.
-    job.heldPlaced = heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), rec.effector);
+    // What earlier gestures placed on the spread's frames stays where the edited motion has it
+    // (after a whole-pose change: where its layer moved it, so that the span stays smooth).
+    // A whole-pose change keeps every placement on its records, the displaced effector's too (the
+    // solve does not hold that one: it follows its displaced path).
+    job.heldPlaced = heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
+    job.placesEffector = !wholePose;
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
 }
@@ -561,8 +576,9 @@ std::string EditorDocument::redoLabel() const {
 void EditorDocument::finishRunningFalloff() {
     // A new drag, pose change or path regeneration right after a drag waits for that drag's
     // falloff (tens of milliseconds) and applies it first, so the earlier drag is never left as a
-    // one-frame spike.
-    if (falloffStepLabel_.empty() || !regenerate_.running()) return;
+    // one-frame spike. A spread that has finished but not been collected yet is applied too:
+    // otherwise the new step would sit on top of the drag's and the spread would be dropped.
+    if (falloffStepLabel_.empty()) return;
     regenerate_.join();
     pollRegenerate();
 }

@@ -160,6 +160,7 @@ public:
     // drag here holds these where they are, and a later falloff holds them on its frames.
     std::vector<Effector> heldEffectors() const;
     bool held(Effector e) const;
+    bool anythingHeld() const;  // on any frame
     // Releases `e` on the current frame and the neighbouring frames the same gesture held it on
     // (one undo step); "" or why not.
     std::string releaseHeld(Effector e);
@@ -273,6 +274,7 @@ public:
 private:
     void updatePinPositions();
     void pushStep(EditStep step);
+    std::string releaseBlocked();  // "" when a release can run now (a finished spread applied first)
     std::string applyRelease(const FrameEdits& change, std::string label);
     // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
     // whole change over the span first (motion/pose_layer.h).

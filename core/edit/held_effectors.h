@@ -4,7 +4,9 @@
 // frame's EditRecord::moved) is held there by every later gesture: a drag on that frame holds it
 // where it is, and a later falloff or spread holds it on each frame that has it, where the motion
 // as edited so far has it. It stays held until the animator releases it (or drags it again, which
-// places it anew). These functions read and change that record; EditorDocument owns the steps.
+// places it anew), or until an edit replaces the frame's record without it: a path regeneration
+// (re-solved from the capture), a latent drag, reverting the frame. These functions read and
+// change that record; EditorDocument owns the steps.
 #include <vector>
 
 #include "edit/clip_edits.h"
@@ -17,7 +19,8 @@ bool isHeld(const ClipEdits& edits, int frame, Effector e);
 // The effectors held on `frame`, in effector order (none on a captured frame).
 std::vector<Effector> heldOn(const ClipEdits& edits, int frame);
 // The runs of frames within first..last on which an effector other than `except` is held, one
-// interval per effector and run (the form MotionEditJob::heldPlaced takes).
+// interval per effector and run (the form MotionEditJob::heldPlaced takes); Effector::kCount
+// excepts none.
 std::vector<ContactInterval> heldRuns(const ClipEdits& edits, int first, int last, Effector except);
 // `a` with the effectors of `b` it lacks, in effector order (what a new gesture's record holds:
 // the frame's earlier placements and the new one).

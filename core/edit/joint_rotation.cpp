@@ -16,10 +16,18 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
     return held;
 }
 
-std::vector<IkConstraint> rotationHolds(const EditorDocument& doc) {
-    std::vector<IkConstraint> out = doc.holdConstraints();
-    for (const IkConstraint& c : doc.contactHolds())
-        if (!doc.pinned(c.effector) && !doc.held(c.effector)) out.push_back(c);  // held once, by its pin or placement
+std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint) {
+    const Skeleton& sk = doc.clip().skeleton;
+    auto below = [&](Effector e) { return sk.isAncestorOrSelf(joint, sk.effectorSite(e).joint); };
+    std::vector<IkConstraint> out;
+    // A held hand or foot below the rotated joint moves with it: holding it would turn the rotation
+    // into a reach by the rest of the body. Pins and planted feet stay wherever they are.
+    for (const IkConstraint& c : doc.holdConstraints())
+        if (doc.pinned(c.effector) || !below(c.effector)) out.push_back(c);
+    for (const IkConstraint& c : doc.contactHolds()) {
+        const bool heldAlready = doc.pinned(c.effector) || (doc.held(c.effector) && !below(c.effector));
+        if (!heldAlready) out.push_back(c);  // each foot once
+    }
     return out;
 }
 
@@ -59,12 +67,7 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     ConstrainedIkRequest req;
     req.start = out.pose;
     req.startX = fitted.x.allFinite() && fitted.x.size() == fit.startX.size() ? fitted.x : fit.startX;
-    // A held hand or foot below the rotated joint moves with it: holding it would turn the rotation
-    // into a reach by the rest of the body. Pins and planted feet stay held wherever they are.
-    for (const IkConstraint& c : rotationHolds(doc))
-        if (doc.pinned(c.effector) || (doc.inContact(c.effector) && !doc.contactReleased(c.effector)) || !doc.held(c.effector) ||
-            !sk.isAncestorOrSelf(r.joint, sk.effectorSite(c.effector).joint))
-            req.constraints.push_back(c);
+    req.constraints = rotationHolds(doc, r.joint);
     req.held = heldDofsOf(sk, r.joint, r.anglesDeg);
     req.maxIterations = maxIterations;
     solver.solve(req, out.ik);

@@ -33,9 +33,10 @@ struct JointRotationResult {
 Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg);
 // The held DOFs of a rotation: one per axis the joint animates.
 std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg);
-// The document's pins, held effectors and feet in contact (not released) on the current frame, at
-// their current positions: what a rotation with the prior holds (less the held ones it moves).
-std::vector<IkConstraint> rotationHolds(const EditorDocument& doc);
+// What a rotation of `joint` with the prior holds on the current frame, at the current positions:
+// the document's pins, its held effectors except those below `joint` (they move with it), and its
+// feet in contact (not released), each effector once.
+std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint);
 
 // The rotated current pose (nothing changes in the document). With followPrior and no model,
 // the error says so.

@@ -12,7 +12,8 @@ FrameEdits regeneratedFrames(const MotionEditJob& job) {
     for (std::size_t i = 0; i < job.solvedFrames.size(); ++i) {
         const int t = job.solvedFrames[i];
         // The effector the gesture placed, and those it held there because earlier ones placed them.
-        std::vector<Effector> placed{job.effector};
+        std::vector<Effector> placed;
+        if (job.placesEffector) placed.push_back(job.effector);
         for (const ContactInterval& c : job.heldPlaced)
             if (t >= c.first && t <= c.last) placed.push_back(c.foot);
         out[t] = EditRecord{job.frames[t], job.results[i].x, withHeld({}, placed)};

@@ -120,8 +120,8 @@ void MotionEditJob::run() {
     }
     for (const ContactInterval& c : heldPlaced)
         if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
-    // Held effectors per inner frame: user pins on every frame, contacts on their frames; the
-    // edited effector is never held. Targets are the positions of that frame in the base motion.
+    // Held effectors per inner frame: user pins on every frame, contacts and earlier placements on
+    // their frames; the edited effector is never held. Targets are the positions of that frame in the base motion.
     std::vector<std::vector<IkConstraint>> holds(count);
     {
         FkState fk;

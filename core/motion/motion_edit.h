@@ -63,6 +63,10 @@ struct MotionEditJob {
     // frames: where the base motion has them (frames outside the span are ignored). The solved
     // frames they cover keep them placed (regeneratedFrames).
     std::vector<ContactInterval> heldPlaced;
+    // Whether the gesture places `effector` on the frames it solves (a drag, a path: their records
+    // hold it, edit/held_effectors.h). A whole-pose change's spread (paste, mirror, rotate) places
+    // nothing: `effector` only picks the path it displaces.
+    bool placesEffector = true;
     // An inner frame kept exactly at a given pose and latent point (a drag's accepted pose, which
     // the falloff around it must not re-solve); kSpan only. An empty x holds the frame's
     // captured latent point.

@@ -1,7 +1,8 @@
 // Held effectors through the editor with real mouse input (edit/held_effectors.h): a foot dragged
 // up on one frame stays there on its neighbours through a later hand drag's falloff; a hand pinned
-// with P does not jump during a drag of the other hand; the viewport rings what is held; Alt+click
-// on the handle releases it, as one undo step.
+// with P does not jump during a drag of the other hand, and the head an earlier drag placed stays;
+// the viewport rings what is held; Alt+click on the handle releases it, as one undo step that moves
+// nothing.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -65,13 +66,16 @@ TEST_CASE("gui held: a foot drag then a hand drag keeps the foot on the neighbou
 
     // Alt+click on the foot's handle lets go of it on this frame and its neighbours (one step).
     const int steps = doc.history().undoCount();
+    const Pose poseBefore = doc.poseAt(t);
     REQUIRE(h->play(ui::GuiScript::parse("0 keydown ALT\n1 hover rfoot\n3 down left\n5 up left\n7 keyup ALT\n")).empty());
     h->frame(2);
     CHECK_FALSE(doc.held(Effector::kRFoot));
     CHECK(doc.held(Effector::kRHand));
     CHECK(doc.history().undoCount() == steps + 1);
     CHECK(doc.undoLabel().rfind("release rfoot on frames", 0) == 0);
-    CHECK((heldGuiEffector(doc, t, Effector::kRFoot) - foot[1]).norm() < 0.5);  // a release moves nothing
+    const Pose poseAfter = doc.poseAt(t);  // a release moves nothing
+    CHECK(poseAfter.rootCm == poseBefore.rootCm);
+    for (std::size_t j = 0; j < poseAfter.anglesDeg.size(); ++j) CHECK(poseAfter.anglesDeg[j] == poseBefore.anglesDeg[j]);
     CHECK(h->app->viewport().lastScene().heldMarks.size() == 1);
     REQUIRE(doc.undo().empty());
     CHECK(doc.held(Effector::kRFoot));
@@ -87,6 +91,8 @@ TEST_CASE("gui held: a hand pinned with P after a head drag does not jump during
     h->frame(2);
     heldGuiDrag(*h, "head", 4, 4, 6);
     REQUIRE(doc.isEdited(t));
+    CHECK(doc.held(Effector::kHead));  // placed: the hand drag below holds it too
+    const Eigen::Vector3d head = heldGuiEffector(doc, t, Effector::kHead);
     REQUIRE(h->play(ui::GuiScript::parse("0 hover lhand\n2 key P\n")).empty());
     REQUIRE(doc.pinned(Effector::kLHand));
     heldGuiDrag(*h, "rhand", 6, 0, -6);
@@ -98,4 +104,5 @@ TEST_CASE("gui held: a hand pinned with P after a head drag does not jump during
     MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
     CHECK(edited <= captured + 0.5);
     CHECK(doc.isEdited(t + 5));  // the hand drag did spread
+    CHECK((heldGuiEffector(doc, t, Effector::kHead) - head).norm() < 0.01);
 }
