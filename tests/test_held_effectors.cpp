@@ -24,6 +24,13 @@ Eigen::Vector3d heldTestEffector(EditorDocument& doc, int frame, Effector e) {
     return effectorCm(doc.clip().skeleton, doc.currentPose(), e);
 }
 
+// The walk fixture on `doc`, adaptive updates off, the given falloff.
+void heldTestOpen(EditorDocument& doc, int falloff) {
+    doc.setModel(test::walkModel35(), true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(falloff);
+}
+
 ClipEdits heldTestEdits(std::map<int, std::vector<Effector>> moved) {
     ClipEdits edits;
     edits.reset(test::walkModel35()->model->clip, false);
@@ -67,10 +74,7 @@ TEST_CASE("editor: a second drag on the same frame holds the first drag's hand, 
     // (before, only the locality term kept it, approximately); the frame then holds both. (A foot
     // would not show this on a planted frame: the contact holds it anyway.)
     EditorDocument doc;
-    const auto version = test::walkModel35();
-    doc.setModel(version, true);
-    doc.setAdaptiveEnabled(false);
-    doc.setDragFalloff(0);
+    heldTestOpen(doc, 0);
     const int t = 140;
     const Skeleton& sk = doc.clip().skeleton;
     doc.setFrame(t);
@@ -115,10 +119,7 @@ TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand 
     // ±20: on every frame both spreads cover, the foot stays where the first spread put it (≤ 1 cm).
     // Releasing the foot on frame 150 releases the whole run the first spread held, as one undo step.
     EditorDocument doc;
-    const auto version = test::walkModel35();
-    doc.setModel(version, true);
-    doc.setAdaptiveEnabled(false);
-    doc.setDragFalloff(20);
+    heldTestOpen(doc, 20);
     const Skeleton& sk = doc.clip().skeleton;
     doc.setFrame(140);
     const std::string first =
@@ -189,10 +190,7 @@ TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand 
 
 TEST_CASE("rotate joint holds a placed hand unless the rotated joint is above it") {
     EditorDocument doc;
-    const auto version = test::walkModel35();
-    doc.setModel(version, true);
-    doc.setAdaptiveEnabled(false);
-    doc.setDragFalloff(0);
+    heldTestOpen(doc, 0);
     const int t = 140;
     doc.setFrame(t);
     heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, t, Effector::kRHand) + Eigen::Vector3d(0, 6, 4));
