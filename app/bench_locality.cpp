@@ -41,7 +41,7 @@ const LocalityClip kLocalityClips[] = {
 // Frames where both feet are planted, the captured centre of mass is over them and the right hand
 // hangs low enough for a 40 cm raise to be within reach (it ends no higher than the head), spread
 // over the clip (at most `count`, at least 22 frames from either end for the 43-frame path).
-std::vector<int> standingFrames(const Clip& clip, const ContactSet& contacts, int count) {
+std::vector<int> localityFrames(const Clip& clip, const ContactSet& contacts, int count) {
     std::vector<int> candidates;
     for (int t = 22; t + 22 < clip.frameCount(); ++t) {
         if (!contacts.at(Effector::kLFoot, t) || !contacts.at(Effector::kRFoot, t)) continue;
@@ -68,14 +68,14 @@ struct Collateral {
     double worst() const { return std::max({head, otherHand, lfoot, rfoot}); }
 };
 
-Collateral collateralOf(const Skeleton& sk, const Pose& before, const Pose& after) {
+Collateral localityCollateral(const Skeleton& sk, const Pose& before, const Pose& after) {
     auto moved = [&](Effector e) { return sk.hasEffector(e) ? (effectorCm(sk, after, e) - effectorCm(sk, before, e)).norm() : 0.0; };
     return {moved(Effector::kHead), moved(Effector::kLHand), moved(Effector::kLFoot), moved(Effector::kRFoot)};
 }
 
-nlohmann::json caseJson(const Skeleton& sk, const Pose& before, const Pose& after, double raiseCm, const Eigen::Vector3d& target,
+nlohmann::json localityCaseJson(const Skeleton& sk, const Pose& before, const Pose& after, double raiseCm, const Eigen::Vector3d& target,
                         const Eigen::MatrixXd& captured, const PoseLayout& layout) {
-    const Collateral c = collateralOf(sk, before, after);
+    const Collateral c = localityCollateral(sk, before, after);
     const std::optional<double> com = horizontalComShiftCm(sk, before, after);
     const double ratio = c.worst() / raiseCm;
     return {{"head_cm", c.head},
@@ -89,7 +89,7 @@ nlohmann::json caseJson(const Skeleton& sk, const Pose& before, const Pose& afte
             {"meets", ratio <= 0.15 && com && *com <= 2.0 && (effectorCm(sk, after, Effector::kRHand) - target).norm() <= 0.1}};
 }
 
-nlohmann::json runClip(const BenchContext& ctx, const LocalityClip& spec, const gp::TrainOptions& options, const char* label) {
+nlohmann::json runLocalityClip(const BenchContext& ctx, const LocalityClip& spec, const gp::TrainOptions& options, const char* label) {
     Clip clip = loadClip(ctx.mocapDir + "/" + spec.path);
     const int first = std::clamp(spec.first, 1, clip.frameCount()), last = std::clamp(spec.last, first, clip.frameCount());
     clip.frames = std::vector<Pose>(clip.frames.begin() + (first - 1), clip.frames.begin() + last);
@@ -105,7 +105,7 @@ nlohmann::json runClip(const BenchContext& ctx, const LocalityClip& spec, const 
     int meetsLearned = 0, meetsPath = 0, total = 0, learnedCloser = 0;
     double learnedNearestSum = 0.0, plainNearestSum = 0.0;
     ConstrainedIkSolver solver(version);
-    for (int t : standingFrames(trained, contacts, ctx.quick ? 1 : 3)) {
+    for (int t : localityFrames(trained, contacts, ctx.quick ? 1 : 3)) {
         const Pose& before = trained.frames[t];
         for (double raise : raises) {
             const Eigen::Vector3d target = effectorCm(sk, before, Effector::kRHand) + Eigen::Vector3d(0.0, raise, 0.0);
@@ -126,9 +126,9 @@ nlohmann::json runClip(const BenchContext& ctx, const LocalityClip& spec, const 
             path.run();
             nlohmann::json row = {{"frame", t + first},
                                   {"raise_cm", raise},
-                                  {"pose_learned", caseJson(sk, before, learned.pose, raise, target, captured, layout)},
-                                  {"pose_plain", caseJson(sk, before, plain.pose, raise, target, captured, layout)},
-                                  {"path_43_frames", caseJson(sk, before, path.frames[t], raise, target, captured, layout)}};
+                                  {"pose_learned", localityCaseJson(sk, before, learned.pose, raise, target, captured, layout)},
+                                  {"pose_plain", localityCaseJson(sk, before, plain.pose, raise, target, captured, layout)},
+                                  {"path_43_frames", localityCaseJson(sk, before, path.frames[t], raise, target, captured, layout)}};
             ++total;
             meetsLearned += row["pose_learned"]["meets"].get<bool>();
             meetsPath += row["path_43_frames"]["meets"].get<bool>();
@@ -160,8 +160,8 @@ const BenchRegistration localityBench("locality", "Hand raised 20/40 cm on stand
     nlohmann::json out = nlohmann::json::array();
     const std::size_t clips = ctx.quick ? 1 : std::size(kLocalityClips);
     for (std::size_t c = 0; c < clips; ++c) {
-        if (!ctx.quick) out.push_back(runClip(ctx, kLocalityClips[c], defaults, "defaults"));
-        out.push_back(runClip(ctx, kLocalityClips[c], small, ctx.quick ? "M=100 T=3" : "M=100 T=10"));
+        if (!ctx.quick) out.push_back(runLocalityClip(ctx, kLocalityClips[c], defaults, "defaults"));
+        out.push_back(runLocalityClip(ctx, kLocalityClips[c], small, ctx.quick ? "M=100 T=3" : "M=100 T=10"));
     }
     return nlohmann::json{{"clips", out}};
 });

@@ -185,6 +185,9 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
     EditorDocument doc;
     doc.setModel(test::walkModel35(), true);
     doc.setFrame(40);
+    // Nothing kept in place (the planted foot released): the mirror exactly, not re-solved.
+    doc.setContactReleased(Effector::kLFoot, true);
+    doc.setContactReleased(Effector::kRFoot, true);
     const Pose before = doc.currentPose();
     REQUIRE(mirrorCurrentPose(doc) == "");
     CHECK(doc.undoLabel() == "mirror pose on frame 41");
@@ -200,4 +203,36 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
     CHECK(test::samePose(doc.currentPose(), before));
     EditorDocument empty;
     CHECK(mirrorCurrentPose(empty).find("no clip") != std::string::npos);
+}
+
+TEST_CASE("mirror and paste keep a planted foot where it was, on the frame and on its neighbours") {
+    // On a walk frame with a planted foot, the mirrored (or pasted) pose is re-solved under the
+    // prior so that the foot stays, and the spread keeps it on the neighbouring frames where it
+    // was planted (it used to follow the pose layer: tens of cm off its footprint).
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setAdaptiveEnabled(false);
+    doc.setDragFalloff(20);
+    const Skeleton& sk = doc.clip().skeleton;
+    const int t = 40;
+    doc.setFrame(t);
+    std::vector<Effector> planted;
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        if (doc.inContact(foot)) planted.push_back(foot);
+    REQUIRE_FALSE(planted.empty());
+    auto footAt = [&](int s, Effector foot) { return effectorCm(sk, doc.poseAt(s), foot); };
+    for (const bool paste : {false, true}) {
+        INFO(std::string(paste ? "paste" : "mirror"));
+        doc.setFrame(t);
+        REQUIRE((paste ? doc.pastePose(doc.clip().frames[220]) : mirrorCurrentPose(doc)) == "");
+        doc.waitIdle();
+        CHECK(doc.pollRegenerate().find(": spread over frames") != std::string::npos);
+        double worst = 0.0;
+        for (Effector foot : planted)
+            for (int s = t - 20; s <= t + 20; ++s)
+                if (doc.contacts().at(foot, s)) worst = std::max(worst, (footAt(s, foot) - effectorCm(sk, doc.clip().frames[s], foot)).norm());
+        MESSAGE("planted foot, worst distance from its captured place over the spread: " << worst << " cm");
+        CHECK(worst <= 1.0);
+        REQUIRE(doc.undo().empty());
+    }
 }

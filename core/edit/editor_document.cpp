@@ -109,17 +109,49 @@ std::string EditorDocument::pastePose(const Pose& pose) {
     if (!hasClip()) return "no clip to paste onto";
     Pose pasted = pose;
     pasted.rootCm = currentPose().rootCm;
-    return setCurrentPose(pasted, "paste pose on frame " + std::to_string(frame_ + 1));
+    return setCurrentPose(pasted, "paste pose on frame " + std::to_string(frame_ + 1), true);
 }
 
-std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& stepLabel) {
+std::vector<IkConstraint> EditorDocument::keptInPlace() const {
+    std::vector<IkConstraint> out = holdConstraints();
+    for (const IkConstraint& c : contactHolds())
+        if (std::none_of(out.begin(), out.end(), [&](const IkConstraint& o) { return o.effector == c.effector; })) out.push_back(c);
+    return out;
+}
+
+std::string EditorDocument::setCurrentPose(const Pose& given, const std::string& stepLabel, bool keepInPlace) {
     if (!hasClip()) return "no clip to edit";
     finishRunningFalloff();  // a previous pose change's spread lands first, as before a drag
     if (regenerating()) return "wait for the regeneration to finish before editing a pose";
-    if (pose.anglesDeg.size() != currentPose().anglesDeg.size())
-        return "expected a pose of this clip's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) +
+    if (given.anglesDeg.size() != currentPose().anglesDeg.size())
+        return "expected a pose of this clip's skeleton, found one with " + std::to_string(given.anglesDeg.size()) +
                " bones (copied from another clip?)";
     cancelDrag();
+    Pose pose = given;
+    Eigen::VectorXd solvedX;
+    const gp::ModelVersionPtr solveOn = model();
+    const std::vector<IkConstraint> kept = keepInPlace ? keptInPlace() : std::vector<IkConstraint>{};
+    if (solveOn && !kept.empty() && solveOn->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
+        // The new pose as the animator gave it, re-solved under the prior so that every pin, placed
+        // effector and planted foot of this frame stays where it was (as the spread keeps them on
+        // the neighbours). If they cannot all be met, the pose is kept as given.
+        ConstrainedIkSolver solver(solveOn);
+        ConstrainedIkRequest request;
+        request.start = given;
+        const Eigen::VectorXd y = solveOn->model->keptPose(PoseLayout(clip().skeleton).extract(given));
+        request.startX = refitLatent(*solveOn, frame_, y);
+        request.constraints = kept;
+        request.maxIterations = 300;
+        request.locality = kDefaultLocality * bodyStiffness_;
+        request.floorCm = store_.contacts().floorCm;
+        if (request.startX.allFinite()) {
+            const ConstrainedIkResult r = solver.solve(request);
+            if (r.reached && allFinite(r.pose)) {
+                pose = r.pose;
+                solvedX = r.x;
+            }
+        }
+    }
     DragRecord change;  // spread over the neighbours as a drag's release is (startDragFalloff)
     change.frame = frame_;
     change.before = store_.editAt(frame_);
@@ -129,7 +161,9 @@ std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& 
     // places nothing: its spread marks no effector placed (MotionEditJob::placesEffector).
     if (change.before) change.after.moved = change.before->moved;
     // Its point on the model, so that the range legend, the latent map and the spread see the pose.
-    if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
+    if (solvedX.size() > 0 && solvedX.allFinite()) {
+        change.after.x = solvedX;
+    } else if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
         const Eigen::VectorXd y = v->model->keptPose(PoseLayout(clip().skeleton).extract(pose));
         const Eigen::VectorXd x = refitLatent(*v, frame_, y);
         if (x.allFinite()) change.after.x = x;
@@ -140,7 +174,7 @@ std::string EditorDocument::setCurrentPose(const Pose& pose, const std::string& 
     step.after[frame_] = change.after;
     applyFrames(step.after);
     pushStep(std::move(step));
-    startDragFalloff(change, stepLabel, true);
+    startDragFalloff(change, stepLabel, true, solvedX.size() > 0);
     return "";
 }
 
@@ -469,7 +503,7 @@ void EditorDocument::setBodyStiffness(double scale) {
     drag_.setLocality(kDefaultLocality * bodyStiffness_);
 }
 
-void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose) {
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose, bool holdInPlace) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
     const Clip& mc = v->model->clip;
@@ -487,6 +521,9 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
     base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
     if (wholePose) {
+        // Where the frame kept its pins, placements and planted feet, the neighbours keep them
+        // where they were before the layer moved them.
+        if (holdInPlace) base->holdFrames = base->frames;
         // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
         // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
         addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);

@@ -82,8 +82,14 @@ public:
     // the current frame's root position is kept so the character does not jump. "" or why not.
     std::string pastePose(const Pose& pose);
     // Replaces the current frame's pose (root included) as one undo step named `stepLabel`: the
-    // operations that compute a whole pose (mirror, rotate joint) go through here. "" or why not.
-    std::string setCurrentPose(const Pose& pose, const std::string& stepLabel);
+    // operations that compute a whole pose (paste, mirror, rotate joint) go through here, and the
+    // change spreads over the falloff. With `keepInPlace` (paste, mirror) and a model, the pose is
+    // first re-solved under the prior so that the frame's pins, placed effectors and planted feet
+    // stay where they were, and the spread keeps them there on the neighbours too (else the pose
+    // is kept as given, e.g. rotate joint, which solves its own holds). "" or why not.
+    std::string setCurrentPose(const Pose& pose, const std::string& stepLabel, bool keepInPlace = false);
+    // What such a re-solve keeps in place: holdConstraints() and the planted feet, each once.
+    std::vector<IkConstraint> keptInPlace() const;
     // Replaces every edit at once (loading a session); clears the undo history.
     void restoreEdits(std::map<int, EditRecord> edits);
     // The undo history of a saved session (after restoreEdits). Its steps restore frames only:
@@ -277,8 +283,9 @@ private:
     std::string releaseBlocked();  // "" when a release can run now (a finished spread applied first)
     std::string applyRelease(const FrameEdits& change, std::string label);
     // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
-    // whole change over the span first (motion/pose_layer.h).
-    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false);
+    // whole change over the span first (motion/pose_layer.h); `holdInPlace`: what is held on the
+    // neighbours is held where it was before the layer (EditBase::holdFrames).
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false, bool holdInPlace = false);
     void finishRunningFalloff();
     void dropRunningFalloff();
     void stopRegeneration();

@@ -11,7 +11,7 @@ std::string mirrorCurrentPose(EditorDocument& doc) {
     std::string err;
     const std::optional<PoseMirror> mirror = PoseMirror::make(doc.clip().skeleton, err);
     if (!mirror) return err;
-    return doc.setCurrentPose(mirror->mirror(doc.currentPose()), mirrorPoseLabel(doc.frame()));
+    return doc.setCurrentPose(mirror->mirror(doc.currentPose()), mirrorPoseLabel(doc.frame()), true);
 }
 
 }  // namespace mgp

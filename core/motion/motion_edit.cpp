@@ -121,7 +121,8 @@ void MotionEditJob::run() {
     for (const ContactInterval& c : heldPlaced)
         if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
     // Held effectors per inner frame: user pins on every frame, contacts and earlier placements on
-    // their frames; the edited effector is never held. Targets are the positions of that frame in the base motion.
+    // their frames; the edited effector is never held. Targets are the positions of that frame in
+    // the base motion (EditBase::holdFrames when given).
     std::vector<std::vector<IkConstraint>> holds(count);
     {
         FkState fk;
@@ -135,7 +136,8 @@ void MotionEditJob::run() {
             std::sort(hold.begin(), hold.end());
             hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
             if (hold.empty()) continue;
-            forwardKinematics(clip.skeleton, start[t], fk);
+            const bool holdElsewhere = base && !base->holdFrames.empty();
+            forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t], fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
         }
     }

@@ -94,6 +94,11 @@ std::string validateEditBase(const gp::GpModel& model, const EditBase& base) {
     for (const Eigen::VectorXd& x : base.x)
         if (x.size() != 0 && (x.size() != model.latentDim() || !x.allFinite()))
             return "expected base latent points of " + std::to_string(model.latentDim()) + " finite values";
+    if (!base.holdFrames.empty() && base.holdFrames.size() != base.frames.size())
+        return "expected a hold pose per frame, found " + std::to_string(base.holdFrames.size());
+    for (const Pose& p : base.holdFrames)
+        if (static_cast<int>(p.anglesDeg.size()) != model.clip.skeleton.jointCount() || !allFinite(p))
+            return "expected finite hold poses of the model's skeleton";
     return "";
 }
 

@@ -66,6 +66,9 @@ struct SpanTarget {
 struct EditBase {
     std::vector<Pose> frames;
     std::vector<Eigen::VectorXd> x;  // empty, or one per frame
+    // Where held contacts, pins and placements are held (empty: `frames`). A whole-pose change
+    // layers `frames` but holds what its frame kept in place where it was before the layer.
+    std::vector<Pose> holdFrames;
 };
 
 // "" or what is wrong with `base` for `model` (frame count, skeleton, latent size, NaN).
