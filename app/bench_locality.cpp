@@ -10,12 +10,12 @@
 // raise (the bar: ≤ 0.15), the centre of mass's horizontal shift (de Leva; the bar: ≤ 2 cm), the
 // hand's residual (a case meets the bars only with the target reached, ≤ 0.1 cm), and the nearest
 // captured frame of the clip in degrees RMS (learned ≤ plain).
+#include "bench_clip_range.h"
 #include "bench_registry.h"
 #include "eval/nearest_pose.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "ik/plain_ik.h"
-#include "io/clip_loader.h"
 #include "motion/captured_pose_request.h"
 #include "motion/motion_edit.h"
 #include "motion/support_polygon.h"
@@ -26,13 +26,8 @@
 namespace mgp::app {
 namespace {
 
-struct LocalityClip {
-    const char* path;  // under the mocap folder
-    int first, last;   // 1-based frames trained on (a long take is cut)
-};
-
 // None of these was used to tune the solvers (35_01, 10_02, 16_01, 09_01 were).
-const LocalityClip kLocalityClips[] = {
+const BenchClipRange kLocalityClips[] = {
     {"asf_amc/124_03.amc", 1, 620},   // basketball shot: stands, aims, shoots
     {"asf_amc/13_17.amc", 1, 1200},   // boxing: a guard stance
     {"bvh/131_01.bvh", 1, 994},       // start, walk, stop (BVH hierarchy)
@@ -55,12 +50,7 @@ std::vector<int> localityFrames(const Clip& clip, const ContactSet& contacts, in
         const std::optional<Eigen::Vector3d> com = centreOfMass(clip.skeleton, fk);
         if (support && com && support->outsideCm(Eigen::Vector2d(com->x(), com->z())) <= 0.0) candidates.push_back(t);
     }
-    std::vector<int> out;
-    for (int k = 0; k < count && !candidates.empty(); ++k) {
-        const int t = candidates[(2 * static_cast<std::size_t>(k) + 1) * candidates.size() / (2 * static_cast<std::size_t>(count))];
-        if (out.empty() || t - out.back() > 40) out.push_back(t);
-    }
-    return out;
+    return spreadPicks(candidates, count, 40);
 }
 
 struct Collateral {
@@ -89,10 +79,9 @@ nlohmann::json localityCaseJson(const Skeleton& sk, const Pose& before, const Po
             {"meets", ratio <= 0.15 && com && *com <= 2.0 && (effectorCm(sk, after, Effector::kRHand) - target).norm() <= 0.1}};
 }
 
-nlohmann::json runLocalityClip(const BenchContext& ctx, const LocalityClip& spec, const gp::TrainOptions& options, const char* label) {
-    Clip clip = loadClip(ctx.mocapDir + "/" + spec.path);
-    const int first = std::clamp(spec.first, 1, clip.frameCount()), last = std::clamp(spec.last, first, clip.frameCount());
-    clip.frames = std::vector<Pose>(clip.frames.begin() + (first - 1), clip.frames.begin() + last);
+nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& spec, const gp::TrainOptions& options, const char* label) {
+    int first = 1;
+    const Clip clip = loadClipRange(ctx.mocapDir, spec, first);
     const gp::ModelVersionPtr version = gp::ModelVersion::make(gp::trainOnClip(clip, options).model);
     const Clip& trained = version->model->clip;
     const Skeleton& sk = trained.skeleton;
@@ -140,7 +129,7 @@ nlohmann::json runLocalityClip(const BenchContext& ctx, const LocalityClip& spec
         }
     }
     return {{"clip", spec.path},
-            {"frames", std::to_string(first) + "-" + std::to_string(last)},
+            {"frames", std::to_string(first) + "-" + std::to_string(first + clip.frameCount() - 1)},
             {"model", label},
             {"cases", cases},
             {"pose_learned_meets", std::to_string(meetsLearned) + "/" + std::to_string(total)},

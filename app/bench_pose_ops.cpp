@@ -8,23 +8,18 @@
 // Reported per operation: the worst one-frame jump of a hand or foot over the span, in excess of
 // the capture's jump on the same frames (the bar: ≤ 1 cm), the worst distance of a planted foot
 // from its captured place (≤ 1 cm), and the span solve's wall time.
+#include "bench_clip_range.h"
 #include "bench_registry.h"
 #include "edit/editor_document.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "gp/trainer.h"
-#include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {
 namespace {
 
-struct PoseOpsClip {
-    const char* path;  // under the mocap folder
-    int first, last;   // 1-based frames trained on
-};
-
-const PoseOpsClip kPoseOpsClips[] = {
+const BenchClipRange kPoseOpsClips[] = {
     {"asf_amc/124_03.amc", 1, 620},
     {"asf_amc/13_17.amc", 1, 1200},
 };
@@ -34,12 +29,7 @@ std::vector<int> poseOpsFrames(const Clip& clip, const ContactSet& contacts, int
     std::vector<int> candidates;
     for (int t = margin; t + margin < clip.frameCount(); ++t)
         if (contacts.at(Effector::kLFoot, t) && contacts.at(Effector::kRFoot, t)) candidates.push_back(t);
-    std::vector<int> out;
-    for (int k = 0; k < count && !candidates.empty(); ++k) {
-        const int t = candidates[(2 * static_cast<std::size_t>(k) + 1) * candidates.size() / (2 * static_cast<std::size_t>(count))];
-        if (out.empty() || t - out.back() > 60) out.push_back(t);
-    }
-    return out;
+    return spreadPicks(candidates, count, 60);
 }
 
 // The operation's spread measured against the capture over t−r−1..t+r+1.
@@ -85,10 +75,9 @@ nlohmann::json runOp(EditorDocument& doc, const ContactSet& contacts, int t, con
     return out;
 }
 
-nlohmann::json runPoseOpsClip(const BenchContext& ctx, const PoseOpsClip& spec, const gp::TrainOptions& options) {
-    Clip clip = loadClip(ctx.mocapDir + "/" + spec.path);
-    const int first = std::clamp(spec.first, 1, clip.frameCount()), last = std::clamp(spec.last, first, clip.frameCount());
-    clip.frames = std::vector<Pose>(clip.frames.begin() + (first - 1), clip.frames.begin() + last);
+nlohmann::json runPoseOpsClip(const BenchContext& ctx, const BenchClipRange& spec, const gp::TrainOptions& options) {
+    int first = 1;
+    const Clip clip = loadClipRange(ctx.mocapDir, spec, first);
     const gp::ModelVersionPtr version = gp::ModelVersion::make(gp::trainOnClip(clip, options).model);
     EditorDocument doc;
     doc.setModel(version, true);
@@ -120,7 +109,7 @@ nlohmann::json runPoseOpsClip(const BenchContext& ctx, const PoseOpsClip& spec, 
         rows.push_back(std::move(row));
     }
     return {{"clip", spec.path},
-            {"frames", std::to_string(first) + "-" + std::to_string(last)},
+            {"frames", std::to_string(first) + "-" + std::to_string(first + clip.frameCount() - 1)},
             {"falloff_frames", radius},
             {"cases", rows},
             {"meets", std::to_string(met) + "/" + std::to_string(total)}};

@@ -128,27 +128,30 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
                " bones (copied from another clip?)";
     cancelDrag();
     Pose pose = given;
-    Eigen::VectorXd solvedX;
-    const gp::ModelVersionPtr solveOn = model();
-    const std::vector<IkConstraint> kept = keepInPlace ? keptInPlace() : std::vector<IkConstraint>{};
-    if (solveOn && !kept.empty() && solveOn->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
-        // The new pose as the animator gave it, re-solved under the prior so that every pin, placed
-        // effector and planted foot of this frame stays where it was (as the spread keeps them on
-        // the neighbours). If they cannot all be met, the pose is kept as given.
-        ConstrainedIkSolver solver(solveOn);
-        ConstrainedIkRequest request;
-        request.start = given;
-        const Eigen::VectorXd y = solveOn->model->keptPose(PoseLayout(clip().skeleton).extract(given));
-        request.startX = refitLatent(*solveOn, frame_, y);
-        request.constraints = kept;
-        request.maxIterations = 300;
-        request.locality = kDefaultLocality * bodyStiffness_;
-        request.floorCm = store_.contacts().floorCm;
-        if (request.startX.allFinite()) {
+    Eigen::VectorXd x;  // the pose's point on the model, so that the legend, the map and the spread see it
+    bool keptHolds = false;
+    const gp::ModelVersionPtr v = model();
+    if (v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
+        const PoseLayout layout(clip().skeleton);
+        x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(given)));
+        const std::vector<IkConstraint> kept = keepInPlace ? keptInPlace() : std::vector<IkConstraint>{};
+        if (!kept.empty() && x.allFinite()) {
+            // The new pose as the animator gave it, re-solved under the prior so that every pin,
+            // placed effector and planted foot of this frame stays where it was (as the spread keeps
+            // them on the neighbours). If they cannot all be met, the pose is kept as given.
+            ConstrainedIkSolver solver(v);
+            ConstrainedIkRequest request;
+            request.start = given;
+            request.startX = x;
+            request.constraints = kept;
+            request.maxIterations = 300;
+            request.locality = kDefaultLocality * bodyStiffness_;
+            request.floorCm = store_.contacts().floorCm;
             const ConstrainedIkResult r = solver.solve(request);
             if (r.reached && allFinite(r.pose)) {
                 pose = r.pose;
-                solvedX = r.x;
+                keptHolds = true;
+                x = r.x.allFinite() ? r.x : refitLatent(*v, frame_, v->model->keptPose(layout.extract(pose)));
             }
         }
     }
@@ -160,21 +163,14 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
     // What was placed here stays held (held where the new pose puts it). The pose change itself
     // places nothing: its spread marks no effector placed (MotionEditJob::placesEffector).
     if (change.before) change.after.moved = change.before->moved;
-    // Its point on the model, so that the range legend, the latent map and the spread see the pose.
-    if (solvedX.size() > 0 && solvedX.allFinite()) {
-        change.after.x = solvedX;
-    } else if (const gp::ModelVersionPtr v = model(); v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
-        const Eigen::VectorXd y = v->model->keptPose(PoseLayout(clip().skeleton).extract(pose));
-        const Eigen::VectorXd x = refitLatent(*v, frame_, y);
-        if (x.allFinite()) change.after.x = x;
-    }
+    if (x.size() > 0 && x.allFinite()) change.after.x = x;
     EditStep step;
     step.label = stepLabel;
     step.before[frame_] = change.before;
     step.after[frame_] = change.after;
     applyFrames(step.after);
     pushStep(std::move(step));
-    startDragFalloff(change, stepLabel, true, solvedX.size() > 0);
+    startDragFalloff(change, stepLabel, true, keptHolds);
     return "";
 }
 
@@ -344,11 +340,7 @@ std::vector<Effector> EditorDocument::heldEffectors() const { return hasClip() ?
 
 bool EditorDocument::held(Effector e) const { return hasClip() && isHeld(store_, frame_, e); }
 
-bool EditorDocument::anythingHeld() const {
-    for (const auto& [t, record] : store_.edits())
-        if (!record.moved.empty()) return true;
-    return false;
-}
+bool EditorDocument::anythingHeld() const { return anyHeld(store_); }
 
 std::vector<IkConstraint> EditorDocument::holdConstraints() const {
     std::vector<IkConstraint> out = pinConstraints();

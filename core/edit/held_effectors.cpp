@@ -23,6 +23,10 @@ bool isHeld(const ClipEdits& edits, int frame, Effector e) {
     return r && contains(r->moved, e);
 }
 
+bool anyHeld(const ClipEdits& edits) {
+    return std::any_of(edits.edits().begin(), edits.edits().end(), [](const auto& entry) { return !entry.second.moved.empty(); });
+}
+
 std::vector<Effector> heldOn(const ClipEdits& edits, int frame) {
     const EditRecord* r = recordAt(edits, frame);
     return r ? withHeld({}, r->moved) : std::vector<Effector>{};

@@ -16,6 +16,8 @@ namespace mgp {
 
 // Whether `e` is held on `frame` (an edit there placed it and it was not released).
 bool isHeld(const ClipEdits& edits, int frame, Effector e);
+// Whether any frame holds anything.
+bool anyHeld(const ClipEdits& edits);
 // The effectors held on `frame`, in effector order (none on a captured frame).
 std::vector<Effector> heldOn(const ClipEdits& edits, int frame);
 // The runs of frames within first..last on which an effector other than `except` is held, one

@@ -18,15 +18,15 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
 
 std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint) {
     const Skeleton& sk = doc.clip().skeleton;
-    auto below = [&](Effector e) { return sk.isAncestorOrSelf(joint, sk.effectorSite(e).joint); };
     std::vector<IkConstraint> out;
-    // A held hand or foot below the rotated joint moves with it: holding it would turn the rotation
-    // into a reach by the rest of the body. Pins and planted feet stay wherever they are.
-    for (const IkConstraint& c : doc.holdConstraints())
-        if (doc.pinned(c.effector) || !below(c.effector)) out.push_back(c);
-    for (const IkConstraint& c : doc.contactHolds()) {
-        const bool heldAlready = doc.pinned(c.effector) || (doc.held(c.effector) && !below(c.effector));
-        if (!heldAlready) out.push_back(c);  // each foot once
+    // What a paste keeps in place, less a held hand or foot below the rotated joint: that one moves
+    // with it (holding it would turn the rotation into a reach by the rest of the body). Pins and
+    // planted feet stay wherever they are.
+    for (const IkConstraint& c : doc.keptInPlace()) {
+        const Effector e = c.effector;
+        const bool planted = doc.inContact(e) && !doc.contactReleased(e);
+        const bool movesWithJoint = doc.held(e) && !doc.pinned(e) && !planted && sk.isAncestorOrSelf(joint, sk.effectorSite(e).joint);
+        if (!movesWithJoint) out.push_back(c);
     }
     return out;
 }
