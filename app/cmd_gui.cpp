@@ -97,9 +97,12 @@ int runGui(const GuiArgs& args) {
             if (!scripted && !app.animating() && i > 2 && --settle <= 0) {
                 window->waitEvents(0.25);
                 settle = 2;
+            } else if (!scripted && !app.frameDrawn()) {
+                window->waitEvents(1.0 / 60.0);  // no swap paced the last frame: the display rate does
             } else {
                 window->pollEvents();
             }
+            if (window->takeDamage()) app.requestRedraw();
             if (window->shouldClose()) {
                 window->cancelClose();  // the app asks about unsaved changes first
                 app.requestQuit();
@@ -115,12 +118,15 @@ int runGui(const GuiArgs& args) {
         }
         std::vector<std::string> shots;
         if (player) player->apply(i, *input, app, shots);
+        const bool lastFrame = total > 0 && i == total - 1;
+        // A window's back buffer is undefined after a swap: a screenshot needs this frame drawn.
+        if (window && (!shots.empty() || (lastFrame && !args.screenshot.empty()))) app.requestRedraw();
         app.frame(*input, dt, w, h);
         for (const std::string& s : shots) render::writePng(app.capture(w, h), s);
-        if (!args.screenshot.empty() && scripted && i == total - 1) render::writePng(app.capture(w, h), args.screenshot);
+        if (!args.screenshot.empty() && lastFrame) render::writePng(app.capture(w, h), args.screenshot);
         if (window) {
             window->setTitle(app.title());
-            window->present();
+            if (app.frameDrawn()) window->present();  // else the front buffer already shows this frame
         }
         if (app.quitRequested()) break;
     }

@@ -14,6 +14,7 @@
 #include "edit/mirror_edit.h"
 #include "editor_actions.h"
 #include "editor_session.h"
+#include "frame_signature.h"
 #include "help_window.h"
 #include "imgui_setup.h"
 #include "menu_bar.h"
@@ -421,6 +422,14 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     drawMessagesWindow(showMessages_, state_.messages, state_.uiSeconds);
     ImGui::Render();
 
+    // The viewport's scene is blitted and the latent map's textures are drawn by reference: their
+    // versions belong to the signature as much as ImGui's vertices do.
+    const std::uint64_t signature =
+        frameSignature(*ImGui::GetDrawData(), {viewport_->sceneDraws(), latent_.imageVersion(), width, height});
+    frameDrawn_ = redrawRequested_ || signature != lastFrameSignature_;
+    if (!frameDrawn_) return;
+    redrawRequested_ = false;
+    lastFrameSignature_ = signature;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);

@@ -8,6 +8,7 @@
 // readout on the right; timeline and status line at the bottom (editor_layout.h). What the
 // menus, shortcuts and scripts can do is the action table (editor_actions.h); the modal
 // questions are editor_prompts.h; the script player is script_player.h.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -121,8 +122,14 @@ public:
     bool offeringAutosave() const { return prompts_.offeringAutosave(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
-    // One UI frame of width×height pixels; dt in seconds.
+    // One UI frame of width×height pixels; dt in seconds. A frame that would draw exactly the
+    // pixels of the previous one (the same frame signature, ui/frame_signature.h) leaves framebuffer
+    // 0 as it is and reports frameDrawn() false, unless requestRedraw() was called since.
     void frame(InputState& input, double dt, int width, int height);
+    bool frameDrawn() const { return frameDrawn_; }
+    // The next frame draws even when it matches the last one: the framebuffer's contents were lost
+    // (a window was exposed, buffers swapped before a screenshot) or overwritten by someone else.
+    void requestRedraw() { redrawRequested_ = true; }
     // Reads the whole window (call right after frame()).
     render::Image capture(int width, int height) const;
     // Blocks until training, adaptive updates and the latent image are finished (scripts, tests).
@@ -173,6 +180,9 @@ private:
 
     EditorOptions options_;
     EditorState state_;
+    std::uint64_t lastFrameSignature_ = 0;
+    bool frameDrawn_ = false;
+    bool redrawRequested_ = true;
     std::unique_ptr<ViewportPanel> viewport_;
     InputReplay replay_;  // presses and releases, at most one change per button or key per frame
     LatentMapPanel latent_;

@@ -5,7 +5,8 @@
 namespace mgp::ui {
 
 namespace {
-InputState& inputOf(GLFWwindow* w) { return *static_cast<InputState*>(glfwGetWindowUserPointer(w)); }
+GlfwWindow& windowOf(GLFWwindow* w) { return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w)); }
+InputState& inputOf(GLFWwindow* w) { return windowOf(w).input(); }
 }  // namespace
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title) : title_(title) {
@@ -22,7 +23,8 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) : title_
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
-    glfwSetWindowUserPointer(window_, &input_);
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { windowOf(w).damaged_ = true; });
     glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
         inputOf(w).mouseX = float(x);
         inputOf(w).mouseY = float(y);
@@ -68,6 +70,12 @@ int GlfwWindow::height() const {
 }
 
 void GlfwWindow::present() { glfwSwapBuffers(window_); }
+
+bool GlfwWindow::takeDamage() {
+    const bool d = damaged_;
+    damaged_ = false;
+    return d;
+}
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
 void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }

@@ -33,10 +33,14 @@ public:
     // The monitor's content scale (1 on a 96 dpi display, 2 at 200 %), for HiDPI sizes.
     float contentScale() const;
     InputState& input() { return input_; }
+    // Whether the window's contents were lost since the last call (exposed, resized): the next
+    // frame must be drawn even if it shows what the last one did.
+    bool takeDamage();
 
 private:
     GLFWwindow* window_ = nullptr;
     InputState input_;
+    bool damaged_ = true;
     std::string title_;
 };
 

@@ -118,6 +118,7 @@ void LatentMapPanel::draw(EditorState& s) {
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, fresh.size, fresh.size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      fresh.rgba.data());
+        ++imageUploads_;
         fresh.rgba.clear();
         fresh.rgba.shrink_to_fit();
         shown_ = std::move(fresh);

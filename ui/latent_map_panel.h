@@ -30,6 +30,9 @@ public:
     // How many times the static layer (σ² image, time path, dots, rings) has been drawn: once per
     // model version, σ² image, map size or time-path toggle, never once per frame.
     int layerRenders() const { return layerRenders_; }
+    // Changes with every new picture in the panel's textures (an upload of the σ² image, a
+    // redrawn static layer): the frame signature's part for what the draw data shows by reference.
+    long imageVersion() const { return imageUploads_ + layerRenders_; }
     // Window pixel of training row `row`'s dot as last drawn (false: the map has not drawn the
     // state's current model).
     bool dotPosition(const EditorState& state, int row, float& x, float& y) const;
@@ -38,6 +41,7 @@ private:
     LatentImageWorker worker_;
     LatentImage shown_;  // metadata of the uploaded image (pixels dropped after upload)
     unsigned texture_ = 0;
+    long imageUploads_ = 0;
     const void* requestedModel_ = nullptr;
     int requestedVersion_ = -1;
     bool dragging_ = false;
