@@ -213,3 +213,49 @@ TEST_CASE("editor: a hand pinned after a head drag does not jump during a drag o
     MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
     CHECK(edited <= captured + 0.5);
 }
+
+TEST_CASE("a whole-pose spread that holds feet at their old place guides a foot from it where its contact ends") {
+    // The base motion is layered (the whole body shifted up to 20 cm sideways around frame 110), the
+    // holds are at the old place (EditBase::holdFrames, as after a paste). Where a contact ends (or
+    // starts) inside the span, the foot must not jump from its old place to the layered one in one
+    // frame: it is guided there along a smoothstep of up to 20 frames (at most 1.5 × 20 cm / 20 per
+    // frame above the capture's step).
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int t = 109, radius = 30;
+    auto base = std::make_shared<EditBase>();
+    base->frames = clip.frames;
+    base->x.assign(clip.frames.size(), Eigen::VectorXd());
+    base->holdFrames = clip.frames;
+    constexpr double kShiftCm = 20.0;
+    for (int s = t - radius; s <= t + radius; ++s) {
+        const double w = 0.5 * (1.0 + std::cos(M_PI * double(s - t) / double(radius + 1)));
+        base->frames[static_cast<std::size_t>(s)].rootCm.x() += w * kShiftCm;
+    }
+    std::string problem;
+    MotionEditJob job = dragFalloffJob(version, Effector::kHead, t, base->frames[t], Eigen::VectorXd(), radius, {}, &problem, base);
+    REQUIRE(problem.empty());
+    const ContactSet contacts = detectFootContacts(clip);
+    job.contacts = std::make_shared<const ContactSet>(contacts);
+    job.run();
+    const Skeleton& sk = clip.skeleton;
+    int edges = 0;
+    for (const FootContact& c : contacts.contacts) {
+        for (const int edge : {c.first, c.last}) {
+            if (edge <= t - radius || edge >= t + radius) continue;  // not inside the span
+            const int next = edge == c.last ? edge + 1 : edge - 1;     // the first frame off the contact
+            if (next == t) continue;
+            ++edges;
+            CAPTURE(edge);
+            CAPTURE(next);
+            const double edited = (effectorCm(sk, job.frames[next], c.foot) - effectorCm(sk, job.frames[edge], c.foot)).norm();
+            const double captured = (effectorCm(sk, clip.frames[next], c.foot) - effectorCm(sk, clip.frames[edge], c.foot)).norm();
+            MESSAGE(std::string(effectorName(c.foot)) << " contact edge at frame " << edge + 1 << ": step " << edited << " cm (captured "
+                                         << captured << " cm)");
+            CHECK(edited - captured <= 1.5 * kShiftCm / 20.0 + 0.5);
+            // On the contact itself the foot is at its old place.
+            CHECK((effectorCm(sk, job.frames[edge], c.foot) - effectorCm(sk, clip.frames[edge], c.foot)).norm() <= 0.5);
+        }
+    }
+    REQUIRE(edges > 0);  // the case does exercise a contact that ends inside the span
+}

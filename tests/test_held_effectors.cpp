@@ -1,6 +1,8 @@
 // Held effectors (edit/held_effectors.h): what the animator placed on a frame stays there through
 // later drags on that frame and through later falloffs on the frames that hold it, until released;
 // the record of what is held follows undo and redo.
+#include <algorithm>
+
 #include "edit/editor_document.h"
 #include "edit/held_effectors.h"
 #include "edit/joint_rotation.h"
@@ -208,5 +210,55 @@ TEST_CASE("rotate joint holds a placed hand unless the rotated joint is above it
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
         const std::vector<IkConstraint> holds = rotationHolds(doc, sk.findBone("rradius"));
         CHECK(std::count_if(holds.begin(), holds.end(), [&](const IkConstraint& c) { return c.effector == foot; }) <= 1);
+    }
+}
+
+TEST_CASE("hands placed on a frame move with the chest rotated there with the prior, and their neighbours follow them") {
+    // The rotation solves with the frame's holds except the hands below the chest (rotationMovers):
+    // on the rotated frame both go where the chest takes them. The spread re-solves one effector's
+    // displaced path (the most moved hand) and holds the frame's other holds where they were, except
+    // the other hand, held where the rotation's layer carries it (EditBase::followLayer): the
+    // neighbours do not hold it back at its old place.
+    EditorDocument doc;
+    heldTestOpen(doc, 20);
+    const int t = 140;
+    doc.setFrame(t);
+    for (Effector hand : {Effector::kRHand, Effector::kLHand}) {
+        doc.setFrame(t);
+        heldTestDrag(doc, hand, heldTestEffector(doc, t, hand) + Eigen::Vector3d(0, 6, 4));
+    }
+    REQUIRE(doc.held(Effector::kRHand));
+    REQUIRE(doc.held(Effector::kLHand));
+    const Skeleton& sk = doc.clip().skeleton;
+    const int chest = sk.findBone("thorax");
+    REQUIRE(chest >= 0);
+    std::vector<Effector> movers = rotationMovers(doc, chest);
+    std::sort(movers.begin(), movers.end());
+    CHECK(movers == std::vector<Effector>{Effector::kLHand, Effector::kRHand});
+    CHECK(rotationMovers(doc, sk.findBone("lfemur")).empty());
+    Eigen::Vector3d placed[2];
+    for (int h = 0; h < 2; ++h) placed[h] = heldTestEffector(doc, t, h == 0 ? Effector::kLHand : Effector::kRHand);
+    doc.setFrame(t);
+    JointRotation r;
+    r.joint = chest;
+    r.anglesDeg = doc.currentPose().anglesDeg[chest] + Eigen::Vector3d(0, 25, 0);
+    r.followPrior = true;
+    REQUIRE(applyJointRotation(doc, r) == "");
+    doc.waitIdle();
+    CHECK(doc.pollRegenerate().find(": spread over frames") != std::string::npos);
+    for (int h = 0; h < 2; ++h) {
+        const Effector hand = h == 0 ? Effector::kLHand : Effector::kRHand;
+        INFO(std::string(effectorName(hand)));
+        const Eigen::Vector3d rotated = heldTestEffector(doc, t, hand);
+        const double moved = (rotated - placed[h]).norm();
+        REQUIRE(moved > 5.0);
+        // Its one-frame steps next to the rotated frame stay a fraction of that move (the spread's
+        // blend, not a jump back to the old place).
+        const double before = (rotated - heldTestEffector(doc, t - 1, hand)).norm();
+        const double after = (heldTestEffector(doc, t + 1, hand) - rotated).norm();
+        MESSAGE(std::string(effectorName(hand)) << " moved " << moved << " cm; steps next to the rotated frame " << before << " and " << after << " cm");
+        CHECK(before < 0.25 * moved);
+        CHECK(after < 0.25 * moved);
+        CHECK(doc.held(hand));  // still placed, where the rotation put it
     }
 }

@@ -205,10 +205,11 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
     CHECK(mirrorCurrentPose(empty).find("no clip") != std::string::npos);
 }
 
-TEST_CASE("mirror and paste keep a planted foot where it was, on the frame and on its neighbours") {
+TEST_CASE("mirror, paste and a rotation with the prior keep a planted foot where it was, on the frame and on its neighbours") {
     // On a walk frame with a planted foot, the mirrored (or pasted) pose is re-solved under the
-    // prior so that the foot stays, and the spread keeps it on the neighbouring frames where it
-    // was planted (it used to follow the pose layer: tens of cm off its footprint).
+    // prior so that the foot stays; a rotation with the prior solves with it held. The spread keeps
+    // it on the neighbouring frames where it was planted (it used to follow the pose layer: tens of
+    // cm off its footprint; for the rotation until the spread held its holds too).
     EditorDocument doc;
     doc.setModel(test::walkModel35(), true);
     doc.setAdaptiveEnabled(false);
@@ -221,16 +222,32 @@ TEST_CASE("mirror and paste keep a planted foot where it was, on the frame and o
         if (doc.inContact(foot)) planted.push_back(foot);
     REQUIRE_FALSE(planted.empty());
     auto footAt = [&](int s, Effector foot) { return effectorCm(sk, doc.poseAt(s), foot); };
-    for (const bool paste : {false, true}) {
-        INFO(std::string(paste ? "paste" : "mirror"));
+    auto capturedAt = [&](int s, Effector foot) { return effectorCm(sk, doc.clip().frames[s], foot); };
+    // The rotation bends the knee of a planted leg: the solve keeps the foot and moves the body.
+    const int knee = sk.findBone(planted.front() == Effector::kLFoot ? "ltibia" : "rtibia");
+    REQUIRE(knee >= 0);
+    for (const char* op : {"mirror", "paste", "rotate with the prior"}) {
+        INFO(std::string(op));
         doc.setFrame(t);
-        REQUIRE((paste ? doc.pastePose(doc.clip().frames[220]) : mirrorCurrentPose(doc)) == "");
+        std::string err;
+        if (std::string(op) == "mirror") {
+            err = mirrorCurrentPose(doc);
+        } else if (std::string(op) == "paste") {
+            err = doc.pastePose(doc.clip().frames[220]);
+        } else {
+            JointRotation r;
+            r.joint = knee;
+            r.anglesDeg = doc.currentPose().anglesDeg[knee] + Eigen::Vector3d(30, 0, 0);
+            r.followPrior = true;
+            err = applyJointRotation(doc, r);
+        }
+        REQUIRE(err == "");
         doc.waitIdle();
         CHECK(doc.pollRegenerate().find(": spread over frames") != std::string::npos);
         double worst = 0.0;
         for (Effector foot : planted)
             for (int s = t - 20; s <= t + 20; ++s)
-                if (doc.contacts().at(foot, s)) worst = std::max(worst, (footAt(s, foot) - effectorCm(sk, doc.clip().frames[s], foot)).norm());
+                if (s != t && doc.contacts().at(foot, s)) worst = std::max(worst, (footAt(s, foot) - capturedAt(s, foot)).norm());
         MESSAGE("planted foot, worst distance from its captured place over the spread: " << worst << " cm");
         CHECK(worst <= 1.0);
         REQUIRE(doc.undo().empty());

@@ -109,7 +109,7 @@ std::string EditorDocument::pastePose(const Pose& pose) {
     if (!hasClip()) return "no clip to paste onto";
     Pose pasted = pose;
     pasted.rootCm = currentPose().rootCm;
-    return setCurrentPose(pasted, "paste pose on frame " + std::to_string(frame_ + 1), true);
+    return setCurrentPose(pasted, "paste pose on frame " + std::to_string(frame_ + 1), PoseHolds::kResolve);
 }
 
 std::vector<IkConstraint> EditorDocument::keptInPlace() const {
@@ -119,7 +119,8 @@ std::vector<IkConstraint> EditorDocument::keptInPlace() const {
     return out;
 }
 
-std::string EditorDocument::setCurrentPose(const Pose& given, const std::string& stepLabel, bool keepInPlace) {
+std::string EditorDocument::setCurrentPose(const Pose& given, const std::string& stepLabel, PoseHolds holds,
+                                          const std::vector<Effector>& followLayer) {
     if (!hasClip()) return "no clip to edit";
     finishRunningFalloff();  // a previous pose change's spread lands first, as before a drag
     if (regenerating()) return "wait for the regeneration to finish before editing a pose";
@@ -129,12 +130,12 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
     cancelDrag();
     Pose pose = given;
     Eigen::VectorXd x;  // the pose's point on the model, so that the legend, the map and the spread see it
-    bool keptHolds = false;
+    bool keptHolds = holds == PoseHolds::kSolved && !keptInPlace().empty();
     const gp::ModelVersionPtr v = model();
     if (v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
         const PoseLayout layout(clip().skeleton);
         x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(given)));
-        const std::vector<IkConstraint> kept = keepInPlace ? keptInPlace() : std::vector<IkConstraint>{};
+        const std::vector<IkConstraint> kept = holds == PoseHolds::kResolve ? keptInPlace() : std::vector<IkConstraint>{};
         if (!kept.empty() && x.allFinite()) {
             // The new pose as the animator gave it, re-solved under the prior so that every pin,
             // placed effector and planted foot of this frame stays where it was (as the spread keeps
@@ -170,7 +171,7 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
     step.after[frame_] = change.after;
     applyFrames(step.after);
     pushStep(std::move(step));
-    startDragFalloff(change, stepLabel, true, keptHolds);
+    startDragFalloff(change, stepLabel, true, keptHolds, followLayer);
     return "";
 }
 
@@ -495,7 +496,8 @@ void EditorDocument::setBodyStiffness(double scale) {
     drag_.setLocality(kDefaultLocality * bodyStiffness_);
 }
 
-void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose, bool holdInPlace) {
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose, bool holdInPlace,
+                                      const std::vector<Effector>& followLayer) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
     const Clip& mc = v->model->clip;
@@ -515,7 +517,10 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     if (wholePose) {
         // Where the frame kept its pins, placements and planted feet, the neighbours keep them
         // where they were before the layer moved them.
-        if (holdInPlace) base->holdFrames = base->frames;
+        if (holdInPlace) {
+            base->holdFrames = base->frames;
+            base->followLayer = followLayer;
+        }
         // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
         // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
         addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);

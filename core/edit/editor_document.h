@@ -81,13 +81,23 @@ public:
     // Pastes `pose` (copied from any frame of this clip) onto the current frame as one undo step;
     // the current frame's root position is kept so the character does not jump. "" or why not.
     std::string pastePose(const Pose& pose);
+    // What a whole-pose change does with what its frame keeps in place (keptInPlace()).
+    enum class PoseHolds {
+        kNone,     // the pose as given; the spread holds what the layered motion has
+        kResolve,  // paste, mirror: re-solved under the prior so that the holds stay, and the spread
+                   // holds them where they were before the change
+        kSolved,   // rotate with the prior: the pose already keeps its holds (it was solved with
+                   // them); the spread holds them where they were, except `followLayer`
+    };
     // Replaces the current frame's pose (root included) as one undo step named `stepLabel`: the
     // operations that compute a whole pose (paste, mirror, rotate joint) go through here, and the
-    // change spreads over the falloff. With `keepInPlace` (paste, mirror) and a model, the pose is
-    // first re-solved under the prior so that the frame's pins, placed effectors and planted feet
-    // stay where they were, and the spread keeps them there on the neighbours too (else the pose
-    // is kept as given, e.g. rotate joint, which solves its own holds). "" or why not.
-    std::string setCurrentPose(const Pose& pose, const std::string& stepLabel, bool keepInPlace = false);
+    // change spreads over the falloff. With kResolve and a model, the pose is first re-solved under
+    // the prior so that the frame's pins, placed effectors and planted feet stay where they were
+    // (if they cannot all be met the pose is kept as given). `followLayer` (kSolved): held
+    // effectors the change moved on purpose, held on the neighbours where the change's layer
+    // carries them. "" or why not.
+    std::string setCurrentPose(const Pose& pose, const std::string& stepLabel, PoseHolds holds = PoseHolds::kNone,
+                               const std::vector<Effector>& followLayer = {});
     // What such a re-solve keeps in place: holdConstraints() and the planted feet, each once.
     std::vector<IkConstraint> keptInPlace() const;
     // Replaces every edit at once (loading a session); clears the undo history.
@@ -284,8 +294,10 @@ private:
     std::string applyRelease(const FrameEdits& change, std::string label);
     // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
     // whole change over the span first (motion/pose_layer.h); `holdInPlace`: what is held on the
-    // neighbours is held where it was before the layer (EditBase::holdFrames).
-    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false, bool holdInPlace = false);
+    // neighbours is held where it was before the layer (EditBase::holdFrames), except
+    // `followLayer` (EditBase::followLayer).
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false, bool holdInPlace = false,
+                          const std::vector<Effector>& followLayer = {});
     void finishRunningFalloff();
     void dropRunningFalloff();
     void stopRegeneration();

@@ -16,18 +16,29 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
     return held;
 }
 
-std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint) {
+namespace {
+
+// A held hand or foot below the rotated joint moves with it (holding it would turn the rotation
+// into a reach by the rest of the body). Pins and planted feet stay wherever they are.
+bool movesWithJoint(const EditorDocument& doc, int joint, Effector e) {
     const Skeleton& sk = doc.clip().skeleton;
+    const bool planted = doc.inContact(e) && !doc.contactReleased(e);
+    return doc.held(e) && !doc.pinned(e) && !planted && sk.isAncestorOrSelf(joint, sk.effectorSite(e).joint);
+}
+
+}  // namespace
+
+std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint) {
     std::vector<IkConstraint> out;
-    // What a paste keeps in place, less a held hand or foot below the rotated joint: that one moves
-    // with it (holding it would turn the rotation into a reach by the rest of the body). Pins and
-    // planted feet stay wherever they are.
-    for (const IkConstraint& c : doc.keptInPlace()) {
-        const Effector e = c.effector;
-        const bool planted = doc.inContact(e) && !doc.contactReleased(e);
-        const bool movesWithJoint = doc.held(e) && !doc.pinned(e) && !planted && sk.isAncestorOrSelf(joint, sk.effectorSite(e).joint);
-        if (!movesWithJoint) out.push_back(c);
-    }
+    for (const IkConstraint& c : doc.keptInPlace())
+        if (!movesWithJoint(doc, joint, c.effector)) out.push_back(c);
+    return out;
+}
+
+std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint) {
+    std::vector<Effector> out;
+    for (const IkConstraint& c : doc.keptInPlace())
+        if (movesWithJoint(doc, joint, c.effector)) out.push_back(c.effector);
     return out;
 }
 
@@ -87,7 +98,12 @@ std::string jointRotationLabel(const std::string& jointName, int frame) {
 std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, JointRotationResult* result) {
     JointRotationResult solved = solveJointRotation(doc, r);
     if (!solved.error.empty()) return solved.error;
-    const std::string err = doc.setCurrentPose(solved.pose, jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame()));
+    // With the prior, the solve kept the frame's holds: the spread keeps them on the neighbours,
+    // and lets what moved with the joint follow the rotation there too.
+    const std::string label = jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame());
+    const std::string err =
+        solved.learned ? doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved, rotationMovers(doc, r.joint))
+                       : doc.setCurrentPose(solved.pose, label);
     if (result) *result = std::move(solved);
     return err;
 }

@@ -37,6 +37,8 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
 // the document's pins, its held effectors except those below `joint` (they move with it), and its
 // feet in contact (not released), each effector once.
 std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint);
+// The rest of what the frame keeps in place: the held effectors below `joint`, which move with it.
+std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint);
 
 // The rotated current pose (nothing changes in the document). With followPrior and no model,
 // the error says so.

@@ -11,7 +11,8 @@ std::string mirrorCurrentPose(EditorDocument& doc) {
     std::string err;
     const std::optional<PoseMirror> mirror = PoseMirror::make(doc.clip().skeleton, err);
     if (!mirror) return err;
-    return doc.setCurrentPose(mirror->mirror(doc.currentPose()), mirrorPoseLabel(doc.frame()), true);
+    return doc.setCurrentPose(mirror->mirror(doc.currentPose()), mirrorPoseLabel(doc.frame()),
+                              EditorDocument::PoseHolds::kResolve);
 }
 
 }  // namespace mgp

@@ -139,7 +139,15 @@ void MotionEditJob::run() {
             const bool holdElsewhere = base && !base->holdFrames.empty();
             forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t], fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
+            if (holdElsewhere) {
+                const std::vector<Effector>& follow = base->followLayer;
+                forwardKinematics(clip.skeleton, start[t], fk);
+                for (IkConstraint& c : holds[i])
+                    if (std::find(follow.begin(), follow.end(), c.effector) != follow.end())
+                        c.targetCm = effectorCm(clip.skeleton, fk, c.effector);
+            }
         }
+        if (base && !base->holdFrames.empty()) guideHeldEnds(holds);
     }
     if (solver == EditSolver::kSpan) {
         runSpan(holds);
@@ -169,6 +177,56 @@ void MotionEditJob::run() {
     }
     std::vector<Eigen::Vector3d> path(target.begin(), target.end());
     quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, held);
+}
+
+void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds) const {
+    const Clip& clip = version->model->clip;
+    const std::vector<Pose>& layered = baseFrames();
+    const int count = static_cast<int>(solvedFrames.size());
+    // smoothstep(k / length): 0 at the anchor, 1 from `length` frames on, no kink at either end.
+    auto ramp = [](int k, int length) {
+        const double s = std::min(1.0, static_cast<double>(k) / static_cast<double>(length));
+        return s * s * (3.0 - 2.0 * s);
+    };
+    std::vector<Effector> effectors;
+    for (const ContactInterval& c : held)
+        if (std::find(effectors.begin(), effectors.end(), c.foot) == effectors.end()) effectors.push_back(c.foot);
+    FkState fk;
+    for (const Effector e : effectors) {
+        std::vector<char> heldHere(static_cast<std::size_t>(count)), key(static_cast<std::size_t>(count));
+        for (int i = 0; i < count; ++i) {
+            heldHere[i] = std::any_of(holds[i].begin(), holds[i].end(), [&](const IkConstraint& c) { return c.effector == e; });
+            key[i] = std::find(keyFrames.begin(), keyFrames.end(), solvedFrames[i]) != keyFrames.end();
+        }
+        // Each run of frames between two anchors: a frame that holds `e` at its old place, or a key
+        // (whose pose is given: the layered place) or the span's end.
+        for (int a = 0; a < count;) {
+            if (heldHere[a] || key[a]) {
+                ++a;
+                continue;
+            }
+            int b = a;
+            while (b + 1 < count && !heldHere[b + 1] && !key[b + 1]) ++b;
+            const bool leftHeld = a > 0 && heldHere[a - 1], rightHeld = b + 1 < count && heldHere[b + 1];
+            const int gap = b - a + 1;
+            // Between a hold and a key the blend ends at the key at the latest; between two holds
+            // each side blends over its own length and the product stays near the old path when
+            // the gap is short (a short swing between the same two footprints as before).
+            const int leftLength = rightHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
+            const int rightLength = leftHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
+            for (int i = a; leftHeld || rightHeld ? i <= b : false; ++i) {
+                const double w = (leftHeld ? ramp(i - a + 1, leftLength) : 1.0) * (rightHeld ? ramp(b - i + 1, rightLength) : 1.0);
+                if (w >= 1.0) continue;  // past the blend: the effector follows the layered motion freely
+                const auto t = static_cast<std::size_t>(solvedFrames[i]);
+                forwardKinematics(clip.skeleton, base->holdFrames[t], fk);
+                const Eigen::Vector3d before = effectorCm(clip.skeleton, fk, e);
+                forwardKinematics(clip.skeleton, layered[t], fk);
+                const Eigen::Vector3d after = effectorCm(clip.skeleton, fk, e);
+                holds[i].push_back({e, before + w * (after - before), true});
+            }
+            a = b + 1;
+        }
+    }
 }
 
 void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds) {

@@ -120,6 +120,13 @@ struct MotionEditJob {
     const std::vector<Pose>& baseFrames() const;
 
 private:
+    // With EditBase::holdFrames, a held interval that ends inside the span holds its effector at
+    // the old place up to its end, while the layered motion has moved it elsewhere: the effector
+    // would jump there on the next frame. Between its held intervals it is guided from the old
+    // place to the layered one over up to kHeldEndBlendFrames frames after an end (before a start),
+    // along a smoothstep, reaching the layered place by the next key at the latest.
+    static constexpr int kHeldEndBlendFrames = 20;
+    void guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds) const;
     void runSpan(const std::vector<std::vector<IkConstraint>>& holds);
     void runPerFrame(const std::vector<std::vector<IkConstraint>>& holds);
 };

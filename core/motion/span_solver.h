@@ -69,6 +69,9 @@ struct EditBase {
     // Where held contacts, pins and placements are held (empty: `frames`). A whole-pose change
     // layers `frames` but holds what its frame kept in place where it was before the layer.
     std::vector<Pose> holdFrames;
+    // Held effectors the change moved on purpose (a hand below a rotated elbow): held where
+    // `frames` has them even when holdFrames is given.
+    std::vector<Effector> followLayer;
 };
 
 // "" or what is wrong with `base` for `model` (frame count, skeleton, latent size, NaN).
