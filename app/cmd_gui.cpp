@@ -10,6 +10,7 @@
 #include <optional>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "cli_common.h"
 #include "command_registry.h"
@@ -98,7 +99,10 @@ int runGui(const GuiArgs& args) {
                 window->waitEvents(0.25);
                 settle = 2;
             } else if (!scripted && !app.frameDrawn()) {
-                window->waitEvents(1.0 / 60.0);  // no swap paced the last frame: the display rate does
+                // No swap paced the last frame: keep to the display rate (events arriving faster,
+                // e.g. mouse moves over nothing that changes, wait for the next 1/60 s too).
+                std::this_thread::sleep_until(t0 + std::chrono::microseconds(16667));
+                window->pollEvents();
             } else {
                 window->pollEvents();
             }

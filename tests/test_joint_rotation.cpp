@@ -244,10 +244,14 @@ TEST_CASE("mirror, paste and a rotation with the prior keep a planted foot where
         REQUIRE(err == "");
         doc.waitIdle();
         CHECK(doc.pollRegenerate().find(": spread over frames") != std::string::npos);
+        // The rotation's own frame is its solve's (a bent knee may not quite keep its foot): the
+        // neighbours are what the spread decides. Mirror and paste re-solve their frame to keep it.
+        const bool rotation = std::string(op) == "rotate with the prior";
         double worst = 0.0;
         for (Effector foot : planted)
             for (int s = t - 20; s <= t + 20; ++s)
-                if (s != t && doc.contacts().at(foot, s)) worst = std::max(worst, (footAt(s, foot) - capturedAt(s, foot)).norm());
+                if ((s != t || !rotation) && doc.contacts().at(foot, s))
+                    worst = std::max(worst, (footAt(s, foot) - capturedAt(s, foot)).norm());
         MESSAGE("planted foot, worst distance from its captured place over the spread: " << worst << " cm");
         CHECK(worst <= 1.0);
         REQUIRE(doc.undo().empty());

@@ -69,13 +69,24 @@ std::string EditorApp::reportingErrors(const std::function<void()>& work) {
 
 std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
-    return reportTrainingStart(
-        state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath)));
+    return trainingAfterAsking([this] {
+        return state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath));
+    });
 }
 
 std::string EditorApp::startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) {
     if (!state_.doc.hasClip()) return "no clip";
-    return reportTrainingStart(state_.training.start(std::move(clips), selection, state_.trainOptions));
+    return trainingAfterAsking([this, clips = std::move(clips), selection]() mutable {
+        return state_.training.start(std::move(clips), selection, state_.trainOptions);
+    });
+}
+
+std::string EditorApp::trainingAfterAsking(std::function<std::string()> start) {
+    // The new model replaces this one when it is ready: a model no file holds is asked about first
+    // (Save keeps it in the session file), as when a file replaces it.
+    if (!modelUnsaved()) return reportTrainingStart(start());
+    prompts_.guard(true, [this, start = std::move(start)] { reportTrainingStart(start()); }, "training a new model");
+    return "";
 }
 
 std::string EditorApp::reportTrainingStart(const std::string& err) {

@@ -66,6 +66,8 @@ public:
     // Makes the model's training clip `name` the open clip at `frame` (0-based), the model staying
     // (gp::withPrimaryClip); asks about unsaved changes first. "" or the error.
     std::string openModelClip(const std::string& name, int frame);
+    // Trainings replace the model when they finish: with a model no file holds, they start after
+    // asking about it (and return "" while the question is up).
     std::string startTraining();         // on the open clip with state().trainOptions
     // On clips checked by gp::prepareTrainingClips (the open clip first) with state().trainOptions:
     // Model > Train on clips... (train_clips_window.h).
@@ -162,6 +164,8 @@ private:
     void pollTraining();
     void pollExport();
     std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
+    // Runs `start` (a training start: "" or the error) now, or after asking about an unsaved model.
+    std::string trainingAfterAsking(std::function<std::string()> start);
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale
@@ -181,8 +185,8 @@ private:
     EditorOptions options_;
     EditorState state_;
     std::uint64_t lastFrameSignature_ = 0;
-    bool frameDrawn_ = false;
-    bool redrawRequested_ = true;
+    bool frameDrawn_ = true;
+    bool redrawRequested_ = true;  // the first frame draws
     std::unique_ptr<ViewportPanel> viewport_;
     InputReplay replay_;  // presses and releases, at most one change per button or key per frame
     LatentMapPanel latent_;

@@ -125,6 +125,9 @@ void MotionEditJob::run() {
     // the base motion (EditBase::holdFrames when given).
     std::vector<std::vector<IkConstraint>> holds(count);
     {
+        const bool holdElsewhere = base && !base->holdFrames.empty();
+        const std::vector<Effector> noneFollow;
+        const std::vector<Effector>& follow = holdElsewhere ? base->followLayer : noneFollow;
         FkState fk;
         for (int i = 0; i < count; ++i) {
             const int t = solvedFrames[i];
@@ -136,18 +139,16 @@ void MotionEditJob::run() {
             std::sort(hold.begin(), hold.end());
             hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
             if (hold.empty()) continue;
-            const bool holdElsewhere = base && !base->holdFrames.empty();
             forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t], fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
-            if (holdElsewhere) {
-                const std::vector<Effector>& follow = base->followLayer;
+            if (!follow.empty()) {
                 forwardKinematics(clip.skeleton, start[t], fk);
                 for (IkConstraint& c : holds[i])
                     if (std::find(follow.begin(), follow.end(), c.effector) != follow.end())
                         c.targetCm = effectorCm(clip.skeleton, fk, c.effector);
             }
         }
-        if (base && !base->holdFrames.empty()) guideHeldEnds(holds);
+        if (holdElsewhere) guideHeldEnds(holds);
     }
     if (solver == EditSolver::kSpan) {
         runSpan(holds);
@@ -188,9 +189,14 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
         const double s = std::min(1.0, static_cast<double>(k) / static_cast<double>(length));
         return s * s * (3.0 - 2.0 * s);
     };
+    // The effectors held at their old place somewhere in the span (one that follows the layer is
+    // held where the layer has it: it has no old place to leave).
+    const std::vector<Effector>& follow = base->followLayer;
     std::vector<Effector> effectors;
     for (const ContactInterval& c : held)
-        if (std::find(effectors.begin(), effectors.end(), c.foot) == effectors.end()) effectors.push_back(c.foot);
+        if (std::find(effectors.begin(), effectors.end(), c.foot) == effectors.end() &&
+            std::find(follow.begin(), follow.end(), c.foot) == follow.end())
+            effectors.push_back(c.foot);
     FkState fk;
     for (const Effector e : effectors) {
         std::vector<char> heldHere(static_cast<std::size_t>(count)), key(static_cast<std::size_t>(count));

@@ -104,7 +104,7 @@ struct MotionEditJob {
     std::vector<KeyResult> keys;
     bool keysReached() const;
     double maxResidualCm = 0.0;                  // worst path target residual
-    double maxHeldResidualCm = 0.0;              // worst contact / pin residual
+    double maxHeldResidualCm = 0.0;              // worst contact / pin / placement / guided-end residual
     SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
     int spanIterations = 0;                      // kSpan only (−1: unknown, line search ended it)
     SpanQuality quality;                         // the span's report (motion_quality.h)

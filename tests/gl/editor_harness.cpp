@@ -74,6 +74,13 @@ void tapKey(Harness& h, int k, std::initializer_list<int> mods) {
     h.frame(3);
 }
 
+void answerUnsaved(Harness& h, const std::string& button) {
+    h.frame(2);  // the modal is drawn and its buttons recorded
+    REQUIRE(h.app->askingAboutUnsavedChanges());
+    const auto& b = h.app->state().controls.at("unsaved: " + button);
+    clickAt(h, (b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2);
+}
+
 void clickAt(Harness& h, float x, float y) {
     ui::GuiScript script;
     script.add(0, "move", {std::to_string(x), std::to_string(y)});

@@ -38,6 +38,10 @@ void tapKey(Harness& h, int k, std::initializer_list<int> mods = {});
 // release on frame 4), over 7 frames.
 void clickAt(Harness& h, float x, float y);
 
+// Answers the unsaved-changes question with the button "Save", "Don't save" or "Cancel" (a click),
+// after drawing it; requires the question to be up.
+void answerUnsaved(Harness& h, const std::string& button);
+
 // nullptr (the test is then reported skipped, with the reason: the caller returns) when no
 // offscreen context can be made, or when llvmpipeOnly and the context is not llvmpipe.
 std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel = true);

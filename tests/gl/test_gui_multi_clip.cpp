@@ -252,16 +252,18 @@ TEST_CASE("gui: a model trained here and never saved is asked about on every pat
     REQUIRE(loneDotOf1002(*h, x, y) >= 0);
     test::clickAt(*h, x, y);
     REQUIRE(h->app->askingAboutUnsavedChanges());
-    const auto& dontSave = h->app->state().controls.at("unsaved: Don't save");
-    test::clickAt(*h, (dontSave.x0 + dontSave.x1) / 2, (dontSave.y0 + dontSave.y1) / 2);
+    test::answerUnsaved(*h, "Don't save");
     h->frame(2);
     CHECK_FALSE(h->app->askingAboutUnsavedChanges());
     REQUIRE(doc.clip().name == "10_02");  // switched, the model staying
     CHECK(h->app->modelUnsaved());
     CHECK(h->app->dirty());
     // Every way of dropping it asks first (File > Open and Open model ask before their dialogs; a
-    // model file of the open clip would replace this one), and Cancel keeps it.
-    const std::vector<std::vector<std::string>> drops = {{"open"}, {"open-model"}, {"open-model", model}, {"demo-clip"}, {"quit"}};
+    // model file of the open clip would replace this one; a script's `open PATH`; a new training,
+    // whose model would replace it), and Cancel keeps it.
+    const std::string bvh = test::mocapDir() + "/bvh/02_03.bvh";
+    const std::vector<std::vector<std::string>> drops = {{"open"}, {"open", bvh}, {"open-model"}, {"open-model", model},
+                                                         {"demo-clip"}, {"train"}, {"quit"}};
     for (const std::vector<std::string>& action : drops) {
         INFO(action.front());
         REQUIRE(h->app->runAction(action) == "");
@@ -275,6 +277,7 @@ TEST_CASE("gui: a model trained here and never saved is asked about on every pat
         CHECK(h->app->modelUnsaved());
         CHECK_FALSE(h->app->fileDialog().isOpen());
         CHECK_FALSE(h->app->quitRequested());
+        CHECK_FALSE(h->app->state().training.running());
     }
     // Saved to a file, the model is safe: opening the demo clip no longer asks.
     const std::string saved = std::filesystem::path(model).parent_path().string() + "/saved.model";
