@@ -132,7 +132,9 @@ public:
     // The next frame draws even when it matches the last one: the framebuffer's contents were lost
     // (a window was exposed, buffers swapped before a screenshot) or overwritten by someone else.
     void requestRedraw() { redrawRequested_ = true; }
-    // Reads the whole window (call right after frame()).
+    // Reads the whole window (call right after frame()). After a frame that was not drawn,
+    // framebuffer 0 still holds the last drawn one: the same pixels offscreen, but a window's back
+    // buffer is undefined after a swap, so call requestRedraw() before that frame there.
     render::Image capture(int width, int height) const;
     // Blocks until training, adaptive updates and the latent image are finished (scripts, tests).
     void waitIdle();
