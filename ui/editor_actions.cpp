@@ -48,15 +48,6 @@ Run pathOrDialog(std::function<std::string(EditorApp&, const std::string&)> with
     };
 }
 
-// A PATH given to an action replaces the document as the dialog's choice does: after asking
-// about unsaved work. Without any, it opens now and returns the error; else "" while the
-// question is up (an error after it goes to the status line).
-std::string openAfterAsking(EditorApp& app, const std::string& what, std::function<std::string()> open) {
-    if (!app.dirty()) return open();
-    app.guardUnsaved([open = std::move(open)] { open(); }, what);
-    return "";
-}
-
 std::string train(EditorApp& app, const ActionArgs& a) {
     EditorState& s = app.state();
     gp::TrainOptions o = s.trainOptions;
@@ -108,7 +99,8 @@ std::vector<EditorAction> makeActions() {
     // ---- File
     add({"open", "[PATH]", "Ctrl+O", {{'O', kCtrl}}, "open an ASF/AMC or BVH clip; no PATH: the Open dialog (session, clip or model)",
          always, false, pathOrDialog([](EditorApp& app, const std::string& p) {
-                                         return openAfterAsking(app, "opening a clip", [&app, p] { return app.openClip(p); });
+                                         // A PATH replaces the document as the dialog's choice does: after asking.
+                                         return app.runAfterAsking(app.dirty(), [&app, p] { return app.openClip(p); }, "opening a clip");
                                      },
                                      [](EditorApp& app) { app.askForFile(FileKind::kOpenAny, "opening another file"); })});
     add({"save-session", "[PATH]", "Ctrl+S", {{'S', kCtrl}}, "save the session (no PATH: to its file, or ask for one)", hasClip, true,
@@ -119,7 +111,7 @@ std::vector<EditorAction> makeActions() {
     add({"open-session", "PATH", "", {}, "open a session", always, false,
          [](EditorApp& app, const ActionArgs& a) {
              if (a.empty()) return std::string("expected open-session PATH");
-             return openAfterAsking(app, "opening a session", [&app, p = a[0]] { return app.openSession(p); });
+             return app.runAfterAsking(app.dirty(), [&app, p = a[0]] { return app.openSession(p); }, "opening a session");
          }});
     add({"open-model", "[PATH]", "Ctrl+M", {{'M', kCtrl}}, "open a saved model with its clip (asks first if that is not the open clip); no PATH: the Open dialog",
          always, false, pathOrDialog([](EditorApp& app, const std::string& p) { return app.openModel(p); },

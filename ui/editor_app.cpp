@@ -69,24 +69,19 @@ std::string EditorApp::reportingErrors(const std::function<void()>& work) {
 
 std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
-    return trainingAfterAsking([this] {
-        return state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath));
-    });
+    // The new model replaces this one when it is ready: a model no file holds is asked about first
+    // (Save keeps it in the session file), as when a file replaces it.
+    return runAfterAsking(modelUnsaved(), [this] {
+        return reportTrainingStart(
+            state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath)));
+    }, "training a new model");
 }
 
 std::string EditorApp::startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) {
     if (!state_.doc.hasClip()) return "no clip";
-    return trainingAfterAsking([this, clips = std::move(clips), selection]() mutable {
-        return state_.training.start(std::move(clips), selection, state_.trainOptions);
-    });
-}
-
-std::string EditorApp::trainingAfterAsking(std::function<std::string()> start) {
-    // The new model replaces this one when it is ready: a model no file holds is asked about first
-    // (Save keeps it in the session file), as when a file replaces it.
-    if (!modelUnsaved()) return reportTrainingStart(start());
-    prompts_.guard(true, [this, start = std::move(start)] { reportTrainingStart(start()); }, "training a new model");
-    return "";
+    return runAfterAsking(modelUnsaved(), [this, clips = std::move(clips), selection]() mutable {
+        return reportTrainingStart(state_.training.start(std::move(clips), selection, state_.trainOptions));
+    }, "training a new model");
 }
 
 std::string EditorApp::reportTrainingStart(const std::string& err) {
@@ -378,6 +373,12 @@ bool EditorApp::popupOpen() const {
 
 void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
     prompts_.guard(dirty(), std::move(action), std::move(what));
+}
+
+std::string EditorApp::runAfterAsking(bool unsaved, std::function<std::string()> run, std::string what) {
+    if (!unsaved) return run();
+    prompts_.guard(true, [run = std::move(run)] { run(); }, std::move(what));
+    return "";
 }
 
 void EditorApp::prompts() {

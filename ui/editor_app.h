@@ -90,6 +90,9 @@ public:
     void askForFile(FileKind kind, const std::string& what = "");
     // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
     void guardUnsaved(std::function<void()> action, std::string what);
+    // Runs `run` now and returns its error when nothing is `unsaved`; else asks as guardUnsaved
+    // does and returns "" while the question is up (an error after it goes to the status line).
+    std::string runAfterAsking(bool unsaved, std::function<std::string()> run, std::string what);
     void copyPose();          // the current frame's pose to the pose clipboard
     std::string pastePose();  // onto the current frame (root position kept), one undo step
     bool hasCopiedPose() const { return poseClipboard_.has_value(); }
@@ -166,8 +169,6 @@ private:
     void pollTraining();
     void pollExport();
     std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
-    // Runs `start` (a training start: "" or the error) now, or after asking about an unsaved model.
-    std::string trainingAfterAsking(std::function<std::string()> start);
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
     void forgetAutosave();  // after a save or an open: this editor's autosave is stale

@@ -2,6 +2,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 namespace mgp::ui {
 
 namespace {
@@ -71,11 +73,8 @@ int GlfwWindow::height() const {
 
 void GlfwWindow::present() { glfwSwapBuffers(window_); }
 
-bool GlfwWindow::takeDamage() {
-    const bool d = damaged_;
-    damaged_ = false;
-    return d;
-}
+bool GlfwWindow::takeDamage() { return std::exchange(damaged_, false); }
+
 void GlfwWindow::pollEvents() { glfwPollEvents(); }
 void GlfwWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }

@@ -40,7 +40,7 @@ public:
 private:
     GLFWwindow* window_ = nullptr;
     InputState input_;
-    bool damaged_ = true;
+    bool damaged_ = false;  // the editor's first frame draws anyway
     std::string title_;
 };
 

@@ -126,8 +126,7 @@ void MotionEditJob::run() {
     std::vector<std::vector<IkConstraint>> holds(count);
     {
         const bool holdElsewhere = base && !base->holdFrames.empty();
-        const std::vector<Effector> noneFollow;
-        const std::vector<Effector>& follow = holdElsewhere ? base->followLayer : noneFollow;
+        const std::vector<Effector> follow = holdElsewhere ? base->followLayer : std::vector<Effector>{};
         FkState fk;
         for (int i = 0; i < count; ++i) {
             const int t = solvedFrames[i];
@@ -206,22 +205,23 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
         }
         // Each run of frames between two anchors: a frame that holds `e` at its old place, or a key
         // (whose pose is given: the layered place) or the span's end.
-        for (int a = 0; a < count;) {
-            if (heldHere[a] || key[a]) {
-                ++a;
+        for (int lo = 0; lo < count;) {
+            if (heldHere[lo] || key[lo]) {
+                ++lo;
                 continue;
             }
-            int b = a;
-            while (b + 1 < count && !heldHere[b + 1] && !key[b + 1]) ++b;
-            const bool leftHeld = a > 0 && heldHere[a - 1], rightHeld = b + 1 < count && heldHere[b + 1];
-            const int gap = b - a + 1;
+            int hi = lo;  // the run is lo..hi
+            while (hi + 1 < count && !heldHere[hi + 1] && !key[hi + 1]) ++hi;
+            const bool leftHeld = lo > 0 && heldHere[lo - 1], rightHeld = hi + 1 < count && heldHere[hi + 1];
+            const int gap = hi - lo + 1;
             // Between a hold and a key the blend ends at the key at the latest; between two holds
             // each side blends over its own length and the product stays near the old path when
-            // the gap is short (a short swing between the same two footprints as before).
+            // the gap is short (a short swing between the same two footprints as before). Between
+            // two keys there is no old place to leave.
             const int leftLength = rightHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
             const int rightLength = leftHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
-            for (int i = a; leftHeld || rightHeld ? i <= b : false; ++i) {
-                const double w = (leftHeld ? ramp(i - a + 1, leftLength) : 1.0) * (rightHeld ? ramp(b - i + 1, rightLength) : 1.0);
+            for (int i = lo; (leftHeld || rightHeld) && i <= hi; ++i) {
+                const double w = (leftHeld ? ramp(i - lo + 1, leftLength) : 1.0) * (rightHeld ? ramp(hi - i + 1, rightLength) : 1.0);
                 if (w >= 1.0) continue;  // past the blend: the effector follows the layered motion freely
                 const auto t = static_cast<std::size_t>(solvedFrames[i]);
                 forwardKinematics(clip.skeleton, base->holdFrames[t], fk);
@@ -230,7 +230,7 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
                 const Eigen::Vector3d after = effectorCm(clip.skeleton, fk, e);
                 holds[i].push_back({e, before + w * (after - before), true});
             }
-            a = b + 1;
+            lo = hi + 1;
         }
     }
 }
