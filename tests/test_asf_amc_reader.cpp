@@ -90,7 +90,7 @@ TEST_CASE("AMC bones are matched by name, not position") {
 }
 
 TEST_CASE("every shipped AMC clip loads with its subject's ASF") {
-    for (const char* name : {"02_03", "10_02", "10_03", "16_01", "16_35", "35_01"}) {
+    for (const char* name : {"02_03", "10_02", "10_03", "16_01", "16_35", "16_36", "35_01"}) {
         const std::string clipName = name;
         CAPTURE(clipName);
         const Clip clip = loadClip(test::mocap(std::string("asf_amc/") + name + ".amc"));

@@ -25,8 +25,8 @@ const TrainingCandidate* find(const std::vector<TrainingCandidate>& list, const 
 TEST_CASE("training candidates: the shipped kick 10_02 offers 10_03 and refuses the other subjects") {
     const Clip open = loadClip(test::mocap("asf_amc/10_02.amc"));
     const std::vector<TrainingCandidate> list = trainingCandidates(open);
-    // 10_02 (open), 10_03 (offered), then 02_03, 16_01, 16_35, 35_01 (refused), by name.
-    REQUIRE(list.size() == 6u);
+    // 10_02 (open), 10_03 (offered), then 02_03, 16_01, 16_35, 16_36, 35_01 (refused), by name.
+    REQUIRE(list.size() == 7u);
     CHECK(list[0].name == "10_02");
     CHECK(list[0].open);
     CHECK(list[0].usable);
@@ -35,8 +35,8 @@ TEST_CASE("training candidates: the shipped kick 10_02 offers 10_03 and refuses 
     CHECK_FALSE(list[1].open);
     CHECK(list[1].reason.empty());
     CHECK(fs::equivalent(list[1].path, test::mocap("asf_amc/10_03.amc")));
-    const char* refused[] = {"02_03", "16_01", "16_35", "35_01"};
-    for (int i = 0; i < 4; ++i) {
+    const char* refused[] = {"02_03", "16_01", "16_35", "16_36", "35_01"};
+    for (int i = 0; i < 5; ++i) {
         CAPTURE(refused[i]);
         CHECK(list[static_cast<std::size_t>(2 + i)].name == refused[i]);
         CHECK_FALSE(list[static_cast<std::size_t>(2 + i)].usable);

@@ -28,9 +28,10 @@ const char* spanStopName(SpanStop s) {
 SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights, const EditBase* base)
     : version_(std::move(version)), layout_(version_->model->clip.skeleton), w_(weights), first_(first), last_(last) {
     const gp::GpModel& m = *version_->model;
-    const Clip& clip = m.clip;
-    if (first < 0 || last >= clip.frameCount() || first + 1 >= last)
-        throw std::invalid_argument("expected a span first < last − 1 inside the clip's " + std::to_string(clip.frameCount()) +
+    const std::vector<Pose>& motion = base ? base->frames : m.clip.frames;
+    frames_ = static_cast<int>(motion.size());
+    if (first < 0 || last >= frames_ || first + 1 >= last)
+        throw std::invalid_argument("expected a span first < last − 1 inside the clip's " + std::to_string(frames_) +
                                     " frames, found " + std::to_string(first + 1) + ".." + std::to_string(last + 1));
     if (!(w_.lambda > 0.0 && w_.lambda < 1.0)) throw std::invalid_argument("expected 0 < λ < 1, found " + std::to_string(w_.lambda));
     if (!(w_.locality >= 0.0) || !std::isfinite(w_.locality))
@@ -51,12 +52,20 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     // Captured (or base) x̂, ŷ on frames first−1..last+1 (those inside the clip; others stay empty).
     xCap_.assign(n_ + 4, Eigen::VectorXd());
     yCap_.assign(n_ + 4, Eigen::VectorXd());
+    // A base of another length is another clip of the model's skeleton (in-betweening): its
+    // frames are not the model clip's, so their latent points must come with it.
+    const bool otherClip = frames_ != m.clip.frameCount();
+    innerBase_.clear();
     for (int t = first - 1; t <= last + 1; ++t) {
-        if (t < 0 || t >= clip.frameCount()) continue;
-        yCap_[t - first + 1] = m.keptPose(layout_.extract(base ? base->frames[t] : clip.frames[t]));
+        if (t < 0 || t >= frames_) continue;
+        yCap_[t - first + 1] = m.keptPose(layout_.extract(motion[t]));
         // Only inner frames need x̂ (outer frames have v = 0 by definition).
         if (t > first && t < last) {
+            innerBase_.push_back(motion[t]);
             const bool known = base && !base->x.empty() && base->x[t].size() == d_;
+            if (!known && otherClip)
+                throw std::invalid_argument("expected a latent point for frame " + std::to_string(t + 1) +
+                                            " of a base motion that is not the model's clip, found none");
             xCap_[t - first + 1] = known ? base->x[t] : latentStartForFrame(*version_, t);
         }
     }
@@ -157,8 +166,7 @@ void SpanSolver::poseOf(int i, const Eigen::VectorXd& z, Pose& pose) {
         return;
     }
     const gp::GpModel& m = *version_->model;
-    const int t = first_ + 1 + i;
-    pose = m.clip.frames[t];
+    pose = innerBase_[static_cast<std::size_t>(i)];  // the root translation and what the layout does not cover
     layout_.extract(pose, full_.data());
     for (std::size_t k = 0; k < m.constantColumns.size(); ++k) full_[m.constantColumns[k]] = m.constantValues[k];
     const auto y = z.segment(i * (d_ + D_) + d_, D_);
@@ -208,7 +216,7 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
         for (int k = 0; k < D_; ++k) grad[i * b + d_ + k] += gradFull_[m.keptColumns[k]];
     }
     // Second differences of u and v, centres first..last (those with both neighbours in the clip).
-    const int frames = m.clip.frameCount();
+    const int frames = frames_;
     auto uAt = [&](int t, Eigen::VectorXd& out) {  // u at frame t (0 outside the span)
         if (t > first_ && t < last_) out = z.segment((t - first_ - 1) * b + d_, D_) - yCap_[t - first_ + 1];
         else out.setZero(D_);
@@ -412,7 +420,7 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
             hii.bottomRightCorner(D_, D_).noalias() += 2.0 * w_.target * targetJac_[k].transpose() * targetJac_[k];
     }
     // Smoothness: Σ_s ‖Σ_j c_j u_{s−1+j}‖² adds 2·s·c_a·c_b·I to block (a, b).
-    const int frames = m.clip.frameCount();
+    const int frames = frames_;
     const double c[3] = {1.0, -2.0, 1.0};
     for (int s = first_; s <= last_; ++s) {
         if (s - 1 < 0 || s + 1 >= frames) continue;

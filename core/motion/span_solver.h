@@ -111,8 +111,10 @@ class SpanSolver {
 public:
     // first, last: the span's captured end frames (first + 1 < last). Throws
     // std::invalid_argument when the span does not fit the model's clip.
-    // `base`: the motion to start from (EditBase; null: the model's captured clip), of the clip's
-    // frame count and skeleton (MotionEditJob::validate checks it).
+    // `base`: the motion to start from (EditBase; null: the model's captured clip), of the model's
+    // skeleton (MotionEditJob::validate checks it). Its root translations are kept. A base of
+    // another frame count is another clip (in-betweening, motion/inbetween.h): it must carry a
+    // latent point for every inner frame, else std::invalid_argument.
     SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {}, const EditBase* base = nullptr);
 
     int innerCount() const { return n_; }
@@ -150,6 +152,8 @@ private:
     std::vector<Eigen::VectorXd> xCap_;    // x̂ of frames first−1..last+1 (index t − first + 1)
     std::vector<Eigen::VectorXd> yCap_;    // ŷ likewise
     std::vector<Eigen::VectorXd> resid_;   // r_t of inner frames
+    std::vector<Pose> innerBase_;          // the base (or captured) pose of each inner frame
+    int frames_ = 0;                       // frames of the base motion (the clip's without one)
     std::vector<std::vector<int>> targetsOf_;  // inner frame → indices into targets_
     std::vector<SpanTarget> targets_;
     std::vector<int> rootKept_;            // kept-column indices of the root orientation
