@@ -77,6 +77,7 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     s.frame = 40;
     s.pins[static_cast<int>(Effector::kLFoot)] = true;
     s.pins[static_cast<int>(Effector::kRFoot)] = true;
+    s.keys = {0, 99, 159};
     s.selectedEffector = static_cast<int>(Effector::kRHand);
     s.compareMode = "model";
     s.adaptiveEnabled = false;
@@ -101,6 +102,7 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     checkSameDoubles(s, r);
     CHECK(r.frame == 40);
     CHECK(r.pins == s.pins);
+    CHECK(r.keys == s.keys);
     CHECK(r.selectedEffector == s.selectedEffector);
     CHECK(r.compareMode == "model");
     CHECK(r.adaptiveEnabled == false);

@@ -216,6 +216,21 @@ std::vector<EditorAction> makeActions() {
     add({"cancel-regenerate", "", "", {}, "cancel the running regeneration",
          [](const EditorApp& app) { return docOf(app).regenerating(); }, false,
          plain([](EditorApp& app) { app.state().doc.cancelRegenerate(); })});
+    add({"key", "", "K", {{'K', 0}}, "mark or unmark the current frame as a key", hasClip, false,
+         plain([](EditorApp& app) { app.state().doc.toggleKey(app.state().doc.frame()); })});
+    add({"fill-between-keys", "[prior|interpolate]", "Ctrl+I", {{'I', kCtrl}},
+         "regenerate the frames between the keys around the playhead from the keys and the training clips (background), one undo step",
+         [](const EditorApp& app) { return docOf(app).hasModel() && docOf(app).keyGapAt(docOf(app).frame()) && !docOf(app).regenerating(); },
+         true, [](EditorApp& app, const ActionArgs& a) {
+             InbetweenMethod method = InbetweenMethod::kPrior;
+             if (!a.empty()) {
+                 if (a[0] == "interpolate") method = InbetweenMethod::kInterpolate;
+                 else if (a[0] != "prior") return "expected prior or interpolate, found '" + a[0] + "'";
+             }
+             const std::string err = app.state().doc.startFill(method);
+             if (err.empty()) app.state().setStatus("filling between keys...");
+             return err;
+         }});
     add({"end-path", "", "", {}, "stop editing the path", [](const EditorApp& app) { return docOf(app).pathEdit().has_value(); },
          false, plain([](EditorApp& app) { app.state().doc.endPathEdit(); })});
     // ---- Model

@@ -136,6 +136,10 @@ void EditorApp::pollJobs() {
     const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
     if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
     else if (!regenerated.empty()) state_.setStatus(regenerated);
+    std::string fillError;
+    const std::string filled = state_.doc.pollFill(&fillError);
+    if (!fillError.empty()) state_.setStatus(fillError, true);
+    else if (!filled.empty()) state_.setStatus(filled);
     pollTraining();
     pollExport();
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {

@@ -80,6 +80,10 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "regenerate", "Regenerate path span", {}, false, doc.hasModel());
     t.menuItem(app, "cancel-regenerate", "Cancel regeneration");
     t.menuItem(app, "end-path", "Stop editing the path");
+    ImGui::Separator();
+    const bool isKey = doc.keys().count(doc.frame()) > 0;
+    t.menuItem(app, "key", "Key on this frame", {}, isKey);
+    t.menuItem(app, "fill-between-keys", "Fill between keys");
 }
 
 void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessages) {
@@ -169,6 +173,8 @@ void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText)
     if (s.training.running()) {
         const TrainingProgress p = s.training.progress();
         bg = "training " + std::to_string(p.iteration) + "/" + std::to_string(p.total);
+    } else if (s.doc.filling()) {
+        bg = "filling between keys...";
     } else if (s.doc.adaptivePending() > 0) {
         bg = "adaptive update...";
     } else if (latentBusyText && *latentBusyText) {

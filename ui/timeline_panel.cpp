@@ -46,6 +46,12 @@ void TimelinePanel::draw(EditorState& s) {
     ImGui::SameLine();
     ImGui::Text("Frame %d / %d   %.2f s / %.2f s   %.0f fps%s", doc.frame() + 1, n, doc.frame() / fps, (n - 1) / fps,
                 fps, doc.isEdited(doc.frame()) ? "   [edited]" : "");
+    if (doc.filling()) {  // a fill between keys runs in the background (Edit > Fill between keys)
+        ImGui::SameLine();
+        const bool cancel = ImGui::Button("Cancel fill");
+        s.recordControl("Cancel fill");
+        if (cancel) doc.cancelRegenerate();
+    }
     // The edit count on the right of the row, or left out when the row is too narrow for it
     // (a small window): never drawn over the frame text.
     char edited[48];
@@ -89,6 +95,17 @@ void TimelinePanel::draw(EditorState& s) {
         (void)rec;
         const float x = xOf(f);
         dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
+    }
+    {
+        // The animator's keys: a yellow diamond each at the top of the track; the gap a fill at the
+        // playhead would regenerate, tinted.
+        if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame()))
+            dl->AddRectFilled(ImVec2(xOf(gap->a), t0.y + h * 0.2f), ImVec2(xOf(gap->b), t0.y + h * 0.32f), IM_COL32(240, 200, 60, 70));
+        const float yc = t0.y + h * 0.26f, r = 5.0f;
+        for (int k : doc.keys()) {
+            const float x = xOf(k);
+            dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), IM_COL32(240, 200, 60, 255));
+        }
     }
     if (path) {
         // A diamond per key above the edited-frame marks (the selected key in the handle colour).

@@ -60,6 +60,9 @@ void EditorDocument::stopRegeneration() {
     regenerate_.cancel();
     regenerate_.join();
     regenerate_.take();
+    fill_.cancel();
+    fill_.waitIdle();
+    fill_.take();
 }
 
 void EditorDocument::setClip(Clip clip, bool synthetic) {
@@ -68,6 +71,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     stopRegeneration();
     history_.clear();
     paths_.reset();
+    keys_.clear();
     ++revision_;
     store_.reset(std::move(clip), synthetic);
     editLineage_.clear();
@@ -628,7 +632,8 @@ void EditorDocument::dropRunningFalloff() {
 }
 
 std::string EditorDocument::undoOrRedo(bool undo) {
-    pollRegenerate();  // a regeneration that just finished is the latest step
+    pollRegenerate();  // a regeneration or a fill that just finished is the latest step
+    pollFill();
     dropRunningFalloff();
     cancelDrag();
     endLatentDrag();
@@ -715,7 +720,80 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
     return regenerationSummary(*job, models_.updating());
 }
 
+// ---- keys and in-betweening ----------------------------------------------------------------
+
+void EditorDocument::toggleKey(int frame) {
+    if (!hasClip() || frame < 0 || frame >= frameCount()) return;
+    if (!keys_.erase(frame)) keys_.insert(frame);
+    ++revision_;
+}
+
+std::string EditorDocument::restoreKeys(std::set<int> keys) {
+    for (int k : keys)
+        if (k < 0 || k >= frameCount())
+            return "expected key frames in 1.." + std::to_string(frameCount()) + ", found " + std::to_string(k + 1);
+    keys_ = std::move(keys);
+    ++revision_;
+    return "";
+}
+
+std::optional<InbetweenGap> EditorDocument::keyGapAt(int frame) const {
+    auto after = keys_.upper_bound(frame);
+    if (after == keys_.begin() || after == keys_.end()) return std::nullopt;
+    const int a = *std::prev(after), b = *after;
+    if (a + 1 >= b) return std::nullopt;
+    return InbetweenGap{a, b};
+}
+
+std::string EditorDocument::startFill(InbetweenMethod method) {
+    const gp::ModelVersionPtr v = model();
+    if (!v) return "fill between keys needs a model: train one or open one first";
+    const std::optional<InbetweenGap> gap = keyGapAt(frame_);
+    if (!gap) return "expected a key before the playhead and one after it with frames between (K marks a key)";
+    if (regenerating()) return "a regeneration is running: wait for it or cancel it";
+    finishRunningFalloff();
+    pollRegenerate();  // never drop a finished result nobody took yet
+    cancelDrag();
+    InbetweenJob job;
+    job.version = v;
+    job.clip = clip();
+    for (int t = 0; t < frameCount(); ++t) job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
+    job.gaps = {*gap};
+    job.method = method;
+    if (const std::string problem = job.validate(); !problem.empty()) return problem;
+    if (!fill_.startIfIdle(std::move(job))) return "a fill is already running";
+    return "";
+}
+
+std::string EditorDocument::pollFill(std::string* error) {
+    if (fill_.busy()) return "";
+    std::optional<InbetweenJob> job = fill_.take();
+    if (!job) {
+        if (error) *error = fill_.takeMessage();
+        return "";
+    }
+    const InbetweenGap gap = job->gaps.front();
+    EditStep step;
+    step.label = "fill frames " + std::to_string(gap.a + 2) + "-" + std::to_string(gap.b);
+    for (int t = gap.a + 1; t < gap.b; ++t) {
+        const std::size_t i = static_cast<std::size_t>(t);
+        step.after[t] = EditRecord{job->frames[i], i < job->x.size() ? job->x[i] : Eigen::VectorXd(), {}};
+    }
+    step.before = store_.current(step.after);
+    applyFrames(step.after);
+    pushStep(std::move(step));
+    const InbetweenJob::GapReport& r = job->reports.front();
+    char summary[200];
+    if (r.sourceClip.empty())
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d (%s)", gap.a + 2, gap.b, inbetweenMethodName(job->method));
+    else
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d from %s frames %d-%d in %.2f s (feet held within %.2f cm)",
+                      gap.a + 2, gap.b, r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, r.seconds, r.maxHeldResidualCm);
+    return summary;
+}
+
 void EditorDocument::waitIdle() {
+    fill_.waitIdle();
     regenerate_.join();
     models_.waitIdle();
 }

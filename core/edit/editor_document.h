@@ -21,6 +21,7 @@
 #include <mutex>
 #include <algorithm>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,9 @@
 #include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/foot_contacts.h"
+#include "motion/inbetween.h"
 #include "skeleton/clip.h"
+#include "util/background_worker.h"
 
 namespace mgp {
 
@@ -250,10 +253,13 @@ public:
     std::vector<Eigen::Vector3d> pathCaptured() const { return paths_.captured(); }   // captured, first..last key
     // Solves the span between the first and last key on a background thread; "" or why not.
     std::string startRegenerate(int maxIterations = 500);
-    bool regenerating() const { return regenerate_.running(); }
+    bool regenerating() const { return regenerate_.running() || fill_.busy(); }
     int regenerateDone() const { return regenerate_.framesDone(); }
     int regenerateTotal() const { return regenerate_.framesTotal(); }
-    void cancelRegenerate() { regenerate_.cancel(); }
+    void cancelRegenerate() {
+        regenerate_.cancel();
+        fill_.cancel();
+    }
     // Call once per UI frame: a finished regeneration becomes one undo step (and the moved keys'
     // poses are posted to the adaptive worker). Returns a summary when it applied one, or why the
     // last pose change could not be spread (it stays a one-frame edit: e.g. on the clip's first
@@ -268,6 +274,25 @@ public:
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
     // Its inner keys (frame, distance from the path, met or not); empty before the first one.
     const std::vector<MotionEditJob::KeyResult>& lastRegenerateKeys() const { return lastRegenerateKeys_; }
+
+    // ---- keys and in-betweening ------------------------------------------------------------
+    // Frames the animator marked as keys (0-based). Fill between keys regenerates the frames
+    // strictly between the two keys around the playhead from the keys' poses, the frames around
+    // them and the model's training clips (motion/inbetween.h), as one undo step.
+    const std::set<int>& keys() const { return keys_; }
+    void toggleKey(int frame);
+    // Replaces the keys (loading a session); "" or why not (a frame outside the clip).
+    std::string restoreKeys(std::set<int> keys);
+    // The gap a fill at `frame` fills: the last key at or before it and the first key after that,
+    // with at least one frame between; none otherwise.
+    std::optional<InbetweenGap> keyGapAt(int frame) const;
+    // Fills keyGapAt(frame()) on a background thread; "" or why not. While it runs, regenerating()
+    // is true (undo, poses and paths wait for it) and cancelRegenerate() cancels it too.
+    std::string startFill(InbetweenMethod method = InbetweenMethod::kPrior);
+    bool filling() const { return fill_.busy(); }
+    // Call once per UI frame: a finished fill becomes one undo step. Returns its summary, else "";
+    // `error` is set when it failed or was cancelled.
+    std::string pollFill(std::string* error = nullptr);
 
     // ---- undo / redo -----------------------------------------------------------------------
     bool canUndo() const { return history_.canUndo(); }
@@ -339,6 +364,20 @@ private:
     double bodyStiffness_ = 1.0;
     std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
     std::string falloffSkipped_;    // why the last change was not spread, until pollRegenerate says it
+
+    std::set<int> keys_;
+    // In-betweening jobs, one at a time. A job works on its own copy of the motion and the model
+    // version, never on the document, so its thread may outlive the members declared after it.
+    BackgroundWorker<InbetweenJob, InbetweenJob> fill_{
+        WorkerPolicy::kLatestRequest,
+        [](InbetweenJob& job, const std::atomic<bool>& cancel) -> JobOutcome<InbetweenJob> {
+            job.cancel = &cancel;
+            job.run();
+            job.cancel = nullptr;
+            if (job.cancelled) return {std::nullopt, "fill between keys cancelled"};
+            return {std::move(job), ""};
+        },
+        "fill between keys failed: "};
 
     CompareMode compare_ = CompareMode::kNone;
     DragSession drag_;

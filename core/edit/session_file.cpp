@@ -296,6 +296,13 @@ SessionData readSession(const Reader& r, const json& j) {
     const json& pins = r.array(r.field(j, "pins"), "pins");
     for (std::size_t i = 0; i < pins.size(); ++i)
         s.pins[static_cast<int>(r.effector(pins[i], "pins[" + std::to_string(i) + "]"))] = true;
+    if (j.contains("keys")) {
+        const json& keys = r.array(j.at("keys"), "keys");
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            const int k = r.integer(keys[i], "keys[" + std::to_string(i) + "]");
+            if (k < 0 || !s.keys.insert(k).second) r.fail("distinct key frames ≥ 0", std::to_string(k));
+        }
+    }
     const json& sel = r.field(j, "selected_effector");
     s.selectedEffector = sel.is_null() ? -1 : static_cast<int>(r.effector(sel, "selected_effector"));
     s.compareMode = r.string(r.field(j, "compare_mode"), "compare_mode");
@@ -352,6 +359,7 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
     for (int e = 0; e < kEffectorCount; ++e)
         if (s.pins[e]) pins.push_back(effectorName(static_cast<Effector>(e)));
     j["pins"] = pins;
+    j["keys"] = s.keys;
     j["selected_effector"] = s.selectedEffector >= 0 && s.selectedEffector < kEffectorCount
                                  ? json(effectorName(static_cast<Effector>(s.selectedEffector)))
                                  : json(nullptr);
@@ -432,6 +440,8 @@ std::string validateAgainstClip(const SessionData& s, const Clip& clip) {
     }
     for (int k : s.path.keyFrames)
         if (k < 0 || k >= n) return "expected path key frames " + range + ", found " + std::to_string(k);
+    for (int k : s.keys)
+        if (k < 0 || k >= n) return "expected key frames " + range + ", found " + std::to_string(k);
     for (const auto* steps : {&s.undoSteps, &s.redoSteps})
         for (const EditStep& step : *steps)
             for (const FrameEdits* side : {&step.before, &step.after})

@@ -17,6 +17,7 @@
 //                 clip's skeleton], "x": [latent_dim] or [] (solved without a model)} ],
 //     "frame": 0-based int,
 //     "pins": [effector names],                              lhand rhand lfoot rfoot head
+//     "keys": [0-based ints],                                 marked key frames (optional: none)
 //     "selected_effector": effector name | null,
 //     "compare_mode": "none" | "plain" | "model",
 //     "adaptive_enabled": bool,
@@ -50,6 +51,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -90,6 +92,7 @@ struct SessionData {
     std::map<int, EditRecord> edits;     // accepted poses per 0-based frame
     int frame = 0;
     std::array<bool, kEffectorCount> pins{};
+    std::set<int> keys;                  // marked key frames (0-based)
     int selectedEffector = -1;           // an Effector value, -1 none
     std::string compareMode = "none";    // none | plain | model
     bool adaptiveEnabled = true;

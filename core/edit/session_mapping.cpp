@@ -30,6 +30,7 @@ SessionData sessionFromDocument(const EditorDocument& doc) {
     d.adaptiveHistory = doc.adaptiveHistory();
     d.frame = doc.frame();
     for (int i = 0; i < kEffectorCount; ++i) d.pins[i] = doc.pinned(static_cast<Effector>(i));
+    d.keys = doc.keys();
     d.compareMode = compareModeName(doc.compareMode());
     d.adaptiveEnabled = doc.adaptiveEnabled();
     if (const auto& p = doc.pathEdit()) {
@@ -71,6 +72,7 @@ void applySession(EditorDocument& doc, CheckedSession& s, const std::string& fil
     doc.restoreEdits(std::move(d.edits));
     doc.setFrame(d.frame);
     for (int i = 0; i < kEffectorCount; ++i) doc.setPinned(static_cast<Effector>(i), d.pins[i]);
+    if (const std::string problem = doc.restoreKeys(std::move(d.keys)); !problem.empty()) throw ParseError(file + ": keys: " + problem);
     CompareMode mode = CompareMode::kNone;
     parseCompareMode(d.compareMode, mode);  // checked when the file was read
     doc.setCompareMode(mode);

@@ -1,0 +1,86 @@
+// Fill between keys in the editor, driven by real key presses offscreen with the committed walk
+// model: K marks keys, Ctrl+I regenerates the frames between the two keys around the playhead in
+// the background (motion/inbetween.h), the keys and everything outside stay, one undo step takes
+// it all back and redo brings it again; without keys or a model the editor says why.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "editor_app.h"
+#include "editor_harness.h"
+#include "input_state.h"
+
+using namespace mgp;
+using test::makeHarness;
+
+namespace {
+bool samePose(const Pose& a, const Pose& b) { return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg; }
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+}  // namespace
+
+TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the playhead, one undo step") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    REQUIRE(doc.hasModel());
+    // No keys yet: Ctrl+I says what it needs.
+    doc.setFrame(130);
+    h->frame(2);
+    test::tapKey(*h, 'I', {ui::key::kLeftCtrl});
+    CHECK(contains(s.messages.latestText(), "expected a key before the playhead and one after it"));
+    CHECK_FALSE(doc.filling());
+
+    for (int f : {100, 160}) {
+        doc.setFrame(f);
+        h->frame(2);
+        test::tapKey(*h, 'K');
+    }
+    REQUIRE(doc.keys() == std::set<int>{100, 160});
+    doc.setFrame(130);
+    h->frame(2);
+    REQUIRE(doc.keyGapAt(130));
+    CHECK(doc.keyGapAt(130)->a == 100);
+    CHECK(doc.keyGapAt(130)->b == 160);
+    test::tapKey(*h, 'I', {ui::key::kLeftCtrl});
+    doc.waitIdle();
+    h->frame(3);
+    CHECK_FALSE(doc.filling());
+    INFO("status: " << s.messages.latestText());
+    CHECK(contains(s.messages.latestText(), "filled frames 102-160"));
+    const Clip& clip = doc.clip();
+    int changed = 0;
+    for (int t = 0; t < doc.frameCount(); ++t) {
+        const bool inner = t > 100 && t < 160;
+        if (!inner) CHECK(samePose(doc.poseAt(t), clip.frames[t]));
+        else changed += doc.isEdited(t) ? 1 : 0;
+    }
+    CHECK(changed == 59);
+    CHECK(doc.undoLabel() == "fill frames 102-160");
+    // One undo takes the whole fill back; redo brings it again.
+    test::tapKey(*h, 'Z', {ui::key::kLeftCtrl});
+    CHECK(doc.edits().empty());
+    test::tapKey(*h, 'Z', {ui::key::kLeftCtrl, ui::key::kLeftShift});
+    CHECK(doc.edits().size() == 59u);
+    // K on a key unmarks it; the gap is gone.
+    doc.setFrame(160);
+    h->frame(2);
+    test::tapKey(*h, 'K');
+    CHECK(doc.keys() == std::set<int>{100});
+    CHECK_FALSE(doc.keyGapAt(130));
+}
+
+TEST_CASE("gui fill between keys: without a model the editor says so, and keys are kept in the session") {
+    auto h = makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    REQUIRE_FALSE(doc.hasModel());
+    doc.toggleKey(20);
+    doc.toggleKey(80);
+    doc.setFrame(50);
+    h->frame(2);
+    test::tapKey(*h, 'I', {ui::key::kLeftCtrl});
+    CHECK(contains(s.messages.latestText(), "needs a model"));
+    CHECK(doc.edits().empty());
+}
