@@ -247,6 +247,12 @@ TEST_CASE("every damaged session file gives one exact error") {
     CHECK(mutated([](json& j) { j["path"] = {{"effector", "rfoot"}, {"key_frames", {10, 5}}, {"key_offsets_cm", {{0, 0, 0}, {0, 0, 0}}}, {"mode", "direct"}}; }) ==
           f + ": expected path.key_frames strictly increasing from 0, found 5");
     CHECK(mutated([](json& j) { j["ui"] = json::array(); }) == f + ": expected ui as an object, found an array of 0");
+    CHECK(mutated([](json& j) { j["keys"] = json::array({4, -1}); }) == f + ": expected distinct key frames ≥ 0, found -1");
+    CHECK(mutated([](json& j) { j["keys"] = json::array({4, 4}); }) == f + ": expected distinct key frames ≥ 0, found 4");
+    CHECK(mutated([](json& j) { j["keys"] = json::array({4.5}); }) == f + ": expected keys[0] as an integer, found 4.5");
+    CHECK(mutated([](json& j) { j["keys"] = 3; }) == f + ": expected keys as an array, found 3");
+    // A session from before keys existed has none.
+    CHECK(mutated([](json& j) { j.erase("keys"); }) == "no error");
     CHECK(mutated([](json& j) { j["model"] = 7; }) == f + ": expected model as a motiongp-model object or null, found 7");
     CHECK(errorOf("[1, 2]") == f + ": expected \"format\": \"motiongp-session\", found no format field");
     CHECK(errorOf("{\"format\": \"motiongp-session\", \"version\": 1, \"clip\": {\"synthetic\": false, \"synthetic_frames\": 240, "
@@ -266,6 +272,10 @@ TEST_CASE("every damaged session file gives one exact error") {
     s.edits[5].pose.anglesDeg.resize(22);
     CHECK(validateAgainstClip(s, clip) == "expected " + std::to_string(clip.skeleton.jointCount()) +
                                               " joint angles per edit (the clip's skeleton), found 22 at frame 5");
+    s = sessionFromJsonText(good.dump(), f);
+    s.keys = {3, clip.frameCount()};
+    CHECK(validateAgainstClip(s, clip) == "expected key frames in 0.." + std::to_string(clip.frameCount() - 1) +
+                                              " (the clip's frames), found " + std::to_string(clip.frameCount()));
     s = sessionFromJsonText(good.dump(), f);
     s.frame = clip.frameCount();
     CHECK(validateAgainstClip(s, clip) == "expected frame in 0.." + std::to_string(clip.frameCount() - 1) +

@@ -56,7 +56,8 @@ SessionData editorSession(const EditorState& s) {
     d.camera.targetCm = {s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z};
     d.camera.followCharacter = s.followCharacter;
     d.ui = {{"show_captured_path", s.showCapturedPath}, {"show_before_ghost", s.showBeforeGhost},
-            {"show_nearest_ghost", s.showNearestGhost}, {"show_balance", s.showBalance}, {"clip_label", s.clipLabel},
+            {"show_nearest_ghost", s.showNearestGhost}, {"show_interpolation_ghost", s.showInterpolationGhost},
+            {"show_balance", s.showBalance}, {"clip_label", s.clipLabel},
             {"model_label", s.modelLabel}};
     nlohmann::json trails = nlohmann::json::array();
     for (int i = 0; i < render::kTrailPartCount; ++i)
@@ -90,6 +91,7 @@ void applyEditorSession(EditorState& s, const SessionData& d) {
     s.showCapturedPath = flag("show_captured_path", true);
     s.showBeforeGhost = flag("show_before_ghost", false);
     s.showNearestGhost = flag("show_nearest_ghost", false);
+    s.showInterpolationGhost = flag("show_interpolation_ghost", false);
     s.showBalance = flag("show_balance", false);
     applyOverlays(s, d.ui);
     s.clipLabel = text("clip_label", s.doc.clip().name);

@@ -60,6 +60,7 @@ struct EditorState {
     bool showCapturedPath = true;   // the captured path beside the edited one
     bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
     bool showNearestGhost = false;  // the captured frame nearest to the last learned solve
+    bool showInterpolationGhost = false;  // between two keys: the keys' plain interpolation
     // View > Pose range: tint the figure by σ²(x) against the model's training range, with a legend
     // (render/range_tint.h). Only a solved pose is tinted (a drag, an edited frame) and only with a model.
     bool showRangeTint = true;

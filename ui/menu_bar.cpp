@@ -94,6 +94,7 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
     ImGui::MenuItem("Follow character", nullptr, &s.followCharacter);
     ImGui::MenuItem("Pose range tint", nullptr, &s.showRangeTint, s.doc.hasModel());
     ImGui::MenuItem("Balance (centre of mass, support)", nullptr, &s.showBalance, s.doc.hasClip());
+    ImGui::MenuItem("Interpolation between keys (ghost)", nullptr, &s.showInterpolationGhost, s.doc.hasClip());
     if (beginMenu("Onion skins", escape)) {
         ImGui::MenuItem("Show", nullptr, &s.showOnionSkin, s.doc.hasClip());
         // AlwaysClamp: a value typed with Ctrl+click stays in range too.

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "motion/inbetween.h"
 #include "range_tint.h"
 #include "scene_builder.h"
 #include "skeleton/forward_kinematics.h"
@@ -141,6 +142,13 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     // Green: the captured frame nearest to the last solve, laid over the current pose's root.
     if (s.showNearestGhost)
         if (const std::optional<Pose> nearest = nearestGhostPose(s)) addGhost(*nearest, glm::vec3(0.3f, 0.9f, 0.5f));
+    // Yellow, as the keys on the timeline: what plain interpolation of the keys around the playhead
+    // (root linear, joints slerped) would show here, to compare with Fill between keys.
+    if (s.showInterpolationGhost)
+        if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame()); gap && doc.frame() > gap->a)
+            addGhost(interpolatedPose(doc.clip().skeleton, doc.poseAt(gap->a), doc.poseAt(gap->b),
+                                      double(doc.frame() - gap->a) / double(gap->b - gap->a)),
+                     glm::vec3(0.95f, 0.8f, 0.25f));
     addMotionOverlays(s, scene);
     if (doc.pathEdit() && s.showCapturedPath) {
         // Fainter and thinner than the edited path, which covers it where the two agree.

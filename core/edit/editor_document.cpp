@@ -63,6 +63,7 @@ void EditorDocument::stopRegeneration() {
     fill_.cancel();
     fill_.waitIdle();
     fill_.take();
+    fill_.takeMessage();  // "cancelled" of a fill nobody asked to stop
 }
 
 void EditorDocument::setClip(Clip clip, bool synthetic) {
@@ -428,6 +429,7 @@ void EditorDocument::setContactReleased(Effector foot, bool released) {
 std::string EditorDocument::beginDrag(Effector e) {
     finishRunningFalloff();
     if (!hasClip()) return "no clip is open";
+    if (filling()) return "a fill between keys is running: wait for it or cancel it";
     if (!hasEffector(e)) return std::string("this skeleton has no ") + effectorName(e);
     if (drag_.active()) endDrag();
     if (drag_.latentActive()) endLatentDrag();
@@ -556,7 +558,7 @@ void EditorDocument::cancelDrag() {
 }
 
 bool EditorDocument::beginLatentDrag() {
-    if (!hasModel() || !hasClip()) return false;
+    if (!hasModel() || !hasClip() || filling()) return false;
     if (drag_.active()) endDrag();
     latentBefore_ = store_.editAt(frame_);
     drag_.beginLatent(clip().skeleton, model(), currentLatent(), currentPose());
@@ -750,13 +752,16 @@ std::string EditorDocument::startFill(InbetweenMethod method) {
     if (!v) return "fill between keys needs a model: train one or open one first";
     const std::optional<InbetweenGap> gap = keyGapAt(frame_);
     if (!gap) return "expected a key before the playhead and one after it with frames between (K marks a key)";
+    finishRunningFalloff();  // a drag's spread finishes first (it is part of the drag)
+    pollRegenerate();        // never drop a finished result nobody took yet
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
-    finishRunningFalloff();
-    pollRegenerate();  // never drop a finished result nobody took yet
     cancelDrag();
     InbetweenJob job;
     job.version = v;
     job.clip = clip();
+    // The capture the clip is a take of, judged on the unedited clip (edited frames would hide it):
+    // its frames in the gap are never read, whatever was edited.
+    job.sameCapture = gp::findCapture(*v->model, clip());
     for (int t = 0; t < frameCount(); ++t) job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
     job.gaps = {*gap};
     job.method = method;
@@ -773,6 +778,16 @@ std::string EditorDocument::pollFill(std::string* error) {
         return "";
     }
     const InbetweenGap gap = job->gaps.front();
+    // The keys or the frames between changed while it ran (nothing should, drags wait): the result
+    // belongs to another motion, so it is dropped rather than pasted over the change.
+    for (int t = gap.a; t <= gap.b; ++t) {
+        const Pose& now = poseAt(t);
+        const Pose& then = job->clip.frames[static_cast<std::size_t>(t)];
+        if (now.rootCm != then.rootCm || now.anglesDeg != then.anglesDeg) {
+            if (error) *error = "the motion between the keys changed while filling: fill again";
+            return "";
+        }
+    }
     EditStep step;
     step.label = "fill frames " + std::to_string(gap.a + 2) + "-" + std::to_string(gap.b);
     for (int t = gap.a + 1; t < gap.b; ++t) {

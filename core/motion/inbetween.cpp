@@ -231,19 +231,19 @@ std::vector<int> nearestRows(const gp::GpModel& m, int c) {
 }
 
 // The planted feet held on the inner frames of gap (a, b) filled with `stretch` (frames of
-// `source`, mapped linearly onto the gap). A foot is planted inside the gap where the stretch's
-// own capture has it planted (its contacts, not the warped copy's), and at a key where the clip's
-// context has it planted. A planted run that starts at the gap's first inner frame with the foot
-// planted at key a keeps it where key a has it, one ending at the last with it planted at key b
-// where key b has it, one doing both moves it linearly from one to the other, and a run inside
-// the gap keeps it where the filled motion has it on the run's middle frame.
-std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& filled, int a, int b,
-                                 const ContactSet& context, const ContactSet& source, const Stretch& stretch) {
+// `source`, mapped linearly onto the gap): a foot is held where the stretch's own capture has it
+// planted (its contacts, not the warped copy's, which the warp makes slide). A run inside the gap
+// keeps the foot where the filled motion has it on the run's middle frame. A run that starts on
+// the gap's first inner frame continues the contact of key a: it starts where key a has the foot
+// and eases (smoothstep) to that middle place by its end, so a foot the stretch plants elsewhere
+// than the key does neither jumps at the key nor strands the leg; one ending on the last inner
+// frame eases into key b's place likewise; one doing both moves linearly from key a's to key b's.
+std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& filled, int a, int b, const ContactSet& source,
+                                 const Stretch& stretch) {
     std::vector<SpanTarget> targets;
     const int L = b - a;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
         if (!sk.hasEffector(foot)) continue;
-        const bool atA = context.at(foot, a) != nullptr, atB = context.at(foot, b) != nullptr;
         auto planted = [&](int i) {
             const int f = static_cast<int>(std::lround(stretch.first + static_cast<double>(i) * (stretch.last - stretch.first) / L));
             return source.at(foot, f) != nullptr;
@@ -253,13 +253,15 @@ std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& fi
             if (!planted(i)) continue;
             int j = i;
             while (j + 1 < L && planted(j + 1)) ++j;
-            const bool fromA = i == 1 && atA, toB = j == L - 1 && atB;
+            const bool fromA = i == 1, toB = j == L - 1;
             const Eigen::Vector3d pa = footAt(a), pb = footAt(b), mid = footAt(a + (i + j) / 2);
             for (int k = i; k <= j; ++k) {
+                // Along the run, 0 on the frame after its first and 1 on the frame after its last.
+                const double along = smoothstep(static_cast<double>(k - i + 1) / (j - i + 2));
                 Eigen::Vector3d p = mid;
                 if (fromA && toB) p = pa + (pb - pa) * (static_cast<double>(k) / L);
-                else if (fromA) p = pa;
-                else if (toB) p = pb;
+                else if (fromA) p = pa + (mid - pa) * along;
+                else if (toB) p = mid + (pb - mid) * along;
                 targets.push_back({a + k, foot, p, SpanTarget::Kind::kContact});
             }
             i = j;
@@ -305,7 +307,20 @@ std::string InbetweenJob::validate() const {
         if (static_cast<int>(p.anglesDeg.size()) != clip.skeleton.jointCount() || !allFinite(p))
             return "expected a clip of finite poses, found NaN, Inf or a wrong joint count";
     if (maxIterations < 1) return "expected at least one iteration, found " + std::to_string(maxIterations);
-    return validateGaps(gaps, clip.frameCount());
+    if (const std::string problem = validateGaps(gaps, clip.frameCount()); !problem.empty()) return problem;
+    if (method == InbetweenMethod::kRetrieve || method == InbetweenMethod::kPrior) {
+        // The shortest stretch (time scale 0.8) with a frame before and after it must fit a clip.
+        int longest = 0;
+        for (int c = 0; c < m.clipCount(); ++c) longest = std::max(longest, m.clipAt(c).frameCount());
+        auto fits = [&](int L) { return std::lround(L * kTimeScales[0]) + 3 <= longest; };
+        int most = 0;
+        while (fits(most + 1)) ++most;
+        for (const InbetweenGap& g : gaps)
+            if (!fits(g.b - g.a))
+                return "expected gaps the model's clips can fill (keys at most " + std::to_string(most) + " frames apart), found " +
+                       std::to_string(g.a + 1) + ":" + std::to_string(g.b + 1);
+    }
+    return "";
 }
 
 void InbetweenJob::run() {
@@ -320,17 +335,24 @@ void InbetweenJob::run() {
     const bool retrieves = method == InbetweenMethod::kRetrieve || method == InbetweenMethod::kPrior;
     std::vector<MotionFeatures> sources;
     std::vector<std::vector<int>> rowOf;
-    const int sameCapture = retrieves ? gp::findCapture(m, clip) : -1;
+    const int capture = !retrieves ? -1 : sameCapture ? *sameCapture : gp::findCapture(m, clip);
     const MotionFeatures target = retrieves ? motionFeatures(sk, clip.frames) : MotionFeatures{};
     if (retrieves)
         for (int c = 0; c < m.clipCount(); ++c) {
-            sources.push_back(motionFeatures(sk, m.clipAt(c).frames));
             rowOf.push_back(nearestRows(m, c));
+            // A clip without training rows has no latent points to start from: not a source.
+            const bool rows = !rowOf.back().empty() && rowOf.back().front() >= 0;
+            sources.push_back(rows ? motionFeatures(sk, m.clipAt(c).frames) : MotionFeatures{});
         }
     // Stage 1: every gap filled by its method (the start of stage 2 for kPrior).
     std::vector<Eigen::VectorXd> latent(frames.size());
     std::vector<Stretch> stretches(gaps.size());
     for (std::size_t g = 0; g < gaps.size(); ++g) {
+        if (cancel && cancel->load()) {
+            cancelled = true;
+            frames = clip.frames;
+            return;
+        }
         const auto t0 = Clock::now();
         const int a = gaps[g].a, b = gaps[g].b, L = b - a;
         GapReport& r = reports[g];
@@ -343,7 +365,7 @@ void InbetweenJob::run() {
                                                                        clip.frames[static_cast<std::size_t>(b)],
                                                                        static_cast<double>(t - a) / L);
         } else {
-            const Stretch& st = stretches[g] = bestStretch(sources, sameCapture, target, a, b, clip.frameCount());
+            const Stretch& st = stretches[g] = bestStretch(sources, capture, target, a, b, clip.frameCount());
             if (st.clip < 0) throw std::invalid_argument("expected training clips long enough for a " + std::to_string(L) +
                                                          "-frame gap, found none");
             const std::vector<Pose> warped = warpedStretch(sk, m.clipAt(st.clip).frames, st.first, st.last,
@@ -367,11 +389,6 @@ void InbetweenJob::run() {
         EditBase base;
         base.frames = frames;
         base.x = latent;
-        // Contacts at the keys from the context alone: the clip with every gap holding its first key.
-        Clip context = clip;
-        for (const InbetweenGap& gap : gaps)
-            for (int t = gap.a + 1; t < gap.b; ++t) context.frames[static_cast<std::size_t>(t)] = clip.frames[static_cast<std::size_t>(gap.a)];
-        const ContactSet contextContacts = detectFootContacts(context);
         std::vector<ContactSet> sourceContacts;
         for (int c = 0; c < m.clipCount(); ++c) sourceContacts.push_back(detectFootContacts(m.clipAt(c)));
         for (std::size_t g = 0; g < gaps.size(); ++g) {
@@ -384,8 +401,7 @@ void InbetweenJob::run() {
             const int a = gaps[g].a, b = gaps[g].b;
             GapReport& r = reports[g];
             SpanSolver solver(version, a, b, spanWeights, &base);
-            std::vector<SpanTarget> held =
-                heldFeet(sk, frames, a, b, contextContacts, sourceContacts[static_cast<std::size_t>(stretches[g].clip)], stretches[g]);
+            std::vector<SpanTarget> held = heldFeet(sk, frames, a, b, sourceContacts[static_cast<std::size_t>(stretches[g].clip)], stretches[g]);
             r.heldFootFrames = static_cast<int>(held.size());
             solver.setTargets(std::move(held));
             const SpanResult res = solver.solve(maxIterations, spanTolerance, cancel);
@@ -395,8 +411,9 @@ void InbetweenJob::run() {
                 return;
             }
             for (int i = 0; i + 1 < b - a; ++i) {
-                frames[static_cast<std::size_t>(a + 1 + i)] = res.poses[static_cast<std::size_t>(i)];
-                latent[static_cast<std::size_t>(a + 1 + i)] = res.x[static_cast<std::size_t>(i)];
+                const std::size_t t = static_cast<std::size_t>(a + 1 + i);
+                frames[t] = base.frames[t] = res.poses[static_cast<std::size_t>(i)];  // a next gap joins the solved frames
+                latent[t] = base.x[t] = res.x[static_cast<std::size_t>(i)];
             }
             for (double e : res.targetResidualCm) r.maxHeldResidualCm = std::max(r.maxHeldResidualCm, e);
             r.stop = res.stop;

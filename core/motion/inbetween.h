@@ -9,14 +9,17 @@
 //                slerped (quaternions) from key a to key b;
 //   kRetrieve    the training clips' stretch that best joins the keys (pose at both keys, velocity
 //                at both joins, the distance and turn travelled between them; time scaled by up to
-//                ±25 %), turned and moved onto key a, then warped onto both keys by an offset that
-//                fades in and out along a smoothstep, so the joins keep the stretch's velocity;
+//                ±25 %), turned and moved onto key a, then warped onto both keys: the joints'
+//                offsets fade along a smoothstep (the joins keep the stretch's velocity), the
+//                root's linearly;
 //   kPrior       (the default) kRetrieve, then every gap solved as one span under the learned
-//                prior (motion/span_solver.h) with each foot that is planted held where it stands:
-//                the context's contacts at the keys, the retrieved stretch's contacts inside.
+//                prior (motion/span_solver.h) with every foot the retrieved stretch has planted
+//                held: where the key has it when the contact runs on from a key, else where the
+//                stretch has it mid-contact.
 // Every training stretch that overlaps the gap of the same capture is left out: the frames being
 // generated are never read.
 #include <atomic>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,9 @@ struct InbetweenJob {
     Clip clip;                     // the clip whose gaps are filled (the model's skeleton)
     std::vector<InbetweenGap> gaps;
     InbetweenMethod method = InbetweenMethod::kPrior;
+    // The model's clip that `clip` is a take of (its frames overlapping a gap are never read), −1
+    // for none; unset: gp::findCapture of `clip` (which an edited copy no longer matches).
+    std::optional<int> sameCapture;
     SpanWeights spanWeights = heldFeetWeights();  // kPrior
     int maxIterations = 100;       // kPrior: LM iterations per gap
     double spanTolerance = 1e-6;

@@ -55,6 +55,9 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     // A base of another length is another clip of the model's skeleton (in-betweening): its
     // frames are not the model clip's, so their latent points must come with it.
     const bool otherClip = frames_ != m.clip.frameCount();
+    if (base && !base->x.empty() && static_cast<int>(base->x.size()) != frames_)
+        throw std::invalid_argument("expected a base latent point per frame (" + std::to_string(frames_) + "), found " +
+                                    std::to_string(base->x.size()));
     innerBase_.clear();
     for (int t = first - 1; t <= last + 1; ++t) {
         if (t < 0 || t >= frames_) continue;

@@ -62,6 +62,28 @@ TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the 
     CHECK(doc.edits().empty());
     test::tapKey(*h, 'Z', {ui::key::kLeftCtrl, ui::key::kLeftShift});
     CHECK(doc.edits().size() == 59u);
+    // While a fill runs, a drag waits (the fill would overwrite it): refused with a reason.
+    REQUIRE(doc.startFill() == "");
+    CHECK(doc.filling());
+    CHECK(doc.beginDrag(Effector::kRHand) == "a fill between keys is running: wait for it or cancel it");
+    CHECK_FALSE(doc.beginLatentDrag());
+    doc.waitIdle();
+    h->frame(3);
+    CHECK(doc.undoLabel() == "fill frames 102-160");  // the second fill is its own step
+    test::tapKey(*h, 'Z', {ui::key::kLeftCtrl});
+    CHECK(doc.edits().size() == 59u);
+    // View > Interpolation between keys: a yellow ghost of the keys' plain interpolation inside the gap.
+    doc.setFrame(130);
+    h->frame(2);
+    const std::size_t figures = h->app->viewport().lastScene().figures.size();
+    s.showInterpolationGhost = true;
+    h->app->requestRedraw();
+    h->frame(2);
+    const render::Scene& scene = h->app->viewport().lastScene();
+    REQUIRE(scene.figures.size() == figures + 1);
+    CHECK(scene.figures.back().ghost);
+    CHECK(scene.figures.back().ghostTint == glm::vec3(0.95f, 0.8f, 0.25f));
+    s.showInterpolationGhost = false;
     // K on a key unmarks it; the gap is gone.
     doc.setFrame(160);
     h->frame(2);
@@ -70,7 +92,7 @@ TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the 
     CHECK_FALSE(doc.keyGapAt(130));
 }
 
-TEST_CASE("gui fill between keys: without a model the editor says so, and keys are kept in the session") {
+TEST_CASE("gui fill between keys: without a model the editor says so") {
     auto h = makeHarness(false, false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
