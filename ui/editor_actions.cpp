@@ -218,16 +218,39 @@ std::vector<EditorAction> makeActions() {
          plain([](EditorApp& app) { app.state().doc.cancelRegenerate(); })});
     add({"key", "", "K", {{'K', 0}}, "mark or unmark the current frame as a key", hasClip, false,
          plain([](EditorApp& app) { app.state().doc.toggleKey(app.state().doc.frame()); })});
+    add({"timeline-range", "FIRST LAST|off", "Shift+drag on the timeline", {},
+         "select frames FIRST..LAST (1-based) for Fill between keys, or drop the selection", hasClip, false,
+         [](EditorApp& app, const ActionArgs& a) {
+             if (a.size() == 1 && a[0] == "off") {
+                 app.state().timelineRange.reset();
+                 return std::string();
+             }
+             const int n = docOf(app).frameCount();
+             int first = 0, last = 0;
+             if (a.size() != 2) return std::string("expected FIRST LAST or off");
+             if (std::string err = parseIntArg(a[0], "a first frame FIRST", first); !err.empty()) return err;
+             if (std::string err = parseIntArg(a[1], "a last frame LAST", last); !err.empty()) return err;
+             if (first < 1 || last > n || first > last)
+                 return "expected 1 ≤ FIRST ≤ LAST ≤ " + std::to_string(n) + ", found " + a[0] + " " + a[1];
+             app.state().timelineRange = std::make_pair(first - 1, last - 1);
+             return std::string();
+         }});
     add({"fill-between-keys", "[prior|interpolate]", "Ctrl+I", {{'I', kCtrl}},
-         "regenerate the frames between the keys around the playhead from the keys and the training clips (background), one undo step",
-         [](const EditorApp& app) { return docOf(app).hasModel() && docOf(app).keyGapAt(docOf(app).frame()) && !docOf(app).regenerating(); },
+         "regenerate the frames between keys from the keys and the training clips (background), one undo step: every gap inside "
+         "the timeline's Shift+drag range, else the gap around the playhead",
+         [](const EditorApp& app) {
+             const EditorDocument& d = docOf(app);
+             const auto& range = app.state().timelineRange;
+             const bool gaps = range ? !d.keyGapsIn(range->first, range->second).empty() : d.keyGapAt(d.frame()).has_value();
+             return d.hasModel() && gaps && !d.regenerating();
+         },
          true, [](EditorApp& app, const ActionArgs& a) {
              InbetweenMethod method = InbetweenMethod::kPrior;
              if (!a.empty()) {
                  if (a[0] == "interpolate") method = InbetweenMethod::kInterpolate;
                  else if (a[0] != "prior") return "expected prior or interpolate, found '" + a[0] + "'";
              }
-             const std::string err = app.state().doc.startFill(method);
+             const std::string err = app.state().doc.startFill(method, app.state().timelineRange);
              if (err.empty()) app.state().setStatus("filling between keys...");
              return err;
          }});

@@ -57,6 +57,9 @@ struct EditorState {
     // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
     int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none
     int selectedKey = -1;           // path key last dragged or picked, -1 none
+    // Frames selected on the timeline by Shift+drag (0-based, first ≤ last): Fill between keys
+    // fills every gap between keys inside it. A plain click on the timeline clears it.
+    std::optional<std::pair<int, int>> timelineRange;
     bool showCapturedPath = true;   // the captured path beside the edited one
     bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
     bool showNearestGhost = false;  // the captured frame nearest to the last learned solve

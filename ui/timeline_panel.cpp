@@ -97,10 +97,18 @@ void TimelinePanel::draw(EditorState& s) {
         dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
     }
     {
-        // The animator's keys: a yellow diamond each at the top of the track; the gap a fill at the
-        // playhead would regenerate, tinted.
-        if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame()))
-            dl->AddRectFilled(ImVec2(xOf(gap->a), t0.y + h * 0.2f), ImVec2(xOf(gap->b), t0.y + h * 0.32f), IM_COL32(240, 200, 60, 70));
+        // The animator's keys: a yellow diamond each at the top of the track; what a fill would
+        // regenerate, tinted: the gaps inside the Shift+drag range, else the gap at the playhead.
+        auto tintGap = [&](const InbetweenGap& g) {
+            dl->AddRectFilled(ImVec2(xOf(g.a), t0.y + h * 0.2f), ImVec2(xOf(g.b), t0.y + h * 0.32f), IM_COL32(240, 200, 60, 70));
+        };
+        if (s.timelineRange) {
+            const int r0 = std::clamp(s.timelineRange->first, 0, n - 1), r1 = std::clamp(s.timelineRange->second, 0, n - 1);
+            dl->AddRectFilled(ImVec2(xOf(r0) - 1.0f, t0.y + 1.0f), ImVec2(xOf(r1) + 1.0f, t1.y - 1.0f), IM_COL32(120, 170, 255, 45));
+            for (const InbetweenGap& g : doc.keyGapsIn(r0, r1)) tintGap(g);
+        } else if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame())) {
+            tintGap(*gap);
+        }
         const float yc = t0.y + h * 0.26f, r = 5.0f;
         for (int k : doc.keys()) {
             const float x = xOf(k);
@@ -152,10 +160,17 @@ void TimelinePanel::draw(EditorState& s) {
     if (active) {
         const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
         const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
-        if (f != doc.frame()) doc.setFrame(f);
-        scrubbing_ = true;
+        if (ImGui::IsItemActivated()) {  // the press: Shift starts a range, a plain click drops it
+            selecting_ = ImGui::GetIO().KeyShift;
+            rangeAnchor_ = f;
+            s.timelineRange.reset();
+        }
+        if (selecting_) s.timelineRange = std::make_pair(std::min(rangeAnchor_, f), std::max(rangeAnchor_, f));
+        else if (f != doc.frame()) doc.setFrame(f);
+        scrubbing_ = !selecting_;
     } else {
         scrubbing_ = false;
+        selecting_ = false;
     }
 }
 

@@ -14,6 +14,8 @@ public:
 
 private:
     bool scrubbing_ = false;
+    bool selecting_ = false;  // a Shift+drag selecting a range (EditorState::timelineRange)
+    int rangeAnchor_ = 0;     // the frame the range drag started on
 };
 
 }  // namespace mgp::ui

@@ -747,11 +747,27 @@ std::optional<InbetweenGap> EditorDocument::keyGapAt(int frame) const {
     return InbetweenGap{a, b};
 }
 
-std::string EditorDocument::startFill(InbetweenMethod method) {
+std::vector<InbetweenGap> EditorDocument::keyGapsIn(int first, int last) const {
+    std::vector<InbetweenGap> gaps;
+    for (auto k = keys_.lower_bound(first); k != keys_.end() && std::next(k) != keys_.end() && *std::next(k) <= last; ++k)
+        if (*k + 1 < *std::next(k)) gaps.push_back({*k, *std::next(k)});
+    return gaps;
+}
+
+std::string EditorDocument::startFill(InbetweenMethod method, std::optional<std::pair<int, int>> range) {
     const gp::ModelVersionPtr v = model();
     if (!v) return "fill between keys needs a model: train one or open one first";
-    const std::optional<InbetweenGap> gap = keyGapAt(frame_);
-    if (!gap) return "expected a key before the playhead and one after it with frames between (K marks a key)";
+    std::vector<InbetweenGap> gaps;
+    if (range) {
+        gaps = keyGapsIn(range->first, range->second);
+        if (gaps.empty())
+            return "expected two keys with frames between inside frames " + std::to_string(range->first + 1) + "-" +
+                   std::to_string(range->second + 1) + " (K marks a key)";
+    } else if (const std::optional<InbetweenGap> gap = keyGapAt(frame_)) {
+        gaps = {*gap};
+    } else {
+        return "expected a key before the playhead and one after it with frames between (K marks a key)";
+    }
     finishRunningFalloff();  // a drag's spread finishes first (it is part of the drag)
     pollRegenerate();        // never drop a finished result nobody took yet
     if (regenerating()) return "a regeneration is running: wait for it or cancel it";
@@ -763,7 +779,7 @@ std::string EditorDocument::startFill(InbetweenMethod method) {
     // its frames in the gap are never read, whatever was edited.
     job.sameCapture = gp::findCapture(*v->model, clip());
     for (int t = 0; t < frameCount(); ++t) job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
-    job.gaps = {*gap};
+    job.gaps = std::move(gaps);
     job.method = method;
     if (const std::string problem = job.validate(); !problem.empty()) return problem;
     if (!fill_.startIfIdle(std::move(job))) return "a fill is already running";
@@ -777,10 +793,10 @@ std::string EditorDocument::pollFill(std::string* error) {
         if (error) *error = fill_.takeMessage();
         return "";
     }
-    const InbetweenGap gap = job->gaps.front();
+    const int first = job->gaps.front().a, last = job->gaps.back().b;
     // The keys or the frames between changed while it ran (nothing should, drags wait): the result
     // belongs to another motion, so it is dropped rather than pasted over the change.
-    for (int t = gap.a; t <= gap.b; ++t) {
+    for (int t = first; t <= last; ++t) {
         const Pose& now = poseAt(t);
         const Pose& then = job->clip.frames[static_cast<std::size_t>(t)];
         if (now.rootCm != then.rootCm || now.anglesDeg != then.anglesDeg) {
@@ -789,21 +805,31 @@ std::string EditorDocument::pollFill(std::string* error) {
         }
     }
     EditStep step;
-    step.label = "fill frames " + std::to_string(gap.a + 2) + "-" + std::to_string(gap.b);
-    for (int t = gap.a + 1; t < gap.b; ++t) {
-        const std::size_t i = static_cast<std::size_t>(t);
-        step.after[t] = EditRecord{job->frames[i], i < job->x.size() ? job->x[i] : Eigen::VectorXd(), {}};
+    step.label = "fill frames " + std::to_string(first + 2) + "-" + std::to_string(last);
+    double seconds = 0.0, held = 0.0;
+    for (std::size_t g = 0; g < job->gaps.size(); ++g) {
+        for (int t = job->gaps[g].a + 1; t < job->gaps[g].b; ++t) {
+            const std::size_t i = static_cast<std::size_t>(t);
+            step.after[t] = EditRecord{job->frames[i], i < job->x.size() ? job->x[i] : Eigen::VectorXd(), {}};
+        }
+        seconds += job->reports[g].seconds;
+        held = std::max(held, job->reports[g].maxHeldResidualCm);
     }
     step.before = store_.current(step.after);
     applyFrames(step.after);
     pushStep(std::move(step));
     const InbetweenJob::GapReport& r = job->reports.front();
-    char summary[200];
+    const std::size_t n = job->gaps.size();
+    char summary[240];
     if (r.sourceClip.empty())
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d (%s)", gap.a + 2, gap.b, inbetweenMethodName(job->method));
-    else
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gap%s (%s)", first + 2, last, n, n == 1 ? "" : "s",
+                      inbetweenMethodName(job->method));
+    else if (n == 1)
         std::snprintf(summary, sizeof summary, "filled frames %d-%d from %s frames %d-%d in %.2f s (feet held within %.2f cm)",
-                      gap.a + 2, gap.b, r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, r.seconds, r.maxHeldResidualCm);
+                      first + 2, last, r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, seconds, held);
+    else
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gaps, in %.2f s (feet held within %.2f cm)", first + 2, last, n,
+                      seconds, held);
     return summary;
 }
 

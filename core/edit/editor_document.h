@@ -286,9 +286,13 @@ public:
     // The gap a fill at `frame` fills: the last key at or before it and the first key after that,
     // with at least one frame between; none otherwise.
     std::optional<InbetweenGap> keyGapAt(int frame) const;
-    // Fills keyGapAt(frame()) on a background thread; "" or why not. While it runs, regenerating()
-    // is true (undo, poses and paths wait for it) and cancelRegenerate() cancels it too.
-    std::string startFill(InbetweenMethod method = InbetweenMethod::kPrior);
+    // Every gap between consecutive keys that both lie in first..last.
+    std::vector<InbetweenGap> keyGapsIn(int first, int last) const;
+    // Fills on a background thread, as one undo step: the gaps between the keys inside `range`
+    // (frames first..last, 0-based) or, without one, keyGapAt(frame()). "" or why not. While it
+    // runs, regenerating() is true (undo, poses and paths wait for it, drags are refused) and
+    // cancelRegenerate() cancels it too.
+    std::string startFill(InbetweenMethod method = InbetweenMethod::kPrior, std::optional<std::pair<int, int>> range = std::nullopt);
     bool filling() const { return fill_.busy(); }
     // Call once per UI frame: a finished fill becomes one undo step. Returns its summary, else "";
     // `error` is set when it failed or was cancelled.

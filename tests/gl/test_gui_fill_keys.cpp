@@ -92,6 +92,50 @@ TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the 
     CHECK_FALSE(doc.keyGapAt(130));
 }
 
+TEST_CASE("gui fill between keys: a Shift+drag range on the timeline fills every gap between the keys inside it") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    for (int f : {40, 100, 101, 160, 250}) doc.toggleKey(f);
+    h->frame(2);
+    // A real Shift+drag over the timeline track, from about frame 30 to about frame 200 (the
+    // track maps frames 1..358 linearly onto its width, less 8 px at each end).
+    REQUIRE(s.controls.count("timeline track"));
+    const ui::EditorState::ControlRect track = s.controls.at("timeline track");
+    const float y = 0.5f * (track.y0 + track.y1);
+    auto xOf = [&](int f) { return track.x0 + 8.0f + (track.x1 - track.x0 - 16.0f) * float(f) / float(doc.frameCount() - 1); };
+    const int frameBefore = doc.frame();
+    const std::vector<std::string> errors = h->play(ui::GuiScript::parse(
+        "0 keydown SHIFT\n1 move " + std::to_string(int(xOf(30))) + " " + std::to_string(int(y)) + "\n3 down left\n5 move " +
+        std::to_string(int(xOf(200))) + " " + std::to_string(int(y)) + "\n7 up left\n9 keyup SHIFT\n"));
+    REQUIRE(errors.empty());
+    REQUIRE(s.timelineRange);
+    CHECK(doc.frame() == frameBefore);  // selecting does not scrub
+    INFO("range " << s.timelineRange->first << ".." << s.timelineRange->second);
+    // The gaps inside: 40-100 and 101-160 (100-101 has no frame between); 160-250 only if the range reaches 250.
+    const std::vector<InbetweenGap> gaps = doc.keyGapsIn(s.timelineRange->first, s.timelineRange->second);
+    REQUIRE(gaps.size() >= 2u);
+    CHECK(gaps[0].a == 40);
+    CHECK(gaps[0].b == 100);
+    CHECK(gaps[1].a == 101);
+    CHECK(gaps[1].b == 160);
+    // Scripted, exactly: frames 30..200.
+    REQUIRE(h->app->runAction({"timeline-range", "30", "200"}) == "");
+    REQUIRE(h->app->runAction({"fill-between-keys"}) == "");
+    doc.waitIdle();
+    h->frame(3);
+    CHECK(contains(s.messages.latestText(), "filled frames 42-160, 2 gaps"));
+    CHECK(doc.edits().size() == 59u + 58u);
+    for (int f : {40, 100, 101, 160}) CHECK_FALSE(doc.isEdited(f));
+    CHECK(doc.undoLabel() == "fill frames 42-160");
+    REQUIRE(doc.undo() == "");
+    CHECK(doc.edits().empty());
+    CHECK(h->app->runAction({"timeline-range", "0", "5"}).find("expected 1 ≤ FIRST ≤ LAST") == 0);
+    REQUIRE(h->app->runAction({"timeline-range", "off"}) == "");
+    CHECK_FALSE(s.timelineRange);
+}
+
 TEST_CASE("gui fill between keys: without a model the editor says so") {
     auto h = makeHarness(false, false);
     if (!h) return;
