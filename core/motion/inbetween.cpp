@@ -125,6 +125,8 @@ constexpr double kTimeScales[] = {0.8, 0.87, 0.93, 1.0, 1.07, 1.15, 1.25};
 struct Stretch {
     int clip = -1, first = 0, last = 0;
     double cost = std::numeric_limits<double>::infinity();
+    // The source frame nearest to frame i of an L-frame gap (0 and L: the stretch's ends).
+    int sourceFrame(int i, int L) const { return static_cast<int>(std::lround(first + static_cast<double>(i) * (last - first) / L)); }
 };
 
 // The stretch of the model's clips that best joins keys a and b of `target` (clip −1 if none fits).
@@ -244,10 +246,7 @@ std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& fi
     const int L = b - a;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
         if (!sk.hasEffector(foot)) continue;
-        auto planted = [&](int i) {
-            const int f = static_cast<int>(std::lround(stretch.first + static_cast<double>(i) * (stretch.last - stretch.first) / L));
-            return source.at(foot, f) != nullptr;
-        };
+        auto planted = [&](int i) { return source.at(foot, stretch.sourceFrame(i, L)) != nullptr; };
         const auto footAt = [&](int t) { return effectorCm(sk, filled[static_cast<std::size_t>(t)], foot); };
         for (int i = 1; i < L; ++i) {
             if (!planted(i)) continue;
@@ -344,15 +343,16 @@ void InbetweenJob::run() {
             const bool rows = !rowOf.back().empty() && rowOf.back().front() >= 0;
             sources.push_back(rows ? motionFeatures(sk, m.clipAt(c).frames) : MotionFeatures{});
         }
+    // Cancelled: the clip as it was, nothing filled.
+    const auto giveUp = [&] {
+        cancelled = true;
+        frames = clip.frames;
+    };
     // Stage 1: every gap filled by its method (the start of stage 2 for kPrior).
     std::vector<Eigen::VectorXd> latent(frames.size());
     std::vector<Stretch> stretches(gaps.size());
     for (std::size_t g = 0; g < gaps.size(); ++g) {
-        if (cancel && cancel->load()) {
-            cancelled = true;
-            frames = clip.frames;
-            return;
-        }
+        if (cancel && cancel->load()) return giveUp();
         const auto t0 = Clock::now();
         const int a = gaps[g].a, b = gaps[g].b, L = b - a;
         GapReport& r = reports[g];
@@ -373,8 +373,7 @@ void InbetweenJob::run() {
                                                            clip.frames[static_cast<std::size_t>(b)], L);
             for (int i = 1; i < L; ++i) {
                 frames[static_cast<std::size_t>(a + i)] = warped[static_cast<std::size_t>(i)];
-                const int source = static_cast<int>(std::lround(st.first + static_cast<double>(i) * (st.last - st.first) / L));
-                latent[static_cast<std::size_t>(a + i)] = m.X.row(rowOf[st.clip][static_cast<std::size_t>(source)]).transpose();
+                latent[static_cast<std::size_t>(a + i)] = m.X.row(rowOf[st.clip][static_cast<std::size_t>(st.sourceFrame(i, L))]).transpose();
             }
             r.sourceClip = m.clipName(st.clip);
             r.sourceFirst = st.first;
@@ -392,11 +391,7 @@ void InbetweenJob::run() {
         std::vector<ContactSet> sourceContacts;
         for (int c = 0; c < m.clipCount(); ++c) sourceContacts.push_back(detectFootContacts(m.clipAt(c)));
         for (std::size_t g = 0; g < gaps.size(); ++g) {
-            if (cancel && cancel->load()) {
-                cancelled = true;
-                frames = clip.frames;
-                return;
-            }
+            if (cancel && cancel->load()) return giveUp();
             const auto t0 = Clock::now();
             const int a = gaps[g].a, b = gaps[g].b;
             GapReport& r = reports[g];
@@ -405,11 +400,7 @@ void InbetweenJob::run() {
             r.heldFootFrames = static_cast<int>(held.size());
             solver.setTargets(std::move(held));
             const SpanResult res = solver.solve(maxIterations, spanTolerance, cancel);
-            if (res.stop == SpanStop::kCancelled) {
-                cancelled = true;
-                frames = clip.frames;
-                return;
-            }
+            if (res.stop == SpanStop::kCancelled) return giveUp();
             for (int i = 0; i + 1 < b - a; ++i) {
                 const std::size_t t = static_cast<std::size_t>(a + 1 + i);
                 frames[t] = base.frames[t] = res.poses[static_cast<std::size_t>(i)];  // a next gap joins the solved frames
