@@ -17,6 +17,11 @@ constexpr int kLeftShift = 340, kLeftCtrl = 341, kLeftAlt = 342, kRightShift = 3
 constexpr int kCount = 512;
 }  // namespace key
 
+inline bool isModifierKey(int k) {
+    return k == key::kLeftShift || k == key::kRightShift || k == key::kLeftCtrl || k == key::kRightCtrl || k == key::kLeftAlt ||
+           k == key::kRightAlt;
+}
+
 // One press or release, in the order it happened (InputState::events).
 struct InputEvent {
     bool isKey = false;  // else a mouse button (0 left, 1 right, 2 middle)
