@@ -796,14 +796,11 @@ std::string EditorDocument::pollFill(std::string* error) {
     const int first = job->gaps.front().a, last = job->gaps.back().b;
     // The keys or the frames between changed while it ran (nothing should, drags wait): the result
     // belongs to another motion, so it is dropped rather than pasted over the change.
-    for (int t = first; t <= last; ++t) {
-        const Pose& now = poseAt(t);
-        const Pose& then = job->clip.frames[static_cast<std::size_t>(t)];
-        if (now.rootCm != then.rootCm || now.anglesDeg != then.anglesDeg) {
+    for (int t = first; t <= last; ++t)
+        if (!samePose(poseAt(t), job->clip.frames[static_cast<std::size_t>(t)])) {
             if (error) *error = "the motion between the keys changed while filling: fill again";
             return "";
         }
-    }
     EditStep step;
     step.label = "fill frames " + std::to_string(first + 2) + "-" + std::to_string(last);
     double seconds = 0.0, held = 0.0;

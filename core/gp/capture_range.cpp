@@ -53,6 +53,10 @@ double nearestTurn(double a, double lo, double hi) {
 Eigen::VectorXd captureShape(const Skeleton& skeleton, const Pose& pose) {
     FkState fk;
     forwardKinematics(skeleton, pose, fk);
+    return captureShape(skeleton, fk);
+}
+
+Eigen::VectorXd captureShape(const Skeleton& skeleton, const FkState& fk) {
     const Eigen::Matrix3d unturn = headingRemoval(fk);
     Eigen::VectorXd out(3 * skeleton.jointCount());
     for (int j = 0; j < skeleton.jointCount(); ++j) out.segment<3>(3 * j) = unturn * (fk.jointCm[j] - fk.jointCm[0]);

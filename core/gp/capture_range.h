@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "gp/model.h"
+#include "skeleton/forward_kinematics.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp::gp {
@@ -72,8 +73,10 @@ struct RangeCheck {
 RangeCheck checkRanges(const Eigen::VectorXd& q, const Eigen::VectorXd& qMin, const Eigen::VectorXd& qMax,
                        const std::vector<bool>* judged, bool wholeTurns);
 
-// Body shape of a pose (root-relative joints, heading removed), the rows of CaptureRange::shapes.
+// Body shape of a pose (root-relative joints, heading removed), the rows of CaptureRange::shapes;
+// the second form from the pose's forward kinematics, already run.
 Eigen::VectorXd captureShape(const Skeleton& skeleton, const Pose& pose);
+Eigen::VectorXd captureShape(const Skeleton& skeleton, const FkState& fk);
 // The joints d(y) leaves out for these moved effectors (true = left out), per skeleton joint.
 std::vector<bool> movedLimbJoints(const Skeleton& skeleton, const std::vector<Effector>& moved);
 

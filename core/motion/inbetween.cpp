@@ -3,14 +3,17 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "gp/capture_range.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/clip_match.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_mirror.h"
 #include "skeleton/rotation.h"
 
 namespace mgp {
@@ -42,23 +45,6 @@ const char* inbetweenMethodName(InbetweenMethod m) {
 
 namespace {
 
-// Of a rotation's two Euler triples, the one nearest `near` (each angle moved by whole turns).
-Eigen::Vector3d eulerNear(const Eigen::Matrix3d& r, const RotationOrder& order, const Eigen::Vector3d& near) {
-    Eigen::Vector3d best;
-    double bestGap = std::numeric_limits<double>::infinity();
-    const Eigen::Vector3d first = eulerFromMatrix(r, order);
-    for (const Eigen::Vector3d& e : {first, eulerAlternative(first, order)}) {
-        Eigen::Vector3d moved;
-        for (int k = 0; k < 3; ++k) moved[k] = wrapNear(e[k], near[k]);
-        const double gap = (moved - near).cwiseAbs().maxCoeff();
-        if (gap < bestGap) {
-            bestGap = gap;
-            best = moved;
-        }
-    }
-    return best;
-}
-
 // Linear blend of two neighbouring frames (angles through the shorter way round).
 Pose blendPoses(const Pose& a, const Pose& b, double s) {
     Pose p = a;
@@ -70,10 +56,11 @@ Pose blendPoses(const Pose& a, const Pose& b, double s) {
 
 double smoothstep(double s) { return s * s * (3.0 - 2.0 * s); }
 
-double yawDeg(const FkState& fk) {
-    const Eigen::Vector3d f = fk.global[0].col(2);
-    return std::atan2(f.x(), f.z()) * kRadToDeg;
-}
+double yawDeg(const FkState& fk) { return headingRadians(fk) * kRadToDeg; }
+
+// Every rotation axis free: fitJointAngles then picks the Euler triple of a rotation nearest a
+// reference, exactly (a joint with fewer DOFs keeps the slerped rotation's other angles).
+constexpr std::array<bool, 3> kAllAxes{true, true, true};
 
 // What the match compares of every frame of a motion: joint positions relative to the root in the
 // frame's heading frame (the body's shape), the velocity into the frame and out of it in the same
@@ -97,9 +84,7 @@ MotionFeatures motionFeatures(const Skeleton& sk, const std::vector<Pose>& frame
         f.heading.push_back(headingRemoval(fk));
         f.yaw.push_back(yawDeg(fk));
         f.root.push_back(fk.jointCm[0]);
-        Eigen::VectorXd shape(3 * J);
-        for (int j = 0; j < J; ++j) shape.segment<3>(3 * j) = f.heading.back() * (fk.jointCm[j] - fk.jointCm[0]);
-        f.shape.push_back(shape);
+        f.shape.push_back(gp::captureShape(sk, fk));
     }
     for (int t = 0; t < n; ++t) {
         Eigen::VectorXd in = Eigen::VectorXd::Zero(3 * J), out = Eigen::VectorXd::Zero(3 * J);
@@ -190,7 +175,7 @@ std::vector<Pose> warpedStretch(const Skeleton& sk, const std::vector<Pose>& sou
     Eigen::Vector3d previous = ka.anglesDeg[0];
     for (Pose& p : out) {
         p.rootCm = ry * (p.rootCm - pivot) + onto;
-        previous = eulerNear(rootTurn * eulerMatrix(p.anglesDeg[0], root.order), root.order, previous);
+        previous = fitJointAngles(rootTurn * eulerMatrix(p.anglesDeg[0], root.order), root.order, kAllAxes, previous);
         p.anglesDeg[0] = previous;
     }
     // Warp: the joints' offsets to the keys fade along a smoothstep (zero slope at both joins, so
@@ -285,7 +270,7 @@ Pose interpolatedPose(const Skeleton& skeleton, const Pose& a, const Pose& b, do
     for (int j = 0; j < skeleton.jointCount(); ++j) {
         const RotationOrder& order = skeleton.joints[static_cast<std::size_t>(j)].order;
         const Eigen::Quaterniond qa(eulerMatrix(a.anglesDeg[j], order)), qb(eulerMatrix(b.anglesDeg[j], order));
-        p.anglesDeg[j] = eulerNear(qa.slerp(s, qb).toRotationMatrix(), order, p.anglesDeg[j]);
+        p.anglesDeg[j] = fitJointAngles(qa.slerp(s, qb).toRotationMatrix(), order, kAllAxes, p.anglesDeg[j]);
     }
     return p;
 }
@@ -347,9 +332,10 @@ void InbetweenJob::run() {
     const auto giveUp = [&] {
         cancelled = true;
         frames = clip.frames;
+        x.clear();
     };
     // Stage 1: every gap filled by its method (the start of stage 2 for kPrior).
-    std::vector<Eigen::VectorXd> latent(frames.size());
+    x.assign(frames.size(), Eigen::VectorXd());
     std::vector<Stretch> stretches(gaps.size());
     for (std::size_t g = 0; g < gaps.size(); ++g) {
         if (cancel && cancel->load()) return giveUp();
@@ -373,7 +359,7 @@ void InbetweenJob::run() {
                                                            clip.frames[static_cast<std::size_t>(b)], L);
             for (int i = 1; i < L; ++i) {
                 frames[static_cast<std::size_t>(a + i)] = warped[static_cast<std::size_t>(i)];
-                latent[static_cast<std::size_t>(a + i)] = m.X.row(rowOf[st.clip][static_cast<std::size_t>(st.sourceFrame(i, L))]).transpose();
+                x[static_cast<std::size_t>(a + i)] = m.X.row(rowOf[st.clip][static_cast<std::size_t>(st.sourceFrame(i, L))]).transpose();
             }
             r.sourceClip = m.clipName(st.clip);
             r.sourceFirst = st.first;
@@ -387,7 +373,7 @@ void InbetweenJob::run() {
     if (method == InbetweenMethod::kPrior) {
         EditBase base;
         base.frames = frames;
-        base.x = latent;
+        base.x = x;
         std::vector<ContactSet> sourceContacts;
         for (int c = 0; c < m.clipCount(); ++c) sourceContacts.push_back(detectFootContacts(m.clipAt(c)));
         for (std::size_t g = 0; g < gaps.size(); ++g) {
@@ -404,7 +390,7 @@ void InbetweenJob::run() {
             for (int i = 0; i + 1 < b - a; ++i) {
                 const std::size_t t = static_cast<std::size_t>(a + 1 + i);
                 frames[t] = base.frames[t] = res.poses[static_cast<std::size_t>(i)];  // a next gap joins the solved frames
-                latent[t] = base.x[t] = res.x[static_cast<std::size_t>(i)];
+                x[t] = base.x[t] = res.x[static_cast<std::size_t>(i)];
             }
             for (double e : res.targetResidualCm) r.maxHeldResidualCm = std::max(r.maxHeldResidualCm, e);
             r.stop = res.stop;
@@ -412,7 +398,6 @@ void InbetweenJob::run() {
             r.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
         }
     }
-    x = latent;
     for (std::size_t g = 0; g < gaps.size(); ++g) {
         GapReport& r = reports[g];
         const int a = gaps[g].a, b = gaps[g].b;
@@ -420,13 +405,12 @@ void InbetweenJob::run() {
         r.reference = secondDifferences(clip.frames, sk, a, b);
         r.keyErrorCm = std::max(keyErrorCm(sk, frames[static_cast<std::size_t>(a)], clip.frames[static_cast<std::size_t>(a)]),
                                 keyErrorCm(sk, frames[static_cast<std::size_t>(b)], clip.frames[static_cast<std::size_t>(b)]));
-        if (gapsDone) gapsDone->fetch_add(1);
         if (!retrieves) continue;
         double sum = 0.0;
         Eigen::VectorXd mean;
         for (int t = a + 1; t < b; ++t) {
             double var = 0.0;
-            version->posterior->predict(latent[static_cast<std::size_t>(t)], mean, var);
+            version->posterior->predict(x[static_cast<std::size_t>(t)], mean, var);
             sum += var;
             r.maxVariance = std::max(r.maxVariance, var);
         }

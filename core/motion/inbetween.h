@@ -63,7 +63,6 @@ struct InbetweenJob {
     int maxIterations = 100;       // kPrior: LM iterations per gap
     double spanTolerance = 1e-6;
     const std::atomic<bool>* cancel = nullptr;  // optional; run() then sets `cancelled`
-    std::atomic<int>* gapsDone = nullptr;       // optional progress
 
     // Outputs.
     std::vector<Pose> frames;      // the whole clip, gaps filled

@@ -31,10 +31,12 @@ void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk) 
     }
 }
 
-Eigen::Matrix3d headingRemoval(const FkState& fk) {
+double headingRadians(const FkState& fk) {
     const Eigen::Vector3d forward = fk.global[0].col(2);
-    return axisRotation(kAxisY, -std::atan2(forward.x(), forward.z()));
+    return std::atan2(forward.x(), forward.z());
 }
+
+Eigen::Matrix3d headingRemoval(const FkState& fk) { return axisRotation(kAxisY, -headingRadians(fk)); }
 
 Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint) {
     return fk.jointCm[joint] + fk.global[joint] * skeleton.joints[joint].tailCm;

@@ -23,6 +23,8 @@ void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk);
 // root-relative points it removes the heading (the yaw ψ = atan2(f_x, f_z) of that axis), so poses
 // facing different ways compare as body shapes.
 Eigen::Matrix3d headingRemoval(const FkState& fk);
+// That yaw ψ itself (radians): headingRemoval is the rotation by −ψ about world Y.
+double headingRadians(const FkState& fk);
 
 // End point of joint j's bone (p_j + G_j · tail_j).
 Eigen::Vector3d boneEndCm(const Skeleton& skeleton, const FkState& fk, int joint);
