@@ -1,6 +1,7 @@
 #include "cli_common.h"
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "io/clip_export.h"
@@ -44,6 +45,16 @@ void requireExportPath(const std::string& out) {
 
 void exportFromCli(const Clip& clip, const std::string& out) {
     exportClip(clip, out, [](const std::string& stage) { std::cerr << stage << "\n"; });
+}
+
+void printClaims(const nlohmann::json& claims) {
+    for (const auto& c : claims) {
+        const auto& p = c["pooled"];
+        std::printf("claim: %s\n  %s: %d of %d pairs favour it, %d against, %d ties; p = %.3g -> %s\n",
+                    c["claim"].get<std::string>().c_str(), c["test"].get<std::string>().c_str(), p["positive"].get<int>(),
+                    p["pairs"].get<int>(), p["negative"].get<int>(), p["zero"].get<int>(), p["p"].get<double>(),
+                    c["verdict"].get<std::string>().c_str());
+    }
 }
 
 }  // namespace mgp::app

@@ -14,6 +14,8 @@ struct UsageError : std::runtime_error {
 
 // Prints exactly one JSON object on stdout (the --json contract).
 void printJson(const nlohmann::json& j);
+// The claims of a repeated protocol (eval/claim_test.h claimJson), one verdict each, for a terminal.
+void printClaims(const nlohmann::json& claims);
 // Converts a 1-based --frame to a clip index, or throws UsageError naming the valid range.
 int frameIndexFromCli(const Clip& clip, long long frame);
 nlohmann::json vec3Json(const Eigen::Vector3d& v);

@@ -7,6 +7,8 @@
 #include "eval/editing_range.h"
 #include "eval/naturalness.h"
 #include "eval/ppca_density.h"
+#include "motion/foot_contacts.h"
+#include "skeleton/forward_kinematics.h"
 #include "io/clip_loader.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -116,6 +118,55 @@ TEST_CASE("editing-range sweep: per-test ranges are prefix ranges and the combin
         updates += s.updatedModel;
     }
     CHECK(updates == r.adaptiveUpdates);
+    // δ = 0 re-solves the captured frame: not an edit, nothing learned.
+    CHECK_FALSE(r.steps[0].updatedModel);
+    // The binding tests are the ones the step after the range failed.
+    const std::vector<std::string> binding = r.binding();
+    if (r.combined + 1 < static_cast<int>(r.steps.size())) {
+        const EditingStep& next = r.steps[r.combined + 1];
+        CHECK(binding.size() == static_cast<std::size_t>(!next.reach + !next.verdict.ranges + !next.verdict.nearest +
+                                                         !next.verdict.density + !next.verdict.continuity));
+        CHECK_FALSE(binding.empty());
+    } else {
+        CHECK(binding.empty());
+    }
     MESSAGE("35_01 f101 raise rfoot (T=3, M=100, FAS adaptive): combined " << r.combined << " cm; reach " << r.reach << ", ranges "
             << r.ranges << ", NN " << r.nearest << ", density " << r.density << ", continuity " << r.continuity);
+}
+
+TEST_CASE("editing-range sweep, editor drag: the feet planted on the frame stay where they stand") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int frame = 100;
+    std::vector<ReferenceFrame> ref;
+    for (int t = 0; t < clip.frameCount(); ++t)
+        if (std::abs(t - frame) > 10) ref.push_back({&clip, t, 0});
+    const NaturalnessTests tests(ref, Effector::kLHand);
+    EditingRangeJob job;
+    job.version = version;
+    job.frame = frame;
+    job.effector = Effector::kLHand;
+    job.tests = &tests;
+    job.maxDeltaCm = 6;
+    job.editorDrag = true;
+    const EditingRange r = job.run();
+    REQUIRE(r.steps.size() >= 2);
+    const ContactSet contacts = detectFootContacts(clip);
+    const Pose& captured = clip.frames[frame];
+    int planted = 0;
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+        if (!contacts.at(foot, frame)) continue;
+        ++planted;
+        for (const EditingStep& s : r.steps) {
+            Pose pose = captured;
+            PoseLayout(clip.skeleton).apply(s.poseDeg.data(), pose);
+            const double moved = (effectorCm(clip.skeleton, pose, foot) - effectorCm(clip.skeleton, captured, foot)).norm();
+            INFO(effectorName(foot) << " at δ = " << s.deltaCm);
+            if (s.reach) CHECK(moved <= 0.5);
+        }
+    }
+    CHECK(planted > 0);  // the walk's frame 101 stands on a foot: the check above is not vacuous
+    for (const EditingStep& s : r.steps)
+        if (s.reach) CHECK(s.residualCm <= 0.5);
+    CHECK(r.reach >= 1);
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "eval/claim_test.h"
 #include "eval/clip_segments.h"
 #include "eval/nearest_pose.h"
 #include "eval/table1_protocol.h"
@@ -186,6 +187,131 @@ TEST_CASE("clip segments: joined in order, and a segment past the trial's end is
     }
 }
 
+TEST_CASE("clip specs: FILE or FILE:A:B, and a bad range or a bare name is a clear error") {
+    const std::string file = test::mocap("asf_amc/16_35.amc");
+    const ClipSegment whole = parseClipSpec(file);
+    CHECK(whole.trial == file);
+    CHECK(whole.first == 1);
+    CHECK(whole.last == 0);
+    const ClipSegment part = parseClipSpec(file + ":11:40");
+    CHECK(part.trial == file);
+    CHECK(part.first == 11);
+    CHECK(part.last == 40);
+    TrialCache cache;
+    const int wholeFrames = joinSegments("", {whole}, cache).frameCount();
+    CHECK(wholeFrames == cache.at(file).frameCount());
+    const Clip stretch = joinSegments("", {part}, cache);
+    CHECK(stretch.frameCount() == 30);
+    CHECK(stretch.frames[0].rootCm.isApprox(cache.at(file).frames[10].rootCm));
+    CHECK(cache.size() == 1);
+    CHECK_THROWS_WITH_AS(parseClipSpec(file + ":0:5"), doctest::Contains("1 ≤ A ≤ B"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(parseClipSpec(file + ":9:3"), doctest::Contains("1 ≤ A ≤ B"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(parseClipSpec("16_35"), doctest::Contains("expected a clip file"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(joinSegments("", {parseClipSpec(file + ":1:99999")}, cache), doctest::Contains("within 1.."),
+                         std::invalid_argument);
+}
+
+TEST_CASE("table2 rows from --clip/--edit: the effector, a unit direction, the frame, and bad edits named") {
+    const std::string file = test::mocap("asf_amc/16_35.amc");
+    const Table2Row row = table2RowFromSpec(file + ":1:100", "rhand:3,4,0", 0, {file + ":120:160"}, 100);
+    CHECK(row.kind == "16_35");
+    CHECK(row.effector == Effector::kRHand);
+    CHECK(row.direction.isApprox(Eigen::Vector3d(0.6, 0.8, 0.0)));
+    CHECK(row.frame == 50);  // the middle frame
+    REQUIRE(row.reference.size() == 1);
+    CHECK(row.reference[0].first == 120);
+    CHECK(table2RowFromSpec(file, "head:0,-2,0", 7, {}, 100).direction.isApprox(-Eigen::Vector3d::UnitY()));
+    CHECK(table2RowFromSpec(file, "head:0,-2,0", 7, {}, 100).frame == 7);
+    for (const char* bad : {"hand:0,1,0", "head:0,0,0", "head:1,2", "head:1,2,3x", "head"}) {
+        INFO(bad);
+        CHECK_THROWS_WITH_AS(table2RowFromSpec(file, bad, 0, {}, 100), doctest::Contains("found '"), std::invalid_argument);
+    }
+    CHECK_THROWS_WITH_AS(table2RowFromSpec(file, "head:0,1,0", 101, {}, 100), doctest::Contains("--frame within 1..100"),
+                         std::invalid_argument);
+}
+
+TEST_CASE("table1 --clip --runs: each run's pair, mean ± sd per model, a verdict per claim") {
+    const std::string clip = test::mocap("asf_amc/16_35.amc") + ":1:60";
+    const nlohmann::json out =
+        runJson("table1 --clip " + clip + " --iters 3 --active 30 --scg-iters 10 --runs 3 --threads 2 --json");
+    CHECK(out["settings"]["runs"] == 3);
+    CHECK(out["settings"]["perturbation"].get<std::string>().find("one in ten") != std::string::npos);
+    REQUIRE(out["rows"].size() == 1u);
+    const nlohmann::json& row = out["rows"][0];
+    CHECK(row["kind"] == "16_35");
+    CHECK(row["T_report"] == 3);
+    REQUIRE(row["runs"].size() == 3u);
+    std::vector<double> raw;
+    for (int k = 0; k < 3; ++k) {
+        CHECK(row["runs"][k]["run"] == k);
+        CHECK(row["runs"][k]["N"] == 54);  // 60 frames, one in ten dropped
+        raw.push_back(row["runs"][k]["fas"]["raw_max_delta"].get<double>());
+        checkAllFinite(row["runs"][k]["fas"], "fas");
+    }
+    // The perturbations are real: the runs differ.
+    CHECK(raw[0] != raw[1]);
+    const Spread s = spreadOf(raw);
+    CHECK(row["spread"]["fas"]["raw_max_delta"]["mean"].get<double>() == doctest::Approx(s.mean));
+    CHECK(row["spread"]["fas"]["raw_max_delta"]["sd"].get<double>() == doctest::Approx(s.sd));
+    CHECK(row["spread"]["fas"]["raw_max_delta"]["n"] == 3);
+    REQUIRE(out["claims"].size() == 4u);
+    for (const auto& c : out["claims"]) {
+        CHECK(c["pooled"]["pairs"] == 3);
+        const std::string v = c["verdict"];
+        CHECK((v == "confirmed" || v == "refuted" || v == "inconclusive"));
+        CHECK(v == "inconclusive");  // three pairs cannot reach p < 0.05 (smallest p = 0.25)
+    }
+}
+
+TEST_CASE("table2 --clip --edit --runs: the row as asked, every cell per run with its binding tests, the claims") {
+    const std::string clip = test::mocap("asf_amc/16_01.amc");
+    const nlohmann::json out = runJson("table2 --clip " + clip + ":1:120 --frame 60 --edit rfoot:0,1,0 --reference " + clip +
+                                       ":131:322 --iters 2 --active 60 --max-delta 6 --runs 2 --threads 2 --json");
+    REQUIRE(out["rows"].size() == 1u);
+    const nlohmann::json& e = out["rows"][0];
+    CHECK(e["edited_frame"] == 60);
+    CHECK(e["direction"][1].get<double>() == doctest::Approx(1.0));
+    CHECK(e["captured_frame"].contains("ranges"));
+    REQUIRE(e["runs"].size() == 2u);
+    for (const auto& run : e["runs"]) {
+        CHECK(run["frames_trained"] == 108);
+        for (const auto& cellName : out["settings"]["cells"]) {
+            const std::string cell = cellName;
+            INFO(cell);
+            REQUIRE(run.contains(cell));
+            const nlohmann::json& r = run[cell];
+            const int combined = r["combined"];
+            CHECK(combined >= -1);
+            CHECK(combined <= 6);
+            // A range below the sweep's end names what bound it; one at the end names nothing.
+            CHECK(r["binding"].empty() == (combined == 6));
+        }
+    }
+    CHECK(e["spread"]["fas_static_drag"]["n"] == 2);
+    CHECK(out["claims"].size() == 5u);
+}
+
+TEST_CASE("table1/table2 --clip: bad clips and edits are one clear error") {
+    const std::string clip = test::mocap("asf_amc/16_01.amc");
+    struct Case {
+        std::string args, expect;
+    };
+    const Case cases[] = {
+        {"table2 --clip " + clip + " --edit hand:0,1,0", "expected --edit EFFECTOR:dx,dy,dz"},
+        {"table2 --clip " + clip, "expected --edit"},
+        {"table2 --edit head:0,1,0", "found no --clip"},
+        {"table2 --clip " + test::mocap("bvh/02_03.bvh") + " --edit head:0,1,0", "22 model bones"},
+        {"table1 --clip " + clip + ":5:2", "1 ≤ A ≤ B"},
+    };
+    for (const Case& c : cases) {
+        const test::CliResult r = test::runCli(c.args);
+        INFO(c.args << "\n" << r.err);
+        CHECK(r.exitCode != 0);
+        CHECK(r.err.find(c.expect) != std::string::npos);
+        CHECK(r.err.find("terminate") == std::string::npos);
+    }
+}
+
 TEST_CASE("table settings: bad values are rejected with the field's name") {
     Table1Settings t1;
     t1.itersScale = 0.0;
@@ -193,6 +319,9 @@ TEST_CASE("table settings: bad values are rejected with the field's name") {
     Table2Settings t2;
     t2.maxDeltaCm = 0;
     CHECK_THROWS_WITH_AS(t2.validate(), doctest::Contains("largest displacement"), std::invalid_argument);
+    Table1Settings runs;
+    runs.runs = 0;
+    CHECK_THROWS_WITH_AS(runs.validate(), doctest::Contains("1 to 50 runs"), std::invalid_argument);
 }
 
 }  // namespace mgp

@@ -183,3 +183,27 @@ TEST_CASE("trainer: the default prior weight follows the budget T (100 up to T =
     CHECK(r.model.settings.prior == LatentPrior::kSmooth);
     CHECK(r.model.settings.priorWeight == kQuickPriorWeight);
 }
+
+TEST_CASE("trainer: the start noise moves the PCA start by N(0, σ²) per coordinate, repeatably per seed") {
+    const mgp::Clip clip = mgp::loadClip(kClip);
+    const TrainingData data = smallData(clip, 1);
+    TrainOptions o = smallOptions(KernelKind::kFas, 1);
+    const Eigen::MatrixXd x0 = Trainer(data, o).latent();
+    o.startNoise = 0.05;
+    o.startSeed = 3;
+    const Eigen::MatrixXd x3 = Trainer(data, o).latent();
+    CHECK(Trainer(data, o).latent() == x3);  // the seed fixes the draw
+    o.startSeed = 4;
+    CHECK(Trainer(data, o).latent() != x3);
+    // The draws, divided by σ, look standard normal over the clip's 2N coordinates.
+    const Eigen::MatrixXd moved = (x3 - x0) / 0.05;
+    const Eigen::ArrayXd z = Eigen::Map<const Eigen::VectorXd>(moved.data(), moved.size()).array();
+    const double mean = z.mean();
+    const double sd = std::sqrt((z - mean).square().sum() / (z.size() - 1));
+    INFO(z.size() << " draws: mean " << mean << ", sd " << sd);
+    REQUIRE(z.size() > 200);
+    CHECK(std::abs(mean) < 4.0 / std::sqrt(static_cast<double>(z.size())));  // 4 standard errors
+    CHECK(sd == doctest::Approx(1.0).epsilon(0.15));
+    o.startNoise = -1.0;
+    CHECK_THROWS_AS(o.validate(), std::invalid_argument);
+}

@@ -4,7 +4,13 @@
 // A test's range is the largest δ such that every δ' ≤ δ passes it (−1: δ = 0 already fails);
 // the combined range needs every test. With `adaptive`, §5.3 runs after every accepted δ (all
 // tests pass) and the next δ uses the new model version. The sweep stops at maxDeltaCm or once
-// every test has failed (all ranges are then known).
+// every test has failed (all ranges are then known). δ = 0 is the captured frame re-solved, not
+// an edit, so the adaptive arm never learns it (docs/maths.md §14.2).
+//
+// With `editorDrag` each δ is solved as the editor's drag solves it (ik/constrained_ik.h, the
+// drag's defaults): the target exact, the feet in ground contact on the frame pinned where they
+// stand, the floor, locality around the captured pose and the root rotation held near it.
+#include <string>
 #include <vector>
 
 #include "eval/naturalness.h"
@@ -27,6 +33,9 @@ struct EditingRange {
     int combined = -1, reach = -1, ranges = -1, nearest = -1, density = -1, continuity = -1;
     int adaptiveUpdates = 0;
     std::vector<EditingStep> steps;
+    // The tests that fail first, at δ = combined + 1 ("reach", "joint ranges", "nearest real
+    // pose", "density", "continuity"); empty when the sweep reached maxDeltaCm.
+    std::vector<std::string> binding() const;
 };
 
 struct EditingRangeJob {
@@ -39,6 +48,7 @@ struct EditingRangeJob {
     int maxDeltaCm = 80;
     int ikIterations = 500;
     int adaptiveScgIterations = 100;  // SCG iterations of each adaptive update
+    bool editorDrag = false;
     EditingRange run() const;
 };
 

@@ -75,6 +75,11 @@ NaturalnessTests::NaturalnessTests(std::vector<ReferenceFrame> frames, Effector 
     densityThreshold_ = heldOutLogDensityQuantile(cols, kDensityComponents, 5, 0.01);
 }
 
+std::pair<double, double> NaturalnessTests::rangeBounds(int dof) const {
+    const double margin = std::max(gp::kCaptureRangeMarginDeg, gp::kCaptureRangeMarginFraction * (qMax_[dof] - qMin_[dof]));
+    return {qMin_[dof] - margin, qMax_[dof] + margin};
+}
+
 double NaturalnessTests::nearestDistance(const Eigen::VectorXd& shape, int skipGroup, int skipFrom, int skipTo) const {
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < size(); ++i) {

@@ -14,6 +14,7 @@
 // Test 1 (reach ≤ 0.5 cm) comes from the IK result.
 #include <Eigen/Core>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "eval/ppca_density.h"
@@ -49,6 +50,8 @@ public:
                              const Eigen::VectorXd* previous) const;
 
     double nnThreshold() const { return tauNN_; }
+    // The interval test 2 allows DOF k (degrees): R's range widened by its margin.
+    std::pair<double, double> rangeBounds(int dof) const;
     double densityThreshold() const { return densityThreshold_; }
     int size() const { return static_cast<int>(frames_.size()); }
     const Eigen::MatrixXd& referencePoses() const { return poses_; }  // |R| × 47, unwrapped per clip

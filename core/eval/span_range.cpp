@@ -8,8 +8,10 @@ namespace mgp {
 
 nlohmann::json SpanRangeJob::run() const {
     const Clip& clip = version->model->clip;
-    const int f = frame;
-    if (f - 22 < 0 || f + 22 >= clip.frameCount()) return {{"skipped", "the 43-frame span does not fit the clip"}};
+    const int f = frame, first = f - keysBefore, last = f + keysAfter;
+    if (first - 1 < 0 || last + 1 >= clip.frameCount()) return {{"skipped", "the span does not fit the clip"}};
+    for (int j : joins)
+        if (j > first - 1 && j <= last + 1) return {{"skipped", "the span crosses the join of two trials"}};
     const PoseLayout layout(clip.skeleton);
     Eigen::VectorXd previous;
     int range = -1;
@@ -19,8 +21,8 @@ nlohmann::json SpanRangeJob::run() const {
         MotionEditJob job;
         job.version = version;
         job.effector = effector;
-        job.keyFrames = {f - 21, f, f + 21};
-        job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, direction * delta, 0), Eigen::Vector3d::Zero()};
+        job.keyFrames = {first, f, last};
+        job.keyOffsetsCm = {Eigen::Vector3d::Zero(), direction * delta, Eigen::Vector3d::Zero()};
         job.mode = PathMode::kDirect;  // the paper's Hermite path, as the protocol was measured
         job.run();
         const SpanQuality& q = job.quality;
@@ -41,7 +43,7 @@ nlohmann::json SpanRangeJob::run() const {
         previous = poseDeg;
     }
     return {{"combined", range}, {"first_failure", failed.empty() ? "none up to max_delta" : failed}, {"steps", steps},
-            {"keys", {f - 21 + 1, f + 1, f + 21 + 1}}};
+            {"keys", {first + 1, f + 1, last + 1}}};
 }
 
 }  // namespace mgp

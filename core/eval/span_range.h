@@ -1,11 +1,14 @@
 #pragma once
 // Table 2's extra column (docs/maths.md §14): the same edit made by span regeneration
 // (motion/motion_edit.h, kSpan) instead of one frame. Keys at the edited frame f − 21, f, f + 21
-// (a 43-frame span), the middle one moved by δ·u; contacts held. The span range is the largest δ
+// (a 43-frame span), the middle one moved by δ·u; contacts held. A span that would cross the join
+// of two trials (`joins`) is skipped: the span solver would take the jump for motion. The span range is the largest δ
 // (1 cm steps) such that every δ' ≤ δ meets the key within 0.5 cm, keeps the span's largest
 // per-frame joint-angle second difference within the capture's (p95 ≤ 1.5× + 2°, max ≤ 1.5× + 5°)
 // and gives an edited-frame pose that passes the same naturalness tests. Not the paper's
 // protocol: it shows what coherence costs or buys at the same edit.
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "eval/naturalness.h"
@@ -16,10 +19,15 @@ namespace mgp {
 struct SpanRangeJob {
     gp::ModelVersionPtr version;
     int frame = 0;  // the edited clip frame (0-based)
+    // The outer keys' distance from the frame, in clip frames. A repeated run's clip lacks one
+    // frame in ten, so the protocol passes the distances that keep the keys on the same captured
+    // frames as the full clip's f ± 21.
+    int keysBefore = 21, keysAfter = 21;
     Effector effector = Effector::kRFoot;
-    double direction = 1.0;  // +1 raise, −1 lower (along Y)
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // unit
     const NaturalnessTests* tests = nullptr;
     int maxDeltaCm = 80;
+    std::vector<int> joins;  // clip frames that start another trial (0-based)
     // {"combined", "first_failure", "steps", "keys" (1-based)}, or {"skipped": why} when the span
     // does not fit the clip.
     nlohmann::json run() const;

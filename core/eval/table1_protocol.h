@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/clip_segments.h"
+#include "eval/protocol_runs.h"
 #include "gp/trainer.h"
 
 namespace mgp {
@@ -31,11 +32,17 @@ struct Table1Clip {
 const std::vector<Table1Clip>& table1Clips();
 const std::vector<Table1Clip>& table1QuickClips();
 
+// A clip the paper never used (`table1 --clip FILE[:A:B]`), run at T iterations.
+Table1Clip table1ClipFromSpec(const std::string& spec, int iterations);
+
 struct Table1Settings {
     std::vector<Table1Clip> clips = table1Clips();
     double itersScale = 1.0;  // T = max(3, round(itersScale · paper T))
     bool literal = false;
     bool quick = false;       // only reported: the caller chose the clips and sizes
+    int runs = 1;             // repeated, perturbed runs per cell (eval/protocol_runs.h)
+    double startNoise = kRunStartNoise;
+    int workers = 1;          // runs trained at once (each Step 8 then single-threaded)
     // The training options of every run; kind, outerIterations and paperLiteral are set per run.
     gp::TrainOptions train = table1TrainOptions();
 
@@ -55,7 +62,10 @@ int table1Iterations(int paperIterations, double itersScale);
 nlohmann::json table1Run(const gp::TrainingData& data, const gp::TrainOptions& options, int T, const std::string& label,
                          const ProgressFn& progress);
 
-// The whole table: {"settings", "reductions", "rows"}. The settings are the ones used.
+// The whole table: {"settings", "reductions", "rows", "claims"}. With one run a row holds "fas"
+// and "sgplvm" (table1Run each); with K runs it holds "runs" (K of those pairs) and "spread"
+// (mean ± sd per model and quantity). "claims": the paper's Table 1 claims judged over every
+// (clip, run) pair (eval/claim_test.h). The settings are the ones used.
 nlohmann::json runTable1(const std::string& mocapDir, const Table1Settings& settings, const ProgressFn& progress);
 
 }  // namespace mgp

@@ -3,7 +3,9 @@
 // static/adaptive on the Table 1 clips and the paper's edits, judged by the model-independent
 // naturalness tests against a reference set R of real frames; plus the learned IK's poses
 // against the plain IK's (nearest-pose RMS, eval/nearest_pose.h) and the same edit by span
-// regeneration (eval/span_range.h). Whatever comes out is reported.
+// regeneration (eval/span_range.h) and by the editor's drag solve (EditingRangeJob::editorDrag).
+// With K runs (eval/protocol_runs.h) every cell is repeated and the paper's Table 2 claims are
+// judged over the (row, run) pairs. Whatever comes out is reported.
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 
 #include "eval/clip_segments.h"
 #include "eval/naturalness.h"
+#include "eval/protocol_runs.h"
 #include "eval/table1_protocol.h"
 
 namespace mgp {
@@ -20,7 +23,7 @@ struct Table2Row {
     std::vector<ClipSegment> training;
     int frame = 1;  // the edited frame, 1-based in the training clip
     Effector effector = Effector::kRFoot;
-    double direction = 1.0;  // +1 raise, −1 lower
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // unit: the edit's direction in world space
     std::string edit;
     std::vector<ClipSegment> reference;  // the other trials of R, one group each
     std::string why;
@@ -30,8 +33,18 @@ struct Table2Row {
 const std::vector<Table2Row>& table2Rows();
 const std::vector<Table2Row>& table2QuickRows();
 
+// A row on a clip the paper never used: `table2 --clip FILE[:A:B] --edit EFF:dx,dy,dz [--frame F]
+// [--reference FILE[:A:B]]…`. frame: 1-based in the clip (0: its middle frame); the edit's vector
+// gives the direction (any length but zero). R: the references, plus the clip without F ± 10.
+// Throws std::invalid_argument naming what was expected and found.
+Table2Row table2RowFromSpec(const std::string& clipSpec, const std::string& editSpec, int frame,
+                            const std::vector<std::string>& referenceSpecs, int clipFrames);
+
 struct Table2Settings {
     std::vector<Table2Row> rows = table2Rows();
+    int runs = 1;  // repeated, perturbed runs per cell (eval/protocol_runs.h)
+    double startNoise = kRunStartNoise;
+    int workers = 1;  // (row, run) jobs at once
     int outerIterations = 10;
     int activeSize = 200;
     int maxDeltaCm = 80;
@@ -46,7 +59,10 @@ struct Table2Settings {
 // every frame of each reference clip (group g + 1).
 std::vector<ReferenceFrame> table2Reference(const Clip& training, int frame0, const std::vector<Clip>& referenceClips);
 
-// The whole table: {"settings", "reductions", "rows"}. The settings are the ones used.
+// The whole table: {"settings", "reductions", "rows", "claims"}. With one run a row holds its
+// cells (sgplvm_static … fas_static_drag); with K runs it holds "runs" (K of those) and "spread"
+// (mean ± sd of every cell's ranges). Every cell names its binding tests. The settings are the
+// ones used.
 nlohmann::json runTable2(const std::string& mocapDir, const Table2Settings& settings, const ProgressFn& progress);
 
 }  // namespace mgp

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include "gp/active_step.h"
@@ -126,7 +127,27 @@ void TrainOptions::validate() const {
     if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
     if (priorWeight && (!(*priorWeight >= 0.0) || !std::isfinite(*priorWeight)))
         throw std::invalid_argument("TrainOptions: expected a finite priorWeight ≥ 0");
+    if (!(startNoise >= 0.0) || !std::isfinite(startNoise))
+        throw std::invalid_argument("TrainOptions: expected a finite startNoise ≥ 0");
 }
+
+namespace {
+
+// Standard normal draws that are the same on every standard library: Box–Muller over
+// std::mt19937, whose output sequence the standard fixes (std::normal_distribution's is not).
+Eigen::MatrixXd standardNormal(Eigen::Index rows, Eigen::Index cols, unsigned seed) {
+    std::mt19937 gen(seed);
+    auto uniform = [&] { return (static_cast<double>(gen()) + 0.5) / 4294967296.0; };  // (0, 1)
+    Eigen::MatrixXd z(rows, cols);
+    for (Eigen::Index i = 0; i < z.size(); i += 2) {
+        const double r = std::sqrt(-2.0 * std::log(uniform())), a = 2.0 * M_PI * uniform();
+        z(i) = r * std::cos(a);
+        if (i + 1 < z.size()) z(i + 1) = r * std::sin(a);
+    }
+    return z;
+}
+
+}  // namespace
 
 Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::move(data)), opt_(options) {
     opt_.validate();
@@ -134,6 +155,7 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
     // Eq. 4 on the varying DOFs: d = 2 for every ASF clip (at most 47), 3 for a BVH with D ≥ 60.
     const int d = latentDimensionFor(static_cast<int>(data_.Y.cols()));
     X_ = whitenedPca(Ybar, std::min<int>(d, static_cast<int>(data_.Y.cols()))).X;
+    if (opt_.startNoise > 0.0) X_ += opt_.startNoise * standardNormal(X_.rows(), X_.cols(), opt_.startSeed);
     psi_ = Eigen::VectorXd::Zero(paramCount(opt_.kind));  // α = β = γ = η = 1
     if (opt_.prior == LatentPrior::kSmooth)
         prior_ = TemporalPrior::secondDifference(data_.frames, opt_.resolvedPriorWeight(), data_.clips);

@@ -67,6 +67,11 @@ struct TrainOptions {
     // Back-constraints (docs/maths.md §22): X = K A, a smooth function of the poses; Step 6
     // optimises (ψ, A) and Step 8 is skipped. Combines with any prior (on X = K A).
     bool backConstraints = false;
+    // A stated perturbation of the start, for repeated protocol runs (docs/maths.md §14.5):
+    // independent N(0, startNoise²) added to every whitened-PCA latent coordinate (unit variance),
+    // drawn from a generator seeded with startSeed. 0: the paper's start, untouched.
+    double startNoise = 0.0;
+    unsigned startSeed = 0;
 
     // Throws std::invalid_argument naming the first bad field.
     void validate() const;
