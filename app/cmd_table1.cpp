@@ -73,7 +73,7 @@ const CommandRegistration table1Command(
         sub.add_flag("--literal", o->literal, "Also run the paper-literal eq. 5 (c = N, no gauge)");
         sub.add_option("--runs", o->runs, "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict per claim (default 1)");
         sub.add_option("--clip", o->clips, "Run on this clip instead of the paper's (AMC, BVH or glTF; FILE:A:B keeps frames A..B); repeatable");
-        sub.add_option("--iters", o->iters, "Outer iterations T on a --clip (default 58, the mean of the paper's T)");
+        sub.add_option("--iters", o->iters, "Outer iterations on a --clip before --iters-scale (default 58, the mean of the paper's T; T ≥ 3)");
         sub.add_option("--threads", o->threads, "Threads: for Step 8, or with --runs K for runs at once (default: all cores; results do not depend on it)");
         sub.add_flag("--json", o->json, "Print one JSON object");
         return [o]() {

@@ -143,9 +143,9 @@ const CommandRegistration table2Command("table2", "Editing range (paper Table 2)
     sub.add_option("--max-delta", o->maxDelta, "Largest displacement in cm (default 80)")->check(CLI::Range(1, 1000));
     sub.add_option("--runs", o->runs, "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict per claim (default 1)")
         ->check(CLI::Range(1, 50));
-    sub.add_option("--clip", o->clips, "Run on this clip instead of the paper's (AMC of a CMU ASF skeleton; FILE:A:B keeps frames A..B); repeatable");
+    sub.add_option("--clip", o->clips, "Run on this clip instead of the paper's (a skeleton with the 22 CMU model bones: ASF/AMC, or a BVH naming them; FILE:A:B keeps frames A..B); repeatable");
     sub.add_option("--edit", o->edit, "With --clip: the edit, EFFECTOR:dx,dy,dz (lhand, rhand, lfoot, rfoot, head; a world direction, Y up)");
-    sub.add_option("--frame", o->frame, "With --clip: the edited frame, 1-based (default: the middle frame)")->check(CLI::Range(1, 10000000));
+    sub.add_option("--frame", o->frame, "With --clip: the edited frame, 1-based within the clip's A..B (default: the middle frame)")->check(CLI::Range(1, 10000000));
     sub.add_option("--reference", o->references, "With --clip: other real clips of the motion for R (FILE[:A:B]); repeatable");
     sub.add_option("--threads", o->threads, "With --runs K: runs at once (default: all cores; results do not depend on it)")->check(CLI::Range(0, 256));
     sub.add_flag("--quick", o->quick, "Smoke run on the shipped clips (2 rows of 120 frames): T ≤ 2, M ≤ 100, δ ≤ 30");

@@ -204,6 +204,13 @@ TEST_CASE("clip specs: FILE or FILE:A:B, and a bad range or a bare name is a cle
     CHECK(stretch.frameCount() == 30);
     CHECK(stretch.frames[0].rootCm.isApprox(cache.at(file).frames[10].rootCm));
     CHECK(cache.size() == 1);
+    // A BVH converter's rest pose is not motion: a whole-file segment starts after it.
+    const std::string bvh = test::mocap("bvh/49_04.bvh");
+    const Clip motion = joinSegments("", {parseClipSpec(bvh)}, cache);
+    REQUIRE(cache.at(bvh).restFrame);
+    CHECK(motion.frameCount() == cache.at(bvh).frameCount() - 1);
+    CHECK_FALSE(motion.restFrame);
+    CHECK(describeSegments({parseClipSpec(bvh)}) == bvh + " [1:end]");
     CHECK_THROWS_WITH_AS(parseClipSpec(file + ":0:5"), doctest::Contains("1 ≤ A ≤ B"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(parseClipSpec(file + ":9:3"), doctest::Contains("1 ≤ A ≤ B"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(parseClipSpec("16_35"), doctest::Contains("expected a clip file"), std::invalid_argument);
@@ -302,6 +309,10 @@ TEST_CASE("table1/table2 --clip: bad clips and edits are one clear error") {
         {"table2 --edit head:0,1,0", "found no --clip"},
         {"table2 --clip " + test::mocap("bvh/02_03.bvh") + " --edit head:0,1,0", "22 model bones"},
         {"table1 --clip " + clip + ":5:2", "1 ≤ A ≤ B"},
+        {"table2 --clip " + test::mocap("asf_amc/35_01.amc") + ":1:120 --edit lhand:0,1,0 --reference " + test::mocap("bvh/49_04.bvh"),
+         "pose layout"},
+        {"table2 --clip " + test::mocap("asf_amc/16_35.amc") + ":1:25 --edit rfoot:0,1,0", "reference frames"},
+        {"table2 --clip " + clip + " --edit rfoot:1e308,1e308,0", "non-zero, finite edit direction"},
     };
     for (const Case& c : cases) {
         const test::CliResult r = test::runCli(c.args);

@@ -125,19 +125,26 @@ nlohmann::json claimJson(const std::string& claim, const std::string& difference
                                     " for " + std::to_string(groups.size()));
     nlohmann::json perGroup = nlohmann::json::array();
     std::vector<double> pooled;
+    int dropped = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        if (differences[g].empty()) continue;
-        pooled.insert(pooled.end(), differences[g].begin(), differences[g].end());
-        perGroup.push_back({{"group", groups[g]}, {"difference", spreadJson(spreadOf(differences[g]))},
-                            {"test", testJson(wilcoxonSignedRank(differences[g]))}});
+        // A pair without a finite difference (both measures 0 in a ratio) has no sign to count.
+        std::vector<double> d;
+        for (double x : differences[g])
+            if (std::isfinite(x)) d.push_back(x);
+            else ++dropped;
+        if (d.empty()) continue;
+        pooled.insert(pooled.end(), d.begin(), d.end());
+        perGroup.push_back({{"group", groups[g]}, {"difference", spreadJson(spreadOf(d))}, {"test", testJson(wilcoxonSignedRank(d))}});
     }
     const SignedRankTest all = wilcoxonSignedRank(pooled);
     return {{"claim", claim},
             {"difference", difference + " (positive favours the claim)"},
-            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " + std::to_string(alpha).substr(0, 4)},
+            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " + std::to_string(alpha).substr(0, 4) +
+                         "; runs of a row share its motion, so the verdict is about these motions under this perturbation"},
             {"per_group", perGroup},
             {"pooled", testJson(all)},
             {"pooled_difference", spreadJson(spreadOf(pooled))},
+            {"pairs_without_a_finite_difference", dropped},
             {"verdict", claimVerdictName(claimVerdict(all, alpha))}};
 }
 

@@ -42,7 +42,8 @@ nlohmann::json spreadJson(const Spread& s);
 
 // A claim judged over groups (a protocol's rows) of paired differences (one per run), positive
 // favouring the claim: per group its spread and test, pooled over every pair the test that
-// decides, and the verdict. Groups without differences are left out of the pool.
+// decides, and the verdict. Groups without differences are left out of the pool; a non-finite
+// difference is left out and counted.
 nlohmann::json claimJson(const std::string& claim, const std::string& difference, const std::vector<std::string>& groups,
                          const std::vector<std::vector<double>>& differences, double alpha = 0.05);
 

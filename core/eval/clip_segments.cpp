@@ -9,7 +9,7 @@ namespace mgp {
 std::string describeSegments(const std::vector<ClipSegment>& segments) {
     std::string s;
     for (const ClipSegment& g : segments)
-        s += (s.empty() ? "" : " + ") + g.trial + " [" + std::to_string(g.first) + ":" + std::to_string(g.last) + "]";
+        s += (s.empty() ? "" : " + ") + g.trial + " [" + std::to_string(g.first) + ":" + (g.last == 0 ? "end" : std::to_string(g.last)) + "]";
     return s;
 }
 
@@ -56,7 +56,12 @@ Clip joinSegments(const std::string& mocapDir, const std::vector<ClipSegment>& s
             throw std::invalid_argument("expected " + s.trial + " frames " + std::to_string(s.first) + ".." +
                                         std::to_string(last) + " within 1.." + std::to_string(clip.frameCount()) +
                                         ", found a segment outside them");
-        appendFrames(joined, clip, s.first - 1, last - s.first + 1);
+        // A BVH converter's rest pose (frame 1) is not motion: a whole-file segment leaves it out.
+        const int first = s.first == 1 && clip.restFrame ? 2 : s.first;
+        if (first > last)
+            throw std::invalid_argument("expected motion frames in " + s.trial + ", found only its rest frame");
+        appendFrames(joined, clip, first - 1, last - first + 1);
+        joined.restFrame = false;
     }
     return joined;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <memory>
+#include <mutex>
 
 #include "util/parallel_for.h"
 
@@ -36,6 +38,14 @@ void forEachJob(int jobs, int workers, const std::function<void(int job)>& job) 
     parallelFor(std::clamp(workers, 1, std::max(1, jobs)), [&](int) {
         for (int j = next++; j < jobs; j = next++) job(j);
     });
+}
+
+std::function<void(const std::string&)> lockedProgress(std::function<void(const std::string&)> progress) {
+    auto lock = std::make_shared<std::mutex>();
+    return [lock, progress = std::move(progress)](const std::string& line) {
+        const std::lock_guard<std::mutex> guard(*lock);
+        if (progress) progress(line);
+    };
 }
 
 }  // namespace mgp

@@ -26,5 +26,7 @@ double runStartNoise(int runs, double startNoise);
 // job(j) for j in [0, jobs), spread over `workers` threads (≤ 1: the calling thread alone); each
 // job's result must not depend on the thread or the order. Exceptions reach the caller.
 void forEachJob(int jobs, int workers, const std::function<void(int job)>& job);
+// `progress` (may be empty) made safe to call from several jobs at once: one line at a time.
+std::function<void(const std::string&)> lockedProgress(std::function<void(const std::string&)> progress);
 
 }  // namespace mgp

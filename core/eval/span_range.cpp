@@ -8,8 +8,8 @@ namespace mgp {
 
 nlohmann::json SpanRangeJob::run() const {
     const Clip& clip = version->model->clip;
-    const int f = frame, first = f - keysBefore, last = f + keysAfter;
-    if (first - 1 < 0 || last + 1 >= clip.frameCount()) return {{"skipped", "the span does not fit the clip"}};
+    const int f = frame, first = f - 21, last = f + 21;
+    if (first - 1 < 0 || last + 1 >= clip.frameCount()) return {{"skipped", "the 43-frame span does not fit the clip"}};
     for (int j : joins)
         if (j > first - 1 && j <= last + 1) return {{"skipped", "the span crosses the join of two trials"}};
     const PoseLayout layout(clip.skeleton);

@@ -19,10 +19,6 @@ namespace mgp {
 struct SpanRangeJob {
     gp::ModelVersionPtr version;
     int frame = 0;  // the edited clip frame (0-based)
-    // The outer keys' distance from the frame, in clip frames. A repeated run's clip lacks one
-    // frame in ten, so the protocol passes the distances that keep the keys on the same captured
-    // frames as the full clip's f ± 21.
-    int keysBefore = 21, keysAfter = 21;
     Effector effector = Effector::kRFoot;
     Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // unit
     const NaturalnessTests* tests = nullptr;

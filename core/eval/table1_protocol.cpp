@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 
@@ -229,11 +228,7 @@ nlohmann::json runTable1(const std::string& mocapDir, const Table1Settings& s, c
     // claims compare pairs.
     const int jobs = static_cast<int>(s.clips.size()) * s.runs;
     std::vector<nlohmann::json> results(jobs);
-    std::mutex progressMutex;
-    const ProgressFn say = [&](const std::string& line) {
-        const std::lock_guard<std::mutex> lock(progressMutex);
-        if (progress) progress(line);
-    };
+    const ProgressFn say = lockedProgress(progress);
     forEachJob(jobs, s.workers, [&](int j) {
         const int ci = j / s.runs, run = j % s.runs;
         const Table1Clip& c = s.clips[ci];

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <mutex>
 #include <stdexcept>
 
 #include "eval/claim_test.h"
@@ -56,7 +55,7 @@ Table2Row table2RowFromSpec(const std::string& clipSpec, const std::string& edit
         throw std::invalid_argument("expected --edit EFFECTOR:dx,dy,dz (lhand, rhand, lfoot, rfoot or head; a direction in "
                                     "world axes, Y up), found '" + editSpec + "'");
     const Eigen::Vector3d u(v[0], v[1], v[2]);
-    if (!u.allFinite() || u.norm() < 1e-9)
+    if (!u.allFinite() || !std::isfinite(u.norm()) || u.norm() < 1e-9)
         throw std::invalid_argument("expected a non-zero, finite edit direction, found '" + editSpec + "'");
     row.direction = u.normalized();
     char buf[160];
@@ -110,13 +109,16 @@ Clip namedClip(const std::string& dir, const std::vector<ClipSegment>& spans, Tr
     Clip out = joinSegments(dir, spans, cache);
     out.name.clear();
     for (const ClipSegment& s : spans)
-        out.name += (out.name.empty() ? "" : "+") + s.trial + "[" + std::to_string(s.first) + ":" + std::to_string(s.last) + "]";
+        out.name += (out.name.empty() ? "" : "+") + s.trial + "[" + std::to_string(s.first) + ":" +
+                    (s.last == 0 ? "end" : std::to_string(s.last)) + "]";
     unwrapClip(out);
     return out;
 }
 
-gp::ModelVersionPtr trainOn(const Clip& clip, gp::KernelKind kind, int active, int iters, double startNoise, unsigned seed,
-                            int threads) {
+// A model trained on `frames` of the clip (a repeated run's subset) whose clip is the whole capture,
+// so that the edited frame, the span's keys and the feet's contacts are the captured ones.
+gp::ModelVersionPtr trainOn(const Clip& clip, const std::vector<int>& frames, gp::KernelKind kind, int active, int iters,
+                            double startNoise, unsigned seed, int threads) {
     gp::TrainOptions options;
     options.startNoise = startNoise;
     options.startSeed = seed;
@@ -125,7 +127,9 @@ gp::ModelVersionPtr trainOn(const Clip& clip, gp::KernelKind kind, int active, i
     options.kind = kind;
     options.activeSize = active;
     options.outerIterations = iters;
-    return gp::ModelVersion::make(gp::trainOnClip(clip, options).model);
+    gp::TrainResult trained = gp::train(gp::trainingDataFromClip(clip, frames), options);
+    trained.model.clip = clip;
+    return gp::ModelVersion::make(std::move(trained.model));
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -171,6 +175,24 @@ nlohmann::json rangeJson(const EditingRange& r, double seconds, const Skeleton& 
             {"steps_solved", r.steps.size()}, {"seconds", seconds}};
 }
 
+// The naturalness tests compare the 22 model bones and whole pose vectors: every clip of a row
+// must have those bones and `like`'s pose layout (the same DOFs in the same order).
+void requireJudgeableSkeleton(const Clip& clip, const Clip& like) {
+    for (const char* bone : modelBoneNames())
+        if (clip.skeleton.findBone(bone) < 0)
+            throw std::invalid_argument(std::string("expected a skeleton with the 22 model bones the naturalness tests compare "
+                                                    "(a CMU ASF skeleton, or a BVH naming them), found ") + clip.name + " without '" + bone + "'");
+    const PoseLayout a(clip.skeleton), b(like.skeleton);
+    bool same = a.size() == b.size();
+    for (int k = 0; same && k < a.size(); ++k) same = a.dofName(clip.skeleton, k) == b.dofName(like.skeleton, k);
+    if (!same)
+        throw std::invalid_argument("expected reference clips with " + like.name + "'s pose layout (" + std::to_string(b.size()) +
+                                    " DOFs), found " + clip.name + " with another (" + std::to_string(a.size()) + " DOFs)");
+}
+
+// The smallest R the density test can be fitted on (its PPCA has 15 components, 5 held-out folds).
+constexpr int kMinReferenceFrames = 60;
+
 // The cells of a row, by their key: the paper's four, then this product's two.
 const std::vector<std::string>& table2Cells() {
     static const std::vector<std::string> c = {"sgplvm_static", "sgplvm_adaptive", "fas_static", "fas_adaptive",
@@ -196,53 +218,43 @@ nlohmann::json capturedVerdictJson(const Clip& clip, int frame, const Naturalnes
 nlohmann::json table2Job(const Table2Row& row, const Clip& clip, int frame, const std::vector<int>& joins,
                          const NaturalnessTests& tests, const Table2Settings& s, int run, const ProgressFn& say) {
     const std::vector<int> kept = runFrames(clip.frameCount(), run, s.runs, frame);
-    Clip trained = clip;
-    trained.frames.clear();
-    for (int f : kept) trained.frames.push_back(clip.frames[f]);
-    const int at = static_cast<int>(std::find(kept.begin(), kept.end(), frame) - kept.begin());
+    // Every run keeps the edited frame; its model's clip is the whole capture (trainOn).
     const int threads = s.workers > 1 ? 1 : 0;
     const std::string tag = row.kind + (s.runs > 1 ? " run " + std::to_string(run + 1) + "/" + std::to_string(s.runs) : "");
-    nlohmann::json out{{"run", run}, {"frames_trained", trained.frameCount()}};
+    nlohmann::json out{{"run", run}, {"frames_trained", kept.size()}};
+    auto sweep = [&](const gp::ModelVersionPtr& model, bool adaptive, bool editorDrag) {
+        EditingRangeJob job;
+        job.version = model;
+        job.frame = frame;
+        job.effector = row.effector;
+        job.direction = row.direction;
+        job.tests = &tests;
+        job.adaptive = adaptive;
+        job.editorDrag = editorDrag;
+        job.maxDeltaCm = s.maxDeltaCm;
+        job.ikIterations = s.ikIterations;
+        job.adaptiveScgIterations = s.adaptiveScgIterations;
+        const auto s0 = std::chrono::steady_clock::now();
+        const EditingRange r = job.run();
+        return std::make_pair(r, rangeJson(r, secondsSince(s0), clip.skeleton, tests));
+    };
     gp::ModelVersionPtr fasModel;
     EditingRange fasStatic;
     for (gp::KernelKind kind : {gp::KernelKind::kSgplvm, gp::KernelKind::kFas}) {
         const std::string name = gp::kernelKindName(kind);
         if (say) say(tag + " " + name + " ...");
         const auto t0 = std::chrono::steady_clock::now();
-        const gp::ModelVersionPtr model = trainOn(trained, kind, s.activeSize, s.outerIterations,
+        const gp::ModelVersionPtr model = trainOn(clip, kept, kind, s.activeSize, s.outerIterations,
                                                   runStartNoise(s.runs, s.startNoise), static_cast<unsigned>(run), threads);
         out[name + "_training_seconds"] = secondsSince(t0);
         for (bool adaptive : {false, true}) {
-            EditingRangeJob job;
-            job.version = model;
-            job.frame = at;
-            job.effector = row.effector;
-            job.direction = row.direction;
-            job.tests = &tests;
-            job.adaptive = adaptive;
-            job.maxDeltaCm = s.maxDeltaCm;
-            job.ikIterations = s.ikIterations;
-            job.adaptiveScgIterations = s.adaptiveScgIterations;
-            const auto s0 = std::chrono::steady_clock::now();
-            const EditingRange r = job.run();
-            out[name + (adaptive ? "_adaptive" : "_static")] = rangeJson(r, secondsSince(s0), clip.skeleton, tests);
-            if (kind == gp::KernelKind::kFas && !adaptive) fasStatic = r;
+            auto [r, json] = sweep(model, adaptive, false);
+            out[name + (adaptive ? "_adaptive" : "_static")] = std::move(json);
+            if (kind == gp::KernelKind::kFas && !adaptive) fasStatic = std::move(r);
         }
         if (kind == gp::KernelKind::kFas) fasModel = model;
     }
-    {
-        EditingRangeJob job;
-        job.version = fasModel;
-        job.frame = at;
-        job.effector = row.effector;
-        job.direction = row.direction;
-        job.tests = &tests;
-        job.maxDeltaCm = s.maxDeltaCm;
-        job.ikIterations = s.ikIterations;
-        job.editorDrag = true;
-        const auto s0 = std::chrono::steady_clock::now();
-        out["fas_static_drag"] = rangeJson(job.run(), secondsSince(s0), clip.skeleton, tests);
-    }
+    out["fas_static_drag"] = sweep(fasModel, false, true).second;
     // Learned (FAS static) against plain IK: closeness to real poses (R) at a few displacements.
     const Eigen::MatrixXd candidates = tests.referencePoses();
     nlohmann::json compare = nlohmann::json::array();
@@ -265,24 +277,18 @@ nlohmann::json table2Job(const Table2Row& row, const Clip& clip, int frame, cons
         const auto s0 = std::chrono::steady_clock::now();
         SpanRangeJob span;
         span.version = fasModel;
-        span.frame = at;
-        // The keys stay on the captured frames f ± 21 of the full clip (the nearest kept frames
-        // inside them), and the span never crosses the join of two trials.
-        const auto keptAtOrAfter = [&](int f) { return static_cast<int>(std::lower_bound(kept.begin(), kept.end(), f) - kept.begin()); };
-        span.keysBefore = at - keptAtOrAfter(frame - 21);
-        span.keysAfter = (keptAtOrAfter(frame + 22) - 1) - at;
-        for (std::size_t k = 1; k < kept.size(); ++k)
-            for (int j : joins)
-                if (kept[k - 1] < j && kept[k] >= j) span.joins.push_back(static_cast<int>(k));
+        span.frame = frame;
+        span.joins = joins;
         span.effector = row.effector;
         span.direction = row.direction;
         span.tests = &tests;
         span.maxDeltaCm = s.maxDeltaCm;
         out["fas_static_span"] = span.run();
         out["fas_static_span"]["seconds"] = secondsSince(s0);
-        out["fas_static_span"]["binding"] = out["fas_static_span"].contains("first_failure")
-                                                ? nlohmann::json::array({out["fas_static_span"]["first_failure"]})
-                                                : nlohmann::json::array();
+        // The span reports the first test that failed, or that none did up to the sweep's end.
+        nlohmann::json& spanCell = out["fas_static_span"];
+        const bool stopped = spanCell.contains("combined") && spanCell["combined"].get<int>() < s.maxDeltaCm;
+        spanCell["binding"] = stopped ? nlohmann::json::array({spanCell["first_failure"]}) : nlohmann::json::array();
     }
     return out;
 }
@@ -355,22 +361,18 @@ nlohmann::json runTable2(const std::string& dir, const Table2Settings& s, const 
         if (d.frame < 0 || d.frame >= d.clip.frameCount())
             throw std::invalid_argument("expected the edited frame within 1.." + std::to_string(d.clip.frameCount()) + " of " +
                                         d.clip.name + ", found " + std::to_string(row.frame));
-        for (const Clip& c : d.refClips)
-            if (c.skeleton.jointCount() != d.clip.skeleton.jointCount())
-                throw std::invalid_argument("expected reference clips of " + d.clip.name + "'s skeleton, found " + c.name);
-        for (const char* bone : modelBoneNames())
-            if (d.clip.skeleton.findBone(bone) < 0)
-                throw std::invalid_argument(std::string("expected a skeleton with the 22 model bones the naturalness tests compare "
-                                                        "(a CMU ASF skeleton), found ") + d.clip.name + " without '" + bone + "'");
-        d.tests = std::make_unique<NaturalnessTests>(table2Reference(d.clip, d.frame, d.refClips), row.effector);
+        requireJudgeableSkeleton(d.clip, d.clip);
+        for (const Clip& c : d.refClips) requireJudgeableSkeleton(c, d.clip);
+        const std::vector<ReferenceFrame> ref = table2Reference(d.clip, d.frame, d.refClips);
+        if (static_cast<int>(ref.size()) < kMinReferenceFrames)
+            throw std::invalid_argument("expected at least " + std::to_string(kMinReferenceFrames) + " reference frames (R: " +
+                                        d.clip.name + " without the edited frame ± 10, and the references), found " +
+                                        std::to_string(ref.size()) + "; give a longer clip or --reference");
+        d.tests = std::make_unique<NaturalnessTests>(ref, row.effector);
     }
     const int jobs = static_cast<int>(s.rows.size()) * s.runs;
     std::vector<nlohmann::json> results(jobs);
-    std::mutex progressMutex;
-    const ProgressFn say = [&](const std::string& line) {
-        const std::lock_guard<std::mutex> lock(progressMutex);
-        if (progress) progress(line);
-    };
+    const ProgressFn say = lockedProgress(progress);
     forEachJob(jobs, s.workers, [&](int j) {
         const int r = j / s.runs, run = j % s.runs;
         results[j] = table2Job(s.rows[r], data[r].clip, data[r].frame, data[r].joins, *data[r].tests, s, run, say);
