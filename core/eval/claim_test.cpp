@@ -139,8 +139,8 @@ nlohmann::json claimJson(const std::string& claim, const std::string& difference
     const SignedRankTest all = wilcoxonSignedRank(pooled);
     return {{"claim", claim},
             {"difference", difference + " (positive favours the claim)"},
-            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " + std::to_string(alpha).substr(0, 4) +
-                         "; runs of a row share its motion, so the verdict is about these motions under this perturbation"},
+            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " + std::to_string(alpha).substr(0, 4)},
+            {"scope", "runs of a row share its motion: the verdict is about these motions under this perturbation"},
             {"per_group", perGroup},
             {"pooled", testJson(all)},
             {"pooled_difference", spreadJson(spreadOf(pooled))},
