@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 #include "util/parallel_for.h"
 
@@ -22,6 +24,17 @@ std::vector<int> runFrames(int frameCount, int run, int runs, int anchor) {
 }
 
 double runStartNoise(int runs, double startNoise) { return runs <= 1 ? 0.0 : startNoise; }
+
+std::string runLabel(const std::string& kind, int run, int runs) {
+    return runs > 1 ? kind + " run " + std::to_string(run + 1) + "/" + std::to_string(runs) : kind;
+}
+
+void validateRunSettings(int runs, double startNoise, int workers) {
+    if (runs < 1 || runs > 50) throw std::invalid_argument("expected 1 to 50 runs, found " + std::to_string(runs));
+    if (!(startNoise >= 0.0) || !std::isfinite(startNoise))
+        throw std::invalid_argument("expected a start noise ≥ 0, found " + std::to_string(startNoise));
+    if (workers < 1) throw std::invalid_argument("expected at least one worker, found " + std::to_string(workers));
+}
 
 std::string describeRunPerturbation(int runs, double startNoise) {
     if (runs <= 1) return "one run: every frame, the paper's start";

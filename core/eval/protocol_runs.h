@@ -22,6 +22,11 @@ std::vector<int> runFrames(int frameCount, int run, int runs, int anchor);
 std::string describeRunPerturbation(int runs, double startNoise);
 // The latent start noise of a run (0 when runs = 1).
 double runStartNoise(int runs, double startNoise);
+// "kick" for one run, "kick run 2/5" for one of several: a progress line's subject.
+std::string runLabel(const std::string& kind, int run, int runs);
+// Throws std::invalid_argument naming the first bad value: runs in 1..50, a finite noise ≥ 0, at
+// least one worker (both protocols' settings).
+void validateRunSettings(int runs, double startNoise, int workers);
 
 // job(j) for j in [0, jobs), spread over `workers` threads (≤ 1: the calling thread alone); each
 // job's result must not depend on the thread or the order. Exceptions reach the caller.

@@ -57,10 +57,7 @@ void Table1Settings::validate() const {
     if (!(itersScale > 0.0) || itersScale > 1.0)
         throw std::invalid_argument("expected an iteration scale in (0, 1], found " + std::to_string(itersScale));
     if (clips.empty()) throw std::invalid_argument("expected at least one Table 1 clip, found none");
-    if (runs < 1 || runs > 50) throw std::invalid_argument("expected 1 to 50 runs, found " + std::to_string(runs));
-    if (!(startNoise >= 0.0) || !std::isfinite(startNoise))
-        throw std::invalid_argument("expected a start noise ≥ 0, found " + std::to_string(startNoise));
-    if (workers < 1) throw std::invalid_argument("expected at least one worker, found " + std::to_string(workers));
+    validateRunSettings(runs, startNoise, workers);
     train.validate();
 }
 
@@ -236,7 +233,7 @@ nlohmann::json runTable1(const std::string& mocapDir, const Table1Settings& s, c
             gp::trainingDataFromClip(joined[ci], runFrames(joined[ci].frameCount(), run, s.runs, 0));
         const int T = table1Iterations(c.paperIterations, s.itersScale);
         nlohmann::json r{{"run", run}, {"N", data.Y.rows()}, {"D", data.Y.cols()}};
-        const std::string tag = c.kind + (s.runs > 1 ? " run " + std::to_string(run + 1) + "/" + std::to_string(s.runs) : "");
+        const std::string tag = runLabel(c.kind, run, s.runs);
         for (gp::KernelKind kind : {gp::KernelKind::kFas, gp::KernelKind::kSgplvm}) {
             gp::TrainOptions opt = s.train;
             opt.kind = kind;
@@ -264,7 +261,7 @@ nlohmann::json runTable1(const std::string& mocapDir, const Table1Settings& s, c
         row["kind"] = c.kind;
         row["clips"] = describeSegments(c.segments);
         row["why"] = c.why;
-        row["N"] = s.runs == 1 ? runs[0]["N"] : nlohmann::json(joined[ci].frameCount());
+        row["N"] = joined[ci].frameCount();  // a run's own N is in its entry
         row["D"] = runs[0]["D"];
         row["M"] = std::min<int>(s.train.activeSize, runs[0]["N"].get<int>());
         row["paper_frames"] = c.paperFrames;

@@ -84,10 +84,7 @@ void Table2Settings::validate() const {
     atLeast(ikIterations, 1, "IK iterations");
     atLeast(adaptiveScgIterations, 1, "adaptive SCG iterations");
     if (rows.empty()) throw std::invalid_argument("expected at least one Table 2 row, found none");
-    if (runs < 1 || runs > 50) throw std::invalid_argument("expected 1 to 50 runs, found " + std::to_string(runs));
-    if (!(startNoise >= 0.0) || !std::isfinite(startNoise))
-        throw std::invalid_argument("expected a start noise ≥ 0, found " + std::to_string(startNoise));
-    atLeast(workers, 1, "workers");
+    validateRunSettings(runs, startNoise, workers);
 }
 
 std::vector<ReferenceFrame> table2Reference(const Clip& clip, int frame, const std::vector<Clip>& refClips) {
@@ -220,7 +217,7 @@ nlohmann::json table2Job(const Table2Row& row, const Clip& clip, int frame, cons
     const std::vector<int> kept = runFrames(clip.frameCount(), run, s.runs, frame);
     // Every run keeps the edited frame; its model's clip is the whole capture (trainOn).
     const int threads = s.workers > 1 ? 1 : 0;
-    const std::string tag = row.kind + (s.runs > 1 ? " run " + std::to_string(run + 1) + "/" + std::to_string(s.runs) : "");
+    const std::string tag = runLabel(row.kind, run, s.runs);
     nlohmann::json out{{"run", run}, {"frames_trained", kept.size()}};
     auto sweep = [&](const gp::ModelVersionPtr& model, bool adaptive, bool editorDrag) {
         EditingRangeJob job;
@@ -384,9 +381,8 @@ nlohmann::json runTable2(const std::string& dir, const Table2Settings& s, const 
         const Table2Row& row = s.rows[r];
         const RowData& d = data[r];
         const NaturalnessTests& tests = *d.tests;
-        const std::vector<ReferenceFrame> ref = table2Reference(d.clip, d.frame, d.refClips);
-        const int otherTrialFrames =
-            tests.size() - static_cast<int>(std::count_if(ref.begin(), ref.end(), [](const ReferenceFrame& f) { return f.group == 0; }));
+        int otherTrialFrames = 0;  // R holds every frame of each reference clip
+        for (const Clip& c : d.refClips) otherTrialFrames += c.frameCount();
         nlohmann::json entry{{"kind", row.kind}, {"clip", d.clip.name}, {"frames", d.clip.frameCount()}, {"edited_frame", row.frame},
                              {"edit", row.edit}, {"why", row.why},
                              {"direction", {row.direction.x(), row.direction.y(), row.direction.z()}},
