@@ -1,8 +1,8 @@
-// bench section "train": how long training takes, per step and in total (README, Command line).
+// bench section "train": how long training takes, per step and in total (docs/cli.md, "Scale").
 //  - outer_iteration_180: one outer iteration (Steps 5-8) on a 180-frame real clip, M = 200
 //    (N < M: every frame is active, so this is Step 6: 100 SCG iterations on L_GP);
 //  - gpc_equal_work: full model M = N = 150 real frames, one Step 6 of exactly 100 SCG
-//    iterations (tolerances off), the work README compares with GPc (measured elsewhere);
+//    iterations (tolerances off), the work docs/cli.md compares with GPc (measured elsewhere);
 //  - scaling: one outer iteration at N = 600, 2 400, 9 600 rows of concatenated real clips,
 //    M = 200 (Step 8 dominates and must grow linearly in N);
 //  - training_10000: a whole quick run (T = 10, M = 200, no temporal prior: the clips are joined

@@ -1,4 +1,4 @@
-// motiongp: the editor and its command-line verbs (see README.md).
+// motiongp: the editor and its command-line verbs (see README.md, docs/guide.md and docs/cli.md).
 #include <unistd.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
-// Onion skins and motion trails: how an animator judges spacing while posing (README, "The
-// editor"). Plain scene data from poses, no GL.
+// Onion skins and motion trails: how an animator judges spacing while posing (docs/guide.md,
+// "Onion skins", "Motion trails"). Plain scene data from poses, no GL.
 //   onion skin  the frames around the current one as faded ghosts, those before in green and
 //               those after in blue, fainter the further they are (Blender's onion skins, Maya's
 //               ghosting); `spacing` frames apart.

@@ -39,7 +39,8 @@ void checkAllFinite(const nlohmann::json& j, const std::string& where) {
     }
 }
 
-// No published figure is printed beside ours (README keeps those, labelled measured elsewhere).
+// No published figure is printed beside ours (docs/cli.md keeps those, labelled measured
+// elsewhere).
 bool mentionsPaperFigures(const nlohmann::json& j) {
     if (j.is_object()) {
         for (auto it = j.begin(); it != j.end(); ++it)

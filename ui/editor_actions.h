@@ -1,7 +1,7 @@
 #pragma once
 // The editor's actions, in one table: each has a name (the script verb `action NAME ARGS`), its
 // arguments, a shortcut, an enabled predicate and run(args). The menus, the keyboard shortcuts,
-// the F1 help window, the script player and the README's action table all read this table, so
+// the F1 help window, the script player and docs/guide.md's action table all read this table, so
 // a new action is added once. Scripts run an action whatever its predicate says, so they get
 // the action's own error ("nothing to undo") instead of silence.
 #include <functional>
@@ -27,7 +27,7 @@ struct EditorAction {
     std::string args;      // argument synopsis ("PATH", "[ITERS]"), "" none
     std::string shortcut;  // as menus and F1 show it ("Ctrl+Shift+Z"), "" none
     std::vector<KeyChord> chords;  // the keys that run it (may be fewer than `shortcut` names)
-    std::string summary;   // what it does, one line (F1 and the README)
+    std::string summary;   // what it does, one line (F1 and docs/guide.md)
     // Whether the menu item is enabled and the shortcut fires; null = always.
     std::function<bool(const EditorApp&)> enabled;
     // The shortcut also fires when disabled, so the user hears why ("nothing to undo").
@@ -52,7 +52,7 @@ public:
     // `alsoEnabled`); runs it with `args` when clicked, errors to the status line.
     void menuItem(EditorApp& app, const std::string& name, const std::string& label, const ActionArgs& args = {},
                   bool selected = false, bool alsoEnabled = true) const;
-    // The README's table of script actions (markdown), generated from the table.
+    // docs/guide.md's table of script actions (markdown), generated from the table.
     std::string markdownTable() const;
 
 private:

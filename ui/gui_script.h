@@ -18,7 +18,7 @@
 //   keydown NAME           hold a key (e.g. SHIFT for a ground-plane drag or a pan)
 //   keyup NAME             release a held key
 //   action NAME [ARGS]     an action of the editor's action table (editor_actions.h; listed
-//                          in the README): e.g. `open PATH`, `frame N`, `undo`, `wait`, and
+//                          in docs/guide.md): e.g. `open PATH`, `frame N`, `undo`, `wait`, and
 //                          `screenshot PATH` (a PNG of the whole window after this frame)
 //
 // Key names: A-Z, 0-9, SPACE, LEFT, RIGHT, UP, DOWN, ESCAPE, ENTER, TAB, DELETE, BACKSPACE, HOME,

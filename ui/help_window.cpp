@@ -10,7 +10,7 @@
 namespace mgp::ui {
 
 namespace {
-// The summary's first clause ("open an ASF/AMC or BVH clip"): the rest is for the README.
+// The summary's first clause ("open an ASF/AMC or BVH clip"): the rest is for docs/guide.md.
 std::string firstClause(const std::string& summary) {
     return summary.substr(0, std::min(summary.find("; "), summary.find(" (")));
 }

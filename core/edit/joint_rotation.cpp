@@ -102,7 +102,8 @@ std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, Join
     // and lets what moved with the joint follow the rotation there too. When the solve could not
     // quite meet a hold (a knee bent too far for its planted foot), the neighbours still keep it:
     // the miss stays on this frame, where the readout reports it, instead of the layer sliding the
-    // foot over the whole span (docs/maths-ik.md §6).
+    // foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing
+    // frames").
     const std::string label = jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame());
     const std::string err =
         solved.learned ? doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved, rotationMovers(doc, r.joint))

@@ -57,8 +57,8 @@ struct TrainOptions {
     // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
     bool paperLiteral = false;
     // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model (table1,
-    // table2 and the committed fixtures use it); kSmooth, the default (README "Training
-    // defaults" says why), adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8,
+    // table2 and the committed fixtures use it); kSmooth, the default (docs/experiments/training.md
+    // says why), adds (λ/2) Σ ‖second difference of x over time‖² to Steps 6 and 8,
     // λ = priorWeight, or defaultPriorWeight(outerIterations) when it is not set.
     LatentPrior prior = LatentPrior::kSmooth;
     std::optional<double> priorWeight;

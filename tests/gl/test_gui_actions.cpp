@@ -1,4 +1,4 @@
-// The action table (ui/editor_actions.h) against what it drives: the README's table, the
+// The action table (ui/editor_actions.h) against what it drives: docs/guide.md's table, the
 // script parser, strict arguments, shortcuts, menus' enabled state and panel requests.
 #include <doctest/doctest.h>
 
@@ -15,27 +15,27 @@ using namespace mgp;
 using test::tapKey;
 
 namespace {
-std::string readmeSection() {
-    std::ifstream f(std::string(MOTIONGP_GOLDEN_DIR) + "/../../README.md");
+std::string guideSection() {
+    std::ifstream f(std::string(MOTIONGP_GOLDEN_DIR) + "/../../docs/guide.md");
     std::stringstream ss;
     ss << f.rdbuf();
     const std::string text = ss.str();
     const std::string begin = "<!-- action-table:begin -->\n", end = "<!-- action-table:end -->";
     const auto b = text.find(begin), e = text.find(end);
-    if (b == std::string::npos || e == std::string::npos || e < b) return "(no action-table markers in README.md)";
+    if (b == std::string::npos || e == std::string::npos || e < b) return "(no action-table markers in docs/guide.md)";
     return text.substr(b + begin.size(), e - b - begin.size());
 }
 
 }  // namespace
 
-TEST_CASE("gui actions: the README's action table is the one the editor runs") {
+TEST_CASE("gui actions: the guide's action table is the one the editor runs") {
     const std::string expected = ui::ActionTable::editor().markdownTable();
-    const std::string found = readmeSection();
+    const std::string found = guideSection();
     if (found != expected) {
         std::filesystem::create_directories(MOTIONGP_GL_OUT_DIR);
-        const std::string out = std::string(MOTIONGP_GL_OUT_DIR) + "/readme_action_table.md";
+        const std::string out = std::string(MOTIONGP_GL_OUT_DIR) + "/guide_action_table.md";
         std::ofstream(out) << expected;
-        FAIL("README.md's action table differs from ui/editor_actions.cpp; the generated table is in " << out);
+        FAIL("docs/guide.md's action table differs from ui/editor_actions.cpp; the generated table is in " << out);
     }
 }
 

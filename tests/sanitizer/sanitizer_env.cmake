@@ -1,5 +1,5 @@
-# Test environment for the MOTIONGP_SANITIZE=ON build (README, "Sanitizers"), so that a plain
-# `ctest --test-dir build-asan` runs with the right sanitizer options. Included by
+# Test environment for the MOTIONGP_SANITIZE=ON build (docs/testing.md, "Sanitizers"), so that a
+# plain `ctest --test-dir build-asan` runs with the right sanitizer options. Included by
 # tests/CMakeLists.txt; the lists are empty when the option is off.
 #   MOTIONGP_SANITIZER_ENV     every test: leaks detected, UB fatal with a stack trace.
 #   MOTIONGP_SANITIZER_GL_ENV  the `gl` tests: the same plus LeakSanitizer suppressions for leaks
