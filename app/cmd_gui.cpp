@@ -1,5 +1,5 @@
 // `motiongp gui [FILE] [--model MODEL] [--frames N] [--script FILE] [--screenshot OUT.png]
-//               [--offscreen] [--size WxH]`: the interactive editor. With --frames or --script it
+//               [--offscreen] [--size WxH] [--json]`: the interactive editor. With --frames or --script it
 // runs that many frames (scripted input replaces the mouse and keyboard), optionally saves a
 // screenshot of the whole window, and exits 0. --offscreen uses the EGL surfaceless context
 // (no display); otherwise a GLFW window (a desktop or xvfb-run).
@@ -10,7 +10,9 @@
 #include <optional>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "cli_common.h"
 #include "command_registry.h"
@@ -86,6 +88,8 @@ int runGui(const GuiArgs& args) {
 
     ui::InputState scriptInput;
     int settle = 2;
+    int framesRun = 0;
+    std::vector<std::string> written;  // screenshots, in the order they were saved
     auto t0 = std::chrono::steady_clock::now();
     for (int i = 0; total == 0 || i < total; ++i) {
         ui::InputState* input = &scriptInput;
@@ -126,16 +130,27 @@ int runGui(const GuiArgs& args) {
         // A window's back buffer is undefined after a swap: a screenshot needs this frame drawn.
         if (window && (!shots.empty() || (lastFrame && !args.screenshot.empty()))) app.requestRedraw();
         app.frame(*input, dt, w, h);
+        ++framesRun;
         for (const std::string& s : shots) render::writePng(app.capture(w, h), s);
-        if (!args.screenshot.empty() && lastFrame) render::writePng(app.capture(w, h), args.screenshot);
+        written.insert(written.end(), shots.begin(), shots.end());
+        if (!args.screenshot.empty() && lastFrame) {
+            render::writePng(app.capture(w, h), args.screenshot);
+            written.push_back(args.screenshot);
+        }
         if (window) {
             window->setTitle(app.title());
             if (app.frameDrawn()) window->present();  // else the front buffer already shows this frame
         }
         if (app.quitRequested()) break;
     }
-    if (player)
-        for (const std::string& e : player->errors()) std::cerr << "gui: script " << args.script << ": " << e << "\n";
+    const std::vector<std::string> scriptErrors = player ? player->errors() : std::vector<std::string>{};
+    for (const std::string& e : scriptErrors) std::cerr << "gui: script " << args.script << ": " << e << "\n";
+    if (args.json)
+        printJson({{"frames", framesRun},
+                   {"screenshots", written},
+                   {"script_errors", scriptErrors},
+                   {"quit_requested", app.quitRequested()},
+                   {"title", app.title()}});
     return 0;
 }
 
@@ -155,6 +170,7 @@ const CommandRegistration guiCommand("gui", "Open the interactive editor (or run
     sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
     sub.add_option("--ui-scale", a->uiScale, "Scale of fonts and panels (default: the monitor's content scale)")
         ->check(CLI::Range(0.5f, 4.0f));
+    sub.add_flag("--json", a->json, "When the run ends, print one JSON object: frames run, screenshots written, script errors");
     return [=]() {
         GuiArgs g = *a;
         if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)

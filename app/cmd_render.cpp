@@ -1,7 +1,7 @@
 // `motiongp render (CLIP [--skel ASF] | MODEL [--clip NAME]) --frame T --out FILE.png [--size WxH]
 //  [--camera front|side|three-quarter] [--ghost-captured] [--path EFFECTOR]... [--select EFFECTOR]
-//  [--no-handles] [--onion BEFORE:AFTER:SPACING] [--trail PART]... [--trail-frames N]`: draws one
-//  frame offscreen (EGL surfaceless, no display) and writes a PNG.
+//  [--no-handles] [--onion BEFORE:AFTER:SPACING] [--trail PART]... [--trail-frames N] [--json]`:
+//  draws one frame offscreen (EGL surfaceless, no display) and writes a PNG.
 // The MODEL form (a trained model file) draws one of the model's source clips (--clip NAME, its
 // file stem; default the first; --frame counts within it) with the model's own
 // reconstruction of frame T — the mean pose f(x_t) at the frame's latent point — so that
@@ -66,6 +66,7 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
     auto onion = std::make_shared<std::string>();
     auto trails = std::make_shared<std::vector<std::string>>();
     auto trailFrames = std::make_shared<int>(30);
+    auto json = std::make_shared<bool>(false);
     sub.add_option("input", *input, "CLIP (AMC or BVH file) or MODEL (a file written by `motiongp train`)")
         ->required();
     sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
@@ -81,6 +82,7 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
     sub.add_option("--onion", *onion, "BEFORE:AFTER:SPACING: onion skins, e.g. 2:2:5 (two ghosts each side, 5 frames apart)");
     sub.add_option("--trail", *trails, "Draw this point's motion trail, a tick per frame (lhand rhand lfoot rfoot head root)");
     sub.add_option("--trail-frames", *trailFrames, "Frames each side the trails span (default 30)");
+    sub.add_flag("--json", *json, "Print one JSON object");
     return [=]() {
         std::smatch m;
         if (!std::regex_match(*size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
@@ -134,8 +136,18 @@ const CommandRegistration renderCommand("render", "Draw one frame offscreen to a
         const render::OrbitCamera cam = render::framedPresetCamera(
             preset, scene, render::characterForward(clip.skeleton, fk), width, height);
         render::writePng(render::snapshot(context, renderer, scene, cam), *out);
-        std::cout << "wrote " << *out << " (" << width << "x" << height << ", " << clip.name << " frame " << *frame
-                  << ", " << render::cameraPresetName(preset) << " camera)\n";
+        if (*json) {
+            printJson({{"out", *out},
+                       {"width", width},
+                       {"height", height},
+                       {"clip", clip.name},
+                       {"frame", *frame},
+                       {"camera", render::cameraPresetName(preset)},
+                       {"model", model != nullptr}});
+        } else {
+            std::cout << "wrote " << *out << " (" << width << "x" << height << ", " << clip.name << " frame " << *frame
+                      << ", " << render::cameraPresetName(preset) << " camera)\n";
+        }
         return 0;
     };
 });

@@ -1,5 +1,9 @@
-// The `info` and `fk` verbs: one JSON object on stdout, errors on stderr with a non-zero exit.
+// The `info` and `fk` verbs: one JSON object on stdout, errors on stderr with a non-zero exit; and
+// the --json contract over every verb.
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "test_support.h"
 
@@ -78,4 +82,26 @@ TEST_CASE("motiongp with no verb summarises the default clip (a kick)") {
     const auto none = mgp::test::runCli("--data /nonexistent");
     CHECK(none.exitCode == 2);
     CHECK(none.err.find("expected --data to name a folder holding asf_amc/ or bvh/") != std::string::npos);
+}
+
+TEST_CASE("every verb accepts --json: each one that `motiongp --help` lists offers it") {
+    const auto help = mgp::test::runCli("--help");
+    REQUIRE(help.exitCode == 0);
+    const std::size_t at = help.out.find("Subcommands:\n");
+    REQUIRE(at != std::string::npos);
+    std::istringstream lines(help.out.substr(at + 13));
+    std::vector<std::string> verbs;
+    for (std::string line; std::getline(lines, line) && line.rfind("  ", 0) == 0;) {
+        std::istringstream words(line);
+        std::string verb;
+        words >> verb;
+        verbs.push_back(verb);
+    }
+    CHECK(verbs.size() >= 13);  // the thirteen verbs the command line had when this test was written
+    for (const std::string& verb : verbs) {
+        INFO(verb);
+        const auto r = mgp::test::runCli(verb + " --help");
+        CHECK(r.exitCode == 0);
+        CHECK(r.out.find("--json") != std::string::npos);
+    }
 }

@@ -15,6 +15,7 @@
 #include "editor_actions.h"
 #include "editor_session.h"
 #include "frame_signature.h"
+#include "gl_context.h"
 #include "help_window.h"
 #include "imgui_setup.h"
 #include "menu_bar.h"
@@ -39,7 +40,14 @@ EditorApp::EditorApp(EditorOptions options)
       layout_(scale_, options_.layoutFile),
       autosave_(options_.autosaveSeconds) {
     createImGuiContext(scale_, options_.builtinFont);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    const std::string libraryProblem = imguiOpenGlLibraryProblem();
+    if (!libraryProblem.empty() || !ImGui_ImplOpenGL3_Init("#version 330 core")) {
+        // No destructor runs for a constructor that throws: the context goes here.
+        ImGui::DestroyContext();
+        throw render::RenderError(!libraryProblem.empty() ? libraryProblem
+                                                          : "expected an OpenGL 3.3 context for the editor's Dear ImGui "
+                                                            "renderer, found an older one (or none current)");
+    }
     viewport_ = std::make_unique<ViewportPanel>();
     if (options_.recentFiles) {
         recent_ = std::make_unique<RecentFiles>();

@@ -1,5 +1,6 @@
 #include "imgui_setup.h"
 
+#include <dlfcn.h>
 #include <imgui.h>
 
 #include <cmath>
@@ -75,6 +76,19 @@ void createImGuiContext(float scale, bool builtinFont) {
         io.FontGlobalScale = scale;  // the built-in bitmap font only comes in one size
     applyStyle();
     ImGui::GetStyle().ScaleAllSizes(scale);
+}
+
+std::string imguiOpenGlLibraryProblem() {
+    // The same dlopen the loader makes (imgui_impl_opengl3_loader.h), for the system's own reason.
+    void* libgl = dlopen("libGL.so.1", RTLD_LAZY | RTLD_LOCAL);
+    if (libgl) {
+        dlclose(libgl);
+        return "";
+    }
+    const char* why = dlerror();
+    return std::string("expected libGL.so.1, the OpenGL library the editor's Dear ImGui renderer loads "
+                       "(Debian: apt-get install libgl1), found none: ") +
+           (why ? why : "dlopen failed");
 }
 
 }  // namespace mgp::ui
