@@ -9,6 +9,7 @@
 #include "gp/point_objective.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
+#include "test_paths.h"
 
 using namespace mgp::gp;
 
@@ -97,6 +98,32 @@ TEST_CASE("L_IK: σ² ≥ 1/β holds exactly at a training active point with tin
             pm.predict(s.X.row(i).transpose(), mean, var);
             CHECK(var >= 1.0 / pm.kernel().beta());
         }
+    }
+}
+
+TEST_CASE("σ² over many points at once (the latent map's) is predict's σ² at each, across product blocks") {
+    const Setup s = walkSetup();
+    for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
+        const ActiveSetPosterior pm = makeModel(s, kind, 0.2);
+        // 1100 points: two full blocks of 512 and a partial one; training points, points far out
+        // (σ² at its ceiling) and the origin's neighbourhood (the angular term's special case).
+        Eigen::MatrixXd points(1100, 2);
+        for (Eigen::Index i = 0; i < points.rows(); ++i) {
+            const double t = double(i) / double(points.rows());
+            points.row(i) = i < s.X.rows() ? Eigen::RowVector2d(s.X.row(i))
+                                            : Eigen::RowVector2d(6.0 * std::cos(40.0 * t) * t, 6.0 * std::sin(40.0 * t) * t - 0.1);
+        }
+        points.row(1099) << 0.6e-4, -0.8e-4;
+        const Eigen::VectorXd v = pm.variances(points);
+        REQUIRE(v.size() == points.rows());
+        for (Eigen::Index i = 0; i < points.rows(); ++i) {
+            Eigen::VectorXd mean;
+            double var = 0.0;
+            pm.predict(points.row(i).transpose(), mean, var);
+            CAPTURE(i);
+            CHECK(v[i] == doctest::Approx(var).epsilon(1e-9));
+        }
+        CHECK(pm.variances(Eigen::MatrixXd(0, 2)).size() == 0);
     }
 }
 

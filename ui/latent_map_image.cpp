@@ -42,21 +42,25 @@ LatentImage computeLatentImage(const gp::ModelVersion& version, int size) {
     img.model = version.model.get();
     img.version = version.number;
     latentBox(*version.model, 0.15, img.x0, img.y0, img.x1, img.y1);
-    std::vector<double> logVar(std::size_t(size) * size);
-    Eigen::VectorXd x = latentMapBase(*version.model), mean;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    // Row r·size + c of the grid is pixel (c, r), the image's top row at y1.
+    const Eigen::VectorXd base = latentMapBase(*version.model);
+    Eigen::MatrixXd grid = base.transpose().replicate(Eigen::Index(size) * size, 1);
     for (int r = 0; r < size; ++r) {
         for (int c = 0; c < size; ++c) {
-            x[0] = img.x0 + (c + 0.5) / size * (img.x1 - img.x0);
-            if (x.size() > 1) x[1] = img.y1 - (r + 0.5) / size * (img.y1 - img.y0);
-            double var = 0.0;
-            version.posterior->predict(x, mean, var);
-            const double lv = std::log(std::max(var, 1e-300));
-            logVar[std::size_t(r) * size + c] = lv;
-            if (std::isfinite(lv)) {
-                lo = std::min(lo, lv);
-                hi = std::max(hi, lv);
-            }
+            const Eigen::Index i = Eigen::Index(r) * size + c;
+            grid(i, 0) = img.x0 + (c + 0.5) / size * (img.x1 - img.x0);
+            if (grid.cols() > 1) grid(i, 1) = img.y1 - (r + 0.5) / size * (img.y1 - img.y0);
+        }
+    }
+    const Eigen::VectorXd var = version.posterior->variances(grid);
+    std::vector<double> logVar(std::size_t(size) * size);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < logVar.size(); ++i) {
+        const double lv = std::log(std::max(var[Eigen::Index(i)], 1e-300));
+        logVar[i] = lv;
+        if (std::isfinite(lv)) {
+            lo = std::min(lo, lv);
+            hi = std::max(hi, lv);
         }
     }
     if (!(hi > lo)) hi = lo + 1.0;

@@ -1,5 +1,6 @@
 #include "gp/point_objective.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -211,6 +212,22 @@ void ActiveSetPosterior::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean
     const Eigen::VectorXd k = kernel_.cross(XI_, x);
     mean = mu_ + B_.transpose() * k;
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - k.dot(Kinv_ * k));
+}
+
+Eigen::VectorXd ActiveSetPosterior::variances(const Eigen::MatrixXd& points) const {
+    constexpr Eigen::Index kBlock = 512;  // points per product: bounds k and K⁻¹k to M × 512 each
+    Eigen::VectorXd v(points.rows());
+    Eigen::MatrixXd k, a;
+    for (Eigen::Index first = 0; first < points.rows(); first += kBlock) {
+        const Eigen::Index n = std::min(kBlock, points.rows() - first);
+        k.resize(XI_.rows(), n);
+        for (Eigen::Index j = 0; j < n; ++j) k.col(j) = kernel_.cross(XI_, points.row(first + j).transpose());
+        a.noalias() = Kinv_ * k;
+        for (Eigen::Index j = 0; j < n; ++j)
+            v[first + j] = 1.0 / kernel_.beta() +
+                           std::max(0.0, kernel_.diagF(points.row(first + j).transpose()) - k.col(j).dot(a.col(j)));
+    }
+    return v;
 }
 
 void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,

@@ -45,6 +45,9 @@ public:
 
     // Mean pose f(x) and variance σ²(x).
     void predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const;
+    // σ²(x) at every row of `points` (n×d), as predict gives it, without the means: one K⁻¹
+    // product for all of them (a matrix product instead of n matrix-vector products). For maps.
+    Eigen::VectorXd variances(const Eigen::MatrixXd& points) const;
     // The same prediction from the GP conditioned on every active point except `heldOut`
     // (distinct indices into the active set): the block-inverse identity
     //   (K_{−B})⁻¹ = P − Q S⁻¹ Qᵀ,   K⁻¹ = [P Q; Qᵀ S]
