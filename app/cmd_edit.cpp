@@ -127,7 +127,7 @@ const CommandRegistration editCommand("edit", "Edit an effector path (Hermite ke
                    "Span solver: how strongly the body away from the edited limb keeps its captured pose, per degree²");
     sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
     sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
-    sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (§5.3)");
+    sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (docs/maths.md §11)");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every clip frame, edited ones replaced)")->required();
     sub.add_flag("--json", o->json, "Print one JSON object");

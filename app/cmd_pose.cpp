@@ -246,7 +246,7 @@ const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model'
                    "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
                    "(0 = off; default " + std::to_string(static_cast<int>(kDefaultLocality)) + ")");
     sub.add_flag("--adaptive", o->adaptive,
-                 "Add the solved pose to the model (§5.3) and save it, if every constraint is reached and L_IK is within the "
+                 "Add the solved pose to the model (docs/maths.md §11) and save it, if every constraint is reached and L_IK is within the "
                  "99th percentile (σ²: twice it) of the captured frames scored as new poses");
     sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
     sub.add_option("--out", o->out, "Write the clip with the solved frame in place: .bvh, .glb, .gltf or .fbx");

@@ -1,7 +1,7 @@
 #pragma once
 // GL contexts the renderer draws into. `GlSurface` is the small interface both the offscreen
-// EGL context (tests, CLI, bench) and the future GLFW window satisfy, so one drawing path
-// (SceneRenderer::draw into framebuffer 0) serves both.
+// EGL context (tests, CLI, bench) and the editor's GLFW window (ui::GlfwWindow, ui/glfw_window.h)
+// satisfy, so one drawing path (SceneRenderer::draw into framebuffer 0) serves both.
 //
 // OffscreenContext, the headless recipe that works with Mesa on these machines: EGL surfaceless platform
 // (eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL)),

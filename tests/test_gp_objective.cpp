@@ -9,6 +9,7 @@
 #include "gp/scg.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
+#include "test_paths.h"
 
 using namespace mgp::gp;
 

@@ -7,6 +7,7 @@
 #include "gp/pca_init.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
+#include "test_paths.h"
 
 using namespace mgp::gp;
 

@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "test_paths.h"
+
 namespace mgp::test {
 
 // A clip shipped with the repository (assets/mocap, always there). Fails the calling test if the

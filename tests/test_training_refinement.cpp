@@ -9,6 +9,7 @@
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
 #include "trained_model_fixture.h"
+#include "test_paths.h"
 
 using namespace mgp;
 

@@ -3,6 +3,7 @@
 #include <mutex>
 
 #include "gp/model_file.h"
+#include "test_paths.h"
 
 namespace mgp::test {
 

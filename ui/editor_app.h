@@ -122,7 +122,6 @@ public:
     bool askingAboutModelClip() const { return prompts_.askingModelClip(); }  // the modal is up
     const FileDialog& fileDialog() const { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
-    bool messagesShown() const { return showMessages_; }   // View > Messages
     float uiScale() const { return scale_; }
     bool offeringAutosave() const { return prompts_.offeringAutosave(); }
     const std::string& sessionPath() const { return sessionPath_; }

@@ -34,7 +34,6 @@ public:
     }
     int joint() const { return joint_; }
     const std::string& readout() const { return readout_; }  // the last solve, one line
-    void setReadout(std::string text) { readout_ = std::move(text); }
 
     // Draws the window while shown.
     void draw(EditorApp& app);

@@ -1,8 +1,8 @@
 #pragma once
-// AdaptiveWorker: runs adaptive updates (§5.3) on a background thread and publishes each new
-// immutable model version. Posting never blocks on the update; readers take the latest version
-// with current() (a shared_ptr copy under a short lock) and keep solving on whatever version
-// they hold. Updates run in posting order; each starts from the latest published version.
+// AdaptiveWorker: runs adaptive updates (docs/maths.md §11) on a background thread and publishes
+// each new immutable model version. Posting never blocks on the update; readers take the latest
+// version with current() (a shared_ptr copy under a short lock) and keep solving on whatever
+// version they hold. Updates run in posting order; each starts from the latest published version.
 // Disabled, it ignores posts (a static model, for comparison). The thread and the FIFO are a
 // BackgroundWorker's (core/util/background_worker.h) running every request in posting order.
 #include <atomic>

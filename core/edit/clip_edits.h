@@ -1,5 +1,5 @@
 #pragma once
-// ClipEdits: the clip being edited and what the user changed on it (docs/architecture.md §1).
+// ClipEdits: the clip being edited and what the user changed on it (docs/architecture.md §2).
 //   clip       the loaded motion, angles unwrapped over time so it matches a model's rows
 //   edits      accepted poses per frame; a frame without an edit shows the captured pose
 //   contacts   the clip's foot contacts (motion/foot_contacts.h), some possibly switched off

@@ -1,6 +1,6 @@
 #pragma once
 // DragSession: one drag in the viewport, from press to release, with no document state
-// (docs/architecture.md §1, "where a drag goes"). It holds the pose being solved, its latent
+// (docs/architecture.md §6, "where a drag goes"). It holds the pose being solved, its latent
 // point, the solver warm-started from the previous event, the readout and the compare ghost.
 //
 //   begin(e, start, model, startX, holds) -> dragTo(target)* / refine()* -> settle() -> finish()
@@ -78,7 +78,6 @@ public:
     bool learned() const { return solver_ != nullptr && model_ != nullptr; }
     Effector effector() const { return effector_; }
     Eigen::Vector3d target() const { return targetCm_; }
-    const Pose& startPose() const { return startPose_; }
     const Pose& pose() const { return pose_; }
     const Eigen::VectorXd& x() const { return x_; }
     const SolveReadout& readout() const { return readout_; }
@@ -89,7 +88,7 @@ public:
     // Every constraint of the current target: the target, then pins, then feet in contact.
     std::vector<IkConstraint> constraints() const;
 
-    // The compare ghost (docs/architecture.md §1): the same targets solved by plain IK or by a
+    // The compare ghost (docs/architecture.md §6): the same targets solved by plain IK or by a
     // second model, from the drag's start pose. `frame` picks the second model's latent start.
     void setCompare(CompareMode mode, gp::ModelVersionPtr compareModel, int frame);
     const std::optional<Pose>& comparePose() const { return comparePose_; }

@@ -233,7 +233,7 @@ public:
     void endLatentDrag();
     bool latentDragging() const { return drag_.latentActive(); }
 
-    // ---- path editing (§10) -----------------------------------------------------------------
+    // ---- path editing (docs/maths.md §12) --------------------------------------------------
     // Starts editing `e`'s path with the default keys around the current frame; "" or why not.
     std::string beginPathEdit(Effector e);
     // Installs a whole path edit (a loaded session); "" or why not.

@@ -1,5 +1,5 @@
 #pragma once
-// The document's path session (docs/maths.md §10): the effector path being edited — its keys,
+// The document's path session (docs/maths.md §12): the effector path being edited — its keys,
 // their offsets from the captured path and the mode — checked against the document's clip, with
 // the captured effector trajectory cached. Each change calls `onChange` (the document counts it
 // as a change to save). Regeneration of the span is the document's (it writes edits and undo).

@@ -1,8 +1,12 @@
 #pragma once
-// RegenerateJob: runs a MotionEditJob (per-frame learned IK along an edited path) on a
-// background thread with progress and cancellation, so the editor never blocks on it. The UI
-// polls progress every frame and takes the finished job once. The thread, the cancel flag and
-// the take-once result are a BackgroundWorker's (core/util/background_worker.h), one run at a time.
+// RegenerateJob: runs a MotionEditJob (motion/motion_edit.h) on a background thread with
+// progress and cancellation, so the editor never blocks on it. The job is a path edit's span or
+// the falloff that spreads a drag or a whole-pose change over its neighbours
+// (motion/drag_falloff.h); its inner frames are solved as one problem (EditSolver::kSpan, the
+// default and what the editor runs; motion/span_solver.h), or each alone by the learned IK if
+// the job asks for kPerFrame. The UI polls progress every frame and takes the finished job once.
+// The thread, the cancel flag and the take-once result are a BackgroundWorker's
+// (core/util/background_worker.h), one run at a time.
 #include <atomic>
 #include <optional>
 #include <string>

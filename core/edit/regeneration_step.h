@@ -1,7 +1,7 @@
 #pragma once
 // What a finished regeneration (a path edit or a drag's falloff, motion/motion_edit.h) changes
 // in the document: the frames it solved as edits, the moved keys' poses for the adaptive update,
-// and the one-line summary the status bar shows (docs/architecture.md §1).
+// and the one-line summary the status bar shows (docs/architecture.md §2).
 #include <string>
 #include <vector>
 

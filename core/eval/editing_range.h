@@ -2,10 +2,11 @@
 // The editing-range sweep of docs/maths.md §14: target c(δ) = p_e(y_t) + δ·u for δ = 0, 1, 2, …
 // cm, each solved with the learned IK warm-started from δ − 1, judged by the naturalness tests.
 // A test's range is the largest δ such that every δ' ≤ δ passes it (−1: δ = 0 already fails);
-// the combined range needs every test. With `adaptive`, §5.3 runs after every accepted δ (all
-// tests pass) and the next δ uses the new model version. The sweep stops at maxDeltaCm or once
-// every test has failed (all ranges are then known). δ = 0 is the captured frame re-solved, not
-// an edit, so the adaptive arm never learns it (docs/maths.md §14.2).
+// the combined range needs every test. With `adaptive`, the adaptive update (docs/maths.md §11)
+// runs after each δ ≥ 1 while every δ' ≤ δ has passed all tests, and the next δ uses the new
+// model version. The sweep stops at maxDeltaCm or once every test has failed (all ranges are then
+// known). δ = 0 is the captured frame re-solved, not an edit, so the adaptive arm never learns it
+// (docs/maths.md §14.2).
 //
 // With `editorDrag` each δ is solved as the editor's drag solves it (ik/constrained_ik.h, the
 // drag's defaults): the target exact, the feet in ground contact on the frame pinned where they

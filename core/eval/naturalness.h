@@ -2,7 +2,7 @@
 // The model-independent naturalness tests of the editing-range protocol (docs/maths.md §14).
 // The reference set R holds real frames only (never model outputs, never the edited frame):
 // other CMU trials of the same subject and motion, or, as a fallback, the training clip with the
-// edited frame ±10 frames removed. Poses are full 47-vectors in degrees (§2.3 order).
+// edited frame ±10 frames removed. Poses are full 47-vectors in degrees (docs/maths.md §2.1 order).
 //
 //  2. joint ranges: y_k ∈ [q_min − m_k, q_max + m_k], m_k = max(5°, 0.1 (q_max − q_min));
 //  3. d_NN(y) = min_r MPJPE(y, r): mean 3-D distance (cm) over the end points of the 22 model

@@ -88,10 +88,10 @@ void Table2Settings::validate() const {
 }
 
 std::vector<ReferenceFrame> table2Reference(const Clip& clip, int frame, const std::vector<Clip>& refClips) {
-    // R = the other trials (preferred by §14) ∪ the training clip without the edited frame ±10
-    // (the fallback). Other trials alone reject poses the captured clip itself holds (its own
-    // frames fall outside their joint ranges), so both sources of real frames are used; the
-    // training clip is its own group for the leave-one-clip-out threshold.
+    // R = the other trials (preferred) ∪ the training clip without the edited frame ±10
+    // (the fallback), as docs/maths.md §14.4 has it. Other trials alone reject poses the captured
+    // clip itself holds (its own frames fall outside their joint ranges), so both sources of real
+    // frames are used; the training clip is its own group for the leave-one-clip-out threshold.
     std::vector<ReferenceFrame> ref;
     for (int t = 0; t < clip.frameCount(); ++t)
         if (std::abs(t - frame) > 10) ref.push_back({&clip, t, 0});

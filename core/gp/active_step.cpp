@@ -27,7 +27,7 @@ double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, con
     Eigen::VectorXd psi;
     Eigen::MatrixXd XI;
     unpackParams(z, p, m, d, psi, XI);
-    if (psi.hasNaN()) {  // a failed trial step, as for non-finite X_I (maths §4.4)
+    if (psi.hasNaN()) {  // a failed trial step, as for non-finite X_I (docs/maths.md §4.4)
         g = Eigen::VectorXd::Zero(z.size());
         if (jitter) *jitter = 0.0;
         return std::numeric_limits<double>::infinity();

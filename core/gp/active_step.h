@@ -1,7 +1,7 @@
 #pragma once
 // Step 6 of the training loop (docs/maths.md §8) as a free function: SCG over (ψ = ln θ, X_I) on
-// L_GP with W profiled out under the gauge (§4.4), from the given warm start. Used by the
-// trainer's outer loop and by the adaptive update (§5.3).
+// L_GP with W profiled out under the gauge (docs/maths.md §4.2), from the given warm start. Used
+// by the trainer's outer loop and by the adaptive update (docs/maths.md §11).
 #include <Eigen/Core>
 #include <functional>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // The adaptive ("dynamic") active set of docs/maths.md §11. After an accepted edit (x*, y*):
 //   1. append the pair to the data (N ← N + 1; μ stays the original training mean);
-//   2. re-run the IVM selection (§5.2) from scratch;
+//   2. re-run the IVM selection (docs/maths.md §6) from scratch;
 //   3. run Step 6 (SCG over ψ = ln θ and the active latent points on L_GP, W profiled under the
 //      gauge) warm-started from the current state for K_adapt = 100 iterations;
 //   4. no Step 8: inactive points keep their positions.

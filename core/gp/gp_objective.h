@@ -5,10 +5,10 @@
 //   s_k = ŷ_kᵀ K⁻¹ ŷ_k, c = M (rows of the data term), θ = (α, γ, β[, η]).
 //
 // By default W is profiled out under the scale gauge Σ ln w_k = 0: w_k = sqrt(g/s_k),
-// g = exp(mean ln s_k) (§4.4, option A). The gradient is then taken with W held at that value
-// (envelope theorem). Evaluation is stable (§4.6): Cholesky with escalating jitter, log-params
-// clamped to ±36 inside the kernel, and no NaN ever leaves evaluateGp(): a failure returns
-// value = +∞ with ok = false.
+// g = exp(mean ln s_k) (docs/maths.md §4.2). The gradient is then taken with W held at that value
+// (envelope theorem). Evaluation is stable (docs/maths.md §4.4): Cholesky with escalating jitter,
+// log-params clamped to ±36 inside the kernel, and no NaN ever leaves evaluateGp(): a failure
+// returns value = +∞ with ok = false.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
@@ -19,7 +19,7 @@ namespace mgp::gp {
 enum class WeightMode {
     kProfileGauge,  // w_k = sqrt(g/s_k), Σ ln w = 0 (the default for both models)
     kProfileFree,   // w_k = sqrt(c/s_k), no gauge
-    kFixed          // w given explicitly (tests of the §4.4 gauge family)
+    kFixed          // w given explicitly (tests of the gauge family, docs/maths.md §4.2)
 };
 
 struct GpObjectiveOptions {
@@ -38,8 +38,9 @@ struct GpEvaluation {
     double jitter = 0.0;          // jitter added to K's diagonal (0 normally)
 };
 
-// Cholesky with escalating jitter (§4.6 step 2): no jitter, then 1e-5·mean(diag K), ×10 per retry,
-// at most 10 tries. Returns false if every try failed. `jitter` receives the amount added.
+// Cholesky with escalating jitter (docs/maths.md §4.4 step 2): no jitter, then 1e-5·mean(diag K),
+// ×10 per retry, at most 10 tries. Returns false if every try failed. `jitter` receives the amount
+// added.
 bool jitterCholesky(const Eigen::MatrixXd& K, Eigen::LLT<Eigen::MatrixXd>& llt, double& jitter);
 
 // The M×M scratch of one evaluation, reused by the caller across calls (no page faults per call),

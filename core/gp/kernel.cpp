@@ -22,7 +22,8 @@ Kernel::Kernel(KernelKind kind, const Eigen::VectorXd& logParams) : kind_(kind) 
         throw std::invalid_argument("Kernel: wrong number of log-parameters");
     psi_ = logParams;
     for (Eigen::Index i = 0; i < psi_.size(); ++i) {
-        // A NaN has no place in the box: say so rather than evaluate some other θ (maths §4.6).
+        // A NaN has no place in the box: say so rather than evaluate some other θ
+        // (docs/maths.md §3).
         if (std::isnan(psi_[i]))
             throw std::invalid_argument("expected finite kernel log-parameters, found NaN at index " + std::to_string(i));
         psi_[i] = std::clamp(psi_[i], -kLogParamBound, kLogParamBound);

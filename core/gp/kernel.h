@@ -4,12 +4,12 @@
 //   FAS    k(x_i, x_j) = α·exp(−(γ/2)‖x_i − x_j‖²) + η·exp(φ(x_i)·φ(x_j)) + δ_ij/β
 //   SGPLVM k(x_i, x_j) = α·exp(−(γ/2)‖x_i − x_j‖²)                        + δ_ij/β
 //
-// with the safe direction φ(x) = x / sqrt(‖x‖² + ε²), ε = 1e-3 (§3.1). δ_ij is identity of
-// data indices: the white term is only on the diagonal of gram(); cross() and diagF() are the
-// noise-free k_f. Parameters are held as log-parameters ψ = ln θ, in the order
+// with the safe direction φ(x) = x / sqrt(‖x‖² + ε²), ε = 1e-3 (docs/maths.md §3). δ_ij is
+// identity of data indices: the white term is only on the diagonal of gram(); cross() and diagF()
+// are the noise-free k_f. Parameters are held as log-parameters ψ = ln θ, in the order
 //   FAS: (ln α, ln γ, ln β, ln η)     SGPLVM: (ln α, ln γ, ln β)
-// and are clamped to [−36, 36] before exp() (§4.6 step 7). All code is generic in the latent
-// dimension d = X.cols().
+// and are clamped to [−36, 36] before exp() (docs/maths.md §3). All code is generic in the
+// latent dimension d = X.cols().
 #include <Eigen/Core>
 #include <string>
 
@@ -25,7 +25,8 @@ constexpr double kLogParamBound = 36.0;
 enum ParamIndex : int { kAlpha = 0, kGamma = 1, kBeta = 2, kEta = 3 };
 int paramCount(KernelKind k);  // 4 (FAS) or 3 (SGPLVM)
 
-// Pairwise quantities over one point set, computed once per objective evaluation (§3.4):
+// Pairwise quantities over one point set, computed once per objective evaluation
+// (docs/maths.md §3):
 // r² (M×M), R = exp(−γ r²/2), C = φ_i·φ_j, E = exp(C), φ (M×d), n (M).
 struct GramParts {
     Eigen::MatrixXd r2, R, C, E, phi;
@@ -68,7 +69,7 @@ public:
     // Σ_ij G_ij ∂K_ij/∂ψ_p for every log-parameter p (G any M×M matrix).
     Eigen::VectorXd gradLogParams(const Eigen::MatrixXd& X, const Eigen::MatrixXd& G) const;
     // ∂/∂X of Σ_ij G_ij K_ij(X) for a SYMMETRIC G (M×d): 2 Σ_j G_ij ∂k(x_i,x_j)/∂x_i, which also
-    // covers the diagonal term ∂k(x_i,x_i)/∂x_i (§3.3, §4.5).
+    // covers the diagonal term ∂k(x_i,x_i)/∂x_i (docs/maths.md §3; used by docs/maths.md §4.3).
     Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const Eigen::MatrixXd& G) const;
     // J = ∂k(x)/∂x (M×d), row j = ∂k_f(x, X_j)/∂x.
     Eigen::MatrixXd crossGradX(const Eigen::MatrixXd& X, const Eigen::VectorXd& x) const;

@@ -10,8 +10,8 @@
 // `trainingClips` holds each row's clip index; it is EMPTY for a single-clip model (every row is
 // clip 0), so a single-clip model and its file are exactly as before multi-clip training.
 //
-// Units and conventions: poses in DEGREES in the §2.3 order; Y and μ hold only the kept
-// (non-constant) columns, in ascending order of their index into the pose vector (P entries:
+// Units and conventions: poses in DEGREES in the docs/maths.md §2.1 order; Y and μ hold only the
+// kept (non-constant) columns, in ascending order of their index into the pose vector (P entries:
 // skeleton/pose_layout.h, 47 for ASF clips); constant columns
 // are held at `constantValues`. Latent X is N×d (eq. 4: d = 2 for D < 60, else 3). Frame numbers are
 // clip indices counted from 0 (the CLI prints them +1).
@@ -103,7 +103,7 @@ struct GpModel {
     // Centred active rows Ŷ (M×D) and active latent points X_I (M×d).
     Eigen::MatrixXd activeYhat() const;
     Eigen::MatrixXd activeX() const;
-    // The §6.2 precomputation for IK and prediction.
+    // The precomputation for IK and prediction (docs/maths.md §9.1).
     ActiveSetPosterior posterior() const;
     // Expands kept columns to the full pose vector (constants filled in).
     Eigen::VectorXd fullPose(const Eigen::VectorXd& kept) const;

@@ -1,8 +1,8 @@
 #pragma once
-// ModelVersion: one immutable, numbered state of a trained model together with its §6.2
-// precomputation (chol K, K⁻¹, K⁻¹Ŷ). Solvers hold a shared_ptr to the version they started
-// with; the adaptive update publishes a new version instead of changing this one, so a solve
-// never sees a half-updated model.
+// ModelVersion: one immutable, numbered state of a trained model together with its
+// precomputation (chol K, K⁻¹, K⁻¹Ŷ; docs/maths.md §9.1). Solvers hold a shared_ptr to the
+// version they started with; the adaptive update publishes a new version instead of changing this
+// one, so a solve never sees a half-updated model.
 #include <memory>
 
 #include "gp/capture_range.h"

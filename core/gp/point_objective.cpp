@@ -52,7 +52,7 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     const double n = std::sqrt(n2);
     ws.phiX = x / n;
     const double phi2 = ws.phiX.squaredNorm();
-    // One pass over the active points: k_j and row j of ∂k/∂x (§3.3).
+    // One pass over the active points: k_j and row j of ∂k/∂x (docs/maths.md §3).
     for (Eigen::Index j = 0; j < m; ++j) {
         double r2 = 0.0;
         for (Eigen::Index c = 0; c < d; ++c) {
@@ -77,8 +77,9 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
         }
     }
     // From the Cholesky factor, not K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is small,
-    // while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation (maths §9.1). Two
-    // triangular products with the stored L⁻¹ cost what one product with K⁻¹ did.
+    // while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation
+    // (docs/maths.md §9.1). Two triangular products with the stored L⁻¹ cost what one product
+    // with K⁻¹ did.
     ws.v.noalias() = Linv_.triangularView<Eigen::Lower>() * ws.k;
     ws.a.noalias() = Linv_.transpose().triangularView<Eigen::Upper>() * ws.v;
     ws.f = mu_;

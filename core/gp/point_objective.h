@@ -6,8 +6,8 @@
 //   σ²(x) = 1/β + max(0, k_f(x,x) − k(x)ᵀ K⁻¹ k(x))   (so σ² ≥ 1/β exactly)
 //
 // ActiveSetPosterior is the GP posterior given the active set: the immutable precomputation of
-// §6.2 (chol K, K⁻¹, B = K⁻¹Ŷ) for one model state; evaluate() is thread-safe (const, no shared
-// scratch). optimizeInactivePoints() runs
+// docs/maths.md §9.1 (chol K, K⁻¹, B = K⁻¹Ŷ) for one model state; evaluate() is thread-safe
+// (const, no shared scratch). optimizeInactivePoints() runs
 // Step 8: an independent SCG per inactive point, in parallel, each result written to its own
 // preallocated slot, so the output is bit-identical for any thread count.
 #include <Eigen/Cholesky>

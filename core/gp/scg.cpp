@@ -72,7 +72,7 @@ ScgResult scgMinimize(const ValueAndGradient& fg, const Eigen::VectorXd& x0, con
         const double fNew = fg(xNew, gNew);
         ++res.evaluations;
         double Delta = 2.0 * (fNew - fOld) / (alpha * mu);
-        // §9.3: a non-finite trial is a failure that must change the scale.
+        // docs/maths.md §7 step 4: a non-finite trial is a failure that must change the scale.
         if (!std::isfinite(fNew) || !gNew.allFinite() || std::isnan(Delta))
             Delta = -std::numeric_limits<double>::infinity();
         if (Delta >= 0.0) {

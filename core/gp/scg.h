@@ -1,7 +1,7 @@
 #pragma once
 // Scaled conjugate gradients, the Netlab/GPmat `scg2` variant (docs/maths.md §7), with the
-// non-finite-trial fix of §9.3: a trial point whose value or gradient is not finite counts as a
-// failed step with Δ = −∞, so the scale grows ×4 instead of repeating the same failing step.
+// non-finite-trial fix of its step 4: a trial point whose value or gradient is not finite counts
+// as a failed step with Δ = −∞, so the scale grows ×4 instead of repeating the same failing step.
 // Reusable for any objective f(x) -> (value, gradient).
 #include <Eigen/Core>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 // The outer training loop, Steps 1–10 (docs/maths.md §8), shared by FASGPLVM and SGPLVM:
 //
-//   preprocess (§2.6): constant columns out, μ, whitened PCA X, θ = 1, w = 1
+//   preprocess (docs/maths.md §5): constant columns out, μ, whitened PCA X, θ = 1, w = 1
 //   for t = 1..T:
 //     Step 5  I := IVM(X, θ, M)
 //     Step 6  SCG over (ψ = ln θ, X_I) on L_GP (W profiled under the gauge), S iterations
@@ -32,11 +32,11 @@ namespace mgp::gp {
 enum class ConvergenceTest { kRaw, kLog };
 
 // λ of the temporal prior when none is given, by the outer-iteration budget T (docs/maths.md §19
-// says how it was chosen, §23 why the full weight starts at the default T = 30): kQuickPriorWeight
-// for T ≤ 10, kFullPriorWeight for T ≥ 30, and log-linear in T between. A short run starts from
-// the PCA layout's fragments and needs the stronger pull to join them within its few iterations;
-// a long run joins them with the weaker prior, which leaves the GP likelihood more say (better
-// held-out reconstruction).
+// says how it was chosen, docs/maths.md §23 why the full weight starts at the default T = 30):
+// kQuickPriorWeight for T ≤ 10, kFullPriorWeight for T ≥ 30, and log-linear in T between. A short
+// run starts from the PCA layout's fragments and needs the stronger pull to join them within its
+// few iterations; a long run joins them with the weaker prior, which leaves the GP likelihood more
+// say (better held-out reconstruction).
 constexpr double kQuickPriorWeight = 100.0;
 constexpr double kFullPriorWeight = 30.0;
 double defaultPriorWeight(int outerIterations);
@@ -54,7 +54,7 @@ struct TrainOptions {
     int threads = 0;            // Step 8 threads, ≤ 0: hardware concurrency
     // The paper-literal eq. 5 (for Table 1's comparison run only): Jacobian term −N Σ ln w_k
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
-    // (§4.4); the default corrected objective uses c = M and Σ ln w_k = 0.
+    // (docs/maths.md §4.2); the default corrected objective uses c = M and Σ ln w_k = 0.
     bool paperLiteral = false;
     // Temporal prior on the latent points (docs/maths.md §19): kNone is the paper's model (table1,
     // table2 and the committed fixtures use it); kSmooth, the default (docs/experiments/training.md
@@ -77,7 +77,7 @@ struct TrainOptions {
     void validate() const;
 };
 
-// The training matrix after §2.6 steps 1–3.
+// The training matrix after docs/maths.md §5 steps 1–3.
 struct TrainingData {
     Eigen::MatrixXd Y;                 // N×D kept columns (degrees)
     Eigen::VectorXd mu;                // D
@@ -133,8 +133,6 @@ public:
     const std::vector<int>& activeSet() const { return active_; }
     const TrainingData& data() const { return data_; }
     const TrainOptions& options() const { return opt_; }
-    // The temporal prior in use (empty for LatentPrior::kNone).
-    const TemporalPrior& temporalPrior() const { return prior_; }
     // The mapping and its weights A (X = K A) when back-constrained; empty otherwise.
     const BackConstraint& backConstraint() const { return back_; }
     const Eigen::MatrixXd& backWeights() const { return A_; }

@@ -43,7 +43,7 @@ struct TrainingRange {
 double percentileOf(std::vector<double> v, double p);
 
 // The held-out σ²_i and L_IK,i of every training row (in row order) of `model` under `point`
-// (its §6.2 precomputation), each row's moment hidden by ±windowFrames clip frames.
+// (its precomputation, docs/maths.md §9.1), each row's moment hidden by ±windowFrames clip frames.
 void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,
                          std::vector<double>& lik);
 

@@ -118,7 +118,7 @@ private:
 };
 
 // The latent start for clip frame `frame` (0-based): its own x if the frame is a training row,
-// else argmin_x L_IK(x, y_t) from the nearest training row's x (§6.5).
+// else argmin_x L_IK(x, y_t) from the nearest training row's x (docs/maths.md §10.3).
 Eigen::VectorXd latentStartForFrame(const gp::ModelVersion& version, int frame);
 
 }  // namespace mgp

@@ -1,8 +1,8 @@
 #pragma once
 // Locality: how much each DOF's change costs when a gesture moves some effectors, so that a hand
 // drag bends the arm first and the spine and legs only as much as the target needs. The
-// constrained IK adds ½ ℓ Σ_k w_k (y_k − y_ref,k)² and the span solver ℓ Σ_k w_k u_k² (docs/maths-ik.md
-// §1, docs/maths.md §12).
+// constrained IK adds ½ ℓ Σ_k w_k (y_k − y_ref,k)² and the span solver ℓ Σ_k w_k u_k²
+// (docs/maths-ik.md §1, docs/maths-regeneration.md "Objective").
 #include <vector>
 
 #include "skeleton/skeleton.h"

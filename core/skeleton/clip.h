@@ -34,12 +34,12 @@ struct Clip {
 // else std::invalid_argument). An empty `into` takes `from`'s metadata and skeleton first.
 void appendFrames(Clip& into, const Clip& from, int first, int count);
 
-// Unwraps each column over time (§2.5): when a frame-to-frame change exceeds 180° in magnitude,
-// add or subtract 360° to that frame and every later one.
+// Unwraps each column over time (docs/maths.md §2.5): when a frame-to-frame change exceeds 180°
+// in magnitude, add or subtract 360° to that frame and every later one.
 void unwrapAngles(Eigen::MatrixXd& anglesByFrame);
 
 // The N×P pose matrix Y (P = PoseLayout(clip.skeleton).size(): 47 for ASF), degrees, unwrapped
-// over time (§2.6 step 1).
+// over time (docs/maths.md §2.5).
 Eigen::MatrixXd poseMatrix(const Clip& clip);
 // Writes the unwrapped pose-vector angles back into the clip's frames, so its poses equal the rows of
 // poseMatrix() (a model's clip must match its training data; FK is unchanged by 360° shifts).
@@ -47,7 +47,8 @@ void unwrapClip(Clip& clip);
 // Root translations, N×3, cm.
 Eigen::MatrixXd rootTranslations(const Clip& clip);
 
-// Columns whose population standard deviation is ≤ tolDeg (§2.6 step 2), ascending.
+// Columns whose population standard deviation is ≤ tolDeg (docs/maths.md §5, step 2),
+// ascending.
 std::vector<int> constantColumns(const Eigen::MatrixXd& y, double tolDeg = 1e-6);
 
 }  // namespace mgp

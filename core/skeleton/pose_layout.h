@@ -15,7 +15,8 @@
 //
 // Channels (BVH): the skeleton's own hierarchy: root rx ry rz, then every other joint's rotation
 // channels (x, y, z among those the file animates) in joint order. Channels that never move are
-// dropped later, as the ASF vector's are, by the model's constant columns (§2.6 step 2).
+// dropped later, as the ASF vector's are, by the model's constant columns (docs/maths.md §5,
+// step 2).
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -33,7 +34,7 @@ struct AsfPoseDof {
     int axis;
 };
 const std::array<AsfPoseDof, kAsfPoseDofs>& asfPoseDofTable();
-// The 22 bone names of the simplified skeleton (§2.3), root excluded.
+// The 22 bone names of the simplified skeleton (docs/maths.md §2.1), root excluded.
 const std::array<const char*, kModelBones>& modelBoneNames();
 // Bones of the full ASF skeleton that the model drops (held rigid): hands, fingers, thumbs, toes.
 bool isDroppedAsfBone(const std::string& bone);

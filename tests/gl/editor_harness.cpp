@@ -7,6 +7,7 @@
 
 #include "script_player.h"
 #include "skip.h"
+#include "test_paths.h"
 
 namespace mgp::test {
 

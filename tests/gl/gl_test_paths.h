@@ -2,6 +2,8 @@
 // The folders the rendering and editor tests read and write, named once for every test file.
 #include <string>
 
+#include "test_paths.h"
+
 namespace mgp::test {
 
 inline const std::string kMocap = MOTIONGP_TEST_MOCAP;

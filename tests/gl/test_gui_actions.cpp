@@ -10,6 +10,7 @@
 #include "editor_actions.h"
 #include "editor_harness.h"
 #include "io/parse_error.h"
+#include "test_paths.h"
 
 using namespace mgp;
 using test::tapKey;

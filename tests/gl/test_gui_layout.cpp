@@ -12,6 +12,7 @@
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
 #include "viewport_panel.h"
+#include "test_paths.h"
 
 using namespace mgp;
 

@@ -9,6 +9,7 @@
 #include "editor_app.h"
 #include "editor_harness.h"
 #include "input_state.h"
+#include "test_paths.h"
 
 using namespace mgp;
 using test::tapKey;

@@ -8,6 +8,7 @@
 #include "editor_app.h"
 #include "editor_harness.h"
 #include "viewport_panel.h"
+#include "test_paths.h"
 
 using namespace mgp;
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stb_image_include.h"
+#include "test_paths.h"
 
 namespace fs = std::filesystem;
 
