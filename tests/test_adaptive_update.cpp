@@ -1,4 +1,4 @@
-// §5.3 adaptive active set: a new immutable version with N + 1 rows; a high-variance sample
+// The adaptive active set (docs/maths.md §11): a new immutable version with N + 1 rows; a high-variance sample
 // enters the active set; bad samples are discarded; updates never block the caller.
 #include <cmath>
 #include <future>

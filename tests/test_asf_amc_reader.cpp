@@ -10,7 +10,7 @@
 
 using namespace mgp;
 
-TEST_CASE("35.asf / 35_01.amc: bones, channels, DOF selection, frames (§13.1)") {
+TEST_CASE("35.asf / 35_01.amc: bones, channels, DOF selection, frames") {
     const AsfSkeleton asf = readAsf(test::mocap("asf_amc/35.asf"));
     CHECK(asf.skeleton.jointCount() == 31);  // 30 bones + root
     CHECK(asf.channelCount() == 62);
@@ -20,7 +20,7 @@ TEST_CASE("35.asf / 35_01.amc: bones, channels, DOF selection, frames (§13.1)")
     CHECK(zeroDof == std::vector<std::string>{"lhipjoint", "rhipjoint"});
     CHECK(asf.cmPerUnit == doctest::Approx(2.54 / 0.45).epsilon(1e-15));
 
-    // Every §2.3 DOF exists in the ASF: 47 rotational + 3 root translations = 50.
+    // Every DOF of the docs/maths.md §2.1 order exists in the ASF: 47 rotational + 3 root translations = 50.
     const PoseLayout layout(asf.skeleton);
     int rotational = 0;
     for (int i = 0; i < kAsfPoseDofs; ++i) {

@@ -1,4 +1,4 @@
-// §2.5 unwrapping, §2.6 constant columns (§13.4), the pose matrix and the pose layout.
+// Unwrapping (docs/maths.md §2.5), constant columns (docs/maths.md §5), the pose matrix and the pose layout.
 #include "io/clip_loader.h"
 #include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
@@ -6,7 +6,7 @@
 
 using namespace mgp;
 
-TEST_CASE("subject 35 drops the clavicle columns {33, 34, 40, 41}: D = 43 (§13.4)") {
+TEST_CASE("subject 35 drops the clavicle columns {33, 34, 40, 41}: D = 43") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     const Eigen::MatrixXd y = poseMatrix(clip);
     CHECK(y.rows() == 358);
@@ -16,7 +16,7 @@ TEST_CASE("subject 35 drops the clavicle columns {33, 34, 40, 41}: D = 43 (§13.
     CHECK(47 - static_cast<int>(constant.size()) == 43);
 }
 
-TEST_CASE("pose matrix columns follow the §2.3 order") {
+TEST_CASE("pose matrix columns follow the docs/maths.md §2.1 order") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     const Eigen::MatrixXd y = poseMatrix(clip);
     const Skeleton& sk = clip.skeleton;
@@ -39,7 +39,7 @@ TEST_CASE("pose matrix columns follow the §2.3 order") {
     CHECK(p.anglesDeg[sk.findBone("rtibia")].x() == clip.frames[3].anglesDeg[sk.findBone("rtibia")].x() + 10.0);
 }
 
-TEST_CASE("unwrapping removes jumps larger than 180 degrees, for that frame and all later ones (§2.5)") {
+TEST_CASE("unwrapping removes jumps larger than 180 degrees, for that frame and all later ones (docs/maths.md §2.5)") {
     Eigen::MatrixXd a(6, 2);
     a << 170, 0,
         179, -10,

@@ -194,7 +194,7 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
         const ConstrainedIkResult deep = solver.solve(req);
         CHECK(res.constraints[0].residualCm <= deep.constraints[0].residualCm + 0.05);
         // Past 50 steps the out-of-reach target switches the model to full Newton (docs/maths-ik.md
-        // §3 step 6): the least-squares solve becomes stationary (35_01 after 104 steps, 10_03
+        // docs/maths-ik.md §3 step 6): the least-squares solve becomes stationary (35_01 after 104 steps, 10_03
         // after 182; with Gauss–Newton alone both were still moving after 2000).
         MESSAGE("2000-step solve: " << std::string(ikStopName(deep.stop)) << " after " << deep.iterations << ", hand "
                                     << deep.constraints[0].residualCm << " cm");
@@ -312,7 +312,7 @@ TEST_CASE("constrained IK: a crawling solve's trust radius on angles and its fas
     // held. Twice in this solve a long bounded step is rejected at μ ≈ 10⁻¹⁰ and Nielsen's ladder
     // needs several trials before μ shortens it, then lowers μ by ⅓ per step for as many again.
     // Without the angle trust radius and the 10× decrease after a well-predicted step (docs/maths-ik.md
-    // §3 step 6) the solve stopped at the cap (F 69.1158, converged after 52); with them it
+    // docs/maths-ik.md §3 step 6) the solve stopped at the cap (F 69.1158, converged after 52); with them it
     // converges in 28 at the minimum the 500-step solve finds.
     const auto version = test::kickModel1003();
     ConstrainedIkSolver solver(version);
@@ -325,7 +325,7 @@ TEST_CASE("constrained IK: a foot target at the end of a straight leg switches a
     // The leg ends straight, where Gauss–Newton cannot see the end of its reach. Without the
     // straight-limb rule (docs/maths-ik.md §3 step 6) both stop at the cap, converging after 70
     // and 59 steps; with it they converge in 35 and 33 steps. (The walk's frame 30, this test's
-    // first case until the shortened retry of §3 step 5, now converges in 52 either way.)
+    // first case until the shortened retry of docs/maths-ik.md §3 step 5, now converges in 52 either way.)
     struct Case {
         gp::ModelVersionPtr version;
         int frame;

@@ -8,7 +8,7 @@
 
 using namespace mgp;
 
-TEST_CASE("FK anchors of 35_01 (§2.2, §13.2)") {
+TEST_CASE("FK anchors of 35_01 (docs/maths.md §2.3)") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     FkState fk;
     forwardKinematics(clip.skeleton, clip.frames[0], fk);
@@ -25,7 +25,7 @@ TEST_CASE("FK anchors of 35_01 (§2.2, §13.2)") {
     CHECK(std::abs(effectorCm(clip.skeleton, fk, Effector::kHead).y() - 164.7) <= 0.1);
 }
 
-TEST_CASE("rest pose height of subject 35 is 158.4 cm (§13.2)") {
+TEST_CASE("rest pose height of subject 35 is 158.4 cm") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     Pose rest;
     rest.anglesDeg.assign(clip.skeleton.jointCount(), Eigen::Vector3d::Zero());
@@ -77,7 +77,7 @@ void checkJacobian(const Clip& clip, int samples, unsigned seed) {
 }
 }  // namespace
 
-TEST_CASE("effector Jacobian matches central differences (§13.3)") {
+TEST_CASE("effector Jacobian matches central differences") {
     SUBCASE("ASF/AMC 35_01 (axis frames C_b, Z·Y·X)") { checkJacobian(loadClip(test::mocap("asf_amc/35_01.amc")), 6, 1); }
     SUBCASE("kick 10_02") { checkJacobian(loadClip(test::mocap("asf_amc/10_02.amc")), 4, 2); }
     SUBCASE("Daz BVH (Z·X·Y channels)") { checkJacobian(loadClip(test::mocap("bvh/02_03.bvh")), 3, 3); }

@@ -111,7 +111,7 @@ TEST_CASE("L_GP: explicit-W gradient w.r.t. ln w matches central differences") {
     CHECK(err < 1e-5 * ev.gradLogW.cwiseAbs().maxCoeff());
 }
 
-TEST_CASE("L_GP: the §4.4 scale family changes L by [D(M − c) + 2·[η]]·ln s") {
+TEST_CASE("L_GP: the scale family (docs/maths.md §4.2) changes L by [D(M − c) + 2·[η]]·ln s") {
     const Fixture f = walkFixture();
     const double M = static_cast<double>(f.XI.rows()), D = static_cast<double>(f.Yhat.cols());
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {

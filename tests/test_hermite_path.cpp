@@ -1,4 +1,4 @@
-// §13 item 13: Hermite interpolation conditions on the paper's key pattern (89, 103, 117, 131).
+// Hermite interpolation conditions (docs/maths.md §12.1) on the paper's key pattern (89, 103, 117, 131).
 #include "io/clip_loader.h"
 #include "motion/hermite_path.h"
 #include "skeleton/forward_kinematics.h"
@@ -6,7 +6,7 @@
 
 using namespace mgp;
 
-TEST_CASE("Hermite path: keys, tangents, C1 joins and captured end velocities (§13.13)") {
+TEST_CASE("Hermite path: keys, tangents, C1 joins and captured end velocities") {
     const Clip clip = loadClip(test::mocap("asf_amc/10_02.amc"));
     std::vector<Eigen::Vector3d> foot;
     FkState fk;

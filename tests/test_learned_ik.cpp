@@ -1,4 +1,4 @@
-// Learned IK (§8): gradient through FK, reachable targets (§13 item 14), pins, unreachable targets.
+// Learned IK (docs/maths.md §10): gradient through FK, reachable targets, pins, unreachable targets.
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -10,7 +10,7 @@
 
 using namespace mgp;
 
-TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences (§13.7)") {
+TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences") {
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
@@ -39,7 +39,7 @@ TEST_CASE("learned IK objective gradient (L_IK + FK) matches central differences
     CHECK(worst < 1e-5 * scale);
 }
 
-TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm to 0.5 cm on frame 101 (§13.14)") {
+TEST_CASE("learned IK: δ = 0 is met to 0.05 cm and an rfoot raise up to 40 cm to 0.5 cm on frame 101") {
     const auto version = test::walkModel35();
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);

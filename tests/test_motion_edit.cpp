@@ -1,4 +1,4 @@
-// Motion regeneration (§10): keys met, untouched frames bit-identical, deterministic over threads,
+// Motion regeneration (docs/maths.md §12): keys met, untouched frames bit-identical, deterministic over threads,
 // no change from an edit that moves no key.
 #include <algorithm>
 

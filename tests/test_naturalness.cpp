@@ -1,4 +1,4 @@
-// The model-independent tests of §11.2: PPCA density, joint ranges, nearest real pose, continuity,
+// The model-independent tests of docs/maths.md §14.1: PPCA density, joint ranges, nearest real pose, continuity,
 // and the editing-range sweep's bookkeeping.
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

@@ -27,7 +27,7 @@ TEST_CASE("scg: Rosenbrock from (−1.2, 1) reaches (1, 1) within 1e-6 in < 100 
 TEST_CASE("scg: a NaN-returning trial does not stall the optimiser") {
     // f(x) = 100 Σ (x_i⁴/4 − x_i), minimum at (1, 1), NaN wherever |x_i| > 10. From (0.01, 0.02)
     // the curvature is tiny and the gradient large, so the first trial steps land far outside
-    // (x ≈ 97): plain Netlab would repeat that failing step until the iteration limit (§9.3).
+    // (x ≈ 97): plain Netlab would repeat that failing step until the iteration limit (docs/maths.md §7).
     int nanCalls = 0;
     const ValueAndGradient f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
         if (x.cwiseAbs().maxCoeff() > 10.0) {
