@@ -212,7 +212,11 @@ void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace&
 void ActiveSetPosterior::predict(const Eigen::VectorXd& x, Eigen::VectorXd& mean, double& variance) const {
     const Eigen::VectorXd k = kernel_.cross(XI_, x);
     mean = mu_ + B_.transpose() * k;
-    variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - k.dot(Kinv_ * k));
+    variance = varianceGiven(x, k.dot(Kinv_ * k));
+}
+
+double ActiveSetPosterior::varianceGiven(const Eigen::VectorXd& x, double explained) const {
+    return 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - explained);
 }
 
 Eigen::VectorXd ActiveSetPosterior::variances(const Eigen::MatrixXd& points) const {
@@ -224,9 +228,7 @@ Eigen::VectorXd ActiveSetPosterior::variances(const Eigen::MatrixXd& points) con
         k.resize(XI_.rows(), n);
         for (Eigen::Index j = 0; j < n; ++j) k.col(j) = kernel_.cross(XI_, points.row(first + j).transpose());
         a.noalias() = Kinv_ * k;
-        for (Eigen::Index j = 0; j < n; ++j)
-            v[first + j] = 1.0 / kernel_.beta() +
-                           std::max(0.0, kernel_.diagF(points.row(first + j).transpose()) - k.col(j).dot(a.col(j)));
+        for (Eigen::Index j = 0; j < n; ++j) v[first + j] = varianceGiven(points.row(first + j).transpose(), k.col(j).dot(a.col(j)));
     }
     return v;
 }

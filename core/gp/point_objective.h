@@ -85,6 +85,9 @@ public:
                        Eigen::MatrixXd& H) const;
 
 private:
+    // σ²(x) = 1/β + max(0, k(x,x) − explained), where explained = k(x)ᵀK⁻¹k(x): predict's and
+    // variances' one formula.
+    double varianceGiven(const Eigen::VectorXd& x, double explained) const;
     // ∂k(x,x)/∂x = this · x (needs ws.phiX of an evaluation at x).
     double diagonalGradientScale(const Eigen::VectorXd& x, const PointWorkspace& ws) const;
 
