@@ -9,6 +9,7 @@
 #include "cli_common.h"
 #include "command_registry.h"
 #include "io/parse_error.h"
+#include "util/allocator_tuning.h"
 
 namespace mgp::app {
 
@@ -57,6 +58,7 @@ std::vector<std::string> withImplicitGui(int argc, char** argv, const std::vecto
 
 int main(int argc, char** argv) {
     using namespace mgp::app;
+    mgp::keepFreedMemoryForReuse();
     CLI::App app{"MotionGP — a motion editor with learned inverse kinematics (FASGPLVM)"};
     app.set_help_all_flag("--help-all", "Show the help of every verb");
     app.set_version_flag("--version", std::string("motiongp ") + MOTIONGP_VERSION);

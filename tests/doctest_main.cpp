@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "skip.h"
+#include "util/allocator_tuning.h"
 
 namespace {
 
@@ -47,6 +48,7 @@ void mgp::test::markSkipped(const std::string& reason) {
 REGISTER_LISTENER("run-counter", 1, RunCounter);
 
 int main(int argc, char** argv) {
+    mgp::keepFreedMemoryForReuse();  // as motiongp's main does, so the tests run the code as the program does
     doctest::Context context(argc, argv);
     const int rc = context.run();
     if (context.shouldExit()) return rc;

@@ -206,7 +206,8 @@ struct PanelDriver {
     static constexpr float kPanelW = 380.0f, kPanelH = 180.0f;
 
     // One frame at mouse (mx, my) (window pixels); returns the item the mouse was over (0: none).
-    ImGuiID frame(float mx, float my, bool down) {
+    // Hovering needs no pixels: `draw` false skips llvmpipe, most of a frame's cost.
+    ImGuiID frame(float mx, float my, bool down, bool draw = true) {
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(kPanelW, kPanelH);
         io.DeltaTime = 1.0f / 60.0f;
@@ -220,6 +221,7 @@ struct PanelDriver {
         ui::drawPathPanel(h.app->state());
         ImGui::End();
         ImGui::Render();
+        if (!draw) return ImGui::GetCurrentContext()->HoveredId;
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, int(kPanelW), int(kPanelH));
         glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
@@ -243,7 +245,7 @@ struct PanelDriver {
         const ImGuiID id = idOf(label);
         for (float y = 4; y < kPanelH; y += 5)
             for (float x = 4; x < kPanelW; x += 6)
-                if (frame(x, y, false) == id) {
+                if (frame(x, y, false, false) == id) {
                     frame(x, y, true);
                     frame(x, y, true);
                     frame(x, y, false);
