@@ -262,3 +262,86 @@ TEST_CASE("hands placed on a frame move with the chest rotated there with the pr
         CHECK(doc.held(hand));  // still placed, where the rotation put it
     }
 }
+
+TEST_CASE("editor: a foot placed by a drag stays through a later path regeneration of the hand, which still meets its keys") {
+    // Foot up 15 cm on frame 140 spread over ±20 frames (121..159 hold it), then the right hand's
+    // path around frame 140 (keys 120, 134, 148, 162) raised 12 cm and regenerated from the
+    // capture: the foot stays where the drag put it on every frame it is held (≤ 1 cm), the records
+    // there still hold it, and the hand meets its keys. Released first, the regeneration brings the
+    // foot back to the capture.
+    EditorDocument doc;
+    heldTestOpen(doc, 20);
+    doc.setFrame(140);
+    heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, 140, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
+    std::map<int, Eigen::Vector3d> footBefore;
+    for (int s = 121; s <= 159; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
+    const auto regenerateHand = [&] {
+        doc.setFrame(140);
+        REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
+        REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
+        for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
+        REQUIRE(doc.startRegenerate(500) == "");
+        doc.waitIdle();
+        REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
+        for (int k : {1, 2}) {
+            const int t = doc.pathEdit()->keyFrames[static_cast<std::size_t>(k)];
+            CHECK((heldTestEffector(doc, t, Effector::kRHand) - doc.pathKeyPosition(k)).norm() <= 0.5);
+        }
+    };
+    regenerateHand();
+    double worst = 0.0;
+    int worstFrame = -1;
+    for (int s = 121; s <= 159; ++s) {
+        const double moved = (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm();
+        if (moved > worst) worst = moved, worstFrame = s + 1;
+        CHECK(doc.held(Effector::kRFoot));
+    }
+    MESSAGE("the held foot moved at most " << worst << " cm (frame " << worstFrame << ") during the hand's regeneration");
+    CHECK(worst <= 1.0);
+    // Without the hold the regeneration re-solves the foot from the capture: it drops back.
+    REQUIRE(doc.undo().empty());
+    REQUIRE(doc.releaseAllHeld().empty());
+    doc.endPathEdit();
+    regenerateHand();
+    double unheld = 0.0;
+    for (int s = 121; s <= 159; ++s) unheld = std::max(unheld, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    MESSAGE("released first, the foot moved up to " << unheld << " cm");
+    CHECK(unheld > 10.0);
+}
+
+TEST_CASE("editor: where a placed foot's hold ends inside a regenerated path span, the foot is guided back without a jump") {
+    // Foot up 10 cm on frame 135 spread over ±8 frames (127..143 hold it), inside the right hand's
+    // path span 120..160: the foot stays placed there, then returns to the capture's motion. Its
+    // second difference stays within the capture's largest plus 0.5 cm on every frame.
+    EditorDocument doc;
+    heldTestOpen(doc, 8);
+    doc.setFrame(135);
+    heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, 135, Effector::kRFoot) + Eigen::Vector3d(0, 10, 0));
+    std::map<int, Eigen::Vector3d> footBefore;
+    for (int s = 127; s <= 143; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
+    doc.setFrame(140);
+    REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
+    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
+    for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
+    REQUIRE(doc.startRegenerate(500) == "");
+    doc.waitIdle();
+    REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
+    double held = 0.0;
+    for (int s = 127; s <= 143; ++s) held = std::max(held, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    CHECK(held <= 1.0);
+    const Skeleton& sk = doc.clip().skeleton;
+    double edited = 0.0, captured = 0.0;
+    int worstFrame = -1;
+    for (int s = 118; s <= 162; ++s) {
+        const Eigen::Vector3d e = heldTestEffector(doc, s - 1, Effector::kRFoot) - 2.0 * heldTestEffector(doc, s, Effector::kRFoot) +
+                                  heldTestEffector(doc, s + 1, Effector::kRFoot);
+        const Eigen::Vector3d c = effectorCm(sk, doc.clip().frames[s - 1], Effector::kRFoot) -
+                                  2.0 * effectorCm(sk, doc.clip().frames[s], Effector::kRFoot) +
+                                  effectorCm(sk, doc.clip().frames[s + 1], Effector::kRFoot);
+        if (e.norm() > edited) edited = e.norm(), worstFrame = s + 1;
+        captured = std::max(captured, c.norm());
+    }
+    MESSAGE("held foot moved at most " << held << " cm; its largest second difference " << edited << " cm (frame " << worstFrame
+                                       << "), the capture's " << captured << " cm");
+    CHECK(edited <= captured + 0.5);
+}

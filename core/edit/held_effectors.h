@@ -2,11 +2,11 @@
 // Held effectors: what the animator placed stays placed (docs/architecture.md §6, "Held effectors").
 // An effector the animator put somewhere on a frame (a drag's handle, a path's effector; the
 // frame's EditRecord::moved) is held there by every later gesture: a drag on that frame holds it
-// where it is, and a later falloff or spread holds it on each frame that has it, where the motion
-// as edited so far has it. It stays held until the animator releases it (or drags it again, which
-// places it anew), or until an edit replaces the frame's record without it: a path regeneration
-// (re-solved from the capture), a latent drag, reverting the frame. These functions read and
-// change that record; EditorDocument owns the steps.
+// where it is, and a later falloff, spread or path regeneration holds it on each frame that has
+// it, where the motion as edited so far has it. It stays held until the animator releases it (or
+// drags it again, which places it anew), or until an edit replaces the frame's record without it:
+// a latent drag, reverting the frame. These functions read and change that record;
+// EditorDocument owns the steps.
 #include <vector>
 
 #include "edit/clip_edits.h"
