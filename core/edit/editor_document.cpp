@@ -688,16 +688,15 @@ std::string EditorDocument::startRegenerate(int maxIterations) {
     job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());  // the user may have switched some off
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    // The path is re-solved from the capture, but what earlier gestures placed inside the span
-    // (held effectors, edit/held_effectors.h) stays where the edited motion has it, and is guided
-    // back to the re-solved motion where its hold ends inside the span (MotionEditJob::guideHeldEnds).
-    // Then the span's pins and planted feet are held where the edited motion has them too.
-    job.heldPlaced = heldRuns(store_, path->keyFrames.front(), path->keyFrames.back(), path->effector);
+    // The path is re-solved from the capture, but what earlier gestures placed on its inner frames
+    // (held effectors, edit/held_effectors.h) stays where the edited motion has it
+    // (EditBase::placedFrames); pins and planted feet are held as before.
+    job.heldPlaced = heldRuns(store_, path->keyFrames.front() + 1, path->keyFrames.back() - 1, path->effector);
     if (!job.heldPlaced.empty()) {
         auto base = std::make_shared<EditBase>();
         base->frames = mc.frames;
-        base->holdFrames.reserve(static_cast<std::size_t>(frameCount()));
-        for (int t = 0; t < frameCount(); ++t) base->holdFrames.push_back(store_.pose(t));
+        base->placedFrames.reserve(static_cast<std::size_t>(frameCount()));
+        for (int t = 0; t < frameCount(); ++t) base->placedFrames.push_back(store_.pose(t));
         job.base = std::move(base);
     }
     return regenerate_.start(std::move(job));

@@ -61,8 +61,10 @@ std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
                   "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
                   "(captured %.1f°); %zu contact(s) held%s",
                   job.solvedFrames.size(), job.maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
-                  q.captured.maxDeg, job.held.size(), updateQueued ? " (adaptive update queued)" : "");
+                  q.captured.maxDeg, job.held.size() - static_cast<std::size_t>(job.placedRunsHeld),
+                  updateQueued ? " (adaptive update queued)" : "");
     std::string out = summary;
+    if (job.placedRunsHeld > 0) out += "; " + std::to_string(job.placedRunsHeld) + " placed effector run(s) held where you put them";
     // A key the solve could not meet is said here too, not only in the Path panel's red rows.
     for (const MotionEditJob::KeyResult& k : job.keys) {
         if (k.reached) continue;

@@ -118,11 +118,13 @@ void MotionEditJob::run() {
         for (const FootContact& c : contactSet.contacts)
             if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
     }
+    const std::size_t contactsHeld = held.size();
     for (const ContactInterval& c : heldPlaced)
         if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
+    placedRunsHeld = static_cast<int>(held.size() - contactsHeld);
     // Held effectors per inner frame: user pins on every frame, contacts and earlier placements on
     // their frames; the edited effector is never held. Targets are the positions of that frame in
-    // the base motion (EditBase::holdFrames when given).
+    // the base motion (EditBase::holdFrames when given; placements at EditBase::placedFrames when given).
     std::vector<std::vector<IkConstraint>> holds(count);
     {
         const bool holdElsewhere = base && !base->holdFrames.empty();
@@ -140,6 +142,13 @@ void MotionEditJob::run() {
             if (hold.empty()) continue;
             forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t], fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
+            if (base && !base->placedFrames.empty()) {
+                forwardKinematics(clip.skeleton, base->placedFrames[static_cast<std::size_t>(t)], fk);
+                for (IkConstraint& c : holds[i])
+                    for (std::size_t k = contactsHeld; k < held.size(); ++k)
+                        if (held[k].foot == c.effector && t >= held[k].first && t <= held[k].last)
+                            c.targetCm = effectorCm(clip.skeleton, fk, c.effector);
+            }
             if (!follow.empty()) {
                 forwardKinematics(clip.skeleton, start[t], fk);
                 for (IkConstraint& c : holds[i])
@@ -176,7 +185,9 @@ void MotionEditJob::run() {
         keys.push_back({t, error, error <= kReachedToleranceCm});
     }
     std::vector<Eigen::Vector3d> path(target.begin(), target.end());
-    quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, held);
+    // The report's contact travel is the planted feet's; a placement is where the animator put it.
+    const std::vector<ContactInterval> contacts(held.begin(), held.begin() + static_cast<long>(contactsHeld));
+    quality = measureSpan(clip, frames, first, last, effector, path, keyFrames, contacts);
 }
 
 void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds) const {

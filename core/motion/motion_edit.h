@@ -60,7 +60,8 @@ struct MotionEditJob {
     bool holdContacts = true;
     std::shared_ptr<const ContactSet> contacts;
     // Effectors the animator placed earlier (edit/held_effectors.h), held the same way on their
-    // frames: where the base motion has them (frames outside the span are ignored). The solved
+    // frames: where the base motion has them, or EditBase::placedFrames when given (frames outside
+    // the span are ignored). The solved
     // frames they cover keep them placed (regeneratedFrames).
     std::vector<ContactInterval> heldPlaced;
     // Whether the gesture places `effector` on the frames it solves (a drag, a path: their records
@@ -108,7 +109,8 @@ struct MotionEditJob {
     SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
     int spanIterations = 0;                      // kSpan only (−1: unknown, line search ended it)
     SpanQuality quality;                         // the span's report (motion_quality.h)
-    std::vector<ContactInterval> held;           // the contact and placed intervals that were held
+    std::vector<ContactInterval> held;           // the contact intervals that were held, then the placed ones
+    int placedRunsHeld = 0;                      // how many of `held` are placements (heldPlaced), at its end
     bool cancelled = false;                      // `frames` is then the unedited clip
 
     std::string validate() const;  // "" or "expected …, found …"

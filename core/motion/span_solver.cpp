@@ -111,6 +111,11 @@ std::string validateEditBase(const gp::GpModel& model, const EditBase& base) {
     for (const Pose& p : base.holdFrames)
         if (static_cast<int>(p.anglesDeg.size()) != model.clip.skeleton.jointCount() || !allFinite(p))
             return "expected finite hold poses of the model's skeleton";
+    if (!base.placedFrames.empty() && base.placedFrames.size() != base.frames.size())
+        return "expected a placement pose per frame, found " + std::to_string(base.placedFrames.size());
+    for (const Pose& p : base.placedFrames)
+        if (static_cast<int>(p.anglesDeg.size()) != model.clip.skeleton.jointCount() || !allFinite(p))
+            return "expected finite placement poses of the model's skeleton";
     return "";
 }
 

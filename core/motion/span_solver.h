@@ -72,6 +72,10 @@ struct EditBase {
     // Held effectors the change moved on purpose (a hand below a rotated elbow): held where
     // `frames` has them even when holdFrames is given.
     std::vector<Effector> followLayer;
+    // Where the placements alone (MotionEditJob::heldPlaced) are held (empty: as the rest). A path
+    // regeneration solves from the capture but holds what earlier gestures placed where the edited
+    // motion has it; its planted feet and pins stay where `frames` has them.
+    std::vector<Pose> placedFrames;
 };
 
 // "" or what is wrong with `base` for `model` (frame count, skeleton, latent size, NaN).

@@ -6,10 +6,11 @@
 namespace mgp {
 
 // glibc's defaults give such blocks back to the kernel as soon as the free memory at the top of
-// the heap passes twice the largest recent block, and the next iteration takes them again as
-// fresh zeroed pages: `motiongp evaluate` spent 40 % of its time in the kernel. This keeps up to
-// 128 MB of freed memory for reuse (and blocks under 32 MB in the heap). A no-op off glibc and
-// under AddressSanitizer, whose allocator ignores these settings. Call it first thing in main().
+// a heap passes twice the largest mapped block freed so far, and the next iteration takes them
+// again as fresh zeroed pages: `motiongp evaluate` spent 40 % of its time in the kernel. This
+// keeps up to 128 MB of freed memory per heap (the main one and each thread's) for reuse, and puts
+// blocks under 32 MB (glibc's ceiling for the threshold on 64-bit) in the heaps. A no-op off glibc
+// and under AddressSanitizer, whose allocator ignores these settings. Call it first thing in main().
 void keepFreedMemoryForReuse();
 
 }  // namespace mgp

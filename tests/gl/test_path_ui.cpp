@@ -229,6 +229,8 @@ struct PanelDriver {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         return ImGui::GetCurrentContext()->HoveredId;
     }
+    // A frame that only asks what the mouse at (mx, my) hovers.
+    ImGuiID hover(float mx, float my) { return frame(mx, my, false, false); }
     // The ID a top-level panel item gets from its label.
     ImGuiID idOf(const char* label) {
         ImGui_ImplOpenGL3_NewFrame();
@@ -245,7 +247,7 @@ struct PanelDriver {
         const ImGuiID id = idOf(label);
         for (float y = 4; y < kPanelH; y += 5)
             for (float x = 4; x < kPanelW; x += 6)
-                if (frame(x, y, false, false) == id) {
+                if (hover(x, y) == id) {
                     frame(x, y, true);
                     frame(x, y, true);
                     frame(x, y, false);

@@ -12,8 +12,9 @@ set(MOTIONGP_SANITIZER_GL_ENV "")
 # its start and size from the 16 bytes before it. Since glibc 2.25 no such header exists: when
 # a block of Mesa's dynamic TLS (llvmpipe's threads) lands there by chance, LeakSanitizer's tracer
 # scans a garbage range at exit and dies ("Tracer caught signal 11"), failing a test that passed.
-# Without the interceptor the blocks are ordinary heap allocations, reached through the thread's
-# DTV, so no leak goes unseen (docs/testing.md, "Sanitizers").
+# Without the interceptor nothing is lost to leak checking: the dynamic linker allocates those
+# blocks, and LeakSanitizer counts what the linker allocated as reachable and scans it
+# (use_ld_allocations, on by default) (docs/testing.md, "Sanitizers").
 if(MOTIONGP_SANITIZE)
   set(MOTIONGP_SANITIZER_ENV
     "ASAN_OPTIONS=intercept_tls_get_addr=0:detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
