@@ -33,6 +33,22 @@ void heldTestOpen(EditorDocument& doc, int falloff) {
     doc.setDragFalloff(falloff);
 }
 
+// The right hand's path around frame 140 (keys 119, 133, 147, 161, 0-based) with its two inner
+// keys raised 12 cm, regenerated and applied; the hand meets both keys.
+void heldTestRaiseRightHandPath(EditorDocument& doc) {
+    doc.setFrame(140);
+    REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
+    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
+    for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
+    REQUIRE(doc.startRegenerate(500) == "");
+    doc.waitIdle();
+    REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
+    for (int k : {1, 2}) {
+        const int t = doc.pathEdit()->keyFrames[static_cast<std::size_t>(k)];
+        CHECK((heldTestEffector(doc, t, Effector::kRHand) - doc.pathKeyPosition(k)).norm() <= 0.5);
+    }
+}
+
 ClipEdits heldTestEdits(std::map<int, std::vector<Effector>> moved) {
     ClipEdits edits;
     edits.reset(test::walkModel35()->model->clip, false);
@@ -275,20 +291,7 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
     heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, 140, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
     std::map<int, Eigen::Vector3d> footBefore;
     for (int s = 121; s <= 159; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
-    const auto regenerateHand = [&] {
-        doc.setFrame(140);
-        REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
-        REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
-        for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
-        REQUIRE(doc.startRegenerate(500) == "");
-        doc.waitIdle();
-        REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
-        for (int k : {1, 2}) {
-            const int t = doc.pathEdit()->keyFrames[static_cast<std::size_t>(k)];
-            CHECK((heldTestEffector(doc, t, Effector::kRHand) - doc.pathKeyPosition(k)).norm() <= 0.5);
-        }
-    };
-    regenerateHand();
+    heldTestRaiseRightHandPath(doc);
     double worst = 0.0;
     int worstFrame = -1;
     for (int s = 121; s <= 159; ++s) {
@@ -302,7 +305,7 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
     REQUIRE(doc.undo().empty());
     REQUIRE(doc.releaseAllHeld().empty());
     doc.endPathEdit();
-    regenerateHand();
+    heldTestRaiseRightHandPath(doc);
     double unheld = 0.0;
     for (int s = 121; s <= 159; ++s) unheld = std::max(unheld, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
     MESSAGE("released first, the foot moved up to " << unheld << " cm");
@@ -324,13 +327,7 @@ TEST_CASE("editor: where a placed foot's hold ends inside a regenerated path spa
     }
     std::map<int, Eigen::Vector3d> footBefore;
     for (int s = 128; s <= 142; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
-    doc.setFrame(140);
-    REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
-    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
-    for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
-    REQUIRE(doc.startRegenerate(500) == "");
-    doc.waitIdle();
-    REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
+    heldTestRaiseRightHandPath(doc);
     double held = 0.0;
     for (int s = 128; s <= 142; ++s) held = std::max(held, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
     CHECK(held <= 1.0);
