@@ -61,8 +61,7 @@ struct MotionEditJob {
     std::shared_ptr<const ContactSet> contacts;
     // Effectors the animator placed earlier (edit/held_effectors.h), held the same way on their
     // frames: where the base motion has them, or EditBase::placedFrames when given (frames outside
-    // the span are ignored). The solved
-    // frames they cover keep them placed (regeneratedFrames).
+    // the span are ignored). The solved frames they cover keep them placed (regeneratedFrames).
     std::vector<ContactInterval> heldPlaced;
     // Whether the gesture places `effector` on the frames it solves (a drag, a path: their records
     // hold it, edit/held_effectors.h). A whole-pose change's spread (paste, mirror, rotate) places
