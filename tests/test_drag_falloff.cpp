@@ -207,9 +207,9 @@ TEST_CASE("editor: a hand pinned after a head drag does not jump during a drag o
     const std::string spread =
         dragAndSpread(doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5));
     CHECK(spread.find(": spread over frames") != std::string::npos);
-    const double edited = (handAt(t - 1) - 2.0 * handAt(t) + handAt(t + 1)).norm();
-    const double captured = (effectorCm(sk, clip.frames[t - 1], Effector::kLHand) - 2.0 * effectorCm(sk, clip.frames[t], Effector::kLHand) +
-                             effectorCm(sk, clip.frames[t + 1], Effector::kLHand)).norm();
+    const double edited = test::positionSecondDifferenceCm(handAt, t);
+    const double captured = test::positionSecondDifferenceCm(
+        [&](int s) { return effectorCm(sk, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); }, t);
     MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
     CHECK(edited <= captured + 0.5);
 }

@@ -33,6 +33,20 @@ void heldTestOpen(EditorDocument& doc, int falloff) {
     doc.setDragFalloff(falloff);
 }
 
+// The effector's position on frames first..last (0-based) of the motion as edited now.
+std::map<int, Eigen::Vector3d> heldTestPositions(EditorDocument& doc, Effector e, int first, int last) {
+    std::map<int, Eigen::Vector3d> out;
+    for (int s = first; s <= last; ++s) out[s] = heldTestEffector(doc, s, e);
+    return out;
+}
+
+// The largest distance, over frames first..last, between the effector now and `before` there.
+double heldTestLargestMove(EditorDocument& doc, Effector e, const std::map<int, Eigen::Vector3d>& before, int first, int last) {
+    double largest = 0.0;
+    for (int s = first; s <= last; ++s) largest = std::max(largest, (heldTestEffector(doc, s, e) - before.at(s)).norm());
+    return largest;
+}
+
 // The right hand's path around frame 140 (keys 119, 133, 147, 161, 0-based) with its two inner
 // keys raised 12 cm, regenerated and applied; the hand meets both keys.
 void heldTestRaiseRightHandPath(EditorDocument& doc) {
@@ -168,8 +182,7 @@ TEST_CASE("editor: a foot placed by a drag's falloff stays through a later hand 
     REQUIRE(doc.releaseAllHeld().empty());
     doc.setFrame(150);
     heldTestDrag(doc, Effector::kRHand, heldTestEffector(doc, 150, Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
-    double unheld = 0.0;
-    for (int s = 131; s <= 159; ++s) unheld = std::max(unheld, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    const double unheld = heldTestLargestMove(doc, Effector::kRFoot, footBefore, 131, 159);
     MESSAGE("released first, the foot moved up to " << unheld << " cm");
     CHECK(unheld > 10.0 * worst);
     REQUIRE(doc.undo().empty());  // the unheld hand drag
@@ -289,13 +302,12 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
     heldTestOpen(doc, 20);
     doc.setFrame(140);
     heldTestDrag(doc, Effector::kRFoot, heldTestEffector(doc, 140, Effector::kRFoot) + Eigen::Vector3d(0, 15, 0));
-    std::map<int, Eigen::Vector3d> footBefore;
-    for (int s = 121; s <= 159; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
+    const std::map<int, Eigen::Vector3d> footBefore = heldTestPositions(doc, Effector::kRFoot, 121, 159);
     heldTestRaiseRightHandPath(doc);
     double worst = 0.0;
     int worstFrame = -1;
     for (int s = 121; s <= 159; ++s) {
-        const double moved = (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm();
+        const double moved = (heldTestEffector(doc, s, Effector::kRFoot) - footBefore.at(s)).norm();
         if (moved > worst) worst = moved, worstFrame = s + 1;
         CHECK(doc.held(Effector::kRFoot));
     }
@@ -306,8 +318,7 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
     REQUIRE(doc.releaseAllHeld().empty());
     doc.endPathEdit();
     heldTestRaiseRightHandPath(doc);
-    double unheld = 0.0;
-    for (int s = 121; s <= 159; ++s) unheld = std::max(unheld, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    const double unheld = heldTestLargestMove(doc, Effector::kRFoot, footBefore, 121, 159);
     MESSAGE("released first, the foot moved up to " << unheld << " cm");
     CHECK(unheld > 10.0);
 }
@@ -325,23 +336,19 @@ TEST_CASE("editor: where a placed foot's hold ends inside a regenerated path spa
         doc.setFrame(s);
         CHECK(doc.held(Effector::kRFoot) == (s >= 128 && s <= 142));
     }
-    std::map<int, Eigen::Vector3d> footBefore;
-    for (int s = 128; s <= 142; ++s) footBefore[s] = heldTestEffector(doc, s, Effector::kRFoot);
+    const std::map<int, Eigen::Vector3d> footBefore = heldTestPositions(doc, Effector::kRFoot, 128, 142);
     heldTestRaiseRightHandPath(doc);
-    double held = 0.0;
-    for (int s = 128; s <= 142; ++s) held = std::max(held, (heldTestEffector(doc, s, Effector::kRFoot) - footBefore[s]).norm());
+    const double held = heldTestLargestMove(doc, Effector::kRFoot, footBefore, 128, 142);
     CHECK(held <= 1.0);
     const Skeleton& sk = doc.clip().skeleton;
     double edited = 0.0, captured = 0.0;
     int worstFrame = -1;
+    const auto editedAt = [&](int s) { return heldTestEffector(doc, s, Effector::kRFoot); };
+    const auto capturedAt = [&](int s) { return effectorCm(sk, doc.clip().frames[static_cast<std::size_t>(s)], Effector::kRFoot); };
     for (int s = 118; s <= 162; ++s) {
-        const Eigen::Vector3d e = heldTestEffector(doc, s - 1, Effector::kRFoot) - 2.0 * heldTestEffector(doc, s, Effector::kRFoot) +
-                                  heldTestEffector(doc, s + 1, Effector::kRFoot);
-        const Eigen::Vector3d c = effectorCm(sk, doc.clip().frames[s - 1], Effector::kRFoot) -
-                                  2.0 * effectorCm(sk, doc.clip().frames[s], Effector::kRFoot) +
-                                  effectorCm(sk, doc.clip().frames[s + 1], Effector::kRFoot);
-        if (e.norm() > edited) edited = e.norm(), worstFrame = s + 1;
-        captured = std::max(captured, c.norm());
+        const double e = test::positionSecondDifferenceCm(editedAt, s);
+        if (e > edited) edited = e, worstFrame = s + 1;
+        captured = std::max(captured, test::positionSecondDifferenceCm(capturedAt, s));
     }
     MESSAGE("held foot moved at most " << held << " cm; its largest second difference " << edited << " cm (frame " << worstFrame
                                        << "), the capture's " << captured << " cm");

@@ -29,6 +29,13 @@ std::string readText(const std::string& path);
 // Same shape and the same bits in every entry (no tolerance: for "reproduces exactly" checks).
 bool bitsEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 
+// |p(t−1) − 2 p(t) + p(t+1)| in cm, p(s) = positionAt(s) an effector's position on frame s: where a
+// one-frame jump of the effector shows.
+template <class PositionAt>
+double positionSecondDifferenceCm(const PositionAt& positionAt, int t) {
+    return (positionAt(t - 1) - 2.0 * positionAt(t) + positionAt(t + 1)).norm();
+}
+
 struct CliResult {
     int exitCode = -1;      // -1 unless the process exited normally
     int signal = 0;         // the signal that ended it (0: it exited)

@@ -11,6 +11,7 @@
 #include "editor_harness.h"
 #include "gui_script.h"
 #include "skeleton/forward_kinematics.h"
+#include "test_support.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -97,10 +98,9 @@ TEST_CASE("gui held: a hand pinned with P after a head drag does not jump during
     REQUIRE(doc.pinned(Effector::kLHand));
     heldGuiDrag(*h, "rhand", 6, 0, -6);
     const Clip& clip = doc.clip();
-    auto secondDifference = [&](auto handAt) { return (handAt(t - 1) - 2.0 * handAt(t) + handAt(t + 1)).norm(); };
-    const double edited = secondDifference([&](int s) { return heldGuiEffector(doc, s, Effector::kLHand); });
-    const double captured =
-        secondDifference([&](int s) { return effectorCm(clip.skeleton, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); });
+    const double edited = test::positionSecondDifferenceCm([&](int s) { return heldGuiEffector(doc, s, Effector::kLHand); }, t);
+    const double captured = test::positionSecondDifferenceCm(
+        [&](int s) { return effectorCm(clip.skeleton, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); }, t);
     MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
     CHECK(edited <= captured + 0.5);
     CHECK(doc.isEdited(t + 5));  // the hand drag did spread
