@@ -1,7 +1,7 @@
 // bench section "edit": span regeneration on real clips, the paper's per-frame solve (today's
 // `edit --solver per-frame --no-contacts`) BEFORE and the span solver (the default) AFTER.
 // Raise (+Y) and sideways (+X) edits of 10, 20 and 40 cm of the middle keys of a 43-frame span
-// (keys 14 frames apart); for each: the span report (eval/motion_quality.h) and the median
+// (keys 14 frames apart); for each: the span report (motion/motion_quality.h) and the median
 // wall time of the regeneration over --repeats runs. Models: M = 200, T = 20 (quick: M = 100, T = 3).
 #include "bench_registry.h"
 #include "gp/trainer.h"

@@ -3,7 +3,7 @@
 // planted feet pinned); its falloff then runs twice: BEFORE re-solves the dragged frame with the
 // rest of the span (the first version), AFTER holds it at the drag's pose. Reported per drag: how
 // far the dragged frame ends from the pose the user released (largest DOF change), the span report
-// (eval/motion_quality.h) and the largest second difference at t−1..t+1 against the capture's,
+// (motion/motion_quality.h) and the largest second difference at t−1..t+1 against the capture's,
 // and the median wall time. Models: M = 200, T = 20 (quick: M = 100, T = 3).
 #include "bench_registry.h"
 #include "gp/trainer.h"

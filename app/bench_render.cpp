@@ -9,9 +9,9 @@
 
 #include "bench_registry.h"
 #include "io/clip_loader.h"
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 #include "skeleton/synthetic_clip.h"
-#include "snapshot.h"
+#include "render/snapshot.h"
 
 namespace mgp::app {
 namespace {

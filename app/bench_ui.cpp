@@ -10,10 +10,10 @@
 #include <functional>
 
 #include "bench_registry.h"
-#include "editor_app.h"
-#include "gl_context.h"
-#include "scene_builder.h"
-#include "skeleton_renderer.h"
+#include "ui/shell/editor_app.h"
+#include "render/gl_context.h"
+#include "render/scene_builder.h"
+#include "render/skeleton_renderer.h"
 
 namespace mgp::app {
 
@@ -83,7 +83,7 @@ nlohmann::json benchUi(const BenchContext& ctx) {
             dragRounds([&](double seconds) { (on ? dragOverlays : dragPlain).push_back(seconds); }, 1);
         }
     setOverlays(false);
-    // The same drags again with every phase ending in glFinish (ui/frame_profile.h): where a
+    // The same drags again with every phase ending in glFinish (ui/shell/frame_profile.h): where a
     // dragging frame's time goes. The stalls make these frames a little longer than the above.
     ui::FrameProfile& profile = app.state().profile;
     profile.measure = true;

@@ -17,14 +17,14 @@
 #include "cli_common.h"
 #include "command_registry.h"
 #include "edit/recent_files.h"
-#include "editor_app.h"
-#include "gl_context.h"
-#include "glfw_window.h"
+#include "ui/shell/editor_app.h"
+#include "render/gl_context.h"
+#include "ui/shell/glfw_window.h"
 #include "gui_run.h"
-#include "gui_script.h"
+#include "ui/input/gui_script.h"
 #include "io/data_paths.h"
 #include "io/parse_error.h"
-#include "png_capture.h"
+#include "render/png_capture.h"
 
 namespace mgp::app {
 
@@ -164,7 +164,7 @@ const CommandRegistration guiCommand("gui", "Open the interactive editor (or run
                    "Session (.mgsession), ASF/AMC or BVH clip, or model file to open (default: the 10_02 kick, else a synthetic walk)");
     sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
     sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
-    sub.add_option("--script", a->script, "Timed input events (format: ui/gui_script.h)");
+    sub.add_option("--script", a->script, "Timed input events (format: ui/input/gui_script.h)");
     sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
     sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
     sub.add_option("--size", *size, "Window size WxH (default 1280x800)");

@@ -16,8 +16,8 @@
 #include "ik/learned_ik.h"
 #include "ik_cli.h"
 #include "io/clip_loader.h"
-#include "scene_builder.h"
-#include "snapshot.h"
+#include "render/scene_builder.h"
+#include "render/snapshot.h"
 
 namespace mgp::app {
 namespace {

@@ -8,7 +8,7 @@ struct GuiArgs {
     std::string clip;        // "" = the default clip (10_02 kick) or the synthetic demo clip
     std::string model;       // a saved model to open (its clip comes with it)
     int frames = 0;          // frames to run, 0 = until the window closes (offscreen: 3)
-    std::string script;      // timed input events (ui/gui_script.h)
+    std::string script;      // timed input events (ui/input/gui_script.h)
     std::string screenshot;  // PNG of the whole window after the last frame
     bool offscreen = false;  // EGL surfaceless context, no display needed
     int width = 1280, height = 800;

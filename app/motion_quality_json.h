@@ -1,11 +1,11 @@
 #pragma once
-// The span report (eval/motion_quality.h) as JSON, shared by `edit --json` and the edit and falloff
+// The span report (motion/motion_quality.h) as JSON, shared by `edit --json` and the edit and falloff
 // bench sections.
 // Frame numbers are printed 1-based, like every CLI frame.
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 
 namespace mgp::app {
 

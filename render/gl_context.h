@@ -1,6 +1,6 @@
 #pragma once
 // GL contexts the renderer draws into. `GlSurface` is the small interface both the offscreen
-// EGL context (tests, CLI, bench) and the editor's GLFW window (ui::GlfwWindow, ui/glfw_window.h)
+// EGL context (tests, CLI, bench) and the editor's GLFW window (ui::GlfwWindow, ui/shell/glfw_window.h)
 // satisfy, so one drawing path (SceneRenderer::draw into framebuffer 0) serves both.
 //
 // OffscreenContext, the headless recipe that works with Mesa on these machines: EGL surfaceless platform

@@ -1,4 +1,4 @@
-#include "mesh.h"
+#include "render/mesh.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>

@@ -1,10 +1,10 @@
 // Onion skins and motion trails (motion_overlays.h).
-#include "motion_overlays.h"
+#include "render/motion_overlays.h"
 
 #include <algorithm>
 #include <cstdlib>
 
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::render {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scene.h"
+#include "render/scene.h"
 #include "skeleton/clip.h"
 
 namespace mgp::render {

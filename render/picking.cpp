@@ -1,4 +1,4 @@
-#include "picking.h"
+#include "render/picking.h"
 
 #include <algorithm>
 #include <cmath>

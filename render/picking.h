@@ -2,8 +2,8 @@
 // Picking effector handles with a ray from a pixel (pure maths, no GL context).
 #include <vector>
 
-#include "camera.h"
-#include "scene.h"
+#include "render/camera.h"
+#include "render/scene.h"
 
 namespace mgp::render {
 

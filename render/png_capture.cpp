@@ -1,11 +1,11 @@
-#include "png_capture.h"
+#include "render/png_capture.h"
 
 #include <GL/gl.h>
 
 #include <cstring>
 #include <stdexcept>
 
-#include "gl_context.h"
+#include "render/gl_context.h"
 #include "io/atomic_file.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION

@@ -1,4 +1,4 @@
-#include "range_tint.h"
+#include "render/range_tint.h"
 
 #include <algorithm>
 #include <cmath>

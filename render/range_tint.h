@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "eval/admission.h"
-#include "scene.h"
+#include "render/scene.h"
 
 namespace mgp::render {
 

@@ -1,9 +1,9 @@
 // The rotate gizmo (rotate_gizmo.h).
-#include "rotate_gizmo.h"
+#include "render/rotate_gizmo.h"
 
 #include <cmath>
 
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::render {

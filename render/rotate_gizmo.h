@@ -7,8 +7,8 @@
 // highlighted. Plain data and screen maths, no GL.
 #include <vector>
 
-#include "camera.h"
-#include "scene.h"
+#include "render/camera.h"
+#include "render/scene.h"
 #include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
 

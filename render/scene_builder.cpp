@@ -1,4 +1,4 @@
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 
 #include <algorithm>
 #include <cmath>

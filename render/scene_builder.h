@@ -4,9 +4,9 @@
 #include <optional>
 #include <vector>
 
-#include "motion_overlays.h"
-#include "rotate_gizmo.h"
-#include "scene.h"
+#include "render/motion_overlays.h"
+#include "render/rotate_gizmo.h"
+#include "render/scene.h"
 #include "skeleton/clip.h"
 #include "skeleton/forward_kinematics.h"
 

@@ -1,4 +1,4 @@
-#include "shader_program.h"
+#include "render/shader_program.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "gl_context.h"
+#include "render/gl_context.h"
 
 namespace mgp::render {
 

@@ -1,4 +1,4 @@
-#include "skeleton_renderer.h"
+#include "render/skeleton_renderer.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "gl_context.h"
+#include "render/gl_context.h"
 
 #if defined(__GNUC__)
 #pragma GCC diagnostic push

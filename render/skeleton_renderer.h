@@ -9,10 +9,10 @@
 // on time, and the only state is the scene and the camera.
 #include <memory>
 
-#include "camera.h"
-#include "mesh.h"
-#include "scene.h"
-#include "shader_program.h"
+#include "render/camera.h"
+#include "render/mesh.h"
+#include "render/scene.h"
+#include "render/shader_program.h"
 
 namespace mgp::render {
 

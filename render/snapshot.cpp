@@ -1,9 +1,9 @@
-#include "snapshot.h"
+#include "render/snapshot.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 
 namespace mgp::render {
 

@@ -1,11 +1,11 @@
 #pragma once
 // One call from a scene to pixels: draw into framebuffer 0 of a surface and read it back.
 // The CLI, the golden tests and the bench all use this, so goldens are made on the test path.
-#include "camera.h"
-#include "gl_context.h"
-#include "png_capture.h"
-#include "scene.h"
-#include "skeleton_renderer.h"
+#include "render/camera.h"
+#include "render/gl_context.h"
+#include "render/png_capture.h"
+#include "render/scene.h"
+#include "render/skeleton_renderer.h"
 
 namespace mgp::render {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "edit/editor_document.h"
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
 #include "motion/drag_falloff.h"

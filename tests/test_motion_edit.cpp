@@ -2,7 +2,7 @@
 // no change from an edit that moves no key.
 #include <algorithm>
 
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 #include "motion/motion_edit.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

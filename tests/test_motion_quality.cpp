@@ -1,5 +1,5 @@
-// The span report (eval/motion_quality.h) on tiny hand-made motions with known answers.
-#include "eval/motion_quality.h"
+// The span report (motion/motion_quality.h) on tiny hand-made motions with known answers.
+#include "motion/motion_quality.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/synthetic_clip.h"
 #include "test_support.h"

@@ -6,7 +6,7 @@
 #include "edit/editor_document.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 #include "trained_model_fixture.h"
 
 using namespace mgp;

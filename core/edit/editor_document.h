@@ -269,7 +269,7 @@ public:
     // the user can switch one off.
     const ContactSet& contacts() const { return store_.contacts(); }
     void setContactEnabled(std::size_t index, bool on);
-    // The last finished path regeneration's span report (eval/motion_quality.h), if any (a drag's
+    // The last finished path regeneration's span report (motion/motion_quality.h), if any (a drag's
     // falloff reports in the status line, not here).
     const std::optional<SpanQuality>& lastRegenerateQuality() const { return lastRegenerateQuality_; }
     // Its inner keys (frame, distance from the path, met or not); empty before the first one.

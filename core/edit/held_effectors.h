@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "edit/clip_edits.h"
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 
 namespace mgp {
 

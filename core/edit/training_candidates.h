@@ -1,6 +1,6 @@
 #pragma once
 // Which clips Model ▸ Train on clips… offers beside the open clip, and why it refuses the others
-// (docs/architecture.md, ui/train_clips_window.h). The open clip comes first and is always part
+// (docs/architecture.md, ui/windows/train_clips_window.h). The open clip comes first and is always part
 // of the training (it becomes the model's primary clip). The other candidates are the clip files
 // in the open clip's folder: a clip whose skeleton is the open clip's (sameSkeleton,
 // skeleton/clip_match.h: AMCs of one ASF subject, or BVH files of one hierarchy) is offered; a

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 #include "gp/model_version.h"
 #include "motion/span_solver.h"
 #include "skeleton/clip.h"

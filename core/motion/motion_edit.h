@@ -26,7 +26,7 @@
 #include <optional>
 #include <vector>
 
-#include "eval/motion_quality.h"
+#include "motion/motion_quality.h"
 #include "ik/learned_ik.h"
 #include "motion/foot_contacts.h"
 #include "motion/hermite_path.h"

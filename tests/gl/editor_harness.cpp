@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "script_player.h"
+#include "ui/input/script_player.h"
 #include "skip.h"
 #include "test_paths.h"
 

@@ -8,9 +8,9 @@
 #include <memory>
 #include <string>
 
-#include "editor_app.h"
-#include "gl_context.h"
-#include "gui_script.h"
+#include "ui/shell/editor_app.h"
+#include "render/gl_context.h"
+#include "ui/input/gui_script.h"
 
 namespace mgp::test {
 

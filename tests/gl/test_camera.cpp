@@ -4,7 +4,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "camera.h"
+#include "render/camera.h"
 
 using namespace mgp::render;
 

@@ -1,13 +1,13 @@
 // A UI frame that would draw the pixels of the previous one is not rasterised again
-// (ui/frame_signature.h): the signature sees every part of the draw data, the images it shows by
+// (ui/shell/frame_signature.h): the signature sees every part of the draw data, the images it shows by
 // reference, and nothing else; the editor skips exactly the frames whose signature repeats, and
 // the window still shows the same picture.
 #include <doctest/doctest.h>
 #include <imgui.h>
 
 #include "editor_harness.h"
-#include "frame_signature.h"
-#include "png_capture.h"
+#include "ui/shell/frame_signature.h"
+#include "render/png_capture.h"
 
 using namespace mgp;
 

@@ -21,8 +21,8 @@
 
 #include "gl_test_paths.h"
 #include "io/clip_loader.h"
-#include "scene_builder.h"
-#include "snapshot.h"
+#include "render/scene_builder.h"
+#include "render/snapshot.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #include "skip.h"

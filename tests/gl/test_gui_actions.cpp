@@ -1,4 +1,4 @@
-// The action table (ui/editor_actions.h) against what it drives: docs/guide.md's table, the
+// The action table (ui/actions/editor_actions.h) against what it drives: docs/guide.md's table, the
 // script parser, strict arguments, shortcuts, menus' enabled state and panel requests.
 #include <doctest/doctest.h>
 
@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "editor_actions.h"
+#include "ui/actions/editor_actions.h"
 #include "editor_harness.h"
 #include "io/parse_error.h"
 #include "test_paths.h"
@@ -36,7 +36,7 @@ TEST_CASE("gui actions: the guide's action table is the one the editor runs") {
         std::filesystem::create_directories(MOTIONGP_GL_OUT_DIR);
         const std::string out = std::string(MOTIONGP_GL_OUT_DIR) + "/guide_action_table.md";
         std::ofstream(out) << expected;
-        FAIL("docs/guide.md's action table differs from ui/editor_actions.cpp; the generated table is in " << out);
+        FAIL("docs/guide.md's action table differs from ui/actions/editor_actions.cpp; the generated table is in " << out);
     }
 }
 

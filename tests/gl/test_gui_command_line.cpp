@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gl_context.h"
+#include "render/gl_context.h"
 #include "gl_test_paths.h"
 #include "skip.h"
 

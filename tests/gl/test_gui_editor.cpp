@@ -19,13 +19,13 @@
 #include <iterator>
 #include <random>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "gl_context.h"
+#include "render/gl_context.h"
 #include "gl_test_paths.h"
-#include "gui_script.h"
+#include "ui/input/gui_script.h"
 #include "io/parse_error.h"
-#include "png_capture.h"
+#include "render/png_capture.h"
 #include "skeleton/forward_kinematics.h"
 
 #include "skip.h"

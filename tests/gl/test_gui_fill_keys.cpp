@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "input_state.h"
+#include "ui/input/input_state.h"
 
 using namespace mgp;
 using test::makeHarness;

@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "joint_rotation_window.h"
+#include "ui/windows/joint_rotation_window.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/rotation.h"
-#include "viewport_panel.h"
+#include "ui/panels/viewport_panel.h"
 
 using namespace mgp;
 using test::makeHarness;

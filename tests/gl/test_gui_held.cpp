@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "gui_script.h"
+#include "ui/input/gui_script.h"
 #include "skeleton/forward_kinematics.h"
 #include "test_support.h"
 

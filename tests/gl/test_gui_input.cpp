@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "gui_script.h"
-#include "input_state.h"
+#include "ui/input/gui_script.h"
+#include "ui/input/input_state.h"
 #include "skip.h"
 
 using namespace mgp;

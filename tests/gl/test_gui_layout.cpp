@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <utility>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
-#include "viewport_panel.h"
+#include "ui/panels/viewport_panel.h"
 #include "test_paths.h"
 
 using namespace mgp;

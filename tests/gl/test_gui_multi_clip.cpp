@@ -14,7 +14,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "gp/model_file.h"
 #include "gp/trainer.h"

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "gl_test_paths.h"
-#include "gui_script.h"
-#include "png_capture.h"
-#include "script_player.h"
-#include "viewport_panel.h"
+#include "ui/input/gui_script.h"
+#include "render/png_capture.h"
+#include "ui/input/script_player.h"
+#include "ui/panels/viewport_panel.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;

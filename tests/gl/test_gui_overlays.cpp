@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "editor_session.h"
-#include "gui_script.h"
+#include "ui/shell/editor_session.h"
+#include "ui/input/gui_script.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;

@@ -8,10 +8,10 @@
 
 #include "edit/joint_rotation.h"
 #include "skeleton/forward_kinematics.h"
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "gui_script.h"
-#include "input_state.h"
+#include "ui/input/gui_script.h"
+#include "ui/input/input_state.h"
 
 using namespace mgp;
 using test::tapKey;

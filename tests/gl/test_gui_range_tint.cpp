@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "gui_script.h"
-#include "range_tint.h"
+#include "ui/input/gui_script.h"
+#include "render/range_tint.h"
 
 using namespace mgp;
 using test::makeHarness;

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 
 using namespace mgp;

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "viewport_panel.h"
+#include "ui/panels/viewport_panel.h"
 #include "test_paths.h"
 
 using namespace mgp;

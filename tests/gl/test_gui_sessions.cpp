@@ -22,7 +22,7 @@
 #include "gp/model_file.h"
 #include "io/clip_loader.h"
 #include "io/fbx_export.h"
-#include "png_capture.h"
+#include "render/png_capture.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;

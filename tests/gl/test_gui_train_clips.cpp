@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "editor_app.h"
+#include "ui/shell/editor_app.h"
 #include "gp/pca_init.h"
 #include "editor_harness.h"
 

@@ -14,8 +14,8 @@
 
 #include "gl_test_paths.h"
 #include "io/clip_loader.h"
-#include "motion_overlays.h"
-#include "scene_builder.h"
+#include "render/motion_overlays.h"
+#include "render/scene_builder.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;

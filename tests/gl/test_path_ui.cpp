@@ -19,9 +19,9 @@
 #include <filesystem>
 
 #include "gui_harness.h"
-#include "path_panel.h"
-#include "png_capture.h"
-#include "viewport_panel.h"
+#include "ui/panels/path_panel.h"
+#include "render/png_capture.h"
+#include "ui/panels/viewport_panel.h"
 
 using namespace mgp;
 using namespace mgp::test;

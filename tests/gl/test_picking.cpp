@@ -1,7 +1,7 @@
 // Picking effector handles with a ray from a pixel: no GL context needed.
 #include <doctest/doctest.h>
 
-#include "picking.h"
+#include "render/picking.h"
 
 using namespace mgp::render;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "range_tint.h"
+#include "render/range_tint.h"
 
 using namespace mgp;
 using namespace mgp::render;

@@ -5,7 +5,7 @@
 
 #include "gl_test_paths.h"
 #include "io/clip_loader.h"
-#include "scene_builder.h"
+#include "render/scene_builder.h"
 #include "skeleton/synthetic_clip.h"
 
 using namespace mgp;

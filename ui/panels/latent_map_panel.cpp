@@ -1,0 +1,347 @@
+#include "ui/panels/latent_map_panel.h"
+
+#include <GL/gl.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "eval/layout_quality.h"
+
+namespace mgp::ui {
+
+namespace {
+ImU32 mapColour(double t, int alpha = 255) {
+    std::uint8_t rgb[3];
+    colourMap(t, rgb);
+    return IM_COL32(rgb[0], rgb[1], rgb[2], alpha);
+}
+// Training points: coloured by frame along a hue ramp (blue at the first frame -> green -> yellow
+// at the last), light so they stand out on the dark (uncertain) background.
+ImU32 frameColour(double t) {
+    float r, g, b;
+    ImGui::ColorConvertHSVtoRGB(float(0.60 - 0.50 * std::clamp(t, 0.0, 1.0)), 0.65f, 1.0f, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, 1.0f));
+}
+// The time path's pairs: each clip's rows joined in its own frame order, never across clips.
+std::vector<std::pair<int, int>> clipPairs(const gp::GpModel& model) {
+    if (model.clipCount() == 1) return eval::timeConsecutivePairs(model.trainingFrames);
+    std::vector<std::pair<int, int>> all;
+    for (int c = 0; c < model.clipCount(); ++c) {
+        const std::vector<int> rows = model.rowsOfClip(c);
+        std::vector<int> frames;
+        for (int i : rows) frames.push_back(model.trainingFrames[static_cast<std::size_t>(i)]);
+        for (auto [a, b] : eval::timeConsecutivePairs(frames))
+            all.emplace_back(rows[static_cast<std::size_t>(a)], rows[static_cast<std::size_t>(b)]);
+    }
+    return all;
+}
+// A model of several clips: each clip's colour index is its name's rank among the clips' names,
+// so a clip keeps its colour when another one becomes the open (primary) clip.
+std::vector<int> clipColourIndices(const gp::GpModel& model) {
+    std::vector<int> order(static_cast<std::size_t>(model.clipCount()));
+    for (int c = 0; c < model.clipCount(); ++c) order[static_cast<std::size_t>(c)] = c;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return model.clipName(a) < model.clipName(b); });
+    std::vector<int> index(order.size());
+    for (std::size_t r = 0; r < order.size(); ++r) index[static_cast<std::size_t>(order[r])] = int(r);
+    return index;
+}
+// Clip colours: well separated hues (blue, orange, green, magenta, yellow, cyan, red, violet,
+// then the same shifted); the frame within the clip brightens the dot from its first frame to its
+// last. The open clip's dots are saturated and opaque, the other clips' paler and translucent.
+ImU32 clipColour(int colourIndex, double t, bool open) {
+    static const float kHues[] = {0.58f, 0.07f, 0.33f, 0.85f, 0.15f, 0.48f, 0.0f, 0.72f};
+    const float hue = std::fmod(kHues[colourIndex % 8] + 0.04f * float(colourIndex / 8), 1.0f);
+    const float u = float(std::clamp(t, 0.0, 1.0));
+    float r, g, b;
+    ImGui::ColorConvertHSVtoRGB(hue, open ? 0.8f : 0.55f, open ? 0.65f + 0.35f * u : 0.5f + 0.3f * u, r, g, b);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, open ? 1.0f : 0.85f));
+}
+std::string hexColour(ImU32 c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", unsigned(c & 0xFF), unsigned((c >> 8) & 0xFF), unsigned((c >> 16) & 0xFF));
+    return buf;
+}
+}  // namespace
+
+LatentMapPanel::LatentMapPanel() = default;
+
+LatentMapPanel::~LatentMapPanel() {
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+bool LatentMapPanel::dotPosition(const EditorState& s, int row, float& x, float& y) const {
+    const gp::ModelVersionPtr v = s.doc.model();
+    if (!v || v->model.get() != drawn_.model || row < 0 || row >= v->model->N()) return false;
+    const gp::GpModel& m = *v->model;
+    x = float(drawn_.x0 + (m.X(row, 0) - drawn_.bx0) / (drawn_.bx1 - drawn_.bx0) * drawn_.side);
+    y = float(drawn_.y0 + (drawn_.by1 - (m.latentDim() > 1 ? m.X(row, 1) : 0.0)) / (drawn_.by1 - drawn_.by0) * drawn_.side);
+    return true;
+}
+
+bool LatentMapPanel::upToDate(const EditorState& s) const {
+    const gp::ModelVersionPtr v = s.doc.model();
+    return v && shown_.model == v->model.get() && shown_.version == v->number;
+}
+
+void LatentMapPanel::prefetch(const EditorState& s) {
+    const gp::ModelVersionPtr v = s.doc.model();
+    if (!v) return;
+    if (requestedModel_ != v->model.get() || requestedVersion_ != v->number) {
+        worker_.request(v);
+        requestedModel_ = v->model.get();
+        requestedVersion_ = v->number;
+    }
+}
+
+void LatentMapPanel::draw(EditorState& s) {
+    EditorDocument& doc = s.doc;
+    const gp::ModelVersionPtr v = doc.model();
+    s.hoveredTrainingRow = -1;
+    if (!v) {
+        ImGui::TextWrapped("No model yet. Train one in the Model panel (Ctrl+T) or open a model file (Ctrl+M).");
+        return;
+    }
+    const gp::GpModel& model = *v->model;
+    prefetch(s);
+    LatentImage fresh;
+    if (worker_.take(fresh)) {
+        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
+        if (!texture_) glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, fresh.size, fresh.size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     fresh.rgba.data());
+        ++imageUploads_;
+        fresh.rgba.clear();
+        fresh.rgba.shrink_to_fit();
+        shown_ = std::move(fresh);
+    }
+
+    // A model of several clips: a legend (a swatch and the clip's name per clip, flowed into rows)
+    // goes under the colour bar; the map gives up the legend's height.
+    const int clips = model.clipCount();
+    const std::vector<int> colourIndex = clipColourIndices(model);
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float lineH = ImGui::GetTextLineHeight();
+    struct LegendEntry {
+        std::string name, label;
+        ImU32 colour;
+        float width;
+    };
+    std::vector<LegendEntry> legend;
+    int legendRows = 0;
+    if (clips > 1) {
+        float x = 0.0f;
+        legendRows = 1;
+        for (int c = 0; c < clips; ++c) {
+            LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""), clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
+            e.width = lineH + 4.0f + ImGui::CalcTextSize(e.label.c_str()).x + 14.0f;
+            if (x > 0.0f && x + e.width > avail.x) ++legendRows, x = 0.0f;
+            x += e.width;
+            legend.push_back(std::move(e));
+        }
+    }
+    // Geometry: a square map, the colour bar below it (and the clip legend under that).
+    const float barBlock = 84.0f + float(legendRows) * (lineH + 4.0f);
+    // Whole pixels, so that the static layer's texels land on screen pixels one to one.
+    const float side = std::floor(std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f)));
+    const ImVec2 cur(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
+    const ImVec2 p0(cur.x + 16.0f, cur.y), p1(p0.x + side, p0.y + side);
+    double bx0, by0, bx1, by1;
+    if (shown_.size > 0) {
+        bx0 = shown_.x0, by0 = shown_.y0, bx1 = shown_.x1, by1 = shown_.y1;
+    } else {
+        latentBox(model, 0.15, bx0, by0, bx1, by1);
+    }
+    auto toScreen = [&](double lx, double ly) {
+        return ImVec2(float(p0.x + (lx - bx0) / (bx1 - bx0) * side), float(p0.y + (by1 - ly) / (by1 - by0) * side));
+    };
+    auto toLatent = [&](ImVec2 p) {
+        Eigen::VectorXd x = latentMapBase(model);
+        x[0] = bx0 + (p.x - p0.x) / side * (bx1 - bx0);
+        if (x.size() > 1) x[1] = by1 - (p.y - p0.y) / side * (by1 - by0);
+        return x;
+    };
+
+    ImGui::SetCursorScreenPos(p0);
+    ImGui::InvisibleButton("##latentmap", ImVec2(side, side));
+    s.recordControl("latent map");
+    const bool hovered = ImGui::IsItemHovered();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const int frames = std::max(1, doc.frameCount() - 1);
+    auto frameOfRow = [&](int i) { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; };
+    // A multi-clip model: rows of the open clip (the model's primary clip, clip 0) are frames of
+    // the open clip; every clip's dots take that clip's colour, its frame within the clip
+    // brightening it (clipColour).
+    const bool rowsKnown = model.trainingFrames.size() == static_cast<std::size_t>(model.N());
+    auto dotColour = [&](int i) {
+        if (clips == 1) return frameColour(double(frameOfRow(i)) / frames);
+        const int c = rowsKnown ? model.rowClip(i) : 0;
+        return clipColour(colourIndex[std::size_t(c)], double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
+    };
+
+    // What changes only with the model, the σ² image or the map's size is drawn once into a
+    // texture (the static layer); each frame adds the moving parts on top.
+    const StaticLayerKey key{v->model.get(), v->number, shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
+                             side, showTrajectory_, frames};
+    if (!(key == layerKey_)) {
+        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
+        layer_.render(p0, ImVec2(side, side), [&](ImDrawList& dl) {
+            if (key.hasImage)
+                dl.AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), p0, p1);
+            else
+                dl.AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
+            // The training frames joined in time order (thin line under the dots): a continuous
+            // layout is one curve per motion, a fragmented one shows long jumps across the map.
+            if (showTrajectory_)
+                for (const auto& [a, b] : rowsKnown ? clipPairs(model) : std::vector<std::pair<int, int>>{})
+                    dl.AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
+                               toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
+                               IM_COL32(235, 235, 240, 120), 1.0f);
+            // Training points coloured by frame (several clips: by clip), active set ringed. The
+            // other clips' dots go first and smaller, so the open clip's stay on top.
+            if (clips > 1)
+                for (int i = 0; i < model.N(); ++i)
+                    if (rowsKnown && model.rowClip(i) != 0)
+                        dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 1.9f, dotColour(i));
+            for (int i = 0; i < model.N(); ++i)
+                if (clips == 1 || !rowsKnown || model.rowClip(i) == 0)
+                    dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f, dotColour(i));
+            for (int i : model.active) {
+                if (i < 0 || i >= model.N()) continue;
+                dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
+                             IM_COL32(255, 255, 255, 170), 10, 1.0f);
+            }
+        });
+        layerKey_ = key;
+        ++layerRenders_;
+    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    layer_.draw(*dl, p0, p1);
+    drawn_ = {v->model.get(), p0.x, p0.y, side, bx0, by0, bx1, by1};
+    dl->PushClipRect(p0, p1, true);
+
+    int nearest = -1;
+    float nearestD2 = 7.0f * 7.0f;
+    if (hovered)
+        for (int i = 0; i < model.N(); ++i) {
+            const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
+            const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
+            if (d2 < nearestD2) {
+                nearestD2 = d2;
+                nearest = i;
+            }
+        }
+    // Path of the current/last drag and the current latent point.
+    const auto& path = doc.latentPath();
+    for (std::size_t k = 1; k < path.size(); ++k)
+        dl->AddLine(toScreen(path[k - 1][0], path[k - 1].size() > 1 ? path[k - 1][1] : 0.0),
+                    toScreen(path[k][0], path[k].size() > 1 ? path[k][1] : 0.0), IM_COL32(255, 70, 70, 230), 2.0f);
+    const Eigen::VectorXd xc = doc.currentLatent();
+    ImVec2 pc(-1e6f, -1e6f);
+    if (xc.size() > 0 && xc.allFinite()) {
+        pc = toScreen(xc[0], xc.size() > 1 ? xc[1] : 0.0);
+        dl->AddCircleFilled(pc, 6.0f, IM_COL32(255, 60, 60, 255));
+        dl->AddCircle(pc, 6.5f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
+    }
+    if (nearest >= 0) {
+        const ImVec2 p = toScreen(model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0);
+        dl->AddCircle(p, 6.0f, IM_COL32(255, 230, 60, 255), 16, 2.0f);
+    }
+    dl->PopClipRect();
+    dl->AddRect(p0, p1, IM_COL32(120, 124, 132, 255));
+    dl->AddText(ImVec2(p0.x + side * 0.5f - 8.0f, p1.y + 1.0f), IM_COL32(200, 200, 205, 255), "x1");
+    dl->AddText(ImVec2(cur.x, p0.y + side * 0.5f - 7.0f), IM_COL32(200, 200, 205, 255), "x2");
+
+    // Interaction: drag the current point (pose from the model mean), click a training point.
+    const float dc2 = (pc.x - mouse.x) * (pc.x - mouse.x) + (pc.y - mouse.y) * (pc.y - mouse.y);
+    if (hovered && ImGui::IsMouseClicked(0)) {
+        if (dc2 <= 9.0f * 9.0f && doc.beginLatentDrag()) {
+            dragging_ = true;
+            s.playing = false;
+        } else if (nearest >= 0 && nearest < int(model.trainingFrames.size())) {
+            const int c = model.rowClip(nearest);
+            if (c == 0) {
+                doc.setFrame(model.trainingFrames[nearest]);
+                s.setStatus("jumped to frame " + std::to_string(model.trainingFrames[nearest] + 1));
+            } else {  // another clip: the app switches clips (asking first about unsaved changes)
+                s.request("model-clip", {model.clipName(c), std::to_string(model.trainingFrames[nearest] + 1)});
+            }
+        }
+    }
+    if (dragging_) {
+        if (!ImGui::IsMouseDown(0)) {
+            doc.endLatentDrag();
+            dragging_ = false;
+            s.setStatus("posed frame " + std::to_string(doc.frame() + 1) + " from the model mean");
+        } else if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) {
+            doc.latentDragTo(toLatent(mouse));
+        }
+    }
+    if (nearest >= 0 && !dragging_) {
+        s.hoveredTrainingRow = nearest;
+        const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
+        const int c = model.rowClip(nearest);
+        ImGui::SetTooltip("Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: %s",
+                          model.clipName(c).c_str(), frame + 1,
+                          model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
+                          std::find(model.active.begin(), model.active.end(), nearest) != model.active.end()
+                              ? "  [active set]" : "",
+                          c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
+    } else if (hovered && dc2 <= 81.0f && !dragging_) {
+        ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
+    }
+
+    // Colour bar.
+    const ImVec2 b0(p0.x, p1.y + 18.0f), b1(p1.x, p1.y + 28.0f);
+    const int segs = 48;
+    for (int k = 0; k < segs; ++k) {
+        const float xa = b0.x + (b1.x - b0.x) * k / segs, xb = b0.x + (b1.x - b0.x) * (k + 1) / segs;
+        dl->AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
+                                    mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
+                                    mapColour(1.0 - double(k) / segs));
+    }
+    dl->AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
+    char lo[48], hi[48];
+    std::snprintf(lo, sizeof lo, "%.2g", shown_.size ? std::exp(shown_.minLogVar) : 0.0);
+    std::snprintf(hi, sizeof hi, "%.2g", shown_.size ? std::exp(shown_.maxLogVar) : 0.0);
+    dl->AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
+    const float hiW = ImGui::CalcTextSize(hi).x;
+    dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
+    // With d = 3 the map is a slice (latentMapBase): say which.
+    char capText[128] = "predictive variance sigma^2(x), log scale";
+    if (model.latentDim() > 2)
+        std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)", latentMapBase(model)[2]);
+    const char* cap = capText;
+    const float capW = ImGui::CalcTextSize(cap).x;
+    // Centred under the bar, but never left of the panel's content edge (the caption is wider).
+    const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
+    dl->AddText(ImVec2(capX, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
+    // The clip legend: a swatch in the clip's colour and its name, the open clip marked.
+    s.clipLegend.clear();
+    float lx = cur.x, ly = b1.y + 4.0f + 2.0f * lineH;
+    for (const LegendEntry& e : legend) {
+        if (lx > cur.x && lx + e.width > cur.x + avail.x) lx = cur.x, ly += lineH + 4.0f;
+        dl->AddRectFilled(ImVec2(lx, ly + 1.0f), ImVec2(lx + lineH, ly + 1.0f + lineH), e.colour);
+        dl->AddText(ImVec2(lx + lineH + 4.0f, ly + 1.0f), IM_COL32(210, 210, 215, 255), e.label.c_str());
+        s.controls["clip legend " + e.name] = {lx, ly + 1.0f, lx + lineH, ly + 1.0f + lineH, true};
+        s.clipLegend += e.name + " " + hexColour(e.colour) + (e.label.size() > e.name.size() ? " (open)" : "") + "\n";
+        lx += e.width;
+    }
+    if (legendRows > 0) ly += lineH + 4.0f;
+    ImGui::SetCursorScreenPos(ImVec2(cur.x, ly));
+    ImGui::Checkbox("time path", &showTrajectory_);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
+    ImGui::SameLine();
+    if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
+    else ImGui::TextDisabled("bright: confident  rings: active");
+}
+
+}  // namespace mgp::ui

@@ -1,0 +1,21 @@
+#pragma once
+// The timeline: scrub (click or drag on the track), play/pause (Space), step (Left/Right),
+// first/last (Home/End), the current frame number and time; edited frames are marked, and so
+// are an edited path's span (tinted) and keys (diamonds).
+#include "ui/shell/editor_state.h"
+
+namespace mgp::ui {
+
+class TimelinePanel {
+public:
+    void draw(EditorState& state);
+    // Advances playback by dt seconds (called once per frame by the app).
+    static void advance(EditorState& state, double dt);
+
+private:
+    bool scrubbing_ = false;
+    bool selecting_ = false;  // a Shift+drag selecting a range (EditorState::timelineRange)
+    int rangeAnchor_ = 0;     // the frame the range drag started on
+};
+
+}  // namespace mgp::ui

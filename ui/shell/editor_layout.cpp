@@ -1,0 +1,144 @@
+#include "ui/shell/editor_layout.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "ui/panels/model_panel.h"
+#include "ui/panels/path_panel.h"
+
+namespace mgp::ui {
+
+EditorLayout::EditorLayout(float scale, std::string layoutFile) : scale_(scale), layoutFile_(std::move(layoutFile)) {
+    if (!layoutFile_.empty()) prefs_ = loadLayoutPrefs(layoutFile_);
+}
+
+void EditorLayout::reset() {
+    prefs_ = LayoutPrefs{};
+    if (!layoutFile_.empty()) saveLayoutPrefs(layoutFile_, prefs_);
+}
+
+void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
+                        int h) {
+    const float menuH = ImGui::GetFrameHeight();
+    // Sizes in pixels at scale 1; a HiDPI monitor's content scale multiplies them (and the fonts).
+    const float k = scale_;
+    const float timelineH = 104.0f * k;
+    // The right column: 380 px wide with fixed panel heights from 1280×800 up; in a smaller window
+    // narrower (30 % of the width, at least 290 px) with the heights shared out so every panel
+    // keeps its main controls in view down to 1024×600.
+    const float avail = float(h) - menuH;
+    float rightW = 380.0f * k, modelH = 262.0f * k, latentH = 356.0f * k;
+    if (float(w) < 1280.0f * k || avail < modelH + latentH + 160.0f * k) {
+        rightW = std::clamp(float(w) * 0.30f, std::min(290.0f * k, float(w) * 0.45f), 380.0f * k);
+        modelH = std::clamp(avail * 0.30f, 130.0f * k, 262.0f * k);
+        const float readoutH = std::max(avail * 0.29f, 170.0f * k);
+        latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
+    }
+    // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
+    if (prefs_.rightWidth > 0.0f) rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
+    float timelineFinal = timelineH;
+    if (prefs_.timelineHeight > 0.0f)
+        timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(70.0f * k, float(h) * 0.2f), float(h) * 0.5f);
+    panels(state, viewport, latent, timeline, w, h, menuH, rightW, timelineFinal, modelH, latentH);
+}
+
+void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
+                          int h, float menuH, float rightW, float timelineH, float modelH, float latentH) {
+    const float leftW = float(w) - rightW;
+    leftW_ = leftW;
+    const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    auto place = [](float x, float y, float ww, float hh) {
+        ImGui::SetNextWindowPos(ImVec2(x, y));
+        ImGui::SetNextWindowSize(ImVec2(std::max(ww, 50.0f), std::max(hh, 40.0f)));
+    };
+
+    place(0, menuH, leftW, float(h) - menuH - timelineH);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBackground |
+                                          ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    viewport.draw(state);
+    ImGui::End();
+
+    place(0, float(h) - timelineH, leftW, timelineH);
+    ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
+    {
+        // Track above, status line below.
+        const float statusH = ImGui::GetTextLineHeightWithSpacing();
+        ImGui::BeginChild("tl", ImVec2(0, -statusH), false, ImGuiWindowFlags_NoScrollbar);
+        timeline.draw(state);
+        ImGui::EndChild();
+        if (const StatusMessage* m = state.messages.current()) {
+            if (m->error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", m->text.c_str());
+            else ImGui::TextDisabled("%s", m->text.c_str());
+        }
+    }
+    ImGui::End();
+
+    place(leftW, menuH, rightW, modelH);
+    ImGui::Begin("Model", nullptr, fixed);
+    drawModelPanel(state);
+    ImGui::End();
+
+    place(leftW, menuH + modelH, rightW, latentH);
+    ImGui::Begin("Latent map", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    latent.draw(state);
+    ImGui::End();
+
+    place(leftW, menuH + modelH + latentH, rightW, float(h) - menuH - modelH - latentH);
+    ImGui::Begin("Readout and path", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
+    if (ImGui::BeginTabBar("##bottomright")) {
+        // The Path tab comes forward while a path is edited.
+        const bool pathActive = state.doc.pathEdit().has_value();
+        if (ImGui::BeginTabItem("IK readout")) {
+            drawIkReadout(state);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Path", nullptr, pathActive && !pathTabShown_ ? ImGuiTabItemFlags_SetSelected : 0)) {
+            drawPathPanel(state);
+            ImGui::EndTabItem();
+        }
+        pathTabShown_ = pathActive;
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+
+    // Splitters, on top of the panels' edges: the right column's width and the timeline's height.
+    bool released = false;
+    const float dx = splitter("##split-right", leftW - 3.0f, menuH, 6.0f, float(h) - menuH, true, released);
+    if (dx != 0.0f) prefs_.rightWidth = std::max(1.0f, (rightW - dx) / scale_);
+    bool releasedTimeline = false;
+    const float dy = splitter("##split-timeline", 0.0f, float(h) - timelineH - 3.0f, leftW - 3.0f, 6.0f, false, releasedTimeline);
+    if (dy != 0.0f) prefs_.timelineHeight = std::max(1.0f, (timelineH - dy) / scale_);
+    if ((released || releasedTimeline) && !layoutFile_.empty()) {
+        const std::string err = saveLayoutPrefs(layoutFile_, prefs_);
+        if (!err.empty()) state.setStatus("could not remember the layout: " + err, true);
+    }
+}
+
+float EditorLayout::splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PopStyleVar(3);
+    ImGui::InvisibleButton("##strip", ImVec2(w, h));
+    const bool active = ImGui::IsItemActive();
+    released = ImGui::IsItemDeactivated();
+    float delta = 0.0f;
+    if (active || ImGui::IsItemHovered()) {
+        ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(90, 140, 220, active ? 200 : 120));
+        if (active) delta = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+    }
+    ImGui::End();
+    return delta;
+}
+
+}  // namespace mgp::ui
