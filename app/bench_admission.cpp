@@ -11,9 +11,9 @@
 // Reported: per clip, agreement (fraction of poses on which a verdict equals the judge's) and
 // the confusion counts; also every sample, so the docs' tables can be redone.
 #include "bench_registry.h"
+#include "eval/admission.h"
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
-#include "eval/admission.h"
 #include "gp/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
@@ -73,7 +73,8 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
     const PoseLayout layout(trained.skeleton);
     const std::vector<int> deltas = ctx.quick ? std::vector<int>{10, 40} : std::vector<int>{5, 10, 20, 30, 40};
     const int frameCount = ctx.quick ? 2 : 6;
-    const std::vector<Effector> effectors{Effector::kRHand, Effector::kLHand, Effector::kHead, Effector::kRFoot, Effector::kLFoot};
+    const std::vector<Effector> effectors{Effector::kRHand, Effector::kLHand, Effector::kHead, Effector::kRFoot,
+                                          Effector::kLFoot};
     Agreement rule, score;
     ConstrainedIkSolver solver(version);
     for (int k = 0; k < frameCount; ++k) {
@@ -95,8 +96,8 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
                     const ConstrainedIkResult r = solver.solve(request);
                     const bool belowFloor = anyBelowFloor(r.constraints);
                     const AdmissionVerdict verdict =
-                        admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, belowFloor, r.sigma2, r.lik,
-                                  judgeBalance(trained.skeleton, start, r.pose, contacts, t));
+                        admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, belowFloor, r.sigma2,
+                                  r.lik, judgeBalance(trained.skeleton, start, r.pose, contacts, t));
                     const bool ruleAdmits = verdict.admitted;
                     // The former rule: the model's held-out score percentiles.
                     const bool scoreAdmits = r.reached && !belowFloor && r.lik <= version->range.likLimit &&
@@ -105,13 +106,25 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
                     const bool judgeAdmits = r.reached && !belowFloor && v.ranges && v.nearest && v.density;
                     rule.add(ruleAdmits, judgeAdmits);
                     score.add(scoreAdmits, judgeAdmits);
-                    samples.push_back({{"clip", spec.training}, {"frame", t + 1}, {"effector", effectorName(e)},
-                                       {"direction", dirName}, {"delta_cm", delta}, {"reached", r.reached},
-                                       {"below_floor", belowFloor}, {"off_balance", verdict.balance.offBalance}, {"lik", r.lik}, {"sigma2", r.sigma2},
-                                       {"nearest_cm", verdict.capture.nearestCm}, {"capture_ranges", verdict.capture.ranges},
-                                       {"rule", ruleAdmits}, {"score", scoreAdmits}, {"judge", judgeAdmits},
-                                       {"judge_ranges", v.ranges}, {"judge_nearest", v.nearest},
-                                       {"judge_density", v.density}, {"judge_dnn_cm", v.dNN}});
+                    samples.push_back({{"clip", spec.training},
+                                       {"frame", t + 1},
+                                       {"effector", effectorName(e)},
+                                       {"direction", dirName},
+                                       {"delta_cm", delta},
+                                       {"reached", r.reached},
+                                       {"below_floor", belowFloor},
+                                       {"off_balance", verdict.balance.offBalance},
+                                       {"lik", r.lik},
+                                       {"sigma2", r.sigma2},
+                                       {"nearest_cm", verdict.capture.nearestCm},
+                                       {"capture_ranges", verdict.capture.ranges},
+                                       {"rule", ruleAdmits},
+                                       {"score", scoreAdmits},
+                                       {"judge", judgeAdmits},
+                                       {"judge_ranges", v.ranges},
+                                       {"judge_nearest", v.nearest},
+                                       {"judge_density", v.density},
+                                       {"judge_dnn_cm", v.dNN}});
                 }
             }
         }
@@ -126,19 +139,20 @@ nlohmann::json runClip(const BenchContext& ctx, const AdmissionClip& spec, nlohm
             {"model_score", score.json()}};
 }
 
-const BenchRegistration admissionBench("admission", "Admission against model-independent naturalness (hand, foot, head moves of 5-40 cm)",
-                                       [](const BenchContext& ctx) {
-    if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    const std::vector<AdmissionClip> clips = ctx.quick ? std::vector<AdmissionClip>{{"10_02", {"10_03"}}}
-                                                       : std::vector<AdmissionClip>{{"10_02", {"10_01", "10_03"}},
-                                                                                    {"16_01", {"16_02", "16_03"}},
-                                                                                    {"09_01", {"09_02", "09_03"}},
-                                                                                    {"35_01", {}}};
-    nlohmann::json out = {{"clips", nlohmann::json::array()}}, samples = nlohmann::json::array();
-    for (const AdmissionClip& c : clips) out["clips"].push_back(runClip(ctx, c, samples));
-    out["samples"] = samples;
-    return out;
-});
+const BenchRegistration admissionBench(
+    "admission", "Admission against model-independent naturalness (hand, foot, head moves of 5-40 cm)",
+    [](const BenchContext& ctx) {
+        if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
+        const std::vector<AdmissionClip> clips = ctx.quick ? std::vector<AdmissionClip>{{"10_02", {"10_03"}}}
+                                                           : std::vector<AdmissionClip>{{"10_02", {"10_01", "10_03"}},
+                                                                                        {"16_01", {"16_02", "16_03"}},
+                                                                                        {"09_01", {"09_02", "09_03"}},
+                                                                                        {"35_01", {}}};
+        nlohmann::json out = {{"clips", nlohmann::json::array()}}, samples = nlohmann::json::array();
+        for (const AdmissionClip& c : clips) out["clips"].push_back(runClip(ctx, c, samples));
+        out["samples"] = samples;
+        return out;
+    });
 
 }  // namespace
 }  // namespace mgp::app

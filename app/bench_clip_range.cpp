@@ -17,7 +17,8 @@ Clip loadClipRange(const std::string& mocapDir, const BenchClipRange& range, int
 std::vector<int> spreadPicks(const std::vector<int>& candidates, int count, int minGap) {
     std::vector<int> out;
     for (int k = 0; k < count && !candidates.empty(); ++k) {
-        const int t = candidates[(2 * static_cast<std::size_t>(k) + 1) * candidates.size() / (2 * static_cast<std::size_t>(count))];
+        const int t = candidates[(2 * static_cast<std::size_t>(k) + 1) * candidates.size() /
+                                 (2 * static_cast<std::size_t>(count))];
         if (out.empty() || t - out.back() > minGap) out.push_back(t);
     }
     return out;

@@ -46,53 +46,56 @@ nlohmann::json handRaises(const gp::ModelVersionPtr& version) {
                               r.sigma2, r.lik, judgeBalance(clip.skeleton, pose, r.pose, contacts, t))
                         .admitted;
     }
-    return {{"frames", frames}, {"reached", reached}, {"admitted", admitted}, {"solve_seconds", summarizeSeconds(seconds)}};
+    return {
+        {"frames", frames}, {"reached", reached}, {"admitted", admitted}, {"solve_seconds", summarizeSeconds(seconds)}};
 }
 
-const BenchRegistration firstModelBench("first_model", "From Train to a model the viewport drags against (10_02, 590 frames)",
-                                        [](const BenchContext& ctx) {
-    if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    const Clip clip = loadClip(ctx.mocapDir + "/asf_amc/10_02.amc");
-    const gp::TrainOptions defaults;
-    const PublishPolicy policy;
-    const int repeats = ctx.quick ? 1 : std::min(ctx.repeats, 5);
-    std::vector<double> firstSeconds;
-    gp::ModelVersionPtr first;
-    for (int r = 0; r < repeats; ++r) {
-        TrainingJob job;
-        const auto start = std::chrono::steady_clock::now();
-        if (const std::string err = job.start(clip, defaults); !err.empty()) return nlohmann::json{{"error", err}};
-        gp::ModelVersionPtr published;
-        while (!(published = job.takeRefinement()) && job.running())
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        firstSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        job.cancel();
-        job.join();
-        if (!published) return nlohmann::json{{"error", "the training run published no model"}};
-        first = published;
-    }
-    nlohmann::json out;
-    out["clip"] = clip.name;
-    out["frames"] = clip.frameCount();
-    out["policy"] = {{"first_iterations", policy.firstIterations}, {"every_seconds", policy.everySeconds}};
-    out["editor"] = {{"seconds_to_first_model", summarizeSeconds(firstSeconds)},
-                     {"iterations", first->model->iterations},
-                     {"hand_raise_20cm_feet_pinned", handRaises(first)}};
-    if (!ctx.quick) {
-        gp::TrainResult full;
-        const double fullSeconds = secondsOf([&] { full = gp::trainOnClip(clip, defaults); });
-        out["default_run"] = {{"seconds", fullSeconds}, {"iterations", full.model.iterations}, {"T", defaults.outerIterations}};
-        gp::TrainControl control;
-        control.timeBudgetSeconds = 5.0;
-        gp::TrainResult budget;
-        const double seconds = secondsOf([&] { budget = gp::trainOnClip(clip, defaults, control); });
-        out["time_budget_5"] = {{"seconds", seconds},
-                                {"iterations", budget.model.iterations},
-                                {"stopped_by_budget", budget.outOfTime},
-                                {"hand_raise_20cm_feet_pinned", handRaises(gp::ModelVersion::make(std::move(budget.model)))}};
-    }
-    return out;
-});
+const BenchRegistration firstModelBench(
+    "first_model", "From Train to a model the viewport drags against (10_02, 590 frames)", [](const BenchContext& ctx) {
+        if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
+        const Clip clip = loadClip(ctx.mocapDir + "/asf_amc/10_02.amc");
+        const gp::TrainOptions defaults;
+        const PublishPolicy policy;
+        const int repeats = ctx.quick ? 1 : std::min(ctx.repeats, 5);
+        std::vector<double> firstSeconds;
+        gp::ModelVersionPtr first;
+        for (int r = 0; r < repeats; ++r) {
+            TrainingJob job;
+            const auto start = std::chrono::steady_clock::now();
+            if (const std::string err = job.start(clip, defaults); !err.empty()) return nlohmann::json{{"error", err}};
+            gp::ModelVersionPtr published;
+            while (!(published = job.takeRefinement()) && job.running())
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            firstSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            job.cancel();
+            job.join();
+            if (!published) return nlohmann::json{{"error", "the training run published no model"}};
+            first = published;
+        }
+        nlohmann::json out;
+        out["clip"] = clip.name;
+        out["frames"] = clip.frameCount();
+        out["policy"] = {{"first_iterations", policy.firstIterations}, {"every_seconds", policy.everySeconds}};
+        out["editor"] = {{"seconds_to_first_model", summarizeSeconds(firstSeconds)},
+                         {"iterations", first->model->iterations},
+                         {"hand_raise_20cm_feet_pinned", handRaises(first)}};
+        if (!ctx.quick) {
+            gp::TrainResult full;
+            const double fullSeconds = secondsOf([&] { full = gp::trainOnClip(clip, defaults); });
+            out["default_run"] = {
+                {"seconds", fullSeconds}, {"iterations", full.model.iterations}, {"T", defaults.outerIterations}};
+            gp::TrainControl control;
+            control.timeBudgetSeconds = 5.0;
+            gp::TrainResult budget;
+            const double seconds = secondsOf([&] { budget = gp::trainOnClip(clip, defaults, control); });
+            out["time_budget_5"] = {
+                {"seconds", seconds},
+                {"iterations", budget.model.iterations},
+                {"stopped_by_budget", budget.outOfTime},
+                {"hand_raise_20cm_feet_pinned", handRaises(gp::ModelVersion::make(std::move(budget.model)))}};
+        }
+        return out;
+    });
 
 }  // namespace
 }  // namespace mgp::app

@@ -17,17 +17,21 @@ const BenchRegistration fkBench("fk", "Forward kinematics and effector Jacobian 
     volatile double sink = 0.0;
     for (int r = 0; r < ctx.repeats; ++r) {
         fkSamples.push_back(secondsOf([&] {
-            for (int i = 0; i < calls; ++i) forwardKinematics(clip.skeleton, clip.frames[i % clip.frameCount()], fk);
-            sink = sink + fk.jointCm[1].x();
-        }) / calls);
+                                for (int i = 0; i < calls; ++i)
+                                    forwardKinematics(clip.skeleton, clip.frames[i % clip.frameCount()], fk);
+                                sink = sink + fk.jointCm[1].x();
+                            }) /
+                            calls);
         forwardKinematics(clip.skeleton, clip.frames[0], fk);
         jacSamples.push_back(secondsOf([&] {
-            for (int i = 0; i < calls; ++i)
-                effectorJacobian(clip.skeleton, layout, fk, clip.frames[0], Effector::kRFoot, jac);
-            sink = sink + jac(0, 0);
-        }) / calls);
+                                 for (int i = 0; i < calls; ++i)
+                                     effectorJacobian(clip.skeleton, layout, fk, clip.frames[0], Effector::kRFoot, jac);
+                                 sink = sink + jac(0, 0);
+                             }) /
+                             calls);
     }
-    return nlohmann::json{{"clip", clip.name}, {"fk_seconds", summarizeSeconds(fkSamples)},
+    return nlohmann::json{{"clip", clip.name},
+                          {"fk_seconds", summarizeSeconds(fkSamples)},
                           {"jacobian_seconds", summarizeSeconds(jacSamples)}};
 });
 

@@ -38,7 +38,8 @@ namespace {
 constexpr int kDragFrame = 100;
 constexpr int kEventCap = 50;
 
-gp::ModelVersionPtr benchModel(const BenchContext& ctx, const std::string& file, std::string& name, double& trainSeconds) {
+gp::ModelVersionPtr benchModel(const BenchContext& ctx, const std::string& file, std::string& name,
+                               double& trainSeconds) {
     Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk(360) : loadClip(ctx.mocapDir + "/asf_amc/" + file);
     name = clip.name;
     gp::TrainOptions options;
@@ -62,7 +63,9 @@ double effectorGapCm(const Skeleton& sk, const Pose& a, const Pose& b) {
     double worst = 0.0;
     for (int e = 0; e < kEffectorCount; ++e)
         if (sk.hasEffector(static_cast<Effector>(e)))
-            worst = std::max(worst, (effectorCm(sk, fa, static_cast<Effector>(e)) - effectorCm(sk, fb, static_cast<Effector>(e))).norm());
+            worst = std::max(
+                worst,
+                (effectorCm(sk, fa, static_cast<Effector>(e)) - effectorCm(sk, fb, static_cast<Effector>(e))).norm());
     return worst;
 }
 
@@ -83,17 +86,18 @@ struct DragStats {
 
     nlohmann::json json() const {
         auto msSummary = summarizeSeconds(ms);
-        return {{"events", events},
-                {"converged_fraction", double(converged) / std::max(1, events)},
-                {"worst_pin_residual_cm", worstPin},
-                {"reachable_events", reachable},
-                {"worst_reachable_target_residual_cm", worstReachableTarget},
-                {"worst_target_residual_cm", worstTarget},
-                {"ms_per_event", msSummary},
-                {"iterations", summarizeSeconds(iterations)},
-                {"p99_max_dof_change_deg", quantile(dofChange, 0.99)},
-                {"max_dof_change_deg", dofChange.empty() ? 0.0 : *std::max_element(dofChange.begin(), dofChange.end())},
-                {"gap_to_converged", {{"objective", summarizeSeconds(gapF)}, {"effector_cm", summarizeSeconds(gapCm)}}}};
+        return {
+            {"events", events},
+            {"converged_fraction", double(converged) / std::max(1, events)},
+            {"worst_pin_residual_cm", worstPin},
+            {"reachable_events", reachable},
+            {"worst_reachable_target_residual_cm", worstReachableTarget},
+            {"worst_target_residual_cm", worstTarget},
+            {"ms_per_event", msSummary},
+            {"iterations", summarizeSeconds(iterations)},
+            {"p99_max_dof_change_deg", quantile(dofChange, 0.99)},
+            {"max_dof_change_deg", dofChange.empty() ? 0.0 : *std::max_element(dofChange.begin(), dofChange.end())},
+            {"gap_to_converged", {{"objective", summarizeSeconds(gapF)}, {"effector_cm", summarizeSeconds(gapCm)}}}};
     }
 };
 
@@ -130,7 +134,8 @@ nlohmann::json runDrag(const gp::ModelVersionPtr& version, bool pins, int steps,
         const bool reachable = ref.constraints[0].residualCm <= 0.05;
         st.reachable += reachable;
         for (const auto& c : out.constraints) {
-            if (c.pin) st.worstPin = std::max(st.worstPin, c.residualCm);
+            if (c.pin)
+                st.worstPin = std::max(st.worstPin, c.residualCm);
             else {
                 st.worstTarget = std::max(st.worstTarget, c.residualCm);
                 if (reachable) st.worstReachableTarget = std::max(st.worstReachableTarget, c.residualCm);
@@ -155,15 +160,16 @@ nlohmann::json constrainedDrag(const gp::ModelVersionPtr& version, bool pins, in
     ConstrainedIkSolver solver(version), reference(version);
     ConstrainedIkRequest req;
     ConstrainedIkResult res;
-    auto run = [&](ConstrainedIkSolver& s, const Pose& pose, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs,
-                   int cap, double tolAbs, double tolRel) {
+    auto run = [&](ConstrainedIkSolver& s, const Pose& pose, const Eigen::VectorXd& x,
+                   const std::vector<IkConstraint>& cs, int cap, double tolAbs, double tolRel) {
         req.start = pose;
         req.startX = x;
         req.constraints = cs;
         req.maxIterations = cap;
         req.stationarityAbsolute = tolAbs;
         req.stationarityRelative = tolRel;
-        req.rootReferenceDeg = version->model->clip.frames[std::min(kDragFrame, version->model->clip.frameCount() - 1)].anglesDeg[0];
+        req.rootReferenceDeg =
+            version->model->clip.frames[std::min(kDragFrame, version->model->clip.frameCount() - 1)].anglesDeg[0];
         s.solve(req, res);
         return EventOutcome{res.pose, res.x, res.y, res.objective, res.converged, res.iterations, res.constraints};
     };
@@ -181,8 +187,8 @@ nlohmann::json lbfgsDrag(const gp::ModelVersionPtr& version, bool pins, int step
     LearnedIkSolver solver(version), reference(version);
     LearnedIkRequest req;
     LearnedIkResult res;
-    auto run = [&](LearnedIkSolver& s, const Pose& pose, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs, int cap,
-                   double stall) {
+    auto run = [&](LearnedIkSolver& s, const Pose& pose, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs,
+                   int cap, double stall) {
         req.start = pose;
         req.startX = x;
         req.constraints = cs;
@@ -193,8 +199,12 @@ nlohmann::json lbfgsDrag(const gp::ModelVersionPtr& version, bool pins, int step
     };
     return runDrag(
         version, pins, steps, repeats,
-        [&](const Pose& p, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs) { return run(solver, p, x, cs, kEventCap, 1e-7); },
-        [&](const Pose& p, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs) { return run(reference, p, x, cs, 2000, 1e-12); });
+        [&](const Pose& p, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs) {
+            return run(solver, p, x, cs, kEventCap, 1e-7);
+        },
+        [&](const Pose& p, const Eigen::VectorXd& x, const std::vector<IkConstraint>& cs) {
+            return run(reference, p, x, cs, 2000, 1e-12);
+        });
 }
 
 nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
@@ -212,8 +222,8 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
         forwardKinematics(clip.skeleton, clip.frames[frame], fk);
         for (Effector e : {Effector::kRHand, Effector::kLHand, Effector::kRFoot}) {
             for (const Eigen::Vector3d& mv : moves) {
-                ConstrainedIkRequest req =
-                    capturedPoseRequest(*version, frame, {{e, effectorCm(clip.skeleton, fk, e) + mv, false}}, contacts, kEventCap);
+                ConstrainedIkRequest req = capturedPoseRequest(
+                    *version, frame, {{e, effectorCm(clip.skeleton, fk, e) + mv, false}}, contacts, kEventCap);
                 solver.solve(req, res);
                 req.maxIterations = 500;
                 solver.solve(req, full);
@@ -224,8 +234,10 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
                 reachable += canReach;
                 reachableConverged += canReach && res.converged;
                 for (const auto& c : res.constraints) {
-                    if (c.pin) worstPin = std::max(worstPin, c.residualCm);
-                    else if (canReach) worstReachableTarget = std::max(worstReachableTarget, c.residualCm);
+                    if (c.pin)
+                        worstPin = std::max(worstPin, c.residualCm);
+                    else if (canReach)
+                        worstReachableTarget = std::max(worstReachableTarget, c.residualCm);
                 }
             }
         }
@@ -240,56 +252,63 @@ nlohmann::json coldStarts(const gp::ModelVersionPtr& version) {
             {"worst_reachable_target_residual_cm", worstReachableTarget}};
 }
 
-const BenchRegistration ikBench("ik", "Learned IK drags on two clips, adaptive update, span regeneration (M = 200)", [](const BenchContext& ctx) {
-    const int steps = ctx.quick ? 20 : 200;
-    nlohmann::json out;
-    out["drags"] = nlohmann::json::array();
-    gp::ModelVersionPtr first;
-    for (const std::string file : {"35_01.amc", "10_02.amc"}) {  // both shipped in assets/mocap
-        std::string clipName;
-        double trainSeconds = 0.0;
-        const gp::ModelVersionPtr version = benchModel(ctx, file, clipName, trainSeconds);
-        if (!first) first = version;
-        const gp::GpModel& m = *version->model;
-        nlohmann::json c{{"clip", clipName}, {"N", m.N()}, {"M", m.active.size()}, {"D", m.D()}, {"model_training_seconds", trainSeconds}};
-        c["constrained"] = {{"1_target", constrainedDrag(version, false, steps, ctx.repeats)},
-                            {"1_target_2_pins", constrainedDrag(version, true, steps, ctx.repeats)}};
-        c["cold_start"] = coldStarts(version);
-        c["lbfgs"] = {{"1_target", lbfgsDrag(version, false, steps, ctx.repeats)},
-                      {"1_target_2_pins", lbfgsDrag(version, true, steps, ctx.repeats)}};
-        out["drags"].push_back(std::move(c));
-        if (ctx.mocapDir.empty()) break;  // the synthetic walk only once
-    }
-    const gp::ModelVersionPtr version = first;
-    const gp::GpModel& m = *version->model;
-
-    std::vector<double> adaptive;
-    for (int r = 0; r < ctx.repeats; ++r) {
-        const int row = 10 + 37 * r;
-        adaptive.push_back(secondsOf([&] { gp::adaptiveUpdate(*version, m.X.row(row).transpose(), m.Y.row(row).transpose(), row); }));
-    }
-    out["adaptive_update_seconds"] = summarizeSeconds(adaptive);
-
-    for (int cap : {50, 500}) {
-        std::vector<double> regen;
-        double residual = 0.0;
-        for (int r = 0; r < ctx.repeats; ++r) {
-            MotionEditJob job;
-            job.version = version;
-            job.effector = Effector::kRFoot;
-            job.keyFrames = {88, 102, 116, 130};
-            job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d::Zero()};
-            job.maxIterations = cap;
-            job.mode = PathMode::kDirect;
-            job.solver = EditSolver::kPerFrame;  // the per-frame IK cost; `bench --only edit` times the span solver
-            regen.push_back(secondsOf([&] { job.run(); }));
-            residual = job.maxResidualCm;
+const BenchRegistration ikBench(
+    "ik", "Learned IK drags on two clips, adaptive update, span regeneration (M = 200)", [](const BenchContext& ctx) {
+        const int steps = ctx.quick ? 20 : 200;
+        nlohmann::json out;
+        out["drags"] = nlohmann::json::array();
+        gp::ModelVersionPtr first;
+        for (const std::string file : {"35_01.amc", "10_02.amc"}) {  // both shipped in assets/mocap
+            std::string clipName;
+            double trainSeconds = 0.0;
+            const gp::ModelVersionPtr version = benchModel(ctx, file, clipName, trainSeconds);
+            if (!first) first = version;
+            const gp::GpModel& m = *version->model;
+            nlohmann::json c{{"clip", clipName},
+                             {"N", m.N()},
+                             {"M", m.active.size()},
+                             {"D", m.D()},
+                             {"model_training_seconds", trainSeconds}};
+            c["constrained"] = {{"1_target", constrainedDrag(version, false, steps, ctx.repeats)},
+                                {"1_target_2_pins", constrainedDrag(version, true, steps, ctx.repeats)}};
+            c["cold_start"] = coldStarts(version);
+            c["lbfgs"] = {{"1_target", lbfgsDrag(version, false, steps, ctx.repeats)},
+                          {"1_target_2_pins", lbfgsDrag(version, true, steps, ctx.repeats)}};
+            out["drags"].push_back(std::move(c));
+            if (ctx.mocapDir.empty()) break;  // the synthetic walk only once
         }
-        out["regenerate_43_frames_cap_" + std::to_string(cap)] = {{"seconds", summarizeSeconds(regen)}, {"solves", 41},
-                                                                 {"max_residual_cm", residual}};
-    }
-    return out;
-});
+        const gp::ModelVersionPtr version = first;
+        const gp::GpModel& m = *version->model;
+
+        std::vector<double> adaptive;
+        for (int r = 0; r < ctx.repeats; ++r) {
+            const int row = 10 + 37 * r;
+            adaptive.push_back(secondsOf(
+                [&] { gp::adaptiveUpdate(*version, m.X.row(row).transpose(), m.Y.row(row).transpose(), row); }));
+        }
+        out["adaptive_update_seconds"] = summarizeSeconds(adaptive);
+
+        for (int cap : {50, 500}) {
+            std::vector<double> regen;
+            double residual = 0.0;
+            for (int r = 0; r < ctx.repeats; ++r) {
+                MotionEditJob job;
+                job.version = version;
+                job.effector = Effector::kRFoot;
+                job.keyFrames = {88, 102, 116, 130};
+                job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0),
+                                    Eigen::Vector3d::Zero()};
+                job.maxIterations = cap;
+                job.mode = PathMode::kDirect;
+                job.solver = EditSolver::kPerFrame;  // the per-frame IK cost; `bench --only edit` times the span solver
+                regen.push_back(secondsOf([&] { job.run(); }));
+                residual = job.maxResidualCm;
+            }
+            out["regenerate_43_frames_cap_" + std::to_string(cap)] = {
+                {"seconds", summarizeSeconds(regen)}, {"solves", 41}, {"max_residual_cm", residual}};
+        }
+        return out;
+    });
 
 }  // namespace
 }  // namespace mgp::app

@@ -28,9 +28,9 @@ namespace {
 
 // None of these was used to tune the solvers (35_01, 10_02, 16_01, 09_01 were).
 const BenchClipRange kLocalityClips[] = {
-    {"asf_amc/124_03.amc", 1, 620},   // basketball shot: stands, aims, shoots
-    {"asf_amc/13_17.amc", 1, 1200},   // boxing: a guard stance
-    {"bvh/131_01.bvh", 1, 994},       // start, walk, stop (BVH hierarchy)
+    {"asf_amc/124_03.amc", 1, 620},  // basketball shot: stands, aims, shoots
+    {"asf_amc/13_17.amc", 1, 1200},  // boxing: a guard stance
+    {"bvh/131_01.bvh", 1, 994},      // start, walk, stop (BVH hierarchy)
 };
 
 // Frames where both feet are planted, the captured centre of mass is over them and the right hand
@@ -59,12 +59,15 @@ struct Collateral {
 };
 
 Collateral localityCollateral(const Skeleton& sk, const Pose& before, const Pose& after) {
-    auto moved = [&](Effector e) { return sk.hasEffector(e) ? (effectorCm(sk, after, e) - effectorCm(sk, before, e)).norm() : 0.0; };
+    auto moved = [&](Effector e) {
+        return sk.hasEffector(e) ? (effectorCm(sk, after, e) - effectorCm(sk, before, e)).norm() : 0.0;
+    };
     return {moved(Effector::kHead), moved(Effector::kLHand), moved(Effector::kLFoot), moved(Effector::kRFoot)};
 }
 
-nlohmann::json localityCaseJson(const Skeleton& sk, const Pose& before, const Pose& after, double raiseCm, const Eigen::Vector3d& target,
-                        const Eigen::MatrixXd& captured, const PoseLayout& layout) {
+nlohmann::json localityCaseJson(const Skeleton& sk, const Pose& before, const Pose& after, double raiseCm,
+                                const Eigen::Vector3d& target, const Eigen::MatrixXd& captured,
+                                const PoseLayout& layout) {
     const Collateral c = localityCollateral(sk, before, after);
     const std::optional<double> com = horizontalComShiftCm(sk, before, after);
     const double ratio = c.worst() / raiseCm;
@@ -76,10 +79,12 @@ nlohmann::json localityCaseJson(const Skeleton& sk, const Pose& before, const Po
             {"com_shift_cm", com ? nlohmann::json(*com) : nlohmann::json(nullptr)},
             {"hand_residual_cm", (effectorCm(sk, after, Effector::kRHand) - target).norm()},
             {"nearest_captured_deg", nearestPoseRmsDeg(layout.extract(after), captured)},
-            {"meets", ratio <= 0.15 && com && *com <= 2.0 && (effectorCm(sk, after, Effector::kRHand) - target).norm() <= 0.1}};
+            {"meets",
+             ratio <= 0.15 && com && *com <= 2.0 && (effectorCm(sk, after, Effector::kRHand) - target).norm() <= 0.1}};
 }
 
-nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& spec, const gp::TrainOptions& options, const char* label) {
+nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& spec, const gp::TrainOptions& options,
+                               const char* label) {
     int first = 1;
     const Clip clip = loadClipRange(ctx.mocapDir, spec, first);
     const gp::ModelVersionPtr version = gp::ModelVersion::make(gp::trainOnClip(clip, options).model);
@@ -98,7 +103,8 @@ nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& sp
         const Pose& before = trained.frames[t];
         for (double raise : raises) {
             const Eigen::Vector3d target = effectorCm(sk, before, Effector::kRHand) + Eigen::Vector3d(0.0, raise, 0.0);
-            const ConstrainedIkRequest request = capturedPoseRequest(*version, t, {{Effector::kRHand, target, false}}, contacts, 200);
+            const ConstrainedIkRequest request =
+                capturedPoseRequest(*version, t, {{Effector::kRHand, target, false}}, contacts, 200);
             const ConstrainedIkResult learned = solver.solve(request);
             PlainIkJob plain;
             plain.skeleton = &sk;
@@ -113,11 +119,12 @@ nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& sp
             path.mode = PathMode::kDisplacement;
             path.contacts = std::make_shared<const ContactSet>(contacts);
             path.run();
-            nlohmann::json row = {{"frame", t + first},
-                                  {"raise_cm", raise},
-                                  {"pose_learned", localityCaseJson(sk, before, learned.pose, raise, target, captured, layout)},
-                                  {"pose_plain", localityCaseJson(sk, before, plain.pose, raise, target, captured, layout)},
-                                  {"path_43_frames", localityCaseJson(sk, before, path.frames[t], raise, target, captured, layout)}};
+            nlohmann::json row = {
+                {"frame", t + first},
+                {"raise_cm", raise},
+                {"pose_learned", localityCaseJson(sk, before, learned.pose, raise, target, captured, layout)},
+                {"pose_plain", localityCaseJson(sk, before, plain.pose, raise, target, captured, layout)},
+                {"path_43_frames", localityCaseJson(sk, before, path.frames[t], raise, target, captured, layout)}};
             ++total;
             meetsLearned += row["pose_learned"]["meets"].get<bool>();
             meetsPath += row["path_43_frames"]["meets"].get<bool>();
@@ -135,25 +142,27 @@ nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& sp
             {"pose_learned_meets", std::to_string(meetsLearned) + "/" + std::to_string(total)},
             {"path_meets", std::to_string(meetsPath) + "/" + std::to_string(total)},
             {"learned_nearest_at_most_plain", std::to_string(learnedCloser) + "/" + std::to_string(total)},
-            {"mean_nearest_deg", {{"learned", total ? learnedNearestSum / total : 0.0}, {"plain", total ? plainNearestSum / total : 0.0}}}};
+            {"mean_nearest_deg",
+             {{"learned", total ? learnedNearestSum / total : 0.0}, {"plain", total ? plainNearestSum / total : 0.0}}}};
 }
 
-const BenchRegistration localityBench("locality", "Hand raised 20/40 cm on standing frames: collateral motion, centre of mass, nearest captured frame",
-                                      [](const BenchContext& ctx) {
-    if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    gp::TrainOptions defaults;
-    gp::TrainOptions small;
-    small.activeSize = 100;
-    small.outerIterations = 10;
-    if (ctx.quick) small.outerIterations = 3;
-    nlohmann::json out = nlohmann::json::array();
-    const std::size_t clips = ctx.quick ? 1 : std::size(kLocalityClips);
-    for (std::size_t c = 0; c < clips; ++c) {
-        if (!ctx.quick) out.push_back(runLocalityClip(ctx, kLocalityClips[c], defaults, "defaults"));
-        out.push_back(runLocalityClip(ctx, kLocalityClips[c], small, ctx.quick ? "M=100 T=3" : "M=100 T=10"));
-    }
-    return nlohmann::json{{"clips", out}};
-});
+const BenchRegistration localityBench(
+    "locality", "Hand raised 20/40 cm on standing frames: collateral motion, centre of mass, nearest captured frame",
+    [](const BenchContext& ctx) {
+        if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
+        gp::TrainOptions defaults;
+        gp::TrainOptions small;
+        small.activeSize = 100;
+        small.outerIterations = 10;
+        if (ctx.quick) small.outerIterations = 3;
+        nlohmann::json out = nlohmann::json::array();
+        const std::size_t clips = ctx.quick ? 1 : std::size(kLocalityClips);
+        for (std::size_t c = 0; c < clips; ++c) {
+            if (!ctx.quick) out.push_back(runLocalityClip(ctx, kLocalityClips[c], defaults, "defaults"));
+            out.push_back(runLocalityClip(ctx, kLocalityClips[c], small, ctx.quick ? "M=100 T=3" : "M=100 T=10"));
+        }
+        return nlohmann::json{{"clips", out}};
+    });
 
 }  // namespace
 }  // namespace mgp::app

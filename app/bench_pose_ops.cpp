@@ -50,7 +50,8 @@ nlohmann::json measurePoseOp(const EditorDocument& doc, const ContactSet& contac
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
         for (int s = first; s <= last; ++s)
             if (contacts.at(foot, s) && s != t)  // frame t is the operation's own pose
-                worstFoot = std::max(worstFoot, (effectorCm(sk, doc.poseAt(s), foot) - effectorCm(sk, clip.frames[s], foot)).norm());
+                worstFoot = std::max(
+                    worstFoot, (effectorCm(sk, doc.poseAt(s), foot) - effectorCm(sk, clip.frames[s], foot)).norm());
     return {{"worst_jump_over_capture_cm", worstJump},
             {"worst_jump_frame", jumpFrame + 1},
             {"worst_jump_effector", effectorName(jumpEffector)},
@@ -115,17 +116,18 @@ nlohmann::json runPoseOpsClip(const BenchContext& ctx, const BenchClipRange& spe
             {"meets", std::to_string(met) + "/" + std::to_string(total)}};
 }
 
-const BenchRegistration poseOpsBench("pose_ops", "Paste, mirror and rotate joint spread on standing frames: jumps, planted feet, time",
-                                     [](const BenchContext& ctx) {
-    if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
-    gp::TrainOptions options;
-    options.outerIterations = 20;
-    if (ctx.quick) options.activeSize = 100, options.outerIterations = 3;
-    nlohmann::json out = nlohmann::json::array();
-    const std::size_t clips = ctx.quick ? 1 : std::size(kPoseOpsClips);
-    for (std::size_t c = 0; c < clips; ++c) out.push_back(runPoseOpsClip(ctx, kPoseOpsClips[c], options));
-    return nlohmann::json{{"clips", out}};
-});
+const BenchRegistration poseOpsBench(
+    "pose_ops", "Paste, mirror and rotate joint spread on standing frames: jumps, planted feet, time",
+    [](const BenchContext& ctx) {
+        if (ctx.mocapDir.empty()) return nlohmann::json{{"skipped", "no CMU mocap folder"}};
+        gp::TrainOptions options;
+        options.outerIterations = 20;
+        if (ctx.quick) options.activeSize = 100, options.outerIterations = 3;
+        nlohmann::json out = nlohmann::json::array();
+        const std::size_t clips = ctx.quick ? 1 : std::size(kPoseOpsClips);
+        for (std::size_t c = 0; c < clips; ++c) out.push_back(runPoseOpsClip(ctx, kPoseOpsClips[c], options));
+        return nlohmann::json{{"clips", out}};
+    });
 
 }  // namespace
 }  // namespace mgp::app

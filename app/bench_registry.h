@@ -2,8 +2,8 @@
 // `motiongp bench` sections register themselves here (app/bench_<name>.cpp), like the verbs.
 // A section measures with repeats and reports medians (and p99 where it matters) as JSON.
 // Timed unit tests are not used anywhere: speed is measured only through this command.
-#include <nlohmann/json.hpp>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

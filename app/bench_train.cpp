@@ -31,8 +31,8 @@ namespace mgp::app {
 namespace {
 
 Eigen::MatrixXd posesOf(const BenchContext& ctx, const std::string& trial, int frames) {
-    const Clip clip = ctx.mocapDir.empty() ? makeSyntheticWalk(frames)
-                                           : loadClip(ctx.mocapDir + "/asf_amc/" + trial + ".amc");
+    const Clip clip =
+        ctx.mocapDir.empty() ? makeSyntheticWalk(frames) : loadClip(ctx.mocapDir + "/asf_amc/" + trial + ".amc");
     const Eigen::MatrixXd y = poseMatrix(clip);
     return y.topRows(std::min<Eigen::Index>(frames, y.rows()));
 }
@@ -47,7 +47,7 @@ gp::TrainingData dataOf(const Eigen::MatrixXd& poses) {
 // or every trial used up) are a synthetic walk, and the report says how many.
 struct Concatenated {
     Eigen::MatrixXd poses;
-    std::string clips;      // the trials used, "13_17 1:4840, 49_18 1:…"
+    std::string clips;  // the trials used, "13_17 1:4840, 49_18 1:…"
     int syntheticRows = 0;
 };
 
@@ -86,8 +86,12 @@ nlohmann::json timeOuterIteration(const gp::TrainingData& data, int repeats) {
         step6 = secondsOf([&] { t.optimizeActive(t.activeSet(), nullptr); });
         step8 = secondsOf([&] { t.optimizeInactive(t.activeSet()); });
     }
-    return {{"N", data.Y.rows()}, {"D", data.Y.cols()}, {"M", std::min<Eigen::Index>(200, data.Y.rows())},
-            {"seconds", summarizeSeconds(s)}, {"step6_seconds_last", step6}, {"step8_seconds_last", step8}};
+    return {{"N", data.Y.rows()},
+            {"D", data.Y.cols()},
+            {"M", std::min<Eigen::Index>(200, data.Y.rows())},
+            {"seconds", summarizeSeconds(s)},
+            {"step6_seconds_last", step6},
+            {"step8_seconds_last", step8}};
 }
 
 // One default training per BVH convention (and the AMC of the Daz trial), 180 frames at most.
@@ -108,94 +112,118 @@ nlohmann::json bvhConventions(const BenchContext& ctx) {
         gp::TrainResult r;
         const gp::TrainingData data = gp::trainingDataOf(clips);
         const double sec = secondsOf([&] { r = gp::train(data, o); });
-        rows.push_back({{"file", file}, {"convention", convention}, {"P", P}, {"D", r.model.D()},
-                        {"d", r.model.latentDim()}, {"N", r.model.N()}, {"M", static_cast<int>(r.model.active.size())},
-                        {"T", o.outerIterations}, {"seconds", sec}, {"measured_once", true}});
+        rows.push_back({{"file", file},
+                        {"convention", convention},
+                        {"P", P},
+                        {"D", r.model.D()},
+                        {"d", r.model.latentDim()},
+                        {"N", r.model.N()},
+                        {"M", static_cast<int>(r.model.active.size())},
+                        {"T", o.outerIterations},
+                        {"seconds", sec},
+                        {"measured_once", true}});
     }
     return rows;
 }
 
-const BenchRegistration trainBench("train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run",
-                            [](const BenchContext& ctx) {
-    nlohmann::json out;
-    out["threads"] = std::max(1u, std::thread::hardware_concurrency());
-    out["synthetic_data"] = ctx.mocapDir.empty();  // no mocap folder: every clip below is the synthetic walk
-    out["clip_180"] = ctx.mocapDir.empty() ? "synthetic walk 1:180" : "10_03 (soccer kick) frames 1:180";
-    const gp::TrainingData d180 = dataOf(posesOf(ctx, "10_03", 180));
-    out["outer_iteration_180"] = timeOuterIteration(d180, ctx.repeats);
-    out["outer_iteration_180"]["target_seconds"] = 0.5;
+const BenchRegistration trainBench(
+    "train", "GPLVM training: outer iteration, GPc equal work, scaling in N, full run", [](const BenchContext& ctx) {
+        nlohmann::json out;
+        out["threads"] = std::max(1u, std::thread::hardware_concurrency());
+        out["synthetic_data"] = ctx.mocapDir.empty();  // no mocap folder: every clip below is the synthetic walk
+        out["clip_180"] = ctx.mocapDir.empty() ? "synthetic walk 1:180" : "10_03 (soccer kick) frames 1:180";
+        const gp::TrainingData d180 = dataOf(posesOf(ctx, "10_03", 180));
+        out["outer_iteration_180"] = timeOuterIteration(d180, ctx.repeats);
+        out["outer_iteration_180"]["target_seconds"] = 0.5;
 
-    {
-        const gp::TrainingData d150 = dataOf(posesOf(ctx, "10_03", 150));
-        gp::TrainOptions o;
-        o.prior = gp::LatentPrior::kNone;
-        o.activeSize = 150;
-        o.scgTolX = 0.0;  // exactly 100 iterations, like GPc's fixed-count run
-        o.scgTolF = 0.0;
-        std::vector<double> s;
-        gp::IterationLog e;
-        for (int r = 0; r < ctx.repeats; ++r) {
-            gp::Trainer t(d150, o);
-            s.push_back(secondsOf([&] { t.optimizeActive(t.activeSet(), &e); }));
+        {
+            const gp::TrainingData d150 = dataOf(posesOf(ctx, "10_03", 150));
+            gp::TrainOptions o;
+            o.prior = gp::LatentPrior::kNone;
+            o.activeSize = 150;
+            o.scgTolX = 0.0;  // exactly 100 iterations, like GPc's fixed-count run
+            o.scgTolF = 0.0;
+            std::vector<double> s;
+            gp::IterationLog e;
+            for (int r = 0; r < ctx.repeats; ++r) {
+                gp::Trainer t(d150, o);
+                s.push_back(secondsOf([&] { t.optimizeActive(t.activeSet(), &e); }));
+            }
+            out["gpc_equal_work"] = {
+                {"N", 150},
+                {"M", 150},
+                {"clip", ctx.mocapDir.empty() ? "synthetic walk 1:150" : "10_03 (soccer kick) frames 1:150"},
+                {"scg_iterations", e.scgIterations},
+                {"seconds", summarizeSeconds(s)},
+                {"target_seconds", 0.1}};
         }
-        out["gpc_equal_work"] = {{"N", 150}, {"M", 150},
-                                 {"clip", ctx.mocapDir.empty() ? "synthetic walk 1:150" : "10_03 (soccer kick) frames 1:150"}, {"scg_iterations", e.scgIterations},
-                                 {"seconds", summarizeSeconds(s)}, {"target_seconds", 0.1}};
-    }
 
-    nlohmann::json scaling = nlohmann::json::array();
-    const std::vector<int> sizes = ctx.quick ? std::vector<int>{300, 600} : std::vector<int>{600, 2400, 9600};
-    for (int n : sizes) {
-        const int reps = n >= 9600 ? 1 : n >= 2400 ? std::min(ctx.repeats, 3) : ctx.repeats;
-        const Concatenated c = concatenated(ctx, n);
-        nlohmann::json j = timeOuterIteration(dataOf(c.poses), reps);
-        j["clips"] = c.clips;
-        j["synthetic_rows"] = c.syntheticRows;
-        j["seconds_per_inactive_point"] = j["step8_seconds_last"].get<double>() / (n - 200);
-        scaling.push_back(j);
-    }
-    out["scaling"] = scaling;
+        nlohmann::json scaling = nlohmann::json::array();
+        const std::vector<int> sizes = ctx.quick ? std::vector<int>{300, 600} : std::vector<int>{600, 2400, 9600};
+        for (int n : sizes) {
+            const int reps = n >= 9600 ? 1 : n >= 2400 ? std::min(ctx.repeats, 3) : ctx.repeats;
+            const Concatenated c = concatenated(ctx, n);
+            nlohmann::json j = timeOuterIteration(dataOf(c.poses), reps);
+            j["clips"] = c.clips;
+            j["synthetic_rows"] = c.syntheticRows;
+            j["seconds_per_inactive_point"] = j["step8_seconds_last"].get<double>() / (n - 200);
+            scaling.push_back(j);
+        }
+        out["scaling"] = scaling;
 
-    {
-        const int n = ctx.quick ? 600 : 10000;
-        const Concatenated c = concatenated(ctx, n);
-        const gp::TrainingData data = dataOf(c.poses);
-        gp::TrainOptions o;
-        o.prior = gp::LatentPrior::kNone;
-        o.activeSize = 200;
-        o.outerIterations = 10;
-        gp::TrainResult r;
-        const double sec = secondsOf([&] { r = gp::train(data, o); });
-        rusage usage{};
-        getrusage(RUSAGE_SELF, &usage);
-        const double mb = 1024.0 * 1024.0;
-        out["training_10000"] = {{"N", n}, {"M", o.activeSize}, {"T", o.outerIterations}, {"clips", c.clips},
-                                 {"synthetic_rows", c.syntheticRows}, {"seconds", sec}, {"iterations", r.log.size()},
-                                 {"target_seconds", 60.0}, {"measured_once", true},
-                                 {"peak_rss_mb", usage.ru_maxrss / 1024.0},
-                                 {"one_N_by_M_matrix_mb", 8.0 * n * o.activeSize / mb},
-                                 {"one_N_by_N_matrix_mb", 8.0 * n * n / mb}};
-    }
-    out["scaling_clips"] = "each size's clips field: trials concatenated in order, then a synthetic walk if they run out";
+        {
+            const int n = ctx.quick ? 600 : 10000;
+            const Concatenated c = concatenated(ctx, n);
+            const gp::TrainingData data = dataOf(c.poses);
+            gp::TrainOptions o;
+            o.prior = gp::LatentPrior::kNone;
+            o.activeSize = 200;
+            o.outerIterations = 10;
+            gp::TrainResult r;
+            const double sec = secondsOf([&] { r = gp::train(data, o); });
+            rusage usage{};
+            getrusage(RUSAGE_SELF, &usage);
+            const double mb = 1024.0 * 1024.0;
+            out["training_10000"] = {{"N", n},
+                                     {"M", o.activeSize},
+                                     {"T", o.outerIterations},
+                                     {"clips", c.clips},
+                                     {"synthetic_rows", c.syntheticRows},
+                                     {"seconds", sec},
+                                     {"iterations", r.log.size()},
+                                     {"target_seconds", 60.0},
+                                     {"measured_once", true},
+                                     {"peak_rss_mb", usage.ru_maxrss / 1024.0},
+                                     {"one_N_by_M_matrix_mb", 8.0 * n * o.activeSize / mb},
+                                     {"one_N_by_N_matrix_mb", 8.0 * n * n / mb}};
+        }
+        out["scaling_clips"] =
+            "each size's clips field: trials concatenated in order, then a synthetic walk if they run out";
 
-    {
-        gp::TrainOptions o;  // the paper's settings (T = 100, not the editor's default T)
-        o.prior = gp::LatentPrior::kNone;
-        o.outerIterations = ctx.quick ? 3 : 100;
-        gp::TrainResult r;
-        const double sec = secondsOf([&] { r = gp::train(d180, o); });
-        out["paper_training_180"] = {{"seconds", sec}, {"iterations", r.log.size()}, {"converged", r.converged},
-                                     {"T", o.outerIterations}, {"measured_once", true}};
-        // The same with the smooth temporal prior (docs/maths.md §19), the training default.
-        o.prior = gp::LatentPrior::kSmooth;
-        const double secSmooth = secondsOf([&] { r = gp::train(d180, o); });
-        out["paper_training_180_smooth"] = {{"seconds", secSmooth}, {"iterations", r.log.size()},
-                                            {"converged", r.converged}, {"T", o.outerIterations},
-                                            {"prior_weight", o.resolvedPriorWeight()}, {"measured_once", true}};
-    }
-    out["bvh_conventions"] = bvhConventions(ctx);
-    return out;
-});
+        {
+            gp::TrainOptions o;  // the paper's settings (T = 100, not the editor's default T)
+            o.prior = gp::LatentPrior::kNone;
+            o.outerIterations = ctx.quick ? 3 : 100;
+            gp::TrainResult r;
+            const double sec = secondsOf([&] { r = gp::train(d180, o); });
+            out["paper_training_180"] = {{"seconds", sec},
+                                         {"iterations", r.log.size()},
+                                         {"converged", r.converged},
+                                         {"T", o.outerIterations},
+                                         {"measured_once", true}};
+            // The same with the smooth temporal prior (docs/maths.md §19), the training default.
+            o.prior = gp::LatentPrior::kSmooth;
+            const double secSmooth = secondsOf([&] { r = gp::train(d180, o); });
+            out["paper_training_180_smooth"] = {{"seconds", secSmooth},
+                                                {"iterations", r.log.size()},
+                                                {"converged", r.converged},
+                                                {"T", o.outerIterations},
+                                                {"prior_weight", o.resolvedPriorWeight()},
+                                                {"measured_once", true}};
+        }
+        out["bvh_conventions"] = bvhConventions(ctx);
+        return out;
+    });
 
 }  // namespace
 }  // namespace mgp::app

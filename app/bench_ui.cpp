@@ -10,10 +10,10 @@
 #include <functional>
 
 #include "bench_registry.h"
-#include "ui/shell/editor_app.h"
 #include "render/gl_context.h"
 #include "render/scene_builder.h"
 #include "render/skeleton_renderer.h"
+#include "ui/shell/editor_app.h"
 
 namespace mgp::app {
 
@@ -25,8 +25,10 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     ui::EditorApp app;
     const std::string amc = ctx.mocapDir + "/asf_amc/35_01.amc";
     const bool real = !ctx.mocapDir.empty() && std::filesystem::exists(amc);
-    if (real) app.openClip(amc);
-    else app.openSyntheticClip("bench");
+    if (real)
+        app.openClip(amc);
+    else
+        app.openSyntheticClip("bench");
     const int M = ctx.quick ? 100 : 200;
     app.runAction({"train", "fas", std::to_string(M), "3"});
     app.waitIdle();
@@ -88,15 +90,17 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     ui::FrameProfile& profile = app.state().profile;
     profile.measure = true;
     std::vector<double> pFrame, pSolve, pScene, pRender, pUpload, pRest;
-    dragRounds([&](double seconds) {
-        pFrame.push_back(seconds);
-        pSolve.push_back(profile.solveSeconds);
-        pScene.push_back(profile.sceneSeconds);
-        pRender.push_back(profile.imguiRenderSeconds);
-        pUpload.push_back(profile.latentUploadSeconds);
-        pRest.push_back(seconds - profile.solveSeconds - profile.sceneSeconds - profile.imguiRenderSeconds -
-                        profile.latentUploadSeconds);
-    }, rounds);
+    dragRounds(
+        [&](double seconds) {
+            pFrame.push_back(seconds);
+            pSolve.push_back(profile.solveSeconds);
+            pScene.push_back(profile.sceneSeconds);
+            pRender.push_back(profile.imguiRenderSeconds);
+            pUpload.push_back(profile.latentUploadSeconds);
+            pRest.push_back(seconds - profile.solveSeconds - profile.sceneSeconds - profile.imguiRenderSeconds -
+                            profile.latentUploadSeconds);
+        },
+        rounds);
     profile.measure = false;
     // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
     // UI frame that is the renderer's, not the editor's.
@@ -131,12 +135,10 @@ nlohmann::json benchUi(const BenchContext& ctx) {
                      {"drag_frame_seconds_with", summarizeSeconds(dragOverlays)}};
     j["scene_only_seconds"] = summarizeSeconds(sceneOnly);
     j["scene_only_size"] = {kW - 380, kH - 123};
-    j["drag_profile_seconds"] = {{"frame", summarizeSeconds(pFrame)},
-                                 {"ik_solve", summarizeSeconds(pSolve)},
-                                 {"scene_draw", summarizeSeconds(pScene)},
-                                 {"imgui_render", summarizeSeconds(pRender)},
-                                 {"latent_upload", summarizeSeconds(pUpload)},
-                                 {"panels_and_rest", summarizeSeconds(pRest)}};
+    j["drag_profile_seconds"] = {
+        {"frame", summarizeSeconds(pFrame)},          {"ik_solve", summarizeSeconds(pSolve)},
+        {"scene_draw", summarizeSeconds(pScene)},     {"imgui_render", summarizeSeconds(pRender)},
+        {"latent_upload", summarizeSeconds(pUpload)}, {"panels_and_rest", summarizeSeconds(pRest)}};
     j["adaptive_updates"] = app.state().doc.adaptiveUpdates();
     j["latent_map_texels"] = 160 * 160;
     j["target_seconds"] = 0.016;

@@ -31,9 +31,8 @@ nlohmann::json effectorPositionsJson(const Clip& clip, int frameIndex) {
     out["root"] = vec3Json(fk.jointCm[0]);
     for (int e = 0; e < kEffectorCount; ++e) {
         const auto eff = static_cast<Effector>(e);
-        out[effectorName(eff)] = clip.skeleton.hasEffector(eff)
-                                     ? vec3Json(effectorCm(clip.skeleton, fk, eff))
-                                     : nlohmann::json(nullptr);
+        out[effectorName(eff)] =
+            clip.skeleton.hasEffector(eff) ? vec3Json(effectorCm(clip.skeleton, fk, eff)) : nlohmann::json(nullptr);
     }
     return out;
 }
@@ -51,9 +50,9 @@ void printClaims(const nlohmann::json& claims) {
     for (const auto& c : claims) {
         const auto& p = c["pooled"];
         std::printf("claim: %s\n  %s: %d of %d pairs favour it, %d against, %d ties; p = %.3g -> %s\n",
-                    c["claim"].get<std::string>().c_str(), c["test"].get<std::string>().c_str(), p["positive"].get<int>(),
-                    p["pairs"].get<int>(), p["negative"].get<int>(), p["zero"].get<int>(), p["p"].get<double>(),
-                    c["verdict"].get<std::string>().c_str());
+                    c["claim"].get<std::string>().c_str(), c["test"].get<std::string>().c_str(),
+                    p["positive"].get<int>(), p["pairs"].get<int>(), p["negative"].get<int>(), p["zero"].get<int>(),
+                    p["p"].get<double>(), c["verdict"].get<std::string>().c_str());
     }
 }
 

@@ -1,9 +1,10 @@
 // `motiongp edit MODEL --effector EFF --keys 89,103,117,131 --offset dx,dy,dz
 //  [--clip NAME] [--mode direct|displacement] [--solver span|per-frame] [--pin EFF]... [--adaptive --out-model MODEL2]
 //  --out OUT.bvh|.glb|.gltf|.fbx [--json]`:
-// moves the middle keys (frames of --clip NAME, the model clip's file stem; default the first) by the offset, regenerates the span and writes the whole clip as BVH
-// (edited frames replaced). `span` (default) solves the span as one problem with smoothness and
-// held contacts (motion/span_solver.h); `per-frame` is the paper's independent per-frame IK.
+// moves the middle keys (frames of --clip NAME, the model clip's file stem; default the first) by the offset,
+// regenerates the span and writes the whole clip as BVH (edited frames replaced). `span` (default) solves the span as
+// one problem with smoothness and held contacts (motion/span_solver.h); `per-frame` is the paper's independent
+// per-frame IK.
 #include <algorithm>
 #include <chrono>
 #include <iostream>
@@ -59,16 +60,22 @@ int runEdit(const EditOptions& o) {
     Clip edited = job.version->model->clip;
     edited.frames = job.frames;
     exportFromCli(edited, o.out);
-    nlohmann::json j{{"frames_solved", job.solvedFrames.size()}, {"max_residual_cm", job.maxResidualCm}, {"locality", o.locality},
-                     {"solver", editSolverName(job.solver)}, {"max_held_residual_cm", job.maxHeldResidualCm},
+    nlohmann::json j{{"frames_solved", job.solvedFrames.size()},
+                     {"max_residual_cm", job.maxResidualCm},
+                     {"locality", o.locality},
+                     {"solver", editSolverName(job.solver)},
+                     {"max_held_residual_cm", job.maxHeldResidualCm},
                      {"quality", spanQualityJson(job.quality)}};
     // The largest horizontal move of the whole-body centre of mass from the capture over the span.
     double comShift = 0.0;
     bool comKnown = true;
     for (int t : job.solvedFrames) {
-        const std::optional<double> s = horizontalComShiftCm(edited.skeleton, job.frames[t], job.version->model->clip.frames[t]);
-        if (!s) comKnown = false;
-        else comShift = std::max(comShift, *s);
+        const std::optional<double> s =
+            horizontalComShiftCm(edited.skeleton, job.frames[t], job.version->model->clip.frames[t]);
+        if (!s)
+            comKnown = false;
+        else
+            comShift = std::max(comShift, *s);
     }
     j["max_com_shift_cm"] = comKnown ? nlohmann::json(comShift) : nlohmann::json(nullptr);
     // Whether every moved key was met, and by how much each missed (one warning line if not).
@@ -82,7 +89,8 @@ int runEdit(const EditOptions& o) {
                       << " cm (out of reach with what is held, or below the floor)\n";
             break;
         }
-    if (job.solver == EditSolver::kSpan) j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
+    if (job.solver == EditSolver::kSpan)
+        j["span"] = {{"stop", spanStopName(job.spanStop)}, {"iterations", job.spanIterations}};
     if (o.adaptive) {
         // The solved poses of the moved keys join the model's samples (not the in-betweens).
         gp::ModelVersionPtr version = job.version;
@@ -100,39 +108,47 @@ int runEdit(const EditOptions& o) {
         j["adaptive"] = {{"samples_added", added}, {"rows", version->model->N()}, {"out_model", o.outModel}};
     }
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o.json) printJson(j);
+    if (o.json)
+        printJson(j);
     else {
         const SpanQuality& q = job.quality;
-        std::cout << "solved " << job.solvedFrames.size() << " frames (" << editSolverName(job.solver) << "), max residual "
-                  << job.maxResidualCm << " cm; second difference p95 " << q.edited.p95Deg << "° (captured " << q.captured.p95Deg
-                  << "°), max " << q.edited.maxDeg << "° (captured " << q.captured.maxDeg << "°); wrote " << o.out << "\n";
+        std::cout << "solved " << job.solvedFrames.size() << " frames (" << editSolverName(job.solver)
+                  << "), max residual " << job.maxResidualCm << " cm; second difference p95 " << q.edited.p95Deg
+                  << "° (captured " << q.captured.p95Deg << "°), max " << q.edited.maxDeg << "° (captured "
+                  << q.captured.maxDeg << "°); wrote " << o.out << "\n";
     }
     return 0;
 }
 
-const CommandRegistration editCommand("edit", "Edit an effector path (Hermite keys) and regenerate the motion",
-                              [](CLI::App& sub) -> CommandRunner {
-    auto o = std::make_shared<EditOptions>();
-    sub.add_option("model", o->model, "Model file")->required();
-    sub.add_option("--effector", o->effector, "lhand, rhand, lfoot, rfoot or head")->required();
-    sub.add_option("--clip", o->clip, "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
-    sub.add_option("--keys", o->keys, "Key frames of that clip counted from 1, e.g. 89,103,117,131")->required();
-    sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
-    sub.add_option("--mode", o->mode,
-                   "displacement (default: the captured path plus a smooth offset through the keys) or direct (the paper's "
-                   "Hermite path through the moved keys)");
-    sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
-    sub.add_option("--pin", o->pins, "Hold this effector at its captured position on every frame of the span (repeatable)");
-    sub.add_option("--locality", o->locality,
-                   "Span solver: how strongly the body away from the edited limb keeps its captured pose, per degree²");
-    sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
-    sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")->check(CLI::Range(1, 100000));
-    sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (docs/maths.md §11)");
-    sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
-    sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every clip frame, edited ones replaced)")->required();
-    sub.add_flag("--json", o->json, "Print one JSON object");
-    return [o]() { return runEdit(*o); };
-});
+const CommandRegistration editCommand(
+    "edit", "Edit an effector path (Hermite keys) and regenerate the motion", [](CLI::App& sub) -> CommandRunner {
+        auto o = std::make_shared<EditOptions>();
+        sub.add_option("model", o->model, "Model file")->required();
+        sub.add_option("--effector", o->effector, "lhand, rhand, lfoot, rfoot or head")->required();
+        sub.add_option("--clip", o->clip,
+                       "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
+        sub.add_option("--keys", o->keys, "Key frames of that clip counted from 1, e.g. 89,103,117,131")->required();
+        sub.add_option("--offset", o->offset, "dx,dy,dz (cm) applied to the middle keys")->required();
+        sub.add_option(
+            "--mode", o->mode,
+            "displacement (default: the captured path plus a smooth offset through the keys) or direct (the paper's "
+            "Hermite path through the moved keys)");
+        sub.add_option("--solver", o->solver, "span (default: the span as one problem) or per-frame (the paper's)");
+        sub.add_option("--pin", o->pins,
+                       "Hold this effector at its captured position on every frame of the span (repeatable)");
+        sub.add_option(
+            "--locality", o->locality,
+            "Span solver: how strongly the body away from the edited limb keeps its captured pose, per degree²");
+        sub.add_flag("--no-contacts", o->noContacts, "Do not hold the captured foot contacts (motion/foot_contacts.h)");
+        sub.add_option("--iterations", o->iterations, "L-BFGS iteration cap (per frame for per-frame, in all for span)")
+            ->check(CLI::Range(1, 100000));
+        sub.add_flag("--adaptive", o->adaptive, "Add the moved keys' poses to the model (docs/maths.md §11)");
+        sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
+        sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every clip frame, edited ones replaced)")
+            ->required();
+        sub.add_flag("--json", o->json, "Print one JSON object");
+        return [o]() { return runEdit(*o); };
+    });
 
 }  // namespace
 }  // namespace mgp::app

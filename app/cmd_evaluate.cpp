@@ -28,8 +28,12 @@ namespace {
 
 nlohmann::json scoreJson(const eval::FullGpScore& s) {
     if (!s.ok) return nullptr;
-    return {{"log_likelihood", s.logLikelihood}, {"per_value", s.perValue}, {"alpha", s.alpha}, {"gamma", s.gamma},
-            {"bias", s.bias}, {"noise_variance", s.noiseVariance}};
+    return {{"log_likelihood", s.logLikelihood},
+            {"per_value", s.perValue},
+            {"alpha", s.alpha},
+            {"gamma", s.gamma},
+            {"bias", s.bias},
+            {"noise_variance", s.noiseVariance}};
 }
 
 nlohmann::json spreadJson(const eval::Spread& s) {
@@ -45,7 +49,8 @@ std::vector<int> parseOffsets(const std::string& text, int every) {
     std::vector<int> out;
     for (long long v : values) {
         if (std::find(out.begin(), out.end(), v) != out.end())
-            throw UsageError("expected distinct --heldout-offsets, found " + std::to_string(v) + " twice in '" + text + "'");
+            throw UsageError("expected distinct --heldout-offsets, found " + std::to_string(v) + " twice in '" + text +
+                             "'");
         out.push_back(static_cast<int>(v));
     }
     return out;
@@ -65,24 +70,29 @@ const CommandRegistration evaluateCommand(
         sub.add_flag("--heldout", o->heldout,
                      "Also retrain without every K-th frame (the model's own settings) and score the reconstruction");
         sub.add_option("--every", o->every, "Hold out every K-th training frame (default 10)");
-        sub.add_option("--heldout-offsets", o->offsets,
-                       "Held-out splits to average, e.g. 0,3,6: positions ≡ offset mod K (0 = every K-th; implies --heldout)");
+        sub.add_option(
+            "--heldout-offsets", o->offsets,
+            "Held-out splits to average, e.g. 0,3,6: positions ≡ offset mod K (0 = every K-th; implies --heldout)");
         sub.add_option("--threads", o->threads, "Threads for Step 8 of the held-out retraining (default: all cores)");
-        sub.add_option("--heldout-iters", o->heldoutIters, "Outer iterations of the held-out retraining (default: the model's T)");
+        sub.add_option("--heldout-iters", o->heldoutIters,
+                       "Outer iterations of the held-out retraining (default: the model's T)");
         sub.add_flag("--no-yardstick", o->noYardstick, "Skip the full-GP yardstick");
         sub.add_flag("--json", o->json, "Print one JSON object");
         return [o]() {
             if (o->every < 2) throw UsageError("expected --every ≥ 2, found " + std::to_string(o->every));
-            if (o->heldoutIters < 0) throw UsageError("expected --heldout-iters ≥ 1, found " + std::to_string(o->heldoutIters));
+            if (o->heldoutIters < 0)
+                throw UsageError("expected --heldout-iters ≥ 1, found " + std::to_string(o->heldoutIters));
             if (o->threads < 0) throw UsageError("expected --threads ≥ 0, found " + std::to_string(o->threads));
-            const std::vector<int> offsets = o->offsets.empty() ? std::vector<int>{0} : parseOffsets(o->offsets, o->every);
+            const std::vector<int> offsets =
+                o->offsets.empty() ? std::vector<int>{0} : parseOffsets(o->offsets, o->every);
             if (!o->offsets.empty()) o->heldout = true;
             const gp::GpModel model = gp::loadModel(o->model);
             // The held-out retraining reads one clip's frame numbers (continuity is measured per clip).
             if (model.clipCount() > 1 && o->heldout)
-                throw UsageError("expected a single-clip model for --heldout (the held-out retraining does not handle "
-                                 "multi-clip models yet), found " +
-                                 std::to_string(model.clipCount()) + " clips (" + model.clipNames() + ") in " + o->model);
+                throw UsageError(
+                    "expected a single-clip model for --heldout (the held-out retraining does not handle "
+                    "multi-clip models yet), found " +
+                    std::to_string(model.clipCount()) + " clips (" + model.clipNames() + ") in " + o->model);
             nlohmann::json j;
             j["model"] = o->model;
             j["kernel"] = gp::kernelKindName(model.kind);
@@ -98,21 +108,26 @@ const CommandRegistration evaluateCommand(
             j["continuity"] = nlohmann::json::array();
             for (int k = 0; k < model.clipCount(); ++k) {
                 const eval::ContinuityReport& c = perClip[static_cast<std::size_t>(k)];
-                j["continuity"].push_back({{"clip", model.clipName(k)}, {"steps", c.steps},
-                                           {"median_pair_distance", c.medianPairDistance}, {"p50", c.p50},
-                                           {"p90", c.p90}, {"p99", c.p99}, {"max", c.max}});
+                j["continuity"].push_back({{"clip", model.clipName(k)},
+                                           {"steps", c.steps},
+                                           {"median_pair_distance", c.medianPairDistance},
+                                           {"p50", c.p50},
+                                           {"p90", c.p90},
+                                           {"p99", c.p99},
+                                           {"max", c.max}});
             }
             if (o->noYardstick) {
                 j["yardstick"] = nullptr;
             } else if (model.N() > eval::kYardstickMaxRows) {
-                j["yardstick"] = {{"skipped", "N = " + std::to_string(model.N()) + " > " +
-                                                  std::to_string(eval::kYardstickMaxRows)}};
+                j["yardstick"] = {
+                    {"skipped", "N = " + std::to_string(model.N()) + " > " + std::to_string(eval::kYardstickMaxRows)}};
             } else {
                 const Eigen::MatrixXd Ybar = model.Y.rowwise() - model.Y.colwise().mean();
                 const Eigen::MatrixXd Xpca = gp::whitenedPca(Ybar, model.latentDim()).X;
                 const eval::FullGpScore fin = eval::fitFullGp(model.X, model.Y);
                 const eval::FullGpScore pca = eval::fitFullGp(Xpca, model.Y);
-                j["yardstick"] = {{"final", scoreJson(fin)}, {"pca_start", scoreJson(pca)},
+                j["yardstick"] = {{"final", scoreJson(fin)},
+                                  {"pca_start", scoreJson(pca)},
                                   {"gain_per_value", fin.ok && pca.ok ? nlohmann::json(fin.perValue - pca.perValue)
                                                                       : nlohmann::json(nullptr)}};
             }
@@ -130,9 +145,13 @@ const CommandRegistration evaluateCommand(
                 double trainSeconds = 0.0;
                 for (std::size_t k = 0; k < h.perOffset.size(); ++k) {
                     const eval::HeldOutReport& r = h.perOffset[k];
-                    per.push_back({{"offset", h.offsets[k]}, {"held_out", r.heldOut}, {"trained", r.trained},
-                                   {"rms_deg", r.rmsDeg}, {"nearest_frame_rms_deg", r.nearestRmsDeg},
-                                   {"inbetween_rms_deg", r.timeRmsDeg}, {"inbetween_frames", r.timeCount},
+                    per.push_back({{"offset", h.offsets[k]},
+                                   {"held_out", r.heldOut},
+                                   {"trained", r.trained},
+                                   {"rms_deg", r.rmsDeg},
+                                   {"nearest_frame_rms_deg", r.nearestRmsDeg},
+                                   {"inbetween_rms_deg", r.timeRmsDeg},
+                                   {"inbetween_frames", r.timeCount},
                                    {"median_frame_rms_deg", r.medianFrameRmsDeg},
                                    {"worst_frame", {{"frame", r.worstFrame + 1}, {"rms_deg", r.worstFrameRmsDeg}}},
                                    {"train_seconds", h.trainSeconds[k]}});
@@ -140,14 +159,20 @@ const CommandRegistration evaluateCommand(
                 }
                 // The top-level RMS values are the means over the offsets (one offset: its values);
                 // the counts are the first offset's, every offset's are in per_offset.
-                j["heldout"] = {{"every", o->every}, {"offsets", h.offsets}, {"held_out", h.perOffset[0].heldOut},
-                                {"trained", h.perOffset[0].trained}, {"outer_iterations", opt.outerIterations},
-                                {"rms_deg", h.rmsDeg.mean}, {"nearest_frame_rms_deg", h.nearestRmsDeg.mean},
+                j["heldout"] = {{"every", o->every},
+                                {"offsets", h.offsets},
+                                {"held_out", h.perOffset[0].heldOut},
+                                {"trained", h.perOffset[0].trained},
+                                {"outer_iterations", opt.outerIterations},
+                                {"rms_deg", h.rmsDeg.mean},
+                                {"nearest_frame_rms_deg", h.nearestRmsDeg.mean},
                                 {"inbetween_rms_deg", h.timeRmsDeg.mean},
-                                {"inbetween_frames", h.perOffset[0].timeCount}, {"train_seconds", trainSeconds},
-                                {"spread", {{"rms_deg", spreadJson(h.rmsDeg)},
-                                            {"nearest_frame_rms_deg", spreadJson(h.nearestRmsDeg)},
-                                            {"inbetween_rms_deg", spreadJson(h.timeRmsDeg)}}},
+                                {"inbetween_frames", h.perOffset[0].timeCount},
+                                {"train_seconds", trainSeconds},
+                                {"spread",
+                                 {{"rms_deg", spreadJson(h.rmsDeg)},
+                                  {"nearest_frame_rms_deg", spreadJson(h.nearestRmsDeg)},
+                                  {"inbetween_rms_deg", spreadJson(h.timeRmsDeg)}}},
                                 {"per_offset", per}};
             } else {
                 j["heldout"] = nullptr;
@@ -156,21 +181,23 @@ const CommandRegistration evaluateCommand(
                 printJson(j);
                 return 0;
             }
-            std::cout << o->model << ": " << j["kernel"].get<std::string>() << ", prior " << j["prior"].get<std::string>()
-                      << (model.settings.backConstraints ? ", back-constrained" : "") << ", N = " << model.N() << "\n";
+            std::cout << o->model << ": " << j["kernel"].get<std::string>() << ", prior "
+                      << j["prior"].get<std::string>() << (model.settings.backConstraints ? ", back-constrained" : "")
+                      << ", N = " << model.N() << "\n";
             for (int k = 0; k < model.clipCount(); ++k) {
                 const eval::ContinuityReport& c = perClip[static_cast<std::size_t>(k)];
                 std::cout << "  continuity of " << model.clipName(k) << " (step / median pair distance): p50 " << c.p50
                           << ", p90 " << c.p90 << ", p99 " << c.p99 << " over " << c.steps << " steps\n";
             }
             if (j["yardstick"].is_object() && j["yardstick"].contains("final"))
-                std::cout << "  full-GP yardstick (log-likelihood per value): final " << j["yardstick"]["final"]["per_value"]
-                          << ", PCA start " << j["yardstick"]["pca_start"]["per_value"] << "\n";
+                std::cout << "  full-GP yardstick (log-likelihood per value): final "
+                          << j["yardstick"]["final"]["per_value"] << ", PCA start "
+                          << j["yardstick"]["pca_start"]["per_value"] << "\n";
             if (j["heldout"].is_object()) {
                 const auto& h = j["heldout"];
-                std::cout << "  held-out reconstruction (one frame in " << o->every << ", offsets " << h["offsets"].dump()
-                          << "): RMS " << h["rms_deg"] << " deg (sd " << h["spread"]["rms_deg"]["sd"]
-                          << "), nearest training frame " << h["nearest_frame_rms_deg"]
+                std::cout << "  held-out reconstruction (one frame in " << o->every << ", offsets "
+                          << h["offsets"].dump() << "): RMS " << h["rms_deg"] << " deg (sd "
+                          << h["spread"]["rms_deg"]["sd"] << "), nearest training frame " << h["nearest_frame_rms_deg"]
                           << " deg, in-betweened from time neighbours " << h["inbetween_rms_deg"] << " deg\n";
                 for (const auto& r : h["per_offset"])
                     std::cout << "    offset " << r["offset"] << ": RMS " << r["rms_deg"] << " (median frame "

@@ -5,11 +5,11 @@
 // (no display); otherwise a GLFW window (a desktop or xvfb-run).
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
-#include <optional>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -17,14 +17,14 @@
 #include "cli_common.h"
 #include "command_registry.h"
 #include "edit/recent_files.h"
-#include "ui/shell/editor_app.h"
-#include "render/gl_context.h"
-#include "ui/shell/glfw_window.h"
 #include "gui_run.h"
-#include "ui/input/gui_script.h"
 #include "io/data_paths.h"
 #include "io/parse_error.h"
+#include "render/gl_context.h"
 #include "render/png_capture.h"
+#include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
+#include "ui/shell/glfw_window.h"
 
 namespace mgp::app {
 
@@ -41,7 +41,8 @@ int runGui(const GuiArgs& args) {
         // Said before a window opens (no display, or a file manager's stale entry).
         std::error_code ec;
         if (!std::filesystem::exists(args.clip, ec))  // a folder is the loaders' to report
-            throw UsageError("expected a clip (ASF/AMC, BVH), session or model file, found no file at '" + args.clip + "'");
+            throw UsageError("expected a clip (ASF/AMC, BVH), session or model file, found no file at '" + args.clip +
+                             "'");
         if (ext == ".asf")
             throw UsageError("expected a motion (.amc beside its .asf, or .bvh), found the skeleton '" + args.clip +
                              "': open one of its .amc files");
@@ -53,8 +54,10 @@ int runGui(const GuiArgs& args) {
 
     std::unique_ptr<render::OffscreenContext> offscreen;
     std::unique_ptr<ui::GlfwWindow> window;
-    if (args.offscreen) offscreen = std::make_unique<render::OffscreenContext>(args.width, args.height);
-    else window = std::make_unique<ui::GlfwWindow>(args.width, args.height, "MotionGP");
+    if (args.offscreen)
+        offscreen = std::make_unique<render::OffscreenContext>(args.width, args.height);
+    else
+        window = std::make_unique<ui::GlfwWindow>(args.width, args.height, "MotionGP");
 
     const auto mocap = findEditorMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
     int total = args.frames;
@@ -156,28 +159,31 @@ int runGui(const GuiArgs& args) {
 
 namespace {
 
-const CommandRegistration guiCommand("gui", "Open the interactive editor (or run it scripted and save a screenshot)",
-                              [](CLI::App& sub) -> CommandRunner {
-    auto a = std::make_shared<GuiArgs>();
-    auto size = std::make_shared<std::string>("1280x800");
-    sub.add_option("file", a->clip,
-                   "Session (.mgsession), ASF/AMC or BVH clip, or model file to open (default: the 10_02 kick, else a synthetic walk)");
-    sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
-    sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
-    sub.add_option("--script", a->script, "Timed input events (format: ui/input/gui_script.h)");
-    sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
-    sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
-    sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
-    sub.add_option("--ui-scale", a->uiScale, "Scale of fonts and panels (default: the monitor's content scale)")
-        ->check(CLI::Range(0.5f, 4.0f));
-    sub.add_flag("--json", a->json, "When the run ends, print one JSON object: frames run, screenshots written, script errors");
-    return [=]() {
-        GuiArgs g = *a;
-        if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)
-            throw UsageError("expected --size WxH (e.g. 1280x800), found '" + *size + "'");
-        return runGui(g);
-    };
-});
+const CommandRegistration guiCommand(
+    "gui", "Open the interactive editor (or run it scripted and save a screenshot)",
+    [](CLI::App& sub) -> CommandRunner {
+        auto a = std::make_shared<GuiArgs>();
+        auto size = std::make_shared<std::string>("1280x800");
+        sub.add_option("file", a->clip,
+                       "Session (.mgsession), ASF/AMC or BVH clip, or model file to open (default: the 10_02 kick, "
+                       "else a synthetic walk)");
+        sub.add_option("--model", a->model, "Saved model file to open (its clip comes with it)");
+        sub.add_option("--frames", a->frames, "Run this many frames, then exit 0 (default: until the window closes)");
+        sub.add_option("--script", a->script, "Timed input events (format: ui/input/gui_script.h)");
+        sub.add_option("--screenshot", a->screenshot, "Save a PNG of the whole window after the last frame");
+        sub.add_flag("--offscreen", a->offscreen, "Render on the EGL surfaceless context (no display needed)");
+        sub.add_option("--size", *size, "Window size WxH (default 1280x800)");
+        sub.add_option("--ui-scale", a->uiScale, "Scale of fonts and panels (default: the monitor's content scale)")
+            ->check(CLI::Range(0.5f, 4.0f));
+        sub.add_flag("--json", a->json,
+                     "When the run ends, print one JSON object: frames run, screenshots written, script errors");
+        return [=]() {
+            GuiArgs g = *a;
+            if (std::sscanf(size->c_str(), "%dx%d", &g.width, &g.height) != 2)
+                throw UsageError("expected --size WxH (e.g. 1280x800), found '" + *size + "'");
+            return runGui(g);
+        };
+    });
 
 }  // namespace
 }  // namespace mgp::app

@@ -8,9 +8,9 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "ik_cli.h"
 #include "io/clip_loader.h"
 #include "io/text_reader.h"
-#include "ik_cli.h"
 #include "motion/inbetween.h"
 
 namespace mgp::app {
@@ -31,10 +31,11 @@ std::vector<InbetweenGap> parseGaps(const std::string& text) {
         const std::string_view t = trim(item);
         const std::size_t colon = t.find(':');
         long long a = 0, b = 0;
-        if (colon == std::string_view::npos || !parseInt(trim(t.substr(0, colon)), a) || !parseInt(trim(t.substr(colon + 1)), b) ||
-            a < 1 || b < 1 || a > 100000000 || b > 100000000)
-            throw UsageError("expected --gaps as key frames A:B counted from 1, comma-separated (e.g. 40:100,200:260), found '" +
-                             std::string(t) + "'");
+        if (colon == std::string_view::npos || !parseInt(trim(t.substr(0, colon)), a) ||
+            !parseInt(trim(t.substr(colon + 1)), b) || a < 1 || b < 1 || a > 100000000 || b > 100000000)
+            throw UsageError(
+                "expected --gaps as key frames A:B counted from 1, comma-separated (e.g. 40:100,200:260), found '" +
+                std::string(t) + "'");
         gaps.push_back({static_cast<int>(a - 1), static_cast<int>(b - 1)});
     }
     if (gaps.empty() || text.back() == ',') throw UsageError("expected --gaps A:B[,A:B…], found '" + text + "'");
@@ -42,7 +43,8 @@ std::vector<InbetweenGap> parseGaps(const std::string& text) {
 }
 
 InbetweenMethod parseMethod(const std::string& name) {
-    for (InbetweenMethod m : {InbetweenMethod::kPrior, InbetweenMethod::kRetrieve, InbetweenMethod::kInterpolate, InbetweenMethod::kHold})
+    for (InbetweenMethod m :
+         {InbetweenMethod::kPrior, InbetweenMethod::kRetrieve, InbetweenMethod::kInterpolate, InbetweenMethod::kHold})
         if (name == inbetweenMethodName(m)) return m;
     throw UsageError("expected --method prior, retrieve, interpolate or hold, found '" + name + "'");
 }
@@ -64,21 +66,30 @@ int runInbetween(const InbetweenOptions& o) {
     exportFromCli(result, o.out);
     nlohmann::json gaps = nlohmann::json::array();
     for (const InbetweenJob::GapReport& r : job.reports) {
-        nlohmann::json g = {{"a", r.gap.a + 1}, {"b", r.gap.b + 1}, {"frames", r.gap.b - r.gap.a - 1}, {"seconds", r.seconds},
+        nlohmann::json g = {{"a", r.gap.a + 1},
+                            {"b", r.gap.b + 1},
+                            {"frames", r.gap.b - r.gap.a - 1},
+                            {"seconds", r.seconds},
                             {"key_error_cm", r.keyErrorCm},
                             {"second_difference_deg", secondDifferenceJson(r.smoothness)},
                             {"clip_second_difference_deg", secondDifferenceJson(r.reference)}};
         if (!r.sourceClip.empty()) {
-            g["source"] = {{"clip", r.sourceClip}, {"first", r.sourceFirst + 1}, {"last", r.sourceLast + 1},
-                           {"time_scale", r.timeScale}, {"match_cost", r.matchCost}};
+            g["source"] = {{"clip", r.sourceClip},
+                           {"first", r.sourceFirst + 1},
+                           {"last", r.sourceLast + 1},
+                           {"time_scale", r.timeScale},
+                           {"match_cost", r.matchCost}};
             g["variance"] = {{"mean", r.meanVariance}, {"max", r.maxVariance}};
         }
         if (job.method == InbetweenMethod::kPrior)
-            g["span"] = {{"stop", spanStopName(r.stop)}, {"iterations", r.iterations}, {"held_foot_frames", r.heldFootFrames},
+            g["span"] = {{"stop", spanStopName(r.stop)},
+                         {"iterations", r.iterations},
+                         {"held_foot_frames", r.heldFootFrames},
                          {"max_held_residual_cm", r.maxHeldResidualCm}};
         gaps.push_back(g);
     }
-    if (o.json) printJson({{"method", inbetweenMethodName(job.method)}, {"out", o.out}, {"gaps", gaps}});
+    if (o.json)
+        printJson({{"method", inbetweenMethodName(job.method)}, {"out", o.out}, {"gaps", gaps}});
     else
         for (const InbetweenJob::GapReport& r : job.reports)
             std::cout << "frames " << r.gap.a + 2 << ".." << r.gap.b << ": " << r.gap.b - r.gap.a - 1 << " frames ("
@@ -88,21 +99,26 @@ int runInbetween(const InbetweenOptions& o) {
     return 0;
 }
 
-const CommandRegistration inbetweenCommand("inbetween", "Generate the frames between key poses of a clip under the learned prior",
-                                           [](CLI::App& sub) -> CommandRunner {
-    auto o = std::make_shared<InbetweenOptions>();
-    sub.add_option("model", o->model, "Model file (trained on clips of the same skeleton)")->required();
-    sub.add_option("--on", o->on, "The clip whose gaps are filled: AMC, BVH or glTF (any clip of the model's skeleton)")->required();
-    sub.add_option("--skel", o->skel, "ASF skeleton for an AMC clip (default: SS.asf beside SS_TT.amc)");
-    sub.add_option("--gaps", o->gaps, "Keys A:B counted from 1, comma-separated: frames A+1..B−1 are generated")->required();
-    sub.add_option("--method", o->method,
-                   "prior (default: the best training stretch, warped onto the keys and solved under the learned prior with "
-                   "planted feet held), retrieve (the warped stretch alone), interpolate or hold (the baselines)");
-    sub.add_option("--iterations", o->iterations, "prior: iteration cap per gap")->check(CLI::Range(1, 100000));
-    sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every frame of the clip)")->required();
-    sub.add_flag("--json", o->json, "Print one JSON object");
-    return [o]() { return runInbetween(*o); };
-});
+const CommandRegistration inbetweenCommand(
+    "inbetween", "Generate the frames between key poses of a clip under the learned prior",
+    [](CLI::App& sub) -> CommandRunner {
+        auto o = std::make_shared<InbetweenOptions>();
+        sub.add_option("model", o->model, "Model file (trained on clips of the same skeleton)")->required();
+        sub.add_option("--on", o->on,
+                       "The clip whose gaps are filled: AMC, BVH or glTF (any clip of the model's skeleton)")
+            ->required();
+        sub.add_option("--skel", o->skel, "ASF skeleton for an AMC clip (default: SS.asf beside SS_TT.amc)");
+        sub.add_option("--gaps", o->gaps, "Keys A:B counted from 1, comma-separated: frames A+1..B−1 are generated")
+            ->required();
+        sub.add_option(
+            "--method", o->method,
+            "prior (default: the best training stretch, warped onto the keys and solved under the learned prior with "
+            "planted feet held), retrieve (the warped stretch alone), interpolate or hold (the baselines)");
+        sub.add_option("--iterations", o->iterations, "prior: iteration cap per gap")->check(CLI::Range(1, 100000));
+        sub.add_option("--out", o->out, "Output .bvh, .glb, .gltf or .fbx (every frame of the clip)")->required();
+        sub.add_flag("--json", o->json, "Print one JSON object");
+        return [o]() { return runInbetween(*o); };
+    });
 
 }  // namespace
 }  // namespace mgp::app

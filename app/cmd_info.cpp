@@ -4,8 +4,8 @@
 #include <cstdlib>
 
 #include "cli_common.h"
-#include "gui_run.h"
 #include "command_registry.h"
+#include "gui_run.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
 #include "skeleton/pose_layout.h"
@@ -40,31 +40,32 @@ nlohmann::json clipInfoJson(const Clip& clip) {
 
 void printHuman(const nlohmann::json& j) {
     std::cout << j["clip"].get<std::string>() << ": " << j["format"].get<std::string>() << " ("
-              << j["convention"].get<std::string>() << "), " << j["frames"] << " frames at "
-              << j["fps"] << " fps, " << j["joints"] << " joints, " << j["bones"] << " of 22 bones, constant DOFs "
-              << j["constant_dofs"].dump() << ", rest frame " << (j["rest_frame"].get<bool>() ? "yes" : "no")
-              << "\n";
+              << j["convention"].get<std::string>() << "), " << j["frames"] << " frames at " << j["fps"] << " fps, "
+              << j["joints"] << " joints, " << j["bones"] << " of 22 bones, constant DOFs " << j["constant_dofs"].dump()
+              << ", rest frame " << (j["rest_frame"].get<bool>() ? "yes" : "no") << "\n";
     if (!j["unmapped"].empty()) std::cout << "  unmapped joints: " << j["unmapped"].dump() << "\n";
     if (!j["missing_bones"].empty())
         std::cout << "  bones missing from the file (held at 0): " << j["missing_bones"].dump() << "\n";
 }
 
-const CommandRegistration infoCommand("info", "Summarise a clip (frames, fps, DOFs, constant columns)",
-                              [](CLI::App& sub) -> CommandRunner {
-    auto clipPath = std::make_shared<std::string>();
-    auto skel = std::make_shared<std::string>();
-    auto json = std::make_shared<bool>(false);
-    sub.add_option("clip", *clipPath, "AMC, BVH or glTF (.glb, .gltf) file")->required();
-    sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
-    sub.add_flag("--json", *json, "Print one JSON object");
-    return [=]() {
-        const Clip clip = loadClip(*clipPath, *skel);
-        const nlohmann::json j = clipInfoJson(clip);
-        if (*json) printJson(j);
-        else printHuman(j);
-        return 0;
-    };
-});
+const CommandRegistration infoCommand(
+    "info", "Summarise a clip (frames, fps, DOFs, constant columns)", [](CLI::App& sub) -> CommandRunner {
+        auto clipPath = std::make_shared<std::string>();
+        auto skel = std::make_shared<std::string>();
+        auto json = std::make_shared<bool>(false);
+        sub.add_option("clip", *clipPath, "AMC, BVH or glTF (.glb, .gltf) file")->required();
+        sub.add_option("--skel", *skel, "ASF skeleton for an AMC (default: SS.asf beside SS_TT.amc)");
+        sub.add_flag("--json", *json, "Print one JSON object");
+        return [=]() {
+            const Clip clip = loadClip(*clipPath, *skel);
+            const nlohmann::json j = clipInfoJson(clip);
+            if (*json)
+                printJson(j);
+            else
+                printHuman(j);
+            return 0;
+        };
+    });
 
 }  // namespace
 

@@ -14,10 +14,10 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
+#include "eval/admission.h"
 #include "eval/nearest_pose.h"
 #include "gp/adaptive_update.h"
 #include "gp/model_file.h"
-#include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik/plain_ik.h"
@@ -81,7 +81,8 @@ int runPose(const PoseOptions& o) {
     std::vector<IkConstraint> constraints;
     for (const std::string& t : o.targets) {
         const TargetSpec spec = parseTargetWithStrength(t);
-        constraints.push_back({spec.effector, effectorCm(clip.skeleton, fk, spec.effector) + spec.offsetCm, false, spec.strength});
+        constraints.push_back(
+            {spec.effector, effectorCm(clip.skeleton, fk, spec.effector) + spec.offsetCm, false, spec.strength});
     }
     for (const std::string& p : o.pins) {
         const Effector eff = parseEffectorOption(p, "--pin");
@@ -182,7 +183,8 @@ int runPose(const PoseOptions& o) {
     }
     j["reached"] = reached;
     // Only the learned solver keeps hands and feet above the floor.
-    j["floor_cm"] = o.solver == "learned" && contacts.floorCm ? nlohmann::json(*contacts.floorCm) : nlohmann::json(nullptr);
+    j["floor_cm"] =
+        o.solver == "learned" && contacts.floorCm ? nlohmann::json(*contacts.floorCm) : nlohmann::json(nullptr);
     j["targets"] = constraintsJson(results, false);
     j["pins"] = constraintsJson(results, true);
     const Eigen::VectorXd poseDeg = PoseLayout(clip.skeleton).extract(pose);
@@ -213,7 +215,10 @@ int runPose(const PoseOptions& o) {
         for (const auto& r : results)
             std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
                       << r.residualCm << " cm"
-                      << (r.belowFloor ? "  (below the floor: held on it)" : r.reached ? "" : "  (not reached)") << "\n";
+                      << (r.belowFloor ? "  (below the floor: held on it)"
+                          : r.reached  ? ""
+                                       : "  (not reached)")
+                      << "\n";
         std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " ("
                   << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
         if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
@@ -222,37 +227,42 @@ int runPose(const PoseOptions& o) {
                 std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()
                           << " (the model file was not written)\n";
             else
-                std::cout << "adaptive update: " << j["adaptive"]["rows"].get<int>() << " rows, written to " << o.outModel
-                          << "\n";
+                std::cout << "adaptive update: " << j["adaptive"]["rows"].get<int>() << " rows, written to "
+                          << o.outModel << "\n";
         }
     }
     return 0;
 }
 
-const CommandRegistration poseCommand("pose", "Solve IK on one frame of a model's clip (learned or plain)",
-                              [](CLI::App& sub) -> CommandRunner {
-    auto o = std::make_shared<PoseOptions>();
-    sub.add_option("model", o->model, "Model file (motiongp train --out)")->required();
-    sub.add_option("--clip", o->clip, "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
-    sub.add_option("--frame", o->frame, "Frame of that clip, counted from 1")->required();
-    sub.add_option("--target", o->targets,
-                   "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact (default), paper "
-                   "(0.999) or a number in (0, 1] (repeatable)");
-    sub.add_option("--pin", o->pins, "EFF: hold an effector exactly where it is (repeatable)");
-    sub.add_option("--release", o->releases, "EFF: do not hold this foot although it is in ground contact (repeatable)");
-    sub.add_option("--solver", o->solver, "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
-    sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
-    sub.add_option("--locality", o->locality,
-                   "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
-                   "(0 = off; default " + std::to_string(static_cast<int>(kDefaultLocality)) + ")");
-    sub.add_flag("--adaptive", o->adaptive,
-                 "Add the solved pose to the model (docs/maths.md §11) and save it, if every constraint is reached and L_IK is within the "
-                 "99th percentile (σ²: twice it) of the captured frames scored as new poses");
-    sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
-    sub.add_option("--out", o->out, "Write the clip with the solved frame in place: .bvh, .glb, .gltf or .fbx");
-    sub.add_flag("--json", o->json, "Print one JSON object");
-    return [o]() { return runPose(*o); };
-});
+const CommandRegistration poseCommand(
+    "pose", "Solve IK on one frame of a model's clip (learned or plain)", [](CLI::App& sub) -> CommandRunner {
+        auto o = std::make_shared<PoseOptions>();
+        sub.add_option("model", o->model, "Model file (motiongp train --out)")->required();
+        sub.add_option("--clip", o->clip,
+                       "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
+        sub.add_option("--frame", o->frame, "Frame of that clip, counted from 1")->required();
+        sub.add_option("--target", o->targets,
+                       "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact (default), paper "
+                       "(0.999) or a number in (0, 1] (repeatable)");
+        sub.add_option("--pin", o->pins, "EFF: hold an effector exactly where it is (repeatable)");
+        sub.add_option("--release", o->releases,
+                       "EFF: do not hold this foot although it is in ground contact (repeatable)");
+        sub.add_option("--solver", o->solver,
+                       "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
+        sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
+        sub.add_option("--locality", o->locality,
+                       "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
+                       "(0 = off; default " +
+                           std::to_string(static_cast<int>(kDefaultLocality)) + ")");
+        sub.add_flag("--adaptive", o->adaptive,
+                     "Add the solved pose to the model (docs/maths.md §11) and save it, if every constraint is reached "
+                     "and L_IK is within the "
+                     "99th percentile (σ²: twice it) of the captured frames scored as new poses");
+        sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
+        sub.add_option("--out", o->out, "Write the clip with the solved frame in place: .bvh, .glb, .gltf or .fbx");
+        sub.add_flag("--json", o->json, "Print one JSON object");
+        return [o]() { return runPose(*o); };
+    });
 
 }  // namespace
 }  // namespace mgp::app

@@ -29,10 +29,10 @@ void printSingleRuns(const nlohmann::json& rows, bool literal) {
             const auto& x = r[m];
             std::printf("%-13s %-34s %5d %4d | %-14s %10.4g %10.4g %10.4g %10.4g %6.3f | %10.4g %10.4g\n",
                         r["kind"].get<std::string>().c_str(), r["clips"].get<std::string>().c_str(), r["N"].get<int>(),
-                        r["T_report"].get<int>(), m.c_str(), x["raw_max_delta"].get<double>(), x["log_max_delta"].get<double>(),
-                        x["abs_delta_L_fixed_active"].get<double>(), x["grad_inf"].get<double>(),
-                        x["active_overlap"].get<double>(), x.value("frozen_raw_max_delta", std::nan("")),
-                        x.value("frozen_log_max_delta", std::nan("")));
+                        r["T_report"].get<int>(), m.c_str(), x["raw_max_delta"].get<double>(),
+                        x["log_max_delta"].get<double>(), x["abs_delta_L_fixed_active"].get<double>(),
+                        x["grad_inf"].get<double>(), x["active_overlap"].get<double>(),
+                        x.value("frozen_raw_max_delta", std::nan("")), x.value("frozen_log_max_delta", std::nan("")));
         }
 }
 
@@ -45,14 +45,15 @@ std::string meanSd(const nlohmann::json& spread, const char* key) {
 
 void printSpreads(const nlohmann::json& rows, int runs) {
     std::printf("mean ± sd over %d runs per cell\n", runs);
-    std::printf("%-13s %4s | %-7s %-18s %-18s %-18s %-16s %-18s\n", "kind", "T", "model", "(a) raw", "(b) log", "(e) overlap",
-                "frozen (b)", "alpha");
+    std::printf("%-13s %4s | %-7s %-18s %-18s %-18s %-16s %-18s\n", "kind", "T", "model", "(a) raw", "(b) log",
+                "(e) overlap", "frozen (b)", "alpha");
     for (const auto& r : rows)
         for (const char* m : {"fas", "sgplvm"}) {
             const auto& x = r["spread"][m];
             std::printf("%-13s %4d | %-7s %-18s %-18s %-18s %-16s %-18s\n", r["kind"].get<std::string>().c_str(),
-                        r["T_report"].get<int>(), m, meanSd(x, "raw_max_delta").c_str(), meanSd(x, "log_max_delta").c_str(),
-                        meanSd(x, "active_overlap").c_str(), meanSd(x, "frozen_log_max_delta").c_str(), meanSd(x, "alpha").c_str());
+                        r["T_report"].get<int>(), m, meanSd(x, "raw_max_delta").c_str(),
+                        meanSd(x, "log_max_delta").c_str(), meanSd(x, "active_overlap").c_str(),
+                        meanSd(x, "frozen_log_max_delta").c_str(), meanSd(x, "alpha").c_str());
         }
 }
 
@@ -66,15 +67,25 @@ const CommandRegistration table1Command(
             std::vector<std::string> clips;
         };
         auto o = std::make_shared<Opts>();
-        sub.add_flag("--quick", o->quick, "Smoke run on the shipped clips (3 × 120 frames): iteration scale ≤ 0.1 (T = 5..7), ≤ 30 SCG iterations, M ≤ 60");
+        sub.add_flag("--quick", o->quick,
+                     "Smoke run on the shipped clips (3 × 120 frames): iteration scale ≤ 0.1 (T = 5..7), ≤ 30 SCG "
+                     "iterations, M ≤ 60");
         sub.add_option("--iters-scale", o->itersScale, "Scale the paper's iteration counts (default 1)");
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--active", o->active, "Active set size M (default 200, the paper's)");
         sub.add_flag("--literal", o->literal, "Also run the paper-literal eq. 5 (c = N, no gauge)");
-        sub.add_option("--runs", o->runs, "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict per claim (default 1)");
-        sub.add_option("--clip", o->clips, "Run on this clip instead of the paper's (AMC, BVH or glTF; FILE:A:B keeps frames A..B); repeatable");
-        sub.add_option("--iters", o->iters, "Outer iterations on a --clip before --iters-scale (default 58, the mean of the paper's T; T ≥ 3)");
-        sub.add_option("--threads", o->threads, "Threads: for Step 8, or with --runs K for runs at once (default: all cores; results do not depend on it)");
+        sub.add_option("--runs", o->runs,
+                       "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict "
+                       "per claim (default 1)");
+        sub.add_option(
+            "--clip", o->clips,
+            "Run on this clip instead of the paper's (AMC, BVH or glTF; FILE:A:B keeps frames A..B); repeatable");
+        sub.add_option(
+            "--iters", o->iters,
+            "Outer iterations on a --clip before --iters-scale (default 58, the mean of the paper's T; T ≥ 3)");
+        sub.add_option(
+            "--threads", o->threads,
+            "Threads: for Step 8, or with --runs K for runs at once (default: all cores; results do not depend on it)");
         sub.add_flag("--json", o->json, "Print one JSON object");
         return [o]() {
             if (o->quick) {  // the shipped clips, small sizes: well under a minute
@@ -93,13 +104,15 @@ const CommandRegistration table1Command(
             if (!o->clips.empty()) {
                 settings.clips.clear();
                 try {
-                    for (const std::string& spec : o->clips) settings.clips.push_back(table1ClipFromSpec(spec, o->iters));
+                    for (const std::string& spec : o->clips)
+                        settings.clips.push_back(table1ClipFromSpec(spec, o->iters));
                 } catch (const std::invalid_argument& e) {
                     throw UsageError(e.what());
                 }
             }
             settings.runs = o->runs;
-            settings.workers = o->runs > 1 ? (o->threads > 0 ? o->threads : std::max(1u, std::thread::hardware_concurrency())) : 1;
+            settings.workers =
+                o->runs > 1 ? (o->threads > 0 ? o->threads : std::max(1u, std::thread::hardware_concurrency())) : 1;
             settings.itersScale = o->itersScale;
             settings.literal = o->literal;
             settings.quick = o->quick;
@@ -117,8 +130,9 @@ const CommandRegistration table1Command(
                                  ? findShippedMocapFolder(globalOptions().exeDir)
                                  : findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
             if (!dir)
-                throw UsageError(o->quick ? "expected the shipped clips (assets/mocap) or --data, found neither"
-                                          : "expected a mocap folder (--data, $MOTIONGP_DATA or ../shared/mocap), found none");
+                throw UsageError(
+                    o->quick ? "expected the shipped clips (assets/mocap) or --data, found neither"
+                             : "expected a mocap folder (--data, $MOTIONGP_DATA or ../shared/mocap), found none");
             const auto t0 = std::chrono::steady_clock::now();
             nlohmann::json out = runTable1(*dir, settings, [](const std::string& line) {
                 std::cerr << "\rtable1: " << line << "   " << std::flush;

@@ -45,8 +45,8 @@ std::string rangeCell(const nlohmann::json& r) {
     if (!r.contains("combined")) return "-";
     s << r["combined"];
     if (r.contains("reach"))
-        s << " (" << r["reach"] << "/" << r["joint_ranges"] << "/" << r["nearest_real_pose"] << "/" << r["density"] << "/"
-          << r["continuity"] << ")";
+        s << " (" << r["reach"] << "/" << r["joint_ranges"] << "/" << r["nearest_real_pose"] << "/" << r["density"]
+          << "/" << r["continuity"] << ")";
     return s.str();
 }
 
@@ -63,7 +63,8 @@ void printTable(const nlohmann::json& out, int runs) {
     for (const auto& c : cells) std::cout << std::setw(runs == 1 ? 26 : 16) << c.get<std::string>();
     std::cout << "\n";
     for (const auto& e : out["rows"]) {
-        std::cout << std::setw(14) << e["kind"].get<std::string>() << std::setw(22) << e["edit"].get<std::string>().substr(0, 21);
+        std::cout << std::setw(14) << e["kind"].get<std::string>() << std::setw(22)
+                  << e["edit"].get<std::string>().substr(0, 21);
         for (const auto& c : cells) {
             const std::string key = c.get<std::string>();
             if (runs == 1) {
@@ -87,9 +88,11 @@ void printTable(const nlohmann::json& out, int runs) {
         }
     }
     if (runs == 1)
-        std::cout << "(combined (reach/ranges/NN/density/continuity); -1: fails at δ = 0. Learned vs plain IK: see --json.)\n";
+        std::cout << "(combined (reach/ranges/NN/density/continuity); -1: fails at δ = 0. Learned vs plain IK: see "
+                     "--json.)\n";
     else
-        std::cout << "(combined range, mean ± sd over " << runs << " runs; each run's cells and binding tests: see --json.)\n";
+        std::cout << "(combined range, mean ± sd over " << runs
+                  << " runs; each run's cells and binding tests: see --json.)\n";
 }
 
 int runTable2Command(Table2Options o) {
@@ -100,7 +103,8 @@ int runTable2Command(Table2Options o) {
         o.active = std::min(o.active, 100);
         o.maxDelta = std::min(o.maxDelta, 30);
     }
-    if (!o.clips.empty()) settings.rows = rowsFromClips(o);
+    if (!o.clips.empty())
+        settings.rows = rowsFromClips(o);
     else if (!o.edit.empty() || !o.references.empty() || o.frame != 0)
         throw UsageError("expected --clip with --edit, --frame or --reference, found no --clip");
     settings.outerIterations = o.iters;
@@ -108,15 +112,18 @@ int runTable2Command(Table2Options o) {
     settings.maxDeltaCm = o.maxDelta;
     settings.quick = o.quick;
     settings.runs = o.runs;
-    settings.workers = o.runs > 1 ? (o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) : 1;
+    settings.workers =
+        o.runs > 1 ? (o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())))
+                   : 1;
     try {
         settings.validate();
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
     const auto dir = !o.clips.empty() ? std::optional<std::string>(globalOptions().dataDir)
-                     : o.quick && globalOptions().dataDir.empty() ? findShippedMocapFolder(globalOptions().exeDir)
-                                                                   : findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
+                     : o.quick && globalOptions().dataDir.empty()
+                         ? findShippedMocapFolder(globalOptions().exeDir)
+                         : findMocapFolder(globalOptions().dataDir, globalOptions().exeDir);
     if (!dir)
         throw UsageError(o.quick ? "expected the shipped clips (assets/mocap) or --data, found neither"
                                  : "expected the CMU mocap folder (--data or $MOTIONGP_DATA), found none");
@@ -127,31 +134,46 @@ int runTable2Command(Table2Options o) {
         return 0;
     }
     const nlohmann::json& st = out["settings"];
-    std::cout << "Table 2 — editing range (cm), δ in 1 cm steps up to " << st["max_delta_cm"] << "; T = " << st["outer_iterations"]
-              << ", M = " << st["active"] << (o.quick ? " (quick: shipped clips)" : "") << "; " << st["perturbation"].get<std::string>()
-              << "\n";
+    std::cout << "Table 2 — editing range (cm), δ in 1 cm steps up to " << st["max_delta_cm"]
+              << "; T = " << st["outer_iterations"] << ", M = " << st["active"]
+              << (o.quick ? " (quick: shipped clips)" : "") << "; " << st["perturbation"].get<std::string>() << "\n";
     printTable(out, settings.runs);
     printClaims(out["claims"]);
     return 0;
 }
 
-const CommandRegistration table2Command("table2", "Editing range (paper Table 2) with model-independent naturalness tests",
-                              [](CLI::App& sub) -> CommandRunner {
-    auto o = std::make_shared<Table2Options>();
-    sub.add_option("--iters", o->iters, "Outer training iterations per model (default 10)")->check(CLI::Range(1, 1000));
-    sub.add_option("--active", o->active, "Active set size M (default 200)")->check(CLI::Range(2, 100000));
-    sub.add_option("--max-delta", o->maxDelta, "Largest displacement in cm (default 80)")->check(CLI::Range(1, 1000));
-    sub.add_option("--runs", o->runs, "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict per claim (default 1)")
-        ->check(CLI::Range(1, 50));
-    sub.add_option("--clip", o->clips, "Run on this clip instead of the paper's (a skeleton with the 22 CMU model bones: ASF/AMC, or a BVH naming them; FILE:A:B keeps frames A..B); repeatable");
-    sub.add_option("--edit", o->edit, "With --clip: the edit, EFFECTOR:dx,dy,dz (lhand, rhand, lfoot, rfoot, head; a world direction, Y up)");
-    sub.add_option("--frame", o->frame, "With --clip: the edited frame, 1-based within the clip's A..B (default: the middle frame)")->check(CLI::Range(1, 10000000));
-    sub.add_option("--reference", o->references, "With --clip: other real clips of the motion for R (FILE[:A:B]); repeatable");
-    sub.add_option("--threads", o->threads, "With --runs K: runs at once (default: all cores; results do not depend on it)")->check(CLI::Range(0, 256));
-    sub.add_flag("--quick", o->quick, "Smoke run on the shipped clips (2 rows of 120 frames): T ≤ 2, M ≤ 100, δ ≤ 30");
-    sub.add_flag("--json", o->json, "Print one JSON object");
-    return [o]() { return runTable2Command(*o); };
-});
+const CommandRegistration table2Command(
+    "table2", "Editing range (paper Table 2) with model-independent naturalness tests",
+    [](CLI::App& sub) -> CommandRunner {
+        auto o = std::make_shared<Table2Options>();
+        sub.add_option("--iters", o->iters, "Outer training iterations per model (default 10)")
+            ->check(CLI::Range(1, 1000));
+        sub.add_option("--active", o->active, "Active set size M (default 200)")->check(CLI::Range(2, 100000));
+        sub.add_option("--max-delta", o->maxDelta, "Largest displacement in cm (default 80)")
+            ->check(CLI::Range(1, 1000));
+        sub.add_option("--runs", o->runs,
+                       "Repeat every cell over K perturbed runs (docs/maths.md §14.5); report mean ± sd and a verdict "
+                       "per claim (default 1)")
+            ->check(CLI::Range(1, 50));
+        sub.add_option("--clip", o->clips,
+                       "Run on this clip instead of the paper's (a skeleton with the 22 CMU model bones: ASF/AMC, or a "
+                       "BVH naming them; FILE:A:B keeps frames A..B); repeatable");
+        sub.add_option(
+            "--edit", o->edit,
+            "With --clip: the edit, EFFECTOR:dx,dy,dz (lhand, rhand, lfoot, rfoot, head; a world direction, Y up)");
+        sub.add_option("--frame", o->frame,
+                       "With --clip: the edited frame, 1-based within the clip's A..B (default: the middle frame)")
+            ->check(CLI::Range(1, 10000000));
+        sub.add_option("--reference", o->references,
+                       "With --clip: other real clips of the motion for R (FILE[:A:B]); repeatable");
+        sub.add_option("--threads", o->threads,
+                       "With --runs K: runs at once (default: all cores; results do not depend on it)")
+            ->check(CLI::Range(0, 256));
+        sub.add_flag("--quick", o->quick,
+                     "Smoke run on the shipped clips (2 rows of 120 frames): T ≤ 2, M ≤ 100, δ ≤ 30");
+        sub.add_flag("--json", o->json, "Print one JSON object");
+        return [o]() { return runTable2Command(*o); };
+    });
 
 }  // namespace
 }  // namespace mgp::app

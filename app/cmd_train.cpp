@@ -1,5 +1,6 @@
 // `motiongp train CLIP [CLIP ...] [--skel ASF] [--model fas|sgplvm] [--active M] [--iters T]
-//   [--scg-iters S] [--tol C] [--prior paced|smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N] --out MODEL [--json]`
+//   [--scg-iters S] [--tol C] [--prior paced|smooth|none] [--prior-weight λ] [--frames A:B] [--step K] [--threads N]
+//   --out MODEL [--json]`
 // Learns a FASGPLVM (default) or SGPLVM pose model (docs/maths.md §8) and writes the model file
 // (core/gp/model_file.h). Several clips train one model when they share one skeleton
 // (sameSkeleton, skeleton/clip_match.h); otherwise exit 2 naming the first mismatch. --frames and
@@ -82,14 +83,19 @@ const CommandRegistration trainCommand(
         sub.add_option("--skel", o->skel, "ASF skeleton (default: SS.asf beside SS_TT.amc)");
         sub.add_option("--model", o->model, "fas (FASGPLVM, default) or sgplvm");
         sub.add_option("--active", o->active, "Active set size M (default 200; M ≥ N uses every frame)");
-        sub.add_option("--iters", o->iters, "Outer iterations T of Steps 5-10 (default " + std::to_string(gp::TrainOptions{}.outerIterations) + ")");
+        sub.add_option(
+            "--iters", o->iters,
+            "Outer iterations T of Steps 5-10 (default " + std::to_string(gp::TrainOptions{}.outerIterations) + ")");
         sub.add_option("--scg-iters", o->scgIters, "SCG iterations per Step 6 (default 100)");
         sub.add_option("--tol", o->tol, "Step-9 threshold C on max |Δparam| (default 0.01)");
-        sub.add_option("--prior", o->prior,
-                       std::string("Temporal prior on the latent points: paced (second differences over the pose's own "
-                                   "pace), smooth (second differences over time) or none (the paper's model); default ") + gp::latentPriorName(gp::TrainOptions{}.prior));
-        o->priorWeightOption = sub.add_option("--prior-weight", o->priorWeight,
-                                              "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 30, log-linear between)");
+        sub.add_option(
+            "--prior", o->prior,
+            std::string("Temporal prior on the latent points: paced (second differences over the pose's own "
+                        "pace), smooth (second differences over time) or none (the paper's model); default ") +
+                gp::latentPriorName(gp::TrainOptions{}.prior));
+        o->priorWeightOption = sub.add_option(
+            "--prior-weight", o->priorWeight,
+            "Weight λ of the paced or smooth prior (default: 100 for T ≤ 10, 30 for T ≥ 30, log-linear between)");
         sub.add_flag("--back-constraints", o->backConstraints,
                      "Make the latent points a smooth function of the poses (X = K A; Step 8 is skipped)");
         sub.add_option("--frames", o->frames, "Keep frames A..B (from 1, inclusive) of each clip, e.g. 1:180");
@@ -109,7 +115,8 @@ const CommandRegistration trainCommand(
             if (o->iters < 1) throw UsageError("expected --iters ≥ 1, found " + std::to_string(o->iters));
             if (o->scgIters < 1) throw UsageError("expected --scg-iters ≥ 1, found " + std::to_string(o->scgIters));
             if (o->step < 1) throw UsageError("expected --step ≥ 1, found " + std::to_string(o->step));
-            if (!(o->tol > 0.0) || !std::isfinite(o->tol)) throw UsageError("expected --tol > 0, found " + std::to_string(o->tol));
+            if (!(o->tol > 0.0) || !std::isfinite(o->tol))
+                throw UsageError("expected --tol > 0, found " + std::to_string(o->tol));
             gp::LatentPrior prior;
             if (!gp::parseLatentPrior(o->prior, prior))
                 throw UsageError("expected --prior paced, smooth or none, found '" + o->prior + "'");
@@ -170,7 +177,9 @@ const CommandRegistration trainCommand(
             gCancel.store(false);
             auto previous = std::signal(SIGINT, onSigint);
             gp::TrainControl control;
-            control.afterIteration = [&](const gp::Trainer& t) { printBar(t.log().back().iter, o->iters, t.log().back().L, elapsed(), tty); };
+            control.afterIteration = [&](const gp::Trainer& t) {
+                printBar(t.log().back().iter, o->iters, t.log().back().L, elapsed(), tty);
+            };
             control.cancel = &gCancel;
             if (o->timeBudget > 0.0) {
                 const double spent = std::chrono::duration<double>(t0 - commandStart).count();
@@ -209,13 +218,20 @@ const CommandRegistration trainCommand(
             j["converged"] = res.converged;
             j["stopped"] = res.converged ? "converged" : res.outOfTime ? "time budget" : "iterations";
             j["L_init"] = res.lInit;
-            j["params"] = {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
+            j["params"] = {{"alpha", k.alpha()},
+                           {"beta", k.beta()},
+                           {"gamma", k.gamma()},
                            {"eta", k.hasEta() ? nlohmann::json(k.eta()) : nlohmann::json(nullptr)}};
             nlohmann::json log = nlohmann::json::array();
             for (const auto& e : res.log)
-                log.push_back({{"iter", e.iter}, {"L", e.L}, {"max_delta_raw", e.maxDeltaRaw},
-                               {"max_delta_log", e.maxDeltaLog}, {"active_overlap", e.activeOverlap},
-                               {"grad_inf", e.gradInf}, {"jitter", e.jitter}, {"trial_jitter_max", e.trialJitterMax},
+                log.push_back({{"iter", e.iter},
+                               {"L", e.L},
+                               {"max_delta_raw", e.maxDeltaRaw},
+                               {"max_delta_log", e.maxDeltaLog},
+                               {"active_overlap", e.activeOverlap},
+                               {"grad_inf", e.gradInf},
+                               {"jitter", e.jitter},
+                               {"trial_jitter_max", e.trialJitterMax},
                                {"seconds", e.seconds}});
             j["log"] = log;
             j["seconds"] = seconds;
@@ -225,9 +241,12 @@ const CommandRegistration trainCommand(
             } else {
                 std::cout << "trained " << gp::kernelKindName(kind) << " on " << clipList << ": N = " << model.N()
                           << ", D = " << model.D() << ", M = " << model.active.size() << ", " << model.iterations
-                          << " iterations (" << (res.converged ? "converged" : res.outOfTime ? "time budget" : "not converged") << "), L_GP "
-                          << res.lInit << " -> " << (res.log.empty() ? res.lInit : res.log.back().L) << ", alpha "
-                          << k.alpha() << " beta " << k.beta() << " gamma " << k.gamma();
+                          << " iterations ("
+                          << (res.converged   ? "converged"
+                              : res.outOfTime ? "time budget"
+                                              : "not converged")
+                          << "), L_GP " << res.lInit << " -> " << (res.log.empty() ? res.lInit : res.log.back().L)
+                          << ", alpha " << k.alpha() << " beta " << k.beta() << " gamma " << k.gamma();
                 if (k.hasEta()) std::cout << " eta " << k.eta();
                 std::cout << ", " << seconds << " s -> " << o->out << "\n";
             }

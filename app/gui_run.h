@@ -12,8 +12,8 @@ struct GuiArgs {
     std::string screenshot;  // PNG of the whole window after the last frame
     bool offscreen = false;  // EGL surfaceless context, no display needed
     int width = 1280, height = 800;
-    float uiScale = 0.0f;    // fonts and panels; 0 = the monitor's content scale
-    bool json = false;       // at the end, one JSON object on stdout: frames run, files written, script errors
+    float uiScale = 0.0f;  // fonts and panels; 0 = the monitor's content scale
+    bool json = false;     // at the end, one JSON object on stdout: frames run, files written, script errors
 };
 
 // Returns the exit code; throws UsageError / ParseError / RenderError for the caller to report.

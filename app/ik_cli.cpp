@@ -57,7 +57,8 @@ TargetSpec parseTargetWithStrength(const std::string& text) {
 std::vector<int> parseFrameList(const std::string& text, const std::string& option) {
     std::vector<long long> frames;
     if (!parseIntList(text, 1, 100000000, frames))
-        throw UsageError("expected " + option + " as frame numbers counted from 1 (e.g. 89,103,117,131), found '" + text + "'");
+        throw UsageError("expected " + option + " as frame numbers counted from 1 (e.g. 89,103,117,131), found '" +
+                         text + "'");
     std::vector<int> out;
     for (long long f : frames) out.push_back(static_cast<int>(f - 1));
     return out;
@@ -78,7 +79,8 @@ gp::ModelVersionPtr loadModelVersion(const std::string& path, const std::string&
     if (!clipName.empty()) {
         index = model.findClip(clipName);
         if (index < 0)
-            throw UsageError("expected --clip one of the model's clips (" + model.clipNames() + "), found '" + clipName + "'");
+            throw UsageError("expected --clip one of the model's clips (" + model.clipNames() + "), found '" +
+                             clipName + "'");
     }
     if (clipIndex) *clipIndex = index;
     model = gp::withPrimaryClip(std::move(model), index);
@@ -93,7 +95,8 @@ nlohmann::json constraintsJson(const std::vector<IkConstraintResult>& results, b
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : results)
         if (r.pin == pins) {
-            nlohmann::json e{{"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}};
+            nlohmann::json e{
+                {"effector", effectorName(r.effector)}, {"residual_cm", r.residualCm}, {"reached", r.reached}};
             if (!pins) e["strength"] = r.strength;
             if (r.belowFloor) e["below_floor"] = true;
             out.push_back(std::move(e));

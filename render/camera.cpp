@@ -8,10 +8,14 @@
 namespace mgp::render {
 
 bool parseCameraPreset(const char* name, CameraPreset& out) {
-    if (std::strcmp(name, "front") == 0) out = CameraPreset::kFront;
-    else if (std::strcmp(name, "side") == 0) out = CameraPreset::kSide;
-    else if (std::strcmp(name, "three-quarter") == 0) out = CameraPreset::kThreeQuarter;
-    else return false;
+    if (std::strcmp(name, "front") == 0)
+        out = CameraPreset::kFront;
+    else if (std::strcmp(name, "side") == 0)
+        out = CameraPreset::kSide;
+    else if (std::strcmp(name, "three-quarter") == 0)
+        out = CameraPreset::kThreeQuarter;
+    else
+        return false;
     return true;
 }
 

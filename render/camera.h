@@ -50,7 +50,7 @@ struct OrbitCamera {
 
 // The camera of a preset, placed relative to a character that faces `forward` (a horizontal
 // direction; the front camera looks at the character's face), framing the given sphere.
-OrbitCamera presetCamera(CameraPreset preset, const glm::vec3& forward, const glm::vec3& centreCm,
-                         float radiusCm, float aspect);
+OrbitCamera presetCamera(CameraPreset preset, const glm::vec3& forward, const glm::vec3& centreCm, float radiusCm,
+                         float aspect);
 
 }  // namespace mgp::render

@@ -61,8 +61,8 @@ int pinDriver(dl_phdr_info* info, std::size_t, void*) {
 
 OffscreenContext::OffscreenContext(int width, int height) : egl_(std::make_unique<Egl>()) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
-        throw RenderError("offscreen GL context: expected a size in 1..16384, found " +
-                          std::to_string(width) + "x" + std::to_string(height));
+        throw RenderError("offscreen GL context: expected a size in 1..16384, found " + std::to_string(width) + "x" +
+                          std::to_string(height));
     Egl& e = *egl_;
     e.display = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (e.display == EGL_NO_DISPLAY) throw RenderError(eglErrorText("eglGetPlatformDisplay(surfaceless)"));
@@ -74,17 +74,31 @@ OffscreenContext::OffscreenContext(int width, int height) : egl_(std::make_uniqu
     }
     // Single-sampled pbuffer: antialiasing is the renderer's own MSAA framebuffer, resolved into
     // this surface, so the output does not depend on what the EGL config happens to offer.
-    const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                    EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
-                                    EGL_DEPTH_SIZE, 24, EGL_SAMPLES, 0, EGL_NONE};
+    const EGLint configAttribs[] = {EGL_SURFACE_TYPE,
+                                    EGL_PBUFFER_BIT,
+                                    EGL_RENDERABLE_TYPE,
+                                    EGL_OPENGL_BIT,
+                                    EGL_RED_SIZE,
+                                    8,
+                                    EGL_GREEN_SIZE,
+                                    8,
+                                    EGL_BLUE_SIZE,
+                                    8,
+                                    EGL_ALPHA_SIZE,
+                                    8,
+                                    EGL_DEPTH_SIZE,
+                                    24,
+                                    EGL_SAMPLES,
+                                    0,
+                                    EGL_NONE};
     EGLint count = 0;
     if (!eglChooseConfig(e.display, configAttribs, &e.config, 1, &count) || count < 1) {
         eglTerminate(e.display);
         throw RenderError(eglErrorText("eglChooseConfig(RGBA8, depth 24, pbuffer)"));
     }
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_NONE};
+    const EGLint contextAttribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     e.context = eglCreateContext(e.display, e.config, EGL_NO_CONTEXT, contextAttribs);
     if (e.context == EGL_NO_CONTEXT) {
         eglTerminate(e.display);
@@ -101,7 +115,6 @@ OffscreenContext::OffscreenContext(int width, int height) : egl_(std::make_uniqu
         throw;
     }
 }
-
 
 OffscreenContext::~OffscreenContext() {
     Egl& e = *egl_;

@@ -87,7 +87,9 @@ GpuMesh::GpuMesh(const MeshData& data) : indexCount_(static_cast<int>(data.indic
 GpuMesh::~GpuMesh() { release(); }
 
 GpuMesh::GpuMesh(GpuMesh&& o) noexcept
-    : vao_(std::exchange(o.vao_, 0)), vbo_(std::exchange(o.vbo_, 0)), ebo_(std::exchange(o.ebo_, 0)),
+    : vao_(std::exchange(o.vao_, 0)),
+      vbo_(std::exchange(o.vbo_, 0)),
+      ebo_(std::exchange(o.ebo_, 0)),
       indexCount_(std::exchange(o.indexCount_, 0)) {}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& o) noexcept {

@@ -2,8 +2,8 @@
 // Mesh generation (CPU, no GL) and GPU upload. Vertices are position + normal; a tube's
 // position is (cos θ, t, sin θ) with t ∈ {0, 1} along the axis, and the shader places it
 // between two points with a radius per end (bones, path segments, pins).
-#include <glm/glm.hpp>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
 
 namespace mgp::render {

@@ -29,8 +29,10 @@ OnionSkin clamped(const OnionSkin& o) {
 // blue, right parts magenta, the head green, the root amber.
 glm::vec3 trailColour(TrailPart part) {
     switch (part) {
-        case TrailPart::kLHand: case TrailPart::kLFoot: return {0.25f, 0.55f, 0.95f};
-        case TrailPart::kRHand: case TrailPart::kRFoot: return {0.85f, 0.25f, 0.55f};
+        case TrailPart::kLHand:
+        case TrailPart::kLFoot: return {0.25f, 0.55f, 0.95f};
+        case TrailPart::kRHand:
+        case TrailPart::kRFoot: return {0.85f, 0.25f, 0.55f};
         case TrailPart::kHead: return {0.20f, 0.70f, 0.45f};
         default: return {0.90f, 0.70f, 0.20f};
     }

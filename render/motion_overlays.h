@@ -17,8 +17,8 @@
 namespace mgp::render {
 
 struct OnionSkin {
-    int before = 2;   // ghosts before the current frame
-    int after = 2;    // ghosts after it
+    int before = 2;    // ghosts before the current frame
+    int after = 2;     // ghosts after it
     int spacing = 10;  // frames from one ghost to the next (1/12 s at the CMU clips' 120 fps)
 };
 constexpr int kMaxOnionGhosts = 10;  // per side: more is clutter and costs the frame time
@@ -28,8 +28,8 @@ struct OnionGhostFrame {
     int frame = 0;  // 0-based clip frame
     int step = 0;   // −before..−1 before the current frame, 1..after after it
 };
-// The ghosts' frames, farthest first on each side; frames outside 0..frameCount−1 are left out. Counts and spacing are clamped to 0..kMaxOnionGhosts and
-// 1..kMaxOnionSpacing.
+// The ghosts' frames, farthest first on each side; frames outside 0..frameCount−1 are left out. Counts and spacing are
+// clamped to 0..kMaxOnionGhosts and 1..kMaxOnionSpacing.
 std::vector<OnionGhostFrame> onionFrames(const OnionSkin& onion, int current, int frameCount);
 // The ghost of `step` (its tint by side, its opacity falling with |step|).
 Figure onionGhost(const Skeleton& skeleton, const Pose& pose, int step, const OnionSkin& onion);

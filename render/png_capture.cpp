@@ -5,8 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "render/gl_context.h"
 #include "io/atomic_file.h"
+#include "render/gl_context.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #if defined(__GNUC__)
@@ -43,9 +43,8 @@ Image readFramebuffer(int width, int height) {
 std::vector<std::uint8_t> encodePng(const Image& image) {
     if (image.width < 1 || image.height < 1 ||
         image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
-        throw RenderError("PNG encode: expected a non-empty RGBA8 image, found " + std::to_string(image.width) +
-                          "x" + std::to_string(image.height) + " with " + std::to_string(image.rgba.size()) +
-                          " bytes");
+        throw RenderError("PNG encode: expected a non-empty RGBA8 image, found " + std::to_string(image.width) + "x" +
+                          std::to_string(image.height) + " with " + std::to_string(image.rgba.size()) + " bytes");
 
     std::vector<std::uint8_t> out;
     auto sink = [](void* ctx, void* data, int size) {

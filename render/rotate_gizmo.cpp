@@ -101,8 +101,8 @@ int pickGizmoRing(const RotateGizmo& g, const OrbitCamera& camera, float x, floa
     return best;
 }
 
-double gizmoSweepDeg(const RotateGizmo& g, int axis, const OrbitCamera& camera, float x0, float y0, float x1,
-                     float y1, int w, int h) {
+double gizmoSweepDeg(const RotateGizmo& g, int axis, const OrbitCamera& camera, float x0, float y0, float x1, float y1,
+                     int w, int h) {
     const GizmoRing* ring = nullptr;
     for (const GizmoRing& r : g.rings)
         if (r.axis == axis) ring = &r;

@@ -15,8 +15,8 @@
 namespace mgp::render {
 
 struct GizmoRing {
-    int axis = 0;             // the joint's DOF: 0 x, 1 y, 2 z
-    glm::vec3 axisWorld{0.0f};  // unit
+    int axis = 0;                     // the joint's DOF: 0 x, 1 y, 2 z
+    glm::vec3 axisWorld{0.0f};        // unit
     std::vector<glm::vec3> pointsCm;  // closed: the last point is the first
 };
 

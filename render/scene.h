@@ -91,8 +91,8 @@ struct Path {
     glm::vec3 colour{0.20f, 0.55f, 0.95f};
     int currentPoint = -1;  // index into pointsCm, -1 for none
     float radiusCm = 0.6f;
-    int hoveredKey = -1;   // index into keysCm drawn in the handle hover colour, -1 for none
-    int selectedKey = -1;  // index into keysCm drawn in the handle selected colour, -1 for none
+    int hoveredKey = -1;        // index into keysCm drawn in the handle hover colour, -1 for none
+    int selectedKey = -1;       // index into keysCm drawn in the handle selected colour, -1 for none
     float tickRadiusCm = 0.0f;  // > 0: a tick (a small ball) on every point, e.g. one per frame
     bool onTop = false;         // drawn over everything else (a gizmo), not hidden by the body
     // Key balls are this big (the editor picks keys with the same radius); the editor sets

@@ -21,12 +21,12 @@ struct BoneStyle {
 // Radii (cm) per ASF bone role without its side letter, for a ~170 cm adult.
 BoneStyle styleOf(const std::string& role) {
     static const std::map<std::string, BoneStyle> table = {
-        {"hipjoint", {4.2f, 4.8f}},  {"femur", {6.0f, 4.0f}},    {"tibia", {4.4f, 3.0f}},
-        {"foot", {3.2f, 2.6f}},      {"toes", {2.6f, 1.8f}},     {"lowerback", {7.0f, 7.5f}},
-        {"upperback", {7.5f, 8.5f}}, {"thorax", {8.5f, 6.0f}},   {"lowerneck", {4.0f, 3.6f}},
-        {"upperneck", {3.6f, 3.4f}}, {"head", {3.4f, 3.0f}},     {"clavicle", {3.4f, 3.4f}},
-        {"humerus", {4.2f, 3.2f}},   {"radius", {3.2f, 2.5f}},   {"wrist", {2.5f, 2.4f}},
-        {"hand", {2.6f, 2.0f}},      {"fingers", {1.6f, 1.1f}},  {"thumb", {1.3f, 1.0f}},
+        {"hipjoint", {4.2f, 4.8f}},  {"femur", {6.0f, 4.0f}},   {"tibia", {4.4f, 3.0f}},
+        {"foot", {3.2f, 2.6f}},      {"toes", {2.6f, 1.8f}},    {"lowerback", {7.0f, 7.5f}},
+        {"upperback", {7.5f, 8.5f}}, {"thorax", {8.5f, 6.0f}},  {"lowerneck", {4.0f, 3.6f}},
+        {"upperneck", {3.6f, 3.4f}}, {"head", {3.4f, 3.0f}},    {"clavicle", {3.4f, 3.4f}},
+        {"humerus", {4.2f, 3.2f}},   {"radius", {3.2f, 2.5f}},  {"wrist", {2.5f, 2.4f}},
+        {"hand", {2.6f, 2.0f}},      {"fingers", {1.6f, 1.1f}}, {"thumb", {1.3f, 1.0f}},
     };
     std::string key = role;
     if (sideOfBone(role) != BodySide::kCentre) key = role.substr(1);
@@ -84,8 +84,7 @@ Figure makeFigure(const Skeleton& skeleton, const FkState& fk) {
         fig.joints.push_back({a, style.startRadius * 1.12f, side});
         // Close the open ends of chains (hands, toes, fingers) with a ball.
         bool hasChild = false;
-        for (int k = j + 1; k < skeleton.jointCount() && !hasChild; ++k)
-            hasChild = skeleton.joints[k].parent == j;
+        for (int k = j + 1; k < skeleton.jointCount() && !hasChild; ++k) hasChild = skeleton.joints[k].parent == j;
         if (!hasChild) fig.joints.push_back({b, style.endRadius, side});
     }
     return fig;
@@ -168,8 +167,9 @@ float clipGroundHeight(const Clip& clip) {
 
 Path effectorPath(const Clip& clip, Effector e, int first, int last, int keyEvery, int current) {
     // The effector's motion trail, drawn as a path: the default thickness, keys instead of ticks.
-    Path path = motionTrail(clip.skeleton, [&clip](int f) -> const Pose& { return clip.frames[f]; }, clip.frameCount(),
-                            static_cast<TrailPart>(static_cast<int>(e)), first, last, current, false);
+    Path path = motionTrail(
+        clip.skeleton, [&clip](int f) -> const Pose& { return clip.frames[f]; }, clip.frameCount(),
+        static_cast<TrailPart>(static_cast<int>(e)), first, last, current, false);
     path.radiusCm = Path{}.radiusCm;
     path.tickRadiusCm = 0.0f;
     if (keyEvery > 0)
@@ -221,9 +221,9 @@ Scene buildClipScene(const Clip& clip, const ClipSceneOptions& o) {
         scene.paths.push_back(motionTrail(clip.skeleton, framePose, clip.frameCount(), part, o.frameIndex - half,
                                           o.frameIndex + half, o.frameIndex, false));
     if (o.gizmoJoint >= 0)
-        addRotateGizmo(scene, rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, fk, o.gizmoJoint,
-                                          o.gizmoRadiusCm),
-                       -1);
+        addRotateGizmo(
+            scene,
+            rotateGizmo(clip.skeleton, o.editedPose ? *o.editedPose : captured, fk, o.gizmoJoint, o.gizmoRadiusCm), -1);
     if (o.caption)
         scene.caption = clip.name + "  frame " + std::to_string(o.frameIndex + 1) + "/" +
                         std::to_string(clip.frameCount()) + "  grid 1 m";

@@ -25,8 +25,8 @@ GLuint compile(const char* name, GLenum type, const char* source) {
         std::vector<char> log(static_cast<std::size_t>(len) + 1, '\0');
         glGetShaderInfoLog(shader, len, nullptr, log.data());
         glDeleteShader(shader);
-        throw RenderError(std::string("shader '") + name + "' (" +
-                          (type == GL_VERTEX_SHADER ? "vertex" : "fragment") + ") failed to compile:\n" + log.data());
+        throw RenderError(std::string("shader '") + name + "' (" + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                          ") failed to compile:\n" + log.data());
     }
     return shader;
 }

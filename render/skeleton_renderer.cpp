@@ -319,14 +319,16 @@ struct Drawer {
         emissive = emit;
     }
     void ball(const glm::vec3& centre, float radius) {
-        (radius < 2.7f ? smallBalls : balls).push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
+        (radius < 2.7f ? smallBalls : balls)
+            .push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void tinyBall(const glm::vec3& centre, float radius) {
         tinyBalls.push_back({glm::vec4(centre, radius), glm::vec4(0.0f), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void segment(const glm::vec3& a, const glm::vec3& b, float r0, float r1) {
         if (glm::length(b - a) < 1e-4f) return;
-        (std::max(r0, r1) < 1.5f ? thinTubes : tubes).push_back({glm::vec4(a, r0), glm::vec4(b, r1), current, glm::vec4(emissive, 0, 0, 0)});
+        (std::max(r0, r1) < 1.5f ? thinTubes : tubes)
+            .push_back({glm::vec4(a, r0), glm::vec4(b, r1), current, glm::vec4(emissive, 0, 0, 0)});
     }
     void figure(const Figure& f, const RenderStyle& s, bool ghost) {
         for (const BoneSegment& b : f.bones) {
@@ -342,8 +344,10 @@ struct Drawer {
         if (v.empty()) return;
         // Spheres are closed: cull their back faces (half the triangles). Tubes are open at the
         // ends, so both of their sides are drawn.
-        if (isTube) glDisable(GL_CULL_FACE);
-        else glEnable(GL_CULL_FACE);
+        if (isTube)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
         glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Instance)), v.data(), GL_STREAM_DRAW);
         lit.set("uTube", isTube);
@@ -464,8 +468,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     r.lit.set("uEye", eye);
     r.lit.set("uKeyDir", keyDir);
     r.lit.set("uFillDir", fillDir);
-    Drawer d{r.lit, r.sphere, r.smallSphere, r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {}, {}, {},
-             glm::vec4(1.0f), 0.0f};
+    Drawer d{r.lit, r.sphere, r.smallSphere,   r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {},
+             {},    {},       glm::vec4(1.0f), 0.0f};
     for (const Figure& f : scene.figures)
         if (!f.ghost) d.figure(f, s, false);
     auto drawPath = [&](const Path& p) {
@@ -483,9 +487,12 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         }
         for (std::size_t k = 0; k < p.keysCm.size(); ++k) {
             const int i = static_cast<int>(k);
-            if (i == p.selectedKey) d.colour(s.handleSelected, 1.0f, 0.45f);
-            else if (i == p.hoveredKey) d.colour(s.handleHover, 1.0f, 0.45f);
-            else d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
+            if (i == p.selectedKey)
+                d.colour(s.handleSelected, 1.0f, 0.45f);
+            else if (i == p.hoveredKey)
+                d.colour(s.handleHover, 1.0f, 0.45f);
+            else
+                d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
             d.ball(p.keysCm[k], p.keyRadiusCm() * (i == p.hoveredKey || i == p.selectedKey ? 1.3f : 1.0f));
         }
         if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
@@ -526,7 +533,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         constexpr int kSides = 16;
         constexpr float kRadius = 7.5f;
         for (int k = 0; k < kSides; ++k) {
-            const float a0 = 6.2831853f * static_cast<float>(k) / kSides, a1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
+            const float a0 = 6.2831853f * static_cast<float>(k) / kSides,
+                        a1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
             d.segment(m.positionCm + kRadius * glm::vec3(std::cos(a0), 0.0f, std::sin(a0)),
                       m.positionCm + kRadius * glm::vec3(std::cos(a1), 0.0f, std::sin(a1)), 0.8f, 0.8f);
         }
@@ -617,7 +625,9 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         }
         return s.handleIdle;
     };
-    auto handleRadius = [](const Handle& h) { return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm; };
+    auto handleRadius = [](const Handle& h) {
+        return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm;
+    };
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_GREATER);
     for (const Handle& h : scene.handles) {
@@ -650,8 +660,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     if (!scene.caption.empty()) {
         std::vector<char> buffer(64 * 1024);
         std::string text = scene.caption;
-        const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(),
-                                              static_cast<int>(buffer.size()));
+        const int quads =
+            stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
         std::vector<float> tris;
         tris.reserve(static_cast<std::size_t>(quads) * 18);
         for (int q = 0; q < quads; ++q) {

@@ -14,11 +14,11 @@ void markSkipped(const std::string& reason);
 }  // namespace mgp::test
 
 // Records the reason (stream syntax: MGP_MARK_SKIPPED("no folder at " << dir)) without leaving.
-#define MGP_MARK_SKIPPED(streamed)                          \
-    do {                                                    \
-        std::ostringstream mgp_skip_reason_;                \
-        mgp_skip_reason_ << streamed;                       \
-        ::mgp::test::markSkipped(mgp_skip_reason_.str());   \
+#define MGP_MARK_SKIPPED(streamed)                        \
+    do {                                                  \
+        std::ostringstream mgp_skip_reason_;              \
+        mgp_skip_reason_ << streamed;                     \
+        ::mgp::test::markSkipped(mgp_skip_reason_.str()); \
     } while (0)
 // Skips the rest of the calling test case (use it in the TEST_CASE body itself).
 #define MGP_SKIP(streamed)          \

@@ -29,7 +29,7 @@ TEST_CASE("adaptive update appends the sample, keeps μ, and publishes version n
     CHECK(m1.active.size() == m0.active.size());
     CHECK(std::isfinite(r.objectiveAfter));
     CHECK(r.objectiveAfter <= r.objectiveBefore + 1e-9);  // SCG never accepts an uphill step
-    CHECK(m0.N() == 358);  // the old version is untouched
+    CHECK(m0.N() == 358);                                 // the old version is untouched
     // Σ ln w = 0 still holds (gauge).
     CHECK(std::abs(m1.w.array().log().sum()) < 1e-9);
 }
@@ -51,7 +51,8 @@ TEST_CASE("a sample where the posterior variance beats the smallest active varia
     const gp::AdaptiveUpdateResult r = gp::adaptiveUpdate(*v0, xFar, m0.Y.row(0).transpose(), 0);
     REQUIRE(r.accepted);
     CHECK(r.newPointActive);
-    MESSAGE("far sample: σ² " << varFar << " vs " << varNear << " at an active point; active set changed by " << r.activeChanged);
+    MESSAGE("far sample: σ² " << varFar << " vs " << varNear << " at an active point; active set changed by "
+                              << r.activeChanged);
 }
 
 TEST_CASE("non-finite or mis-sized samples are discarded and reported") {
@@ -98,7 +99,9 @@ TEST_CASE("the worker never blocks: posting and solving go on while an update is
     req.startX = latentStartForFrame(*latest, 3);
     FkState fk;
     forwardKinematics(latest->model->clip.skeleton, req.start, fk);
-    req.constraints = {{Effector::kLHand, effectorCm(latest->model->clip.skeleton, fk, Effector::kLHand) + Eigen::Vector3d(0, 5, 0), false}};
+    req.constraints = {{Effector::kLHand,
+                        effectorCm(latest->model->clip.skeleton, fk, Effector::kLHand) + Eigen::Vector3d(0, 5, 0),
+                        false}};
     const LearnedIkResult res = solver.solve(req);
     CHECK(res.reached);
     worker.post({res.x, res.y, 3});
@@ -117,7 +120,8 @@ TEST_CASE("a disabled worker keeps the static model") {
     CHECK(worker.current() == v0);
 }
 
-TEST_CASE("an adaptively added row keeps its accepted pose through save and load, and a trained model's file is unchanged") {
+TEST_CASE(
+    "an adaptively added row keeps its accepted pose through save and load, and a trained model's file is unchanged") {
     const auto v0 = test::walkModel35();
     const gp::GpModel& m0 = *v0->model;
     // The committed fixture re-saved is byte-identical: no edited rows are written for it.

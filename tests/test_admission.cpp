@@ -5,10 +5,10 @@
 #include <cmath>
 #include <string>
 
+#include "eval/admission.h"
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
 #include "gp/adaptive_update.h"
-#include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
 #include "skeleton/forward_kinematics.h"
@@ -54,7 +54,9 @@ TEST_CASE("capture range: every captured frame's angles and body shape, the root
     CHECK(gp::captureShape(clip.skeleton, moved).isApprox(gp::captureShape(clip.skeleton, clip.frames[100])));
 }
 
-TEST_CASE("capture range: the nearest-frame limit is the 99th percentile of each frame's distance outside its own ±10 frames") {
+TEST_CASE(
+    "capture range: the nearest-frame limit is the 99th percentile of each frame's distance outside its own ±10 "
+    "frames") {
     const auto version = test::walkModel35();
     const gp::CaptureRange& c = *version->capture;
     const std::vector<bool> none(version->model->clip.skeleton.jointCount(), false);
@@ -136,7 +138,9 @@ TEST_CASE("admission: an angle past its captured range by more than the margin i
     CHECK(admitCaptured(*version, pose, {Effector::kRFoot}).capture.ranges);
 }
 
-TEST_CASE("admission: the floor, reach and balance come first, then the capture, and the amber ramp runs from the median to the limit") {
+TEST_CASE(
+    "admission: the floor, reach and balance come first, then the capture, and the amber ramp runs from the median to "
+    "the limit") {
     const auto version = test::walkModel35();
     const Pose& captured = version->model->clip.frames[100];
     AdmissionVerdict v = admitPose(*version, captured, {}, true, true, 0.1, 1.0);
@@ -205,7 +209,8 @@ TEST_CASE("admission: an adaptive update keeps the limits it was judged by") {
     CHECK(fresh->capture->nearestLimitCm == v0->capture->nearestLimitCm);  // the captured frames did not
 }
 
-TEST_CASE("admission: hand raises on the kick agree with the naturalness tests at least as often as the model's score did") {
+TEST_CASE(
+    "admission: hand raises on the kick agree with the naturalness tests at least as often as the model's score did") {
     // The held-out kick fixture (10_03, not tuned on); the judge is the editing-range protocol's
     // tests against 10_03 without the edited frame ±10 (eval/naturalness.h): ranges, nearest
     // frame and density, with reach and the floor. 5–40 cm up and forward on three frames.
@@ -219,7 +224,8 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
         const NaturalnessTests judge(table2Reference(clip, t, {}), Effector::kRHand);
         FkState fk;
         forwardKinematics(clip.skeleton, clip.frames[t], fk);
-        const Eigen::Vector3d forward = Eigen::Vector3d(fk.global[0].col(2).x(), 0, fk.global[0].col(2).z()).normalized();
+        const Eigen::Vector3d forward =
+            Eigen::Vector3d(fk.global[0].col(2).x(), 0, fk.global[0].col(2).z()).normalized();
         for (const Eigen::Vector3d& u : {Eigen::Vector3d(0, 1, 0), forward})
             for (double delta : {5.0, 10.0, 20.0, 40.0}) {
                 const Eigen::Vector3d target = effectorCm(clip.skeleton, fk, Effector::kRHand) + delta * u;
@@ -229,7 +235,8 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
                 const NaturalnessVerdict j = judge.judge(clip.skeleton, layout.extract(r.pose), nullptr);
                 const bool natural = r.reached && !floor && j.ranges && j.nearest && j.density;
                 const bool admitted =
-                    admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, floor, r.sigma2, r.lik).admitted;
+                    admitPose(*version, r.pose, movedEffectors(r.constraints), r.reached, floor, r.sigma2, r.lik)
+                        .admitted;
                 const bool byScore =
                     r.reached && !floor && r.lik <= version->range.likLimit && r.sigma2 <= version->range.sigma2Limit;
                 ++n;
@@ -237,7 +244,8 @@ TEST_CASE("admission: hand raises on the kick agree with the naturalness tests a
                 score += byScore == natural;
             }
     }
-    MESSAGE("agreement with the naturalness tests on " << n << " hand moves: admission " << rule << ", model score " << score);
+    MESSAGE("agreement with the naturalness tests on " << n << " hand moves: admission " << rule << ", model score "
+                                                       << score);
     CHECK(rule >= score);
     CHECK(rule >= n * 3 / 4);
 }

@@ -59,8 +59,7 @@ TEST_CASE("LF and CRLF files parse to the same values") {
     const Clip b = parseAmc("lf.amc", lf, asf);
     REQUIRE(a.frameCount() == b.frameCount());
     for (int t = 0; t < a.frameCount(); t += 37)
-        for (int j = 0; j < asf.skeleton.jointCount(); ++j)
-            CHECK(a.frames[t].anglesDeg[j] == b.frames[t].anglesDeg[j]);
+        for (int j = 0; j < asf.skeleton.jointCount(); ++j) CHECK(a.frames[t].anglesDeg[j] == b.frames[t].anglesDeg[j]);
 }
 
 TEST_CASE("AMC bones are matched by name, not position") {
@@ -101,9 +100,9 @@ TEST_CASE("every shipped AMC clip loads with its subject's ASF") {
 
 TEST_CASE("every AMC clip of the full CMU set loads with its subject's ASF") {
     if (test::sharedMocapDir().empty()) MGP_SKIP("the full CMU set (../shared/mocap) is absent here");
-    for (const char* name : {"02_03", "09_01", "09_02", "09_03", "10_01", "10_02", "10_03", "13_17", "16_01",
-                             "16_02", "16_03", "16_04", "16_05", "16_06", "16_35", "16_36", "35_01", "49_18",
-                             "49_19", "124_03"}) {
+    for (const char* name :
+         {"02_03", "09_01", "09_02", "09_03", "10_01", "10_02", "10_03", "13_17", "16_01", "16_02",
+          "16_03", "16_04", "16_05", "16_06", "16_35", "16_36", "35_01", "49_18", "49_19", "124_03"}) {
         const std::string clipName = name;
         CAPTURE(clipName);
         const auto path = test::sharedMocap(std::string("asf_amc/") + name + ".amc");

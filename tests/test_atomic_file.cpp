@@ -87,7 +87,8 @@ TEST_CASE("a full disk (MOTIONGP_FAULT=enospc) fails clearly, keeps the old file
     writeFileAtomically(path, "precious");
     ::setenv("MOTIONGP_FAULT", "enospc", 1);
     CHECK_THROWS_WITH_AS(writeFileAtomically(path, std::string(1 << 16, 'x')),
-                         (path + ": expected a writable file, found No space left on device").c_str(), std::runtime_error);
+                         (path + ": expected a writable file, found No space left on device").c_str(),
+                         std::runtime_error);
     ::unsetenv("MOTIONGP_FAULT");
     CHECK(test::readText(path) == "precious");
     CHECK(strayFiles(dir, "keep.txt") == 0);

@@ -13,10 +13,10 @@ TEST_CASE("autosave policy: due only for unsaved changes the last autosave does 
     std::filesystem::remove(file);
     AutosavePolicy p(120.0, file);
     CHECK(p.interval() == 120.0);
-    CHECK(!p.due(0.0, false, 1));    // nothing unsaved: never
-    CHECK(!p.due(0.0, true, 1));     // unsaved: the clock starts now
+    CHECK(!p.due(0.0, false, 1));  // nothing unsaved: never
+    CHECK(!p.due(0.0, true, 1));   // unsaved: the clock starts now
     CHECK(!p.due(119.0, true, 1));
-    CHECK(p.due(120.0, true, 1));    // the whole interval
+    CHECK(p.due(120.0, true, 1));  // the whole interval
 
     SessionData s;
     s.syntheticClip = true;

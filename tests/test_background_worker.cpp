@@ -191,15 +191,16 @@ TEST_CASE("background worker: the destructor cancels the running job, drops the 
     std::vector<int> ran;
     bool finished = false;
     {
-        BackgroundWorker<int, int> worker(WorkerPolicy::kEveryRequest, [&](int& request, const std::atomic<bool>& cancel) {
-            if (request == 1) {
-                started.set_value();
-                waitForCancel(cancel);  // only the destructor's cancel ends this job
-            }
-            ran.push_back(request);
-            finished = true;
-            return JobOutcome<int>{request, ""};
-        });
+        BackgroundWorker<int, int> worker(WorkerPolicy::kEveryRequest,
+                                          [&](int& request, const std::atomic<bool>& cancel) {
+                                              if (request == 1) {
+                                                  started.set_value();
+                                                  waitForCancel(cancel);  // only the destructor's cancel ends this job
+                                              }
+                                              ran.push_back(request);
+                                              finished = true;
+                                              return JobOutcome<int>{request, ""};
+                                          });
         worker.post(1);
         started.get_future().wait();
         worker.post(2);

@@ -22,8 +22,10 @@ TEST_CASE("block-banded Cholesky solves like a dense LLT, and refuses an indefin
                 Eigen::MatrixXd r(b, b);
                 for (int p = 0; p < b; ++p)
                     for (int q = 0; q < b; ++q) r(p, q) = g(rng);
-                if (j == i) a.block(i, i) += r * r.transpose();
-                else a.block(i, j) = 0.3 * r;
+                if (j == i)
+                    a.block(i, i) += r * r.transpose();
+                else
+                    a.block(i, j) = 0.3 * r;
             }
         }
         const Eigen::MatrixXd dense = a.dense();

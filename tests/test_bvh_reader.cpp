@@ -75,7 +75,8 @@ TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03 shipped, 10_01 
         {test::mocap("asf_amc/02_03.amc"), test::mocap("bvh/02_03.bvh")}};
     if (const auto a = test::sharedMocap("asf_amc/10_01.amc"), b = test::sharedMocap("bvh/10_01.bvh"); a && b)
         pairs.emplace_back(*a, *b);
-    else MESSAGE("10_01 is not shipped; checking 02_03 only");
+    else
+        MESSAGE("10_01 is not shipped; checking 02_03 only");
     for (const auto& [amcPath, bvhPath] : pairs) {
         const std::string trial = amcPath;
         CAPTURE(trial);
@@ -84,7 +85,8 @@ TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03 shipped, 10_01 
         REQUIRE(bvh.frameCount() == amc.frameCount() + 1);
         double worstRoot = 0.0;
         for (int k = 0; k < amc.frameCount(); ++k)
-            worstRoot = std::max(worstRoot, (bvh.frames[k + 1].anglesDeg[0] - amc.frames[k].anglesDeg[0]).cwiseAbs().maxCoeff());
+            worstRoot = std::max(worstRoot,
+                                 (bvh.frames[k + 1].anglesDeg[0] - amc.frames[k].anglesDeg[0]).cwiseAbs().maxCoeff());
         CHECK(worstRoot <= 1e-4);
         // Report, do not assert: the Daz release is retargeted onto a generic figure.
         FkState fa, fb;
@@ -95,12 +97,13 @@ TEST_CASE("cross-format: Daz BVH frame k+1 is AMC frame k (02_03 shipped, 10_01 
             worst[kEffectorCount] = std::max(worst[kEffectorCount], (fa.jointCm[0] - fb.jointCm[0]).norm());
             for (int e = 0; e < kEffectorCount; ++e) {
                 const auto eff = static_cast<Effector>(e);
-                worst[e] = std::max(worst[e], (effectorCm(amc.skeleton, fa, eff) - effectorCm(bvh.skeleton, fb, eff)).norm());
+                worst[e] =
+                    std::max(worst[e], (effectorCm(amc.skeleton, fa, eff) - effectorCm(bvh.skeleton, fb, eff)).norm());
             }
         }
-        MESSAGE(trial << " AMC vs Daz BVH, max distance (cm): root " << worst[kEffectorCount] << ", head "
-                      << worst[4] << ", lhand " << worst[0] << ", rhand " << worst[1] << ", lfoot " << worst[2]
-                      << ", rfoot " << worst[3]);
+        MESSAGE(trial << " AMC vs Daz BVH, max distance (cm): root " << worst[kEffectorCount] << ", head " << worst[4]
+                      << ", lhand " << worst[0] << ", rhand " << worst[1] << ", lfoot " << worst[2] << ", rfoot "
+                      << worst[3]);
     }
 }
 
@@ -116,7 +119,8 @@ TEST_CASE("MotionBuilder BVH offsets equal subject 49's ASF bone vectors") {
 
 TEST_CASE("BVH: mixed CRLF/LF, 'Frames:' with a tab, End Sites, and a minimal file") {
     const std::string text =
-        "HIERARCHY\r\nROOT root\n{\r\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation\r\n"
+        "HIERARCHY\r\nROOT root\n{\r\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
+        "Xrotation\r\n"
         "  JOINT lfemur\n  {\n    OFFSET 5 -5 0\r\n    CHANNELS 3 Zrotation Xrotation Yrotation\n"
         "    End Site\r\n    {\n      OFFSET 0 -40 0\n    }\n  }\n}\r\nMOTION\nFrames:\t2\r\nFrame Time: 0.0333333\n"
         "1 90 2 0 0 0 0 0 0\r\n1 90 2 0 0 0 10 0 0\n";

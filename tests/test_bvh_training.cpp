@@ -58,7 +58,8 @@ double largestJointGapCm(const Clip& a, const Clip& b) {
     for (int f = 0; f < a.frameCount(); ++f) {
         forwardKinematics(a.skeleton, a.frames[f], fa);
         forwardKinematics(b.skeleton, b.frames[f], fb);
-        for (int j = 0; j < a.skeleton.jointCount(); ++j) worst = std::max(worst, (fa.jointCm[j] - fb.jointCm[j]).norm());
+        for (int j = 0; j < a.skeleton.jointCount(); ++j)
+            worst = std::max(worst, (fa.jointCm[j] - fb.jointCm[j]).norm());
     }
     return worst;
 }
@@ -82,7 +83,8 @@ TEST_CASE("BVH pose vector: the root's three rotations, then every joint's own r
         CHECK(clip.skeleton.joints[layout.joint(k)].dof[layout.axis(k)]);
         if (k > 3) CHECK(layout.joint(k) >= layout.joint(k - 1));  // joint order
     }
-    CHECK(layout.dofName(clip.skeleton, 3) == clip.skeleton.joints[layout.joint(3)].name + " r" + "xyz"[layout.axis(3)]);
+    CHECK(layout.dofName(clip.skeleton, 3) ==
+          clip.skeleton.joints[layout.joint(3)].name + " r" + "xyz"[layout.axis(3)]);
     // Every animated angle is in the vector: extract then apply on a blank pose gives the frame back.
     const Pose& source = clip.frames[30];
     Pose back;
@@ -105,7 +107,8 @@ TEST_CASE("BVH training: D = the channels that move, d by eq. 4, no rest-frame r
     // Daz-friendly (D < 60) and 3dsMax-friendly (D ≥ 60: a 3-D latent space).
     for (const Case& c : {Case{"bvh/02_03.bvh", 2}, Case{"bvh/131_01.bvh", 3}}) {
         CAPTURE(c.file);
-        const std::string path = test::mocap(c.file), model = dir + "/" + std::filesystem::path(c.file).stem().string() + ".model";
+        const std::string path = test::mocap(c.file),
+                          model = dir + "/" + std::filesystem::path(c.file).stem().string() + ".model";
         const nlohmann::json j = trainCli(path, model);
         const gp::GpModel m = gp::loadModel(model);
         const Clip source = readBvh(path);
@@ -128,13 +131,16 @@ TEST_CASE("BVH training: D = the channels that move, d by eq. 4, no rest-frame r
     }
 }
 
-TEST_CASE("BVH model: learned IK reaches a 20 cm hand target with the feet pinned, and the edit exports in the source hierarchy") {
+TEST_CASE(
+    "BVH model: learned IK reaches a 20 cm hand target with the feet pinned, and the edit exports in the source "
+    "hierarchy") {
     const std::string dir = test::scratchDir("bvh_ik");
     std::filesystem::create_directories(dir);
     const std::string path = test::mocap("bvh/02_03.bvh"), model = dir + "/daz.model";
     trainCli(path, model);
 
-    const test::CliResult p = test::runCli("pose " + model + " --frame 60 --target rhand=0,20,0 --pin lfoot --pin rfoot "
+    const test::CliResult p = test::runCli("pose " + model +
+                                           " --frame 60 --target rhand=0,20,0 --pin lfoot --pin rfoot "
                                            "--iterations 50 --json");
     REQUIRE_MESSAGE(p.exitCode == 0, p.err);
     const auto jp = nlohmann::json::parse(p.out);
@@ -174,7 +180,8 @@ TEST_CASE("BVH model: learned IK reaches a 20 cm hand target with the feet pinne
     const Clip back = parseBvh("edit.bvh", formatBvh(edited));
     const Clip source = readBvh(path);
     std::string why;
-    CHECK_MESSAGE(sameSkeleton(back.skeleton, source.skeleton, &why), why);  // names, parents, offsets, orders, channels
+    CHECK_MESSAGE(sameSkeleton(back.skeleton, source.skeleton, &why),
+                  why);  // names, parents, offsets, orders, channels
     CHECK(back.convention == source.convention);
     CHECK(back.restFrame == source.restFrame);
     REQUIRE(back.frameCount() == edited.frameCount());
@@ -194,16 +201,18 @@ TEST_CASE("BVH multi-clip: one hierarchy trains one model, another hierarchy fai
     CHECK(j["clips"][1]["name"] == "02_03b");
     CHECK(j["N"] == 2 * j["clips"][0]["frames"].get<int>());
 
-    const test::CliResult x = test::runCli("train " + test::mocap("bvh/02_03.bvh") + " " + test::mocap("bvh/49_04.bvh") +
-                                           " --step 4 --active 10 --iters 1 --out " + dir + "/x.model");
+    const test::CliResult x =
+        test::runCli("train " + test::mocap("bvh/02_03.bvh") + " " + test::mocap("bvh/49_04.bvh") +
+                     " --step 4 --active 10 --iters 1 --out " + dir + "/x.model");
     CHECK(x.exitCode == 2);
     CHECK(std::count(x.err.begin(), x.err.end(), '\n') == 1);
     CHECK(x.err.find("49_04.bvh against") != std::string::npos);
     CHECK(x.err.find("joint ") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir + "/x.model"));
 
-    const test::CliResult y = test::runCli("train " + test::mocap("bvh/02_03.bvh") + " " + test::mocap("asf_amc/02_03.amc") +
-                                           " --step 4 --active 10 --iters 1 --out " + dir + "/y.model");
+    const test::CliResult y =
+        test::runCli("train " + test::mocap("bvh/02_03.bvh") + " " + test::mocap("asf_amc/02_03.amc") +
+                     " --step 4 --active 10 --iters 1 --out " + dir + "/y.model");
     CHECK(y.exitCode == 2);
     CHECK(std::count(y.err.begin(), y.err.end(), '\n') == 1);
 }
@@ -229,9 +238,10 @@ TEST_CASE("BVH model with a 3-D latent space: the constrained IK's ∇F matches 
     ConstrainedIkRequest req;
     req.start = m.clip.frames[200];
     req.startX = latentStartForFrame(*version, 200);
-    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 12, 3), false, 1.0},
-                       {Effector::kLHand, effectorCm(sk, req.start, Effector::kLHand) + Eigen::Vector3d(2, -3, 1), false, 0.9},
-                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
+    req.constraints = {
+        {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 12, 3), false, 1.0},
+        {Effector::kLHand, effectorCm(sk, req.start, Effector::kLHand) + Eigen::Vector3d(2, -3, 1), false, 0.9},
+        {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
     Eigen::VectorXd z = solver.startPoint(req);
     z.head(3).array() += 0.05;
     for (int k = 3; k < z.size(); ++k) z[k] += 0.3 * std::sin(k);

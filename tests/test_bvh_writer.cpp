@@ -31,11 +31,14 @@ double worstEffectorGap(const Clip& a, const Clip& b) {
 TEST_CASE("BVH round trip keeps root and effector positions within 0.01 cm") {
     const std::string dir = test::scratchDir("bvh_writer");
     std::vector<std::string> sources;
-    for (const char* shipped : {"asf_amc/35_01.amc", "asf_amc/10_02.amc", "bvh/02_03.bvh", "bvh/49_04.bvh", "bvh/131_01.bvh"})
+    for (const char* shipped :
+         {"asf_amc/35_01.amc", "asf_amc/10_02.amc", "bvh/02_03.bvh", "bvh/49_04.bvh", "bvh/131_01.bvh"})
         sources.push_back(test::mocap(shipped));
     // ACCAD's Swagger (not CMU, never shipped) when the full folder is here.
-    if (const auto swagger = test::sharedMocap("bvh/Swagger.bvh")) sources.push_back(*swagger);
-    else MESSAGE("Swagger.bvh (../shared/mocap) is absent: the CMU conventions only");
+    if (const auto swagger = test::sharedMocap("bvh/Swagger.bvh"))
+        sources.push_back(*swagger);
+    else
+        MESSAGE("Swagger.bvh (../shared/mocap) is absent: the CMU conventions only");
     for (const std::string& source : sources) {
         CAPTURE(source);
         const Clip clip = loadClip(source);
@@ -72,7 +75,8 @@ TEST_CASE("BVH round trip keeps root and effector positions within 0.01 cm") {
             CHECK(back.cmPerFileUnit == 1.0);
             CHECK_FALSE(back.restFrame);
             CHECK(text.rfind("HIERARCHY\nROOT root\n{\n  OFFSET 0.000000000 0.000000000 0.000000000\n"
-                             "  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation\n", 0) == 0);
+                             "  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation\n",
+                             0) == 0);
         }
     }
 }

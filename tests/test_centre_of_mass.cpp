@@ -21,7 +21,8 @@ TEST_CASE("centre of mass: de Leva's male segment masses sum to the whole body")
     CHECK(sum == doctest::Approx(1.0).epsilon(1e-12));
 }
 
-TEST_CASE("centre of mass: moves with the root, sits at about 55 % of the height on a standing frame, none without legs") {
+TEST_CASE(
+    "centre of mass: moves with the root, sits at about 55 % of the height on a standing frame, none without legs") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     const Skeleton& sk = clip.skeleton;
     const Pose& pose = clip.frames[0];
@@ -49,7 +50,8 @@ TEST_CASE("centre of mass: moves with the root, sits at about 55 % of the height
     CHECK(ratio > 0.50);
     CHECK(ratio < 0.60);
     // Horizontally between the feet, within a foot's length.
-    CHECK(std::abs(com->x() - 0.5 * (effectorCm(sk, fk, Effector::kLFoot).x() + effectorCm(sk, fk, Effector::kRFoot).x())) < 25.0);
+    CHECK(std::abs(com->x() -
+                   0.5 * (effectorCm(sk, fk, Effector::kLFoot).x() + effectorCm(sk, fk, Effector::kRFoot).x())) < 25.0);
     Skeleton noLegs = sk;
     for (Joint& j : noLegs.joints)
         if (j.bone == "lfemur") j.bone = "lthigh_renamed";

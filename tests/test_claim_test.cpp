@@ -72,8 +72,8 @@ TEST_CASE("Wilcoxon signed-rank: zeros are dropped, tied magnitudes share their 
 }
 
 TEST_CASE("claim JSON: per-group tests, the pooled test decides, empty groups are left out") {
-    const nlohmann::json c = claimJson("A beats B", "A - B", {"kick", "run", "none"},
-                                       {{1.0, 2.0, 3.0}, {4.0, 5.0, 6.0}, {}});
+    const nlohmann::json c =
+        claimJson("A beats B", "A - B", {"kick", "run", "none"}, {{1.0, 2.0, 3.0}, {4.0, 5.0, 6.0}, {}});
     CHECK(c["per_group"].size() == 2);
     CHECK(c["per_group"][0]["group"] == "kick");
     CHECK(c["per_group"][0]["test"]["p"].get<double>() == doctest::Approx(0.25));
@@ -111,9 +111,10 @@ TEST_CASE("run jobs: every job once on several workers, and a worker exception r
     std::vector<std::atomic<int>> seen(37);
     forEachJob(37, 2, [&](int j) { ++seen[j]; });
     for (const auto& s : seen) CHECK(s.load() == 1);
-    CHECK_THROWS_AS(forEachJob(5, 2, [](int j) {
-                        if (j == 3) throw std::runtime_error("job 3");
-                    }),
+    CHECK_THROWS_AS(forEachJob(5, 2,
+                               [](int j) {
+                                   if (j == 3) throw std::runtime_error("job 3");
+                               }),
                     std::runtime_error);
 }
 

@@ -14,7 +14,9 @@ using namespace mgp;
 
 TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on request") {
     const std::string dir = test::scratchDir("cli_edit_span");
-    const std::string base = "edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir + "/e.bvh' --json";
+    const std::string base = "edit '" + test::walkModelPath() +
+                             "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir +
+                             "/e.bvh' --json";
     auto r = test::runCli(base);
     REQUIRE(r.exitCode == 0);
     json j = json::parse(r.out);
@@ -24,10 +26,12 @@ TEST_CASE("motiongp edit --json: the span report, span by default, per-frame on 
     CHECK(q["first"] == 89);
     CHECK(q["last"] == 131);
     CHECK(q["worst_key_error_cm"].get<double>() < 0.5);
-    CHECK(q["second_difference_deg"]["p95"].get<double>() <= 1.5 * q["captured_second_difference_deg"]["p95"].get<double>() + 2.0);
+    CHECK(q["second_difference_deg"]["p95"].get<double>() <=
+          1.5 * q["captured_second_difference_deg"]["p95"].get<double>() + 2.0);
     REQUIRE(q["contacts"].size() == 1);
     CHECK(q["contacts"][0]["foot"] == "rfoot");
-    CHECK(std::abs(q["contacts"][0]["travel_cm"].get<double>() - q["contacts"][0]["captured_travel_cm"].get<double>()) <= 1.0);
+    CHECK(std::abs(q["contacts"][0]["travel_cm"].get<double>() -
+                   q["contacts"][0]["captured_travel_cm"].get<double>()) <= 1.0);
     CHECK(j["max_held_residual_cm"].get<double>() < 0.1);
     CHECK(j["reached"] == true);
     REQUIRE(j["keys"].size() == 2);  // the two moved keys
@@ -48,8 +52,9 @@ TEST_CASE("motiongp edit: a key out of reach is reported missed, in the JSON and
     // A right-hand key 150 cm above where the hand is: no arm reaches it with the feet held (the
     // 100-iteration cap keeps the test short; the miss is the same 22 cm at 500).
     const std::string dir = test::scratchDir("cli_edit_missed");
-    const auto r = test::runCli("edit '" + test::walkModelPath() + "' --effector rhand --keys 89,103,117 --offset 0,150,0 --iterations 100 --out '" +
-                                dir + "/e.bvh' --json");
+    const auto r = test::runCli("edit '" + test::walkModelPath() +
+                                "' --effector rhand --keys 89,103,117 --offset 0,150,0 --iterations 100 --out '" + dir +
+                                "/e.bvh' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["reached"] == false);
@@ -64,8 +69,8 @@ TEST_CASE("motiongp edit: a key out of reach is reported missed, in the JSON and
 TEST_CASE("motiongp edit: a foot path pushed below the floor stays on it, and its keys are reported missed") {
     const std::string dir = test::scratchDir("cli_edit_floor");
     const std::string out = dir + "/e.bvh";
-    const auto r = test::runCli("edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,-30,0 --out '" +
-                                out + "' --json");
+    const auto r = test::runCli("edit '" + test::walkModelPath() +
+                                "' --effector lfoot --keys 89,103,117,131 --offset 0,-30,0 --out '" + out + "' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["reached"] == false);
@@ -76,13 +81,15 @@ TEST_CASE("motiongp edit: a foot path pushed below the floor stays on it, and it
     const double floor = *detectFootContacts(version->model->clip).floorCm;
     const Clip written = loadClip(out);
     double lowest = 1e9;
-    for (int t = 88; t <= 130; ++t) lowest = std::min(lowest, effectorCm(written.skeleton, written.frames[t], Effector::kLFoot).y());
+    for (int t = 88; t <= 130; ++t)
+        lowest = std::min(lowest, effectorCm(written.skeleton, written.frames[t], Effector::kLFoot).y());
     MESSAGE("the left foot's lowest point over the span: " << lowest - floor << " cm from the floor");
     CHECK(lowest >= floor - 0.5);
 }
 
 TEST_CASE("motiongp edit: bad --solver and --pin values are one error line") {
-    const std::string base = "edit '" + test::walkModelPath() + "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
+    const std::string base = "edit '" + test::walkModelPath() +
+                             "' --effector lfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
                              test::scratchDir("cli_edit_span_bad") + "/e.bvh'";
     auto r = test::runCli(base + " --solver newton");
     CHECK(r.exitCode == 2);

@@ -18,8 +18,8 @@ const std::string kKickModel = std::string(MOTIONGP_TEST_FIXTURES) + "/kick10_03
 TEST_CASE("motiongp inbetween: gaps of an unseen clip filled, keys and the rest of the clip kept, one report per gap") {
     const std::string dir = test::scratchDir("cli_inbetween");
     const std::string clipPath = test::mocap("asf_amc/10_02.amc");
-    const auto r = test::runCli("inbetween '" + kKickModel + "' --on '" + clipPath + "' --gaps 41:102,201:322 --out '" + dir +
-                                "/f.bvh' --json");
+    const auto r = test::runCli("inbetween '" + kKickModel + "' --on '" + clipPath + "' --gaps 41:102,201:322 --out '" +
+                                dir + "/f.bvh' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["method"] == "prior");
@@ -50,8 +50,10 @@ TEST_CASE("motiongp inbetween: gaps of an unseen clip filled, keys and the rest 
             if (o >= 0) d = std::max(d, (fo.jointCm[o] - fw.jointCm[jt]).norm());
         }
         const bool inner = (t > 40 && t < 101) || (t > 200 && t < 321);
-        if (inner) changed = std::max(changed, d);
-        else worst = std::max(worst, d);
+        if (inner)
+            changed = std::max(changed, d);
+        else
+            worst = std::max(worst, d);
     }
     CHECK(worst < 0.05);
     CHECK(changed > 1.0);  // the gaps were generated, not copied
@@ -64,7 +66,8 @@ TEST_CASE("motiongp inbetween: bad gaps and methods are one clear error line") {
         {" --gaps 41-102", "expected --gaps as key frames A:B counted from 1"},
         {" --gaps 41:42", "expected at least one frame between the keys of a gap A:B (A + 1 < B), found 41:42"},
         {" --gaps 500:700", "expected gaps inside the clip's frames 1..590, found 500:700"},
-        {" --gaps 100:200,150:300", "expected gaps in increasing order that do not overlap, found 150:300 after 100:200"},
+        {" --gaps 100:200,150:300",
+         "expected gaps in increasing order that do not overlap, found 150:300 after 100:200"},
         {" --gaps 0:20", "expected --gaps as key frames A:B counted from 1"},
         {" --gaps 41:102 --method magic", "expected --method prior, retrieve, interpolate or hold, found 'magic'"},
     };
@@ -78,8 +81,8 @@ TEST_CASE("motiongp inbetween: bad gaps and methods are one clear error line") {
         CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     }
     // Another subject's skeleton.
-    const auto r = test::runCli("inbetween '" + kKickModel + "' --on '" + test::mocap("asf_amc/35_01.amc") + "' --gaps 41:102 --out '" +
-                                test::scratchDir("cli_inbetween_bad") + "/g.bvh'");
+    const auto r = test::runCli("inbetween '" + kKickModel + "' --on '" + test::mocap("asf_amc/35_01.amc") +
+                                "' --gaps 41:102 --out '" + test::scratchDir("cli_inbetween_bad") + "/g.bvh'");
     CHECK(r.exitCode == 2);
     CHECK(r.err.find("expected a clip of the model's skeleton") != std::string::npos);
 }

@@ -33,7 +33,8 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
     CHECK((words == "natural" || words == "unusual" || words == "unlike the captured data" || words == "out of reach"));
     CHECK(j["natural"]["admitted"] == (words == "natural" || words == "unusual"));
     CHECK(j["natural"]["nearest_captured_cm"].get<double>() >= 0.0);
-    CHECK(j["natural"]["nearest_captured_limit_cm"].get<double>() >= j["natural"]["nearest_captured_median_cm"].get<double>());
+    CHECK(j["natural"]["nearest_captured_limit_cm"].get<double>() >=
+          j["natural"]["nearest_captured_median_cm"].get<double>());
     CHECK(j["natural"]["nearest_captured_frame"].get<int>() >= 1);
     CHECK(j["natural"]["nearest_captured_clip"] == "35_01");
     // Frame 101 of the walk has a planted foot; it is held unless released.
@@ -48,7 +49,8 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
     for (const auto& c : j["contact_pins"]) CHECK(c != foot);
     r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5@2 --json");
     CHECK(r.exitCode == 2);
-    CHECK(r.err == "motiongp: error: expected --target strength after @ as exact, paper or a number in (0, 1], found '2'\n");
+    CHECK(r.err ==
+          "motiongp: error: expected --target strength after @ as exact, paper or a number in (0, 1], found '2'\n");
     r = test::runCli("pose '" + model + "' --frame 101 --target rhand=0,10,5 --release head --json");
     CHECK(r.exitCode == 2);
     CHECK(r.err == "motiongp: error: expected --release lfoot or rfoot, found 'head'\n");
@@ -57,8 +59,9 @@ TEST_CASE("motiongp pose --json: converged, stop, iterations, strength, natural,
 TEST_CASE("motiongp pose --adaptive refuses an unreachable reach with pinned feet and says why") {
     const std::string model = test::walkModelPath();
     const std::string out = test::scratchDir("pose_adaptive_refused") + "/walk2.model";
-    const auto r = test::runCli("pose '" + model + "' --frame 61 --target rhand=120,120,0 --pin lfoot --pin rfoot --adaptive --out-model '" +
-                                out + "' --json");
+    const auto r = test::runCli(
+        "pose '" + model + "' --frame 61 --target rhand=120,120,0 --pin lfoot --pin rfoot --adaptive --out-model '" +
+        out + "' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["reached"] == false);
@@ -82,11 +85,13 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
     CHECK(b["reached"] == true);
     // The head's distance from where the captured frame has it (the plain solver with no offset
     // keeps the captured pose) shrinks with the term.
-    const json captured = json::parse(test::runCli("pose '" + model + "' --frame 101 --solver plain --target rhand=0,0,0 --json").out);
+    const json captured =
+        json::parse(test::runCli("pose '" + model + "' --frame 101 --solver plain --target rhand=0,0,0 --json").out);
     const auto headMove = [&](const json& j) {
         double s = 0.0;
         for (int i = 0; i < 3; ++i) {
-            const double d = j["positions_cm"]["head"][i].get<double>() - captured["positions_cm"]["head"][i].get<double>();
+            const double d =
+                j["positions_cm"]["head"][i].get<double>() - captured["positions_cm"]["head"][i].get<double>();
             s += d * d;
         }
         return std::sqrt(s);
@@ -105,7 +110,9 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
     CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
 }
 
-TEST_CASE("motiongp pose: a foot target below the floor ends on it and is refused, and --out writes the clip with the pose in place") {
+TEST_CASE(
+    "motiongp pose: a foot target below the floor ends on it and is refused, and --out writes the clip with the pose "
+    "in place") {
     const std::string model = test::walkModelPath();
     const std::string out = test::scratchDir("pose_floor") + "/posed.bvh";
     const auto r = test::runCli("pose '" + model + "' --frame 101 --target lfoot=0,-20,0 --out '" + out + "' --json");
@@ -125,12 +132,14 @@ TEST_CASE("motiongp pose: a foot target below the floor ends on it and is refuse
     const Clip written = loadClip(out);
     const gp::ModelVersionPtr version = test::walkModel35();
     REQUIRE(written.frameCount() == version->model->clip.frameCount());
-    CHECK(effectorCm(written.skeleton, written.frames[100], Effector::kLFoot).y() == doctest::Approx(foot).epsilon(1e-4));
+    CHECK(effectorCm(written.skeleton, written.frames[100], Effector::kLFoot).y() ==
+          doctest::Approx(foot).epsilon(1e-4));
     // The other frames are the capture's (to the BVH file's printed precision).
     const Skeleton& sk = version->model->clip.skeleton;
     for (int f : {0, 99, 101})
         CHECK((effectorCm(written.skeleton, written.frames[f], Effector::kLFoot) -
-               effectorCm(sk, version->model->clip.frames[f], Effector::kLFoot)).norm() < 0.01);
+               effectorCm(sk, version->model->clip.frames[f], Effector::kLFoot))
+                  .norm() < 0.01);
     const auto bad = test::runCli("pose '" + model + "' --frame 101 --target lfoot=0,5,0 --out posed.txt");
     CHECK(bad.exitCode == 2);
     CHECK(bad.err.find("expected --out") != std::string::npos);

@@ -84,7 +84,8 @@ TEST_CASE("motiongp pose: an unreachable target is a result, bad options are err
 TEST_CASE("motiongp pose --adaptive writes a model with one more row") {
     const std::string model = test::walkModelPath();
     const std::string out = test::scratchDir("pose_adaptive") + "/walk2.model";
-    const auto r = test::runCli("pose '" + model + "' --frame 101 --target rfoot=0,5,0 --adaptive --out-model '" + out + "' --json");
+    const auto r = test::runCli("pose '" + model + "' --frame 101 --target rfoot=0,5,0 --adaptive --out-model '" + out +
+                                "' --json");
     REQUIRE(r.exitCode == 0);
     CHECK(json::parse(r.out)["adaptive"]["rows"] == 359);
     CHECK(gp::loadModel(out).N() == 359);
@@ -93,8 +94,8 @@ TEST_CASE("motiongp pose --adaptive writes a model with one more row") {
 TEST_CASE("motiongp edit: the paper's keys, a BVH with every frame, untouched frames unchanged") {
     const std::string model = test::walkModelPath();
     const std::string dir = test::scratchDir("cli_edit");
-    const auto r = test::runCli("edit '" + model + "' --effector rfoot --keys 89,103,117,131 --offset 0,20,0 --out '" + dir +
-                                "/edited.bvh' --adaptive --out-model '" + dir + "/adapted.model' --json");
+    const auto r = test::runCli("edit '" + model + "' --effector rfoot --keys 89,103,117,131 --offset 0,20,0 --out '" +
+                                dir + "/edited.bvh' --adaptive --out-model '" + dir + "/adapted.model' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["frames_solved"] == 41);
@@ -109,9 +110,13 @@ TEST_CASE("motiongp edit: the paper's keys, a BVH with every frame, untouched fr
     for (int t = 0; t < source.frameCount(); ++t) {
         forwardKinematics(edited.skeleton, edited.frames[t], a);
         forwardKinematics(source.skeleton, source.frames[t], b);
-        const double gap = (effectorCm(edited.skeleton, a, Effector::kRFoot) - effectorCm(source.skeleton, b, Effector::kRFoot)).norm();
-        if (t > 88 && t < 130) moved = std::max(moved, gap);
-        else untouched = std::max(untouched, gap);
+        const double gap =
+            (effectorCm(edited.skeleton, a, Effector::kRFoot) - effectorCm(source.skeleton, b, Effector::kRFoot))
+                .norm();
+        if (t > 88 && t < 130)
+            moved = std::max(moved, gap);
+        else
+            untouched = std::max(untouched, gap);
     }
     CHECK(untouched < 1e-6);
     CHECK(moved > 15.0);

@@ -41,20 +41,12 @@ TEST_CASE("pose matrix columns follow the docs/maths.md §2.1 order") {
 
 TEST_CASE("unwrapping removes jumps larger than 180 degrees, for that frame and all later ones (docs/maths.md §2.5)") {
     Eigen::MatrixXd a(6, 2);
-    a << 170, 0,
-        179, -10,
-        -178, 350,   // +3° across the seam; second column jumps by +360 → -10
-        -170, 355,
-        175, -5,     // -15° across the seam
+    a << 170, 0, 179, -10, -178, 350,  // +3° across the seam; second column jumps by +360 → -10
+        -170, 355, 175, -5,            // -15° across the seam
         -180, 0;
     unwrapAngles(a);
     Eigen::MatrixXd want(6, 2);
-    want << 170, 0,
-        179, -10,
-        182, -10,
-        190, -5,
-        175, -5,
-        180, 0;
+    want << 170, 0, 179, -10, 182, -10, 190, -5, 175, -5, 180, 0;
     CHECK(a.isApprox(want, 1e-12));
     // Small changes are left alone, and values outside ±180 stay where they are.
     Eigen::MatrixXd b(3, 1);
@@ -66,10 +58,7 @@ TEST_CASE("unwrapping removes jumps larger than 180 degrees, for that frame and 
 
 TEST_CASE("constant-column test uses the population std with tolerance 1e-6 degrees") {
     Eigen::MatrixXd y(4, 3);
-    y << 1, 5, 0,
-        2, 5, 1e-14,
-        3, 5, -1e-14,
-        4, 5, 0;
+    y << 1, 5, 0, 2, 5, 1e-14, 3, 5, -1e-14, 4, 5, 0;
     CHECK(constantColumns(y) == std::vector<int>{1, 2});
     y(0, 1) = 5.00001;  // std ≈ 4.3e-6 > 1e-6
     CHECK(constantColumns(y) == std::vector<int>{2});
@@ -84,7 +73,8 @@ TEST_CASE("unwrapClip writes the unwrapped angles back without moving any joint"
     unwrapClip(clip);
     const Eigen::MatrixXd y = poseMatrix(clip);
     const PoseLayout layout(clip.skeleton);
-    for (int t = 0; t < clip.frameCount(); t += 17) CHECK((layout.extract(clip.frames[t]) - y.row(t).transpose()).norm() == 0.0);
+    for (int t = 0; t < clip.frameCount(); t += 17)
+        CHECK((layout.extract(clip.frames[t]) - y.row(t).transpose()).norm() == 0.0);
     CHECK(std::abs(clip.frames[250].anglesDeg[root].y() - before.frames[250].anglesDeg[root].y() + 360.0) < 1e-9);
     FkState a, b;
     forwardKinematics(clip.skeleton, clip.frames[250], a);

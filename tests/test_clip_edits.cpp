@@ -59,7 +59,7 @@ TEST_CASE("clip edits: contacts are detected on reset and switched one by one") 
     CHECK(store.contacts().contacts[0].enabled);
     CHECK(store.setContactEnabled(0, false));
     CHECK_FALSE(store.contacts().contacts[0].enabled);
-    CHECK_FALSE(store.setContactEnabled(0, false));  // no change
+    CHECK_FALSE(store.setContactEnabled(0, false));                                // no change
     CHECK_FALSE(store.setContactEnabled(store.contacts().contacts.size(), true));  // no such contact
     store.reset(loadClip(test::mocap("asf_amc/35_01.amc")), false);
     CHECK(store.contacts().contacts[0].enabled);

@@ -37,8 +37,8 @@ TEST_CASE("sameCapture: each difference is found and named") {
     Clip moved = walk;
     moved.frames[11].anglesDeg[layout.joint(dof)][layout.axis(dof)] += 1e-3;
     CHECK_FALSE(sameCapture(walk, moved, &why));
-    CHECK(why == std::string("frame 12, ") + asfPoseDofTable()[dof].bone + " r" + "xyz"[layout.axis(dof)] +
-                     ": 0.001° apart");
+    CHECK(why ==
+          std::string("frame 12, ") + asfPoseDofTable()[dof].bone + " r" + "xyz"[layout.axis(dof)] + ": 0.001° apart");
 
     // A bone outside the pose vector (toes, fingers) does not count: the model keeps none.
     const int toes = walk.skeleton.findJoint("ltoes");

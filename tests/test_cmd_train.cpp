@@ -30,7 +30,8 @@ const std::string kMocap = MOTIONGP_TEST_MOCAP;
 TEST_CASE("cmd train: --json contract and deterministic model files") {
     const std::string dir = mgp::test::scratchDir("cmd_train");
     std::filesystem::create_directories(dir);
-    const std::string args = kMocap + "/asf_amc/16_35.amc --frames 11:130 --step 3 --active 25 --iters 2 --scg-iters 20 --json";
+    const std::string args =
+        kMocap + "/asf_amc/16_35.amc --frames 11:130 --step 3 --active 25 --iters 2 --scg-iters 20 --json";
     const Run a = run("train " + args + " --out " + dir + "/a.json");
     REQUIRE(a.status == 0);
     const auto j = nlohmann::json::parse(a.out);
@@ -53,7 +54,9 @@ TEST_CASE("cmd train: --json contract and deterministic model files") {
     REQUIRE(b.status == 0);
     CHECK(mgp::test::readText(dir + "/a.json") == mgp::test::readText(dir + "/b.json"));
 
-    const Run s = run("train " + kMocap + "/asf_amc/16_35.amc --model sgplvm --step 6 --active 10 --iters 1 --scg-iters 5 --json --out " + dir + "/s.json");
+    const Run s = run("train " + kMocap +
+                      "/asf_amc/16_35.amc --model sgplvm --step 6 --active 10 --iters 1 --scg-iters 5 --json --out " +
+                      dir + "/s.json");
     REQUIRE(s.status == 0);
     const auto js = nlohmann::json::parse(s.out);
     CHECK(js["model"] == "sgplvm");
@@ -68,7 +71,8 @@ TEST_CASE("cmd train: --json contract and deterministic model files") {
 TEST_CASE("cmd train: an AMC with a BVH and bad values give clear errors and a non-zero exit") {
     const std::string dir = mgp::test::scratchDir("cmd_train");
     std::filesystem::create_directories(dir);
-    const Run mixed = run("train " + kMocap + "/asf_amc/02_03.amc " + kMocap + "/bvh/02_03.bvh --out " + dir + "/x.json");
+    const Run mixed =
+        run("train " + kMocap + "/asf_amc/02_03.amc " + kMocap + "/bvh/02_03.bvh --out " + dir + "/x.json");
     CHECK(mixed.status != 0);
     CHECK(mixed.err.find("expected clips of one skeleton (retargeting is not supported)") != std::string::npos);
     CHECK(!std::filesystem::exists(dir + "/x.json"));

@@ -80,7 +80,8 @@ void checkConvergesWithin50AtTheLongSolvesMinimum(ConstrainedIkSolver& solver, C
     req.maxIterations = 500;
     const ConstrainedIkResult full = solver.solve(req);
     MESSAGE("at 50: " << std::string(ikStopName(at50.stop)) << " in " << at50.iterations << ", F " << at50.objective
-                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F " << full.objective);
+                      << "; at 500: " << std::string(ikStopName(full.stop)) << " in " << full.iterations << ", F "
+                      << full.objective);
     CHECK(at50.converged);
     CHECK(at50.iterations <= 50);
     CHECK(at50.reached);
@@ -90,9 +91,10 @@ void checkConvergesWithin50AtTheLongSolvesMinimum(ConstrainedIkSolver& solver, C
 }
 }  // namespace
 
-TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose: pins always hold, targets met to 0.05 cm") {
+TEST_CASE(
+    "constrained IK: 20–50 cm hand and foot moves from the captured pose: pins always hold, targets met to 0.05 cm") {
     // Right-handed world, Y up. Moves an animator makes: reach up/forward/out, lift and step a foot.
-    const std::vector<Move> moves = {{Effector::kRHand, {0, 20, 0}},  {Effector::kRHand, {0, 0, 30}},
+    const std::vector<Move> moves = {{Effector::kRHand, {0, 20, 0}},   {Effector::kRHand, {0, 0, 30}},
                                      {Effector::kLHand, {-25, 15, 0}}, {Effector::kRHand, {10, 35, 20}},
                                      {Effector::kRFoot, {0, 20, 0}},   {Effector::kLFoot, {0, 25, 25}},
                                      {Effector::kRFoot, {0, 30, 40}}};
@@ -129,7 +131,8 @@ TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose
                 MESSAGE(file << " frame " << frame + 1 << " " << std::string(effectorName(mv.effector)) << " "
                              << mv.offset.transpose() << ": at 50 " << std::string(ikStopName(at50.stop)) << ", target "
                              << at50.constraints[0].residualCm << " cm; " << std::string(ikStopName(res.stop)) << " in "
-                             << res.iterations << ", target " << res.constraints[0].residualCm << " cm, L_IK " << res.lik);
+                             << res.iterations << ", target " << res.constraints[0].residualCm << " cm, L_IK "
+                             << res.lik);
                 converged300 += res.converged;
                 reached300 += res.reached;
                 for (const auto& c : res.constraints)
@@ -141,13 +144,16 @@ TEST_CASE("constrained IK: 20–50 cm hand and foot moves from the captured pose
     // fixture): 8 converged and 41 reached at 50, 40 converged and 41 reached at 300 (16_01 frame
     // 41, lhand −25,15,0 stays 0.13 cm short). These floors catch regressions; they are not the goal.
     MESSAGE("at 50 iterations: " << convergedAt50 << "/" << solves << " converged, " << reachedAt50 << "/" << solves
-                                 << " reached to 0.05 cm; at 300: " << converged300 << " converged, " << reached300 << " reached");
+                                 << " reached to 0.05 cm; at 300: " << converged300 << " converged, " << reached300
+                                 << " reached");
     CHECK(reachedAt50 >= solves - 1);
     CHECK(converged300 >= solves - 3);
     CHECK(reached300 >= solves - 1);
 }
 
-TEST_CASE("constrained IK: a cold start that crawls converges within 50 iterations, at the minimum a 500-iteration solve finds") {
+TEST_CASE(
+    "constrained IK: a cold start that crawls converges within 50 iterations, at the minimum a 500-iteration solve "
+    "finds") {
     // 35_01 fixture, frame 150, left hand moved (−30, 0, 30) cm, the feet in ground contact held
     // as pins (what `motiongp pose` does). Without the crawl rules of docs/maths-ik.md §3 (the
     // shift bracketed, the latent trust radius) this move stops at the cap with F 2473.72 and
@@ -170,14 +176,16 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
         ConstrainedIkRequest req = captured(*version, 60, 200);
         FkState fk;
         forwardKinematics(sk, req.start, fk);
-        req.constraints = {{Effector::kRHand, effectorCm(sk, fk, Effector::kRHand) + Eigen::Vector3d(120, 120, 0), false},
-                           {Effector::kLFoot, effectorCm(sk, fk, Effector::kLFoot), true},
-                           {Effector::kRFoot, effectorCm(sk, fk, Effector::kRFoot), true}};
+        req.constraints = {
+            {Effector::kRHand, effectorCm(sk, fk, Effector::kRHand) + Eigen::Vector3d(120, 120, 0), false},
+            {Effector::kLFoot, effectorCm(sk, fk, Effector::kLFoot), true},
+            {Effector::kRFoot, effectorCm(sk, fk, Effector::kRFoot), true}};
         const ConstrainedIkResult res = solver.solve(req);
-        MESSAGE(file << ": " << std::string(ikStopName(res.stop)) << " after " << res.iterations << ", hand " << res.constraints[0].residualCm
-                     << " cm, feet " << res.constraints[1].residualCm << ", " << res.constraints[2].residualCm << " cm, L_IK "
-                     << res.lik << " (limit " << version->range.likLimit << "), σ² " << res.sigma2 << " (limit "
-                     << version->range.sigma2Limit << ")");
+        MESSAGE(file << ": " << std::string(ikStopName(res.stop)) << " after " << res.iterations << ", hand "
+                     << res.constraints[0].residualCm << " cm, feet " << res.constraints[1].residualCm << ", "
+                     << res.constraints[2].residualCm << " cm, L_IK " << res.lik << " (limit "
+                     << version->range.likLimit << "), σ² " << res.sigma2 << " (limit " << version->range.sigma2Limit
+                     << ")");
         CHECK_FALSE(res.reached);
         CHECK_FALSE(res.constraints[0].reached);
         CHECK(res.constraints[0].residualCm > 1.0);
@@ -203,7 +211,9 @@ TEST_CASE("constrained IK: an unreachable hand target with both feet pinned keep
     }
 }
 
-TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, reached:false, refused, and a free foot stays above it") {
+TEST_CASE(
+    "constrained IK: the floor: a foot target 20 cm below it ends on it, reached:false, refused, and a free foot stays "
+    "above it") {
     for (const std::string file : {"35_01.amc", "10_03.amc"}) {
         CAPTURE(file);
         const auto version = file == "35_01.amc" ? test::walkModel35() : heldOutModel(file);
@@ -234,9 +244,8 @@ TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, r
         CHECK(res.constraints[0].residualCm == doctest::Approx((got - asked).norm()));
         CHECK(res.constraints[0].residualCm >= 19.5);
         CHECK(res.constraints[1].residualCm <= 0.05);
-        const AdmissionVerdict verdict =
-            admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached, anyBelowFloor(res.constraints),
-                          res.sigma2, res.lik);
+        const AdmissionVerdict verdict = admitPose(*version, res.pose, movedEffectors(res.constraints), res.reached,
+                                                   anyBelowFloor(res.constraints), res.sigma2, res.lik);
         CHECK_FALSE(verdict.admitted);
         CHECK(verdict.judgement == PoseJudgement::kThroughFloor);
         CHECK(verdict.reason == "a target is below the floor: the effector was held on it");
@@ -251,8 +260,9 @@ TEST_CASE("constrained IK: the floor: a foot target 20 cm below it ends on it, r
         ConstrainedIkRequest lift = captured(*version, 60, 200);
         const double raised = effectorCm(sk, lift.start, Effector::kLFoot).y() + 3.0;
         lift.floorCm = raised;
-        lift.constraints = {{Effector::kRHand, effectorCm(sk, lift.start, Effector::kRHand) + Eigen::Vector3d(0, 10, 0), false},
-                            {Effector::kRFoot, effectorCm(sk, lift.start, Effector::kRFoot), true}};
+        lift.constraints = {
+            {Effector::kRHand, effectorCm(sk, lift.start, Effector::kRHand) + Eigen::Vector3d(0, 10, 0), false},
+            {Effector::kRFoot, effectorCm(sk, lift.start, Effector::kRFoot), true}};
         const ConstrainedIkResult lifted = solver.solve(lift);
         const double freeFoot = effectorCm(sk, lifted.pose, Effector::kLFoot).y();
         MESSAGE(file << ": a free foot 3 cm below a raised floor ends " << freeFoot - raised << " cm from it");
@@ -286,7 +296,8 @@ TEST_CASE("constrained IK: pins hold to 1e-4 cm through a 200-event hand drag, e
         worstPin = std::max({worstPin, res.constraints[1].residualCm, res.constraints[2].residualCm});
         worstStep = std::max(worstStep, (res.y - yPrev).cwiseAbs().maxCoeff());
     }
-    MESSAGE("converged " << converged << "/200, worst pin " << worstPin << " cm, largest DOF step " << worstStep << "°");
+    MESSAGE("converged " << converged << "/200, worst pin " << worstPin << " cm, largest DOF step " << worstStep
+                         << "°");
     CHECK(converged >= 190);
     CHECK(worstPin <= 1e-4);
     CHECK(worstStep < 5.0);  // no branch jump for a 0.27 cm step
@@ -307,7 +318,9 @@ TEST_CASE("constrained IK: re-fitting each trial's latent point lets long cold s
     }
 }
 
-TEST_CASE("constrained IK: a crawling solve's trust radius on angles and its faster μ decrease keep a slow cold start within 50") {
+TEST_CASE(
+    "constrained IK: a crawling solve's trust radius on angles and its faster μ decrease keep a slow cold start within "
+    "50") {
     // Held-out kick fixture, frame 150, left hand raised 40 cm and moved 10 cm, the feet in contact
     // held. Twice in this solve a long bounded step is rejected at μ ≈ 10⁻¹⁰ and Nielsen's ladder
     // needs several trials before μ shortens it, then lowers μ by ⅓ per step for as many again.
@@ -361,7 +374,8 @@ TEST_CASE("constrained IK: a trial rejected only for leaving the pins is retried
     }
 }
 
-TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, shifted, once Gauss–Newton overpredicts") {
+TEST_CASE(
+    "constrained IK: a crawling solve keeps an indefinite Newton model, shifted, once Gauss–Newton overpredicts") {
     // 35_01 walk, frame 30, left foot moved (−45, −5, 0) cm; 10_03 kick, frame 60, left foot moved
     // (−25, 0, −25) cm; the other foot free. Without the rule the indefinite Newton model fell
     // back to Gauss–Newton, whose steps lowered F by a quarter to a half of what it promised (on
@@ -373,18 +387,22 @@ TEST_CASE("constrained IK: a crawling solve keeps an indefinite Newton model, sh
     for (const FixtureMove& c : cases) {
         CAPTURE(c.version->model->clip.name);
         ConstrainedIkSolver solver(c.version);
-        checkConvergesWithin50AtTheLongSolvesMinimum(solver, priorOnly(poseMove(*c.version, c.frame, c.move.effector, c.move.offset)));
+        checkConvergesWithin50AtTheLongSolvesMinimum(
+            solver, priorOnly(poseMove(*c.version, c.frame, c.move.effector, c.move.offset)));
     }
 }
 
-TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below the fixed bound when it cut a rejected step") {
+TEST_CASE(
+    "constrained IK: a crawling solve's latent trust radius shrinks below the fixed bound when it cut a rejected "
+    "step") {
     // 10_03 kick, frames 310 and 220, left foot moved (0, 0, −30) and (−30, 0, 0) cm, the right
     // foot pinned. Latent steps cut to the fixed bound (half the RBF length scale) were rejected
     // at negative gain ratios, and the identical retries failed until Nielsen's ladder had raised
     // μ from 10⁻¹²–10⁻⁹: they stopped at the cap and converged after 114 and 57 steps. With the
     // radius halved below the bound (docs/maths-ik.md §3 step 6) they converge in 38 and 40.
     const auto kick = test::kickModel1003();
-    const FixtureMove cases[] = {{kick, 309, {Effector::kLFoot, {0, 0, -30}}}, {kick, 219, {Effector::kLFoot, {-30, 0, 0}}}};
+    const FixtureMove cases[] = {{kick, 309, {Effector::kLFoot, {0, 0, -30}}},
+                                 {kick, 219, {Effector::kLFoot, {-30, 0, 0}}}};
     ConstrainedIkSolver solver(kick);
     for (const FixtureMove& c : cases) {
         CAPTURE(c.frame);
@@ -394,7 +412,9 @@ TEST_CASE("constrained IK: a crawling solve's latent trust radius shrinks below 
     }
 }
 
-TEST_CASE("constrained IK: a crawling solve's full-length step rejected on its merit sets the angle trust radius to half its length") {
+TEST_CASE(
+    "constrained IK: a crawling solve's full-length step rejected on its merit sets the angle trust radius to half its "
+    "length") {
     // 10_03 kick, frame 281, right foot moved (50, 0, 0) cm, and frame 356, left hand moved
     // (0, −35, 0) cm, the one foot in contact pinned. Full-length steps that neither bound had cut
     // were rejected, and the retries at μ ≈ 10⁻¹² were about the same step: the first move retried
@@ -404,7 +424,8 @@ TEST_CASE("constrained IK: a crawling solve's full-length step rejected on its m
     // half the rejected step's largest angle change (docs/maths-ik.md §3 step 6) they converge in
     // 40 and 41.
     const auto kick = test::kickModel1003();
-    const FixtureMove cases[] = {{kick, 280, {Effector::kRFoot, {50, 0, 0}}}, {kick, 355, {Effector::kLHand, {0, -35, 0}}}};
+    const FixtureMove cases[] = {{kick, 280, {Effector::kRFoot, {50, 0, 0}}},
+                                 {kick, 355, {Effector::kLHand, {0, -35, 0}}}};
     ConstrainedIkSolver solver(kick);
     for (const FixtureMove& c : cases) {
         CAPTURE(c.frame);
@@ -487,8 +508,9 @@ TEST_CASE("training range: the 99th percentiles of the captured frames scored as
     gp::PointWorkspace ws;
     int inSampleBelowMedian = 0;
     for (int i = 0; i < version->model->N(); ++i)
-        inSampleBelowMedian += version->posterior->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(),
-                                                        ws, nullptr, nullptr) < r.likMedian;
+        inSampleBelowMedian +=
+            version->posterior->evaluate(version->model->X.row(i).transpose(), version->model->Y.row(i).transpose(), ws,
+                                         nullptr, nullptr) < r.likMedian;
     CHECK(inSampleBelowMedian >= version->model->N() * 8 / 10);
     // A window of 0 frames hides only the row itself, so the scores fall as the window shrinks.
     std::vector<double> s2Own, likOwn;
@@ -507,7 +529,8 @@ TEST_CASE("point model: predicting while holding out active points equals a mode
     std::vector<int> kept;
     for (int j = 0; j < XI.rows(); ++j)
         if (std::find(heldOut.begin(), heldOut.end(), j) == heldOut.end()) kept.push_back(j);
-    Eigen::MatrixXd XK(static_cast<Eigen::Index>(kept.size()), XI.cols()), YK(static_cast<Eigen::Index>(kept.size()), Yhat.cols());
+    Eigen::MatrixXd XK(static_cast<Eigen::Index>(kept.size()), XI.cols()),
+        YK(static_cast<Eigen::Index>(kept.size()), Yhat.cols());
     for (std::size_t r = 0; r < kept.size(); ++r) {
         XK.row(static_cast<Eigen::Index>(r)) = XI.row(kept[r]);
         YK.row(static_cast<Eigen::Index>(r)) = Yhat.row(kept[r]);

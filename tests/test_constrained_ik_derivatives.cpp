@@ -1,9 +1,9 @@
 // Derivatives the constrained learned IK relies on, each against central differences: the GP
 // mean's Jacobian ∂f/∂x, the variance gradient ∂σ²/∂x (ActiveSetPosterior::meanVarianceJacobians), the
 // gradient of the solver's objective F over (x, y) (targets of several strengths, the root
-// stiffness, the locality term and the floor's one-sided penalty), the prior's part of its Hessian model (exact), and the
-// contracted second derivative of FK (core/skeleton/forward_kinematics.h). Also the locality
-// weights and what the term does to a hand raise.
+// stiffness, the locality term and the floor's one-sided penalty), the prior's part of its Hessian model (exact), and
+// the contracted second derivative of FK (core/skeleton/forward_kinematics.h). Also the locality weights and what the
+// term does to a hand raise.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,8 +29,9 @@ TEST_CASE("∂f/∂x and ∂σ²/∂x match central differences (training point,
     const gp::ActiveSetPosterior& pm = *version->posterior;
     const gp::GpModel& m = *version->model;
     const Eigen::VectorXd y = m.Y.row(17).transpose();
-    for (const Eigen::VectorXd& x : {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
-                                     Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
+    for (const Eigen::VectorXd& x :
+         {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
+          Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
         CAPTURE(x.transpose());
         gp::PointWorkspace ws;
         pm.evaluate(x, y, ws, nullptr, nullptr);
@@ -69,9 +70,10 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
     const Skeleton& sk = m.clip.skeleton;
     ConstrainedIkSolver solver(version);
     ConstrainedIkRequest req = requestAt(*version, 100);
-    req.constraints = {{Effector::kRFoot, effectorCm(sk, req.start, Effector::kRFoot) + Eigen::Vector3d(3, 12, -4), false, 1.0},
-                       {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
-                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
+    req.constraints = {
+        {Effector::kRFoot, effectorCm(sk, req.start, Effector::kRFoot) + Eigen::Vector3d(3, 12, -4), false, 1.0},
+        {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
+        {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
     req.rootReferenceDeg = Eigen::Vector3d(1.0, -2.0, 3.0);
     // The locality term, against a reference that is not the start (a drag's later events).
     req.locality = 0.3;
@@ -86,8 +88,8 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
         solver.objective(request, z, &g);
         double worst = 0.0;
         for (int i = 0; i < z.size(); ++i) {
-            const double numeric =
-                test::centralDifference([&](const Eigen::VectorXd& v) { return solver.objective(request, v, nullptr); }, z, i);
+            const double numeric = test::centralDifference(
+                [&](const Eigen::VectorXd& v) { return solver.objective(request, v, nullptr); }, z, i);
             worst = std::max(worst, std::abs(numeric - g[i]));
         }
         MESSAGE(name << ": max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff());
@@ -110,7 +112,8 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
         Eigen::VectorXd full = layout.extract(atZ);
         for (int k = 0; k < m.D(); ++k) full[m.keptColumns[k]] = z[d + k];
         layout.apply(full.data(), atZ);
-        floored.floorCm = std::min(effectorCm(sk, atZ, Effector::kLFoot).y(), effectorCm(sk, atZ, Effector::kRFoot).y()) + 1.0;
+        floored.floorCm =
+            std::min(effectorCm(sk, atZ, Effector::kLFoot).y(), effectorCm(sk, atZ, Effector::kRFoot).y()) + 1.0;
     }
     REQUIRE(solver.objective(floored, z, nullptr) > solver.objective(free, z, nullptr) + 1e3);
     checkGradient("∇F with a foot below the floor", floored);
@@ -130,10 +133,12 @@ TEST_CASE("constrained IK: ∇F and the prior's Hessian match central difference
     // Block by block, each against its own largest entry: the x–x block is orders of magnitude
     // larger than the y–y block, so one bound on the whole matrix would not see an error in y–y.
     const int D = static_cast<int>(z.size()) - d;
-    const auto checkBlock = [&](const std::string& name, Eigen::Index r, Eigen::Index c, Eigen::Index rows, Eigen::Index cols) {
+    const auto checkBlock = [&](const std::string& name, Eigen::Index r, Eigen::Index c, Eigen::Index rows,
+                                Eigen::Index cols) {
         const double scale = Hf.block(r, c, rows, cols).cwiseAbs().maxCoeff();
         const double err = (numericH.block(r, c, rows, cols) - Hf.block(r, c, rows, cols)).cwiseAbs().maxCoeff();
-        MESSAGE("∇²(L_IK + root + locality), " << name << " block: max abs error " << err << " against its max |H| " << scale);
+        MESSAGE("∇²(L_IK + root + locality), " << name << " block: max abs error " << err << " against its max |H| "
+                                               << scale);
         CHECK(scale > 0.0);
         CHECK(err < 1e-6 * scale);
     };
@@ -187,11 +192,13 @@ TEST_CASE("∂²L_IK/∂x² matches central differences of the exact ∇ₓL_IK 
     const gp::GpModel& m = *version->model;
     // The FAS model, and an SGPLVM posterior on the same active points (RBF part only).
     const Eigen::VectorXd rbfParams = m.kernel().logParams().head(gp::paramCount(gp::KernelKind::kSgplvm));
-    const gp::ActiveSetPosterior sgplvm(gp::Kernel(gp::KernelKind::kSgplvm, rbfParams), m.activeX(), m.activeYhat(), m.mu, m.w);
+    const gp::ActiveSetPosterior sgplvm(gp::Kernel(gp::KernelKind::kSgplvm, rbfParams), m.activeX(), m.activeYhat(),
+                                        m.mu, m.w);
     for (const gp::ActiveSetPosterior* pm : {version->posterior.get(), &sgplvm}) {
         const Eigen::VectorXd y = m.Y.row(17).transpose() + Eigen::VectorXd::Constant(m.D(), 2.0);
-        for (const Eigen::VectorXd& x : {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
-                                         Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
+        for (const Eigen::VectorXd& x :
+             {Eigen::VectorXd(m.X.row(17).transpose()), Eigen::VectorXd(m.X.row(3).transpose() * 1.7),
+              Eigen::VectorXd(Eigen::Vector2d(2e-3, -1e-3))}) {
             CAPTURE(x.transpose());
             CAPTURE(pm->kernel().hasEta());
             gp::PointWorkspace ws;
@@ -255,9 +262,10 @@ TEST_CASE("locality: a hand target moves the head less the stiffer the body is")
     const Skeleton& sk = m.clip.skeleton;
     ConstrainedIkSolver solver(version);
     ConstrainedIkRequest req = requestAt(*version, 100);
-    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 20, 0), false, 1.0},
-                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true},
-                       {Effector::kRFoot, effectorCm(sk, req.start, Effector::kRFoot), true}};
+    req.constraints = {
+        {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 20, 0), false, 1.0},
+        {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true},
+        {Effector::kRFoot, effectorCm(sk, req.start, Effector::kRFoot), true}};
     req.maxIterations = 500;
     const Eigen::Vector3d head0 = effectorCm(sk, req.start, Effector::kHead);
     const Eigen::Vector3d lhand0 = effectorCm(sk, req.start, Effector::kLHand);

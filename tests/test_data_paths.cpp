@@ -20,8 +20,10 @@ TEST_CASE("mocap folder search order: --data, then $MOTIONGP_DATA, then the comp
     ::setenv("MOTIONGP_DATA", other.c_str(), 1);
     CHECK(findMocapFolder("", "").value() == other);
     ::unsetenv("MOTIONGP_DATA");
-    if (!shared.empty()) CHECK(findMocapFolder("", "").value() == shared);
-    else CHECK_FALSE(findMocapFolder("", "").has_value());
+    if (!shared.empty())
+        CHECK(findMocapFolder("", "").value() == shared);
+    else
+        CHECK_FALSE(findMocapFolder("", "").has_value());
     CHECK(defaultClipIn(test::mocap("")).value().find("10_02.amc") != std::string::npos);
     CHECK_FALSE(defaultClipIn(other).has_value());
 }

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "edit/editor_document.h"
-#include "motion/motion_quality.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
 #include "motion/drag_falloff.h"
 #include "motion/foot_contacts.h"
+#include "motion/motion_quality.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -17,13 +17,17 @@ using namespace mgp;
 
 namespace {
 // Largest wrapped DOF change between frames s and s + 1.
-double jumpDeg(const std::vector<Pose>& f, const Skeleton& sk, int s) { return largestAngleChangeDeg(f[s + 1], f[s], sk); }
+double jumpDeg(const std::vector<Pose>& f, const Skeleton& sk, int s) {
+    return largestAngleChangeDeg(f[s + 1], f[s], sk);
+}
 
 // The pose a drag of `effector` on frame t to `target` ends in, solved as the editor solves it:
 // the constrained learned IK from the captured frame, planted feet pinned.
-ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector effector, const Eigen::Vector3d& target) {
+ConstrainedIkResult dragPose(const gp::ModelVersionPtr& version, int t, Effector effector,
+                             const Eigen::Vector3d& target) {
     ConstrainedIkSolver solver(version);
-    return solver.solve(capturedPoseRequest(*version, t, {{effector, target, false}}, detectFootContacts(version->model->clip), 200));
+    return solver.solve(
+        capturedPoseRequest(*version, t, {{effector, target, false}}, detectFootContacts(version->model->clip), 200));
 }
 
 // A document on `version` whose drags spread over ±20 frames, the adaptive update off.
@@ -49,7 +53,8 @@ TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames
     const Clip& clip = version->model->clip;
     const int t = 109;
     CHECK(defaultFalloffRadius(120.0) == 30);
-    const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[t], Effector::kLFoot) + Eigen::Vector3d(0, 15, 0);
+    const Eigen::Vector3d target =
+        effectorCm(clip.skeleton, clip.frames[t], Effector::kLFoot) + Eigen::Vector3d(0, 15, 0);
     const ConstrainedIkResult drag = dragPose(version, t, Effector::kLFoot, target);
     REQUIRE(drag.reached);
     std::string problem;
@@ -65,8 +70,9 @@ TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames
     CHECK(job.quality.worstKeyErrorCm < 0.5);
     // The neighbours join the held frame smoothly: the span's second differences within the motion
     // bars (p95 ≤ 1.5 × capture + 2°, max ≤ 1.5 × capture + 5°).
-    MESSAGE("held-frame falloff: second difference p95 " << job.quality.edited.p95Deg << "° (captured " << job.quality.captured.p95Deg
-            << "°), max " << job.quality.edited.maxDeg << "° (captured " << job.quality.captured.maxDeg << "°) at frame "
+    MESSAGE("held-frame falloff: second difference p95 "
+            << job.quality.edited.p95Deg << "° (captured " << job.quality.captured.p95Deg << "°), max "
+            << job.quality.edited.maxDeg << "° (captured " << job.quality.captured.maxDeg << "°) at frame "
             << job.quality.edited.maxFrame + 1);
     CHECK(job.quality.edited.p95Deg <= 1.5 * job.quality.captured.p95Deg + 2.0);
     CHECK(job.quality.edited.maxDeg <= 1.5 * job.quality.captured.maxDeg + 5.0);
@@ -76,7 +82,8 @@ TEST_CASE("a drag of the left foot up 15 cm on frame 110 spread over ±30 frames
     CHECK(around.maxDeg <= 1.5 * capturedAround.maxDeg + 5.0);
     // The foot's displacement falls off: half-way out it is between zero and the full 15 cm.
     const double half = (effectorCm(clip.skeleton, job.frames[t + 15], Effector::kLFoot) -
-                         effectorCm(clip.skeleton, clip.frames[t + 15], Effector::kLFoot)).norm();
+                         effectorCm(clip.skeleton, clip.frames[t + 15], Effector::kLFoot))
+                            .norm();
     CHECK(half > 2.0);
     CHECK(half < 15.0);
     // Edges: frame-to-frame jumps no larger than the capture's + 2°.
@@ -111,7 +118,6 @@ TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     CHECK(j.keyFrames == std::vector<int>{0, 5, 35});
 }
 
-
 TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is one undo step") {
     EditorDocument doc;
     const auto version = test::walkModel35();
@@ -121,7 +127,8 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     doc.setFrame(109);
     REQUIRE(doc.beginDrag(Effector::kLFoot).empty());
     const Clip& clip = version->model->clip;
-    const Eigen::Vector3d target = effectorCm(clip.skeleton, clip.frames[109], Effector::kLFoot) + Eigen::Vector3d(0, 10, 0);
+    const Eigen::Vector3d target =
+        effectorCm(clip.skeleton, clip.frames[109], Effector::kLFoot) + Eigen::Vector3d(0, 10, 0);
     doc.dragTo(target, 200);
     REQUIRE(doc.endDrag());
     const Pose released = doc.currentPose();  // what the user saw on release
@@ -148,7 +155,8 @@ TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is on
     CHECK(doc.edits().size() == 39);
     CHECK(doc.undo().empty());
     CHECK(doc.edits().empty());
-    for (int t : {90, 100, 109, 120, 128}) CHECK(largestAngleChangeDeg(poseAt(t), clip.frames[t], clip.skeleton) == 0.0);
+    for (int t : {90, 100, 109, 120, 128})
+        CHECK(largestAngleChangeDeg(poseAt(t), clip.frames[t], clip.skeleton) == 0.0);
     CHECK_FALSE(doc.undo().empty());  // nothing else was pushed
 }
 
@@ -172,8 +180,8 @@ TEST_CASE("editor: a hand drag's falloff keeps where an earlier foot drag put th
     const Eigen::Vector3d footBefore[3] = {footAt(t - 1), footAt(t), footAt(t + 1)};
     CHECK(footBefore[1].y() - effectorCm(sk, clip.frames[t], Effector::kRFoot).y() > 14.0);
     doc.setFrame(t);
-    const std::string spread =
-        dragAndSpread(doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
+    const std::string spread = dragAndSpread(
+        doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 10, 5));
     CHECK(spread.find(": spread over frames") != std::string::npos);
     for (int k = 0; k < 3; ++k) {
         const double moved = (footAt(t - 1 + k) - footBefore[k]).norm();
@@ -204,13 +212,14 @@ TEST_CASE("editor: a hand pinned after a head drag does not jump during a drag o
     dragAndSpread(doc, Effector::kHead, effectorCm(sk, clip.frames[t], Effector::kHead) + Eigen::Vector3d(5, -8, 0));
     doc.setFrame(t);
     doc.setPinned(Effector::kLHand, true);
-    const std::string spread =
-        dragAndSpread(doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5));
+    const std::string spread = dragAndSpread(
+        doc, Effector::kRHand, effectorCm(sk, doc.currentPose(), Effector::kRHand) + Eigen::Vector3d(0, 15, 5));
     CHECK(spread.find(": spread over frames") != std::string::npos);
     const double edited = test::positionSecondDifferenceCm(handAt, t);
     const double captured = test::positionSecondDifferenceCm(
         [&](int s) { return effectorCm(sk, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); }, t);
-    MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
+    MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured
+                                                                         << " cm)");
     CHECK(edited <= captured + 0.5);
 }
 
@@ -233,7 +242,8 @@ TEST_CASE("a whole-pose spread that holds feet at their old place guides a foot 
         base->frames[static_cast<std::size_t>(s)].rootCm.x() += w * kShiftCm;
     }
     std::string problem;
-    MotionEditJob job = dragFalloffJob(version, Effector::kHead, t, base->frames[t], Eigen::VectorXd(), radius, {}, &problem, base);
+    MotionEditJob job =
+        dragFalloffJob(version, Effector::kHead, t, base->frames[t], Eigen::VectorXd(), radius, {}, &problem, base);
     REQUIRE(problem.empty());
     const ContactSet contacts = detectFootContacts(clip);
     job.contacts = std::make_shared<const ContactSet>(contacts);
@@ -243,15 +253,17 @@ TEST_CASE("a whole-pose spread that holds feet at their old place guides a foot 
     for (const FootContact& c : contacts.contacts) {
         for (const int edge : {c.first, c.last}) {
             if (edge <= t - radius || edge >= t + radius) continue;  // not inside the span
-            const int next = edge == c.last ? edge + 1 : edge - 1;     // the first frame off the contact
+            const int next = edge == c.last ? edge + 1 : edge - 1;   // the first frame off the contact
             if (next == t) continue;
             ++edges;
             CAPTURE(edge);
             CAPTURE(next);
-            const double edited = (effectorCm(sk, job.frames[next], c.foot) - effectorCm(sk, job.frames[edge], c.foot)).norm();
-            const double captured = (effectorCm(sk, clip.frames[next], c.foot) - effectorCm(sk, clip.frames[edge], c.foot)).norm();
-            MESSAGE(std::string(effectorName(c.foot)) << " contact edge at frame " << edge + 1 << ": step " << edited << " cm (captured "
-                                         << captured << " cm)");
+            const double edited =
+                (effectorCm(sk, job.frames[next], c.foot) - effectorCm(sk, job.frames[edge], c.foot)).norm();
+            const double captured =
+                (effectorCm(sk, clip.frames[next], c.foot) - effectorCm(sk, clip.frames[edge], c.foot)).norm();
+            MESSAGE(std::string(effectorName(c.foot)) << " contact edge at frame " << edge + 1 << ": step " << edited
+                                                      << " cm (captured " << captured << " cm)");
             CHECK(edited - captured <= 1.5 * kShiftCm / 20.0 + 0.5);
             // On the contact itself the foot is at its old place.
             CHECK((effectorCm(sk, job.frames[edge], c.foot) - effectorCm(sk, clip.frames[edge], c.foot)).norm() <= 0.5);

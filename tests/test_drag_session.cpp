@@ -60,7 +60,7 @@ TEST_CASE("drag session: without a model a drag is plain IK that holds the pins"
     CHECK((effectorCm(clip.skeleton, drag.pose(), Effector::kRHand) - target).norm() <= kReachedToleranceCm);
     CHECK(distance(clip.skeleton, drag.pose(), pin) <= kReachedToleranceCm);
     CHECK(drag.x().size() == 0);
-    CHECK(r.nearest.row == -1);  // no model: no captured data to compare with
+    CHECK(r.nearest.row == -1);    // no model: no captured data to compare with
     CHECK_FALSE(drag.refine(50));  // nothing to refine for plain IK
     drag.finish();
     CHECK_FALSE(drag.active());
@@ -126,10 +126,11 @@ TEST_CASE("drag session: a latent drag poses from the model mean over the base p
     Pose expected = base;
     PoseLayout(clip.skeleton).apply(v->model->fullPose(mean).data(), expected);
     CHECK(drag.pose().rootCm == base.rootCm);
-    for (std::size_t j = 0; j < expected.anglesDeg.size(); ++j) CHECK(drag.pose().anglesDeg[j] == expected.anglesDeg[j]);
+    for (std::size_t j = 0; j < expected.anglesDeg.size(); ++j)
+        CHECK(drag.pose().anglesDeg[j] == expected.anglesDeg[j]);
     CHECK(drag.latentPath().size() == 2);
-    CHECK_FALSE(drag.latentTo(Eigen::Vector3d(0, 0, 0), base));                   // wrong latent dimension
-    CHECK_FALSE(drag.latentTo(Eigen::Vector2d(std::nan(""), 0), base));          // not finite
+    CHECK_FALSE(drag.latentTo(Eigen::Vector3d(0, 0, 0), base));          // wrong latent dimension
+    CHECK_FALSE(drag.latentTo(Eigen::Vector2d(std::nan(""), 0), base));  // not finite
     CHECK(drag.latentPath().size() == 2);
     drag.finish();
     CHECK_FALSE(drag.latentActive());

@@ -2,10 +2,10 @@
 // its frames and the exact model version it changed; a regenerated span meets its keys.
 #include <doctest/doctest.h>
 
+#include "document_helpers.h"
 #include "edit/editor_document.h"
 #include "gp/model_file.h"
 #include "skeleton/forward_kinematics.h"
-#include "document_helpers.h"
 #include "trained_model_fixture.h"
 
 using namespace mgp;
@@ -146,7 +146,8 @@ TEST_CASE("regenerating an edited path meets the moved keys, leaves other frames
     const std::vector<Eigen::Vector3d> curve = doc.pathTargets(), captured = doc.pathCaptured();
     REQUIRE(curve.size() == 43);
     REQUIRE(captured.size() == 43);
-    for (int k = 0; k < 4; ++k) CHECK((curve[doc.pathEdit()->keyFrames[k] - 88] - doc.pathKeyPosition(k)).norm() < 1e-9);
+    for (int k = 0; k < 4; ++k)
+        CHECK((curve[doc.pathEdit()->keyFrames[k] - 88] - doc.pathKeyPosition(k)).norm() < 1e-9);
     CHECK((curve.front() - captured.front()).norm() < 1e-9);
 
     REQUIRE(doc.startRegenerate(200) == "");

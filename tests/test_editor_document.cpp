@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <thread>
 
+#include "document_helpers.h"
 #include "edit/editor_document.h"
 #include "edit/training_job.h"
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/synthetic_clip.h"
-#include "document_helpers.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 

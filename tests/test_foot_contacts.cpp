@@ -19,7 +19,9 @@ std::vector<Eigen::Vector3d> track(const std::vector<std::pair<double, double>>&
     return p;
 }
 
-std::vector<std::pair<double, double>> repeat(int n, double h, double v) { return std::vector<std::pair<double, double>>(n, {h, v}); }
+std::vector<std::pair<double, double>> repeat(int n, double h, double v) {
+    return std::vector<std::pair<double, double>>(n, {h, v});
+}
 
 // Still, rising by 0.3 cm a frame to 3 cm and back down (0.3 cm/frame: slower than the exit speed).
 std::vector<std::pair<double, double>> wobble() {
@@ -43,8 +45,8 @@ TEST_CASE("foot contacts: low and still is planted, hysteresis keeps a 3 cm foot
     rule.groundPercentile = 0.0;  // ground = the lowest point, 0 here
     // Frames 0-9 in the air, 10-29 planted, 30-49 a slow wobble up to 3 cm (between the enter
     // height 2.5 and the exit height 3.5: stays planted), 50-69 planted, 70-79 in the air.
-    const auto foot = track(join(repeat(10, 20.0, 2.0), repeat(20, 0.0, 0.0), wobble(), repeat(20, 0.0, 0.0),
-                                 repeat(10, 20.0, 2.0)));
+    const auto foot =
+        track(join(repeat(10, 20.0, 2.0), repeat(20, 0.0, 0.0), wobble(), repeat(20, 0.0, 0.0), repeat(10, 20.0, 2.0)));
     const ContactSet set = detectFootContacts(foot, {}, 120.0, rule);
     CHECK(set.groundCm == doctest::Approx(0.0));
     REQUIRE(set.contacts.size() == 1);
@@ -116,7 +118,8 @@ TEST_CASE("foot contacts: a bad rule is refused with a clear message") {
     ContactRule rule;
     rule.exitHeightCm = 1.0;  // tighter than enter (2.5): no hysteresis
     CHECK_THROWS_WITH_AS(detectFootContacts(foot, {}, 120.0, rule),
-                         doctest::Contains("expected exit thresholds at least the enter thresholds"), std::invalid_argument);
+                         doctest::Contains("expected exit thresholds at least the enter thresholds"),
+                         std::invalid_argument);
     rule = ContactRule{};
     rule.minFrames = 0;
     CHECK_THROWS_AS(detectFootContacts(foot, {}, 120.0, rule), std::invalid_argument);
@@ -144,7 +147,6 @@ TEST_CASE("foot contacts on the shipped walk (35_01): three plants per foot, alt
     // A walk always has a foot on the ground except in brief double-float-free transitions: at
     // least 60 % of frames have a planted foot.
     int covered = 0;
-    for (int t = 0; t < clip.frameCount(); ++t)
-        covered += set.at(Effector::kLFoot, t) || set.at(Effector::kRFoot, t);
+    for (int t = 0; t < clip.frameCount(); ++t) covered += set.at(Effector::kLFoot, t) || set.at(Effector::kRFoot, t);
     CHECK(covered >= 0.6 * clip.frameCount());
 }

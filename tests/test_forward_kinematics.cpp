@@ -32,8 +32,8 @@ TEST_CASE("rest pose height of subject 35 is 158.4 cm") {
     FkState fk;
     forwardKinematics(clip.skeleton, rest, fk);
     const Skeleton& sk = clip.skeleton;
-    const double lowest = std::min(boneEndCm(sk, fk, sk.findBone("lfoot")).y(),
-                                   boneEndCm(sk, fk, sk.findBone("ltoes")).y());
+    const double lowest =
+        std::min(boneEndCm(sk, fk, sk.findBone("lfoot")).y(), boneEndCm(sk, fk, sk.findBone("ltoes")).y());
     CHECK(std::abs(effectorCm(sk, fk, Effector::kHead).y() - lowest - 158.4) <= 0.1);
 }
 
@@ -78,7 +78,9 @@ void checkJacobian(const Clip& clip, int samples, unsigned seed) {
 }  // namespace
 
 TEST_CASE("effector Jacobian matches central differences") {
-    SUBCASE("ASF/AMC 35_01 (axis frames C_b, Z·Y·X)") { checkJacobian(loadClip(test::mocap("asf_amc/35_01.amc")), 6, 1); }
+    SUBCASE("ASF/AMC 35_01 (axis frames C_b, Z·Y·X)") {
+        checkJacobian(loadClip(test::mocap("asf_amc/35_01.amc")), 6, 1);
+    }
     SUBCASE("kick 10_02") { checkJacobian(loadClip(test::mocap("asf_amc/10_02.amc")), 4, 2); }
     SUBCASE("Daz BVH (Z·X·Y channels)") { checkJacobian(loadClip(test::mocap("bvh/02_03.bvh")), 3, 3); }
     SUBCASE("3dsMax BVH (mixed orders)") { checkJacobian(loadClip(test::mocap("bvh/131_01.bvh")), 3, 4); }
@@ -90,7 +92,8 @@ TEST_CASE("root translation moves every effector one-for-one") {
     moved.frames[5].rootCm += Eigen::Vector3d(10, -3, 7);
     for (int e = 0; e < kEffectorCount; ++e) {
         const auto eff = static_cast<Effector>(e);
-        const Eigen::Vector3d d = effectorCm(moved.skeleton, moved.frames[5], eff) - effectorCm(clip.skeleton, clip.frames[5], eff);
+        const Eigen::Vector3d d =
+            effectorCm(moved.skeleton, moved.frames[5], eff) - effectorCm(clip.skeleton, clip.frames[5], eff);
         CHECK((d - Eigen::Vector3d(10, -3, 7)).norm() < 1e-9);
     }
 }

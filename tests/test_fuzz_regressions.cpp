@@ -59,7 +59,8 @@ std::size_t checkAll(const std::string& target, const std::function<void(const s
     return inputs.size();
 }
 
-#define MGP_NONE_YET(target) MGP_SKIP("no " target " inputs in tests/fuzz/regressions/" target " yet (the fuzzer has not broken that loader)")
+#define MGP_NONE_YET(target) \
+    MGP_SKIP("no " target " inputs in tests/fuzz/regressions/" target " yet (the fuzzer has not broken that loader)")
 
 }  // namespace
 

@@ -105,7 +105,8 @@ TEST_CASE("L_GP: explicit-W gradient w.r.t. ln w matches central differences") {
         GpObjectiveOptions a = o, b = o;
         a.fixedW[i] *= std::exp(h);
         b.fixedW[i] *= std::exp(-h);
-        const double num = (evaluateGp(k, f.XI, f.Yhat, a, false).value - evaluateGp(k, f.XI, f.Yhat, b, false).value) / (2 * h);
+        const double num =
+            (evaluateGp(k, f.XI, f.Yhat, a, false).value - evaluateGp(k, f.XI, f.Yhat, b, false).value) / (2 * h);
         err = std::max(err, std::abs(num - ev.gradLogW[i]));
     }
     CHECK(err < 1e-5 * ev.gradLogW.cwiseAbs().maxCoeff());
@@ -197,8 +198,8 @@ TEST_CASE("L_GP: no NaN leaves the function") {
     psi[1] = std::nan("");
     CHECK_THROWS_AS(Kernel(KernelKind::kFas, psi), std::invalid_argument);
     Eigen::VectorXd g;
-    const double v = activeStepObjective(KernelKind::kFas, packParams(psi, f.XI), static_cast<int>(f.XI.rows()), f.Yhat, {},
-                                         nullptr, g);
+    const double v = activeStepObjective(KernelKind::kFas, packParams(psi, f.XI), static_cast<int>(f.XI.rows()), f.Yhat,
+                                         {}, nullptr, g);
     CHECK(std::isinf(v));
     CHECK(g.size() == psi.size() + f.XI.size());
     CHECK(g.isZero());
@@ -226,7 +227,8 @@ TEST_CASE("Step 6 objective: flat outside the log-parameter box, with a zero gra
             zp[i] += h;
             zm[i] -= h;
             const double num = (activeStepObjective(kind, zp, m, f.Yhat, {}, nullptr, gp_) -
-                                activeStepObjective(kind, zm, m, f.Yhat, {}, nullptr, gm)) / (2 * h);
+                                activeStepObjective(kind, zm, m, f.Yhat, {}, nullptr, gm)) /
+                               (2 * h);
             INFO(kernelKindName(kind) << " coordinate " << i << ": analytic " << g[i] << ", numeric " << num);
             if (i == kAlpha || i == kBeta) {
                 CHECK(g[i] == 0.0);  // before: the gradient of the clamped value, not 0

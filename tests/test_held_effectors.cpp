@@ -41,9 +41,11 @@ std::map<int, Eigen::Vector3d> heldTestPositions(EditorDocument& doc, Effector e
 }
 
 // The largest distance, over frames first..last, between the effector now and `before` there.
-double heldTestLargestMove(EditorDocument& doc, Effector e, const std::map<int, Eigen::Vector3d>& before, int first, int last) {
+double heldTestLargestMove(EditorDocument& doc, Effector e, const std::map<int, Eigen::Vector3d>& before, int first,
+                           int last) {
     double largest = 0.0;
-    for (int s = first; s <= last; ++s) largest = std::max(largest, (heldTestEffector(doc, s, e) - before.at(s)).norm());
+    for (int s = first; s <= last; ++s)
+        largest = std::max(largest, (heldTestEffector(doc, s, e) - before.at(s)).norm());
     return largest;
 }
 
@@ -97,7 +99,8 @@ TEST_CASE("held effectors: runs per effector, release of one run, release everyw
     CHECK(release.at(11)->moved == std::vector<Effector>{Effector::kLHand});
     CHECK(releaseRun(edits, 13, Effector::kRFoot).empty());
     CHECK(releaseEverywhere(edits).size() == 4);  // frame 20 holds nothing already
-    CHECK(withHeld({Effector::kHead}, {Effector::kLHand, Effector::kHead}) == std::vector<Effector>{Effector::kLHand, Effector::kHead});
+    CHECK(withHeld({Effector::kHead}, {Effector::kLHand, Effector::kHead}) ==
+          std::vector<Effector>{Effector::kLHand, Effector::kHead});
 }
 
 TEST_CASE("editor: a second drag on the same frame holds the first drag's hand, with no falloff") {
@@ -229,7 +232,8 @@ TEST_CASE("rotate joint holds a placed hand unless the rotated joint is above it
     const Skeleton& sk = doc.clip().skeleton;
     auto holdsRHand = [&](const char* bone) {
         const std::vector<IkConstraint> holds = rotationHolds(doc, sk.findBone(bone));
-        return std::count_if(holds.begin(), holds.end(), [](const IkConstraint& c) { return c.effector == Effector::kRHand; });
+        return std::count_if(holds.begin(), holds.end(),
+                             [](const IkConstraint& c) { return c.effector == Effector::kRHand; });
     };
     CHECK(holdsRHand("rradius") == 0);  // the elbow carries the hand: it moves with the rotation
     CHECK(holdsRHand("lfemur") == 1);   // the other leg: the hand stays
@@ -238,11 +242,13 @@ TEST_CASE("rotate joint holds a placed hand unless the rotated joint is above it
     // Each planted foot once, whether a contact, a placement or both hold it.
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
         const std::vector<IkConstraint> holds = rotationHolds(doc, sk.findBone("rradius"));
-        CHECK(std::count_if(holds.begin(), holds.end(), [&](const IkConstraint& c) { return c.effector == foot; }) <= 1);
+        CHECK(std::count_if(holds.begin(), holds.end(), [&](const IkConstraint& c) { return c.effector == foot; }) <=
+              1);
     }
 }
 
-TEST_CASE("hands placed on a frame move with the chest rotated there with the prior, and their neighbours follow them") {
+TEST_CASE(
+    "hands placed on a frame move with the chest rotated there with the prior, and their neighbours follow them") {
     // The rotation solves with the frame's holds except the hands below the chest (rotationMovers):
     // on the rotated frame both go where the chest takes them. The spread re-solves one effector's
     // displaced path (the most moved hand) and holds the frame's other holds where they were, except
@@ -285,14 +291,16 @@ TEST_CASE("hands placed on a frame move with the chest rotated there with the pr
         // blend, not a jump back to the old place).
         const double before = (rotated - heldTestEffector(doc, t - 1, hand)).norm();
         const double after = (heldTestEffector(doc, t + 1, hand) - rotated).norm();
-        MESSAGE(std::string(effectorName(hand)) << " moved " << moved << " cm; steps next to the rotated frame " << before << " and " << after << " cm");
+        MESSAGE(std::string(effectorName(hand)) << " moved " << moved << " cm; steps next to the rotated frame "
+                                                << before << " and " << after << " cm");
         CHECK(before < 0.25 * moved);
         CHECK(after < 0.25 * moved);
         CHECK(doc.held(hand));  // still placed, where the rotation put it
     }
 }
 
-TEST_CASE("editor: a foot placed by a drag stays through a later path regeneration of the hand, which still meets its keys") {
+TEST_CASE(
+    "editor: a foot placed by a drag stays through a later path regeneration of the hand, which still meets its keys") {
     // Frames 0-based. Foot up 15 cm on frame 140 spread over ±20 frames (121..159 hold it), then
     // the right hand's path around frame 140 (keys 119, 133, 147, 161) raised 12 cm and regenerated
     // from the capture: the foot stays where the drag put it on every frame it is held (≤ 1 cm),
@@ -311,7 +319,8 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
         if (moved > worst) worst = moved, worstFrame = s + 1;
         CHECK(doc.held(Effector::kRFoot));
     }
-    MESSAGE("the held foot moved at most " << worst << " cm (frame " << worstFrame << ") during the hand's regeneration");
+    MESSAGE("the held foot moved at most " << worst << " cm (frame " << worstFrame
+                                           << ") during the hand's regeneration");
     CHECK(worst <= 1.0);
     // Without the hold the regeneration re-solves the foot from the capture: it drops back.
     REQUIRE(doc.undo().empty());
@@ -323,7 +332,9 @@ TEST_CASE("editor: a foot placed by a drag stays through a later path regenerati
     CHECK(unheld > 10.0);
 }
 
-TEST_CASE("editor: where a placed foot's hold ends inside a regenerated path span, the foot's motion stays as smooth as the capture's") {
+TEST_CASE(
+    "editor: where a placed foot's hold ends inside a regenerated path span, the foot's motion stays as smooth as the "
+    "capture's") {
     // Frames 0-based. Foot up 10 cm on frame 135 spread over ±8 frames (128..142 hold it), inside
     // the right hand's path span 119..161: the foot stays placed on 128..142 and is re-solved from
     // the capture elsewhere. Its second difference stays within the capture's largest plus 0.5 cm
@@ -344,13 +355,15 @@ TEST_CASE("editor: where a placed foot's hold ends inside a regenerated path spa
     double edited = 0.0, captured = 0.0;
     int worstFrame = -1;
     const auto editedAt = [&](int s) { return heldTestEffector(doc, s, Effector::kRFoot); };
-    const auto capturedAt = [&](int s) { return effectorCm(sk, doc.clip().frames[static_cast<std::size_t>(s)], Effector::kRFoot); };
+    const auto capturedAt = [&](int s) {
+        return effectorCm(sk, doc.clip().frames[static_cast<std::size_t>(s)], Effector::kRFoot);
+    };
     for (int s = 118; s <= 162; ++s) {
         const double e = test::positionSecondDifferenceCm(editedAt, s);
         if (e > edited) edited = e, worstFrame = s + 1;
         captured = std::max(captured, test::positionSecondDifferenceCm(capturedAt, s));
     }
-    MESSAGE("held foot moved at most " << held << " cm; its largest second difference " << edited << " cm (frame " << worstFrame
-                                       << "), the capture's " << captured << " cm");
+    MESSAGE("held foot moved at most " << held << " cm; its largest second difference " << edited << " cm (frame "
+                                       << worstFrame << "), the capture's " << captured << " cm");
     CHECK(edited <= captured + 0.5);
 }

@@ -129,7 +129,8 @@ TEST_CASE("cmd evaluate: --heldout-offsets reports every split and their mean") 
     CHECK(h["rms_deg"].get<double>() == doctest::Approx(0.5 * (r0 + r1)));
     CHECK(h["spread"]["rms_deg"]["mean"].get<double>() == doctest::Approx(0.5 * (r0 + r1)));
     CHECK(h["spread"]["rms_deg"]["sd"].get<double>() == doctest::Approx(std::abs(r0 - r1) / std::sqrt(2.0)));
-    for (const char* bad : {" --heldout-offsets 0,0", " --heldout-offsets 10", " --heldout-offsets 1,x", " --heldout-offsets ,"}) {
+    for (const char* bad :
+         {" --heldout-offsets 0,0", " --heldout-offsets 10", " --heldout-offsets 1,x", " --heldout-offsets ,"}) {
         const mgp::test::CliResult e = mgp::test::runCli(base + bad);
         INFO(bad);
         CHECK(e.exitCode == 2);

@@ -135,11 +135,13 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     };
     {
         const std::string t = cutAfter(kAsf, "  length");
-        asfCase("truncated in :units", "units.asf", t, at(dir + "/units.asf", 5) + ": expected a unit value after length, found nothing");
+        asfCase("truncated in :units", "units.asf", t,
+                at(dir + "/units.asf", 5) + ": expected a unit value after length, found nothing");
     }
     {
         const std::string t = cutBefore(kAsf, "   position 0 0 0");
-        asfCase("truncated in :root", "root.asf", t, at(dir + "/root.asf", 9) + ": expected a :bonedata section with bones, found none");
+        asfCase("truncated in :root", "root.asf", t,
+                at(dir + "/root.asf", 9) + ": expected a :bonedata section with bones, found none");
     }
     {
         const std::string t = cutAfter(kAsf, "name lfemur\n     direction 0 -1");
@@ -153,7 +155,8 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
                     ": expected bone 'ltibia' to appear in :hierarchy, found a bone with no parent");
     }
     {
-        const std::string t = replaced(kAsf, "    root lfemur\n    lfemur ltibia\n", "    lfemur ltibia\n    ltibia lfemur\n");
+        const std::string t =
+            replaced(kAsf, "    root lfemur\n    lfemur ltibia\n", "    lfemur ltibia\n    ltibia lfemur\n");
         asfCase("hierarchy cycle", "cycle.asf", t,
                 at(dir + "/cycle.asf", lineOf(t, "  begin\n     id 1")) +
                     ": expected bone 'lfemur' to hang from root in :hierarchy, found a cycle through 'lfemur'");
@@ -167,12 +170,14 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     {
         const std::string t = replaced(kAsf, "name ltibia", "name lfemur");
         asfCase("duplicate bone name", "dup.asf", t,
-                at(dir + "/dup.asf", lineOf(t, "  begin\n     id 2")) + ": expected a unique bone name, found a second 'lfemur'");
+                at(dir + "/dup.asf", lineOf(t, "  begin\n     id 2")) +
+                    ": expected a unique bone name, found a second 'lfemur'");
     }
     {
         const std::string t = replaced(kAsf, "lfemur ltibia", "lfemur lknee");
         asfCase("unknown bone in :hierarchy", "unknown.asf", t,
-                at(dir + "/unknown.asf", lineOf(t, "lfemur lknee")) + ": expected a bone declared in :bonedata, found 'lknee'");
+                at(dir + "/unknown.asf", lineOf(t, "lfemur lknee")) +
+                    ": expected a bone declared in :bonedata, found 'lknee'");
     }
     asfCase("empty ASF", "empty.asf", "", dir + "/empty.asf: expected mocap text, found an empty file");
 
@@ -203,14 +208,16 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
             at(dir + "/big.amc", 11) + ": expected an angle within ±1e6 degrees, found '1e308'");
     amcCase("1e999 (overflows a double)", "ovf.amc", replaced(kAmc, "ltibia 5", "ltibia 1e999"),
             at(dir + "/ovf.amc", 11) + ": expected a finite number for bone 'ltibia', found '1e999'");
-    amcCase("1e308 root translation", "root.amc", replaced(kAmc, "root 1 2 3 4 5 6\nlfemur 1 2 3\nltibia 4", "root 1e308 2 3 4 5 6\nlfemur 1 2 3\nltibia 4"),
+    amcCase("1e308 root translation", "root.amc",
+            replaced(kAmc, "root 1 2 3 4 5 6\nlfemur 1 2 3\nltibia 4", "root 1e308 2 3 4 5 6\nlfemur 1 2 3\nltibia 4"),
             at(dir + "/root.amc", 5) + ": expected a root translation within ±1e7, found '1e308'");
     amcCase("unknown bone", "bone.amc", replaced(kAmc, "ltibia 5", "lknee 5"),
             at(dir + "/bone.amc", 11) + ": expected a bone of " + asf + ", found unknown bone 'lknee'");
     {
         const std::string longName(16u << 20, 'x');  // one 16 MB line
         amcCase("16 MB line", "long.amc", replaced(kAmc, "ltibia 5", longName + " 5"),
-                at(dir + "/long.amc", 11) + ": expected a bone of " + asf + ", found unknown bone '" + std::string(40, 'x') + "...'");
+                at(dir + "/long.amc", 11) + ": expected a bone of " + asf + ", found unknown bone '" +
+                    std::string(40, 'x') + "...'");
     }
     amcCase("NUL byte", "nul.amc", replaced(kAmc, "lfemur 1 2 3\nltibia 5", std::string("lfemur 1 \0 3\nltibia 5", 21)),
             at(dir + "/nul.amc", 10) + ": expected text, found binary data (a NUL byte)");
@@ -241,14 +248,17 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
             b("neg.bvh", 17) + ": expected a frame count of at least 1, found '-2'");
     bvhCase("frame count past 64 bits", "huge.bvh", replaced(kBvh, "Frames: 2", "Frames: 99999999999999999999"),
             b("huge.bvh", 17) + ": expected a frame count of at least 1, found '99999999999999999999'");
-    bvhCase("frame count that wraps a 64-bit integer", "wrap.bvh", replaced(kBvh, "Frames: 2", "Frames: 9999999999999999999"),
+    bvhCase("frame count that wraps a 64-bit integer", "wrap.bvh",
+            replaced(kBvh, "Frames: 2", "Frames: 9999999999999999999"),
             b("wrap.bvh", 17) + ": expected a frame count of at least 1, found '9999999999999999999'");
     {
         // 10^7 frames declared, 2 rows: must fail before allocating anything sized by the header,
         // so it runs under a 256 MiB address space (the whole process, libraries included).
         const std::string p = dir + "/ten_million.bvh";
         test::writeText(p, replaced(kBvh, "Frames: 2", "Frames: 10000000"));
-        HostileCase c{"bvh", "10^7 frames declared (fails small)", {"info", p, "--json"},
+        HostileCase c{"bvh",
+                      "10^7 frames declared (fails small)",
+                      {"info", p, "--json"},
                       at(p, 20) + ": expected 10000000 frame rows (Frames:), found at most 2 lines left"};
         c.limits.addressSpaceBytes = std::size_t(256) << 20;
         cases.push_back(c);
@@ -264,8 +274,9 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     {
         // A BVH cannot spell a cycle, only a joint named as its ancestor: that must not be
         // taken as a back edge.
-        const std::string t = replaced(kBvh, "    End Site\n    {\n      OFFSET 0 -7 0\n    }\n",
-                                       "    JOINT Hips\n    {\n      OFFSET 0 -7 0\n      CHANNELS 3 Zrotation Yrotation Xrotation\n    }\n");
+        const std::string t = replaced(
+            kBvh, "    End Site\n    {\n      OFFSET 0 -7 0\n    }\n",
+            "    JOINT Hips\n    {\n      OFFSET 0 -7 0\n      CHANNELS 3 Zrotation Yrotation Xrotation\n    }\n");
         bvhCase("joint named as its grandparent (cycle)", "cycle.bvh", t,
                 b("cycle.bvh", lineOf(t, "    JOINT Hips")) + ": expected a unique joint name, found a second 'Hips'");
     }
@@ -278,8 +289,9 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
         t += "End Site\n{\nOFFSET 0 1 0\n}\n";
         for (int k = 0; k < 100000; ++k) t += "}\n";
         t += "MOTION\nFrames: 1\nFrame Time: 0.01\n" + std::string(300000, '0') + "\n";
-        bvhCase("100 000 nested joints (depth bomb)", "deep.bvh", t,
-                b("deep.bvh", lineOf(t, "JOINT J257\n")) + ": expected a hierarchy at most 256 joints deep, found 'J257'");
+        bvhCase(
+            "100 000 nested joints (depth bomb)", "deep.bvh", t,
+            b("deep.bvh", lineOf(t, "JOINT J257\n")) + ": expected a hierarchy at most 256 joints deep, found 'J257'");
     }
     {
         std::string t = "HIERARCHY\nROOT J0\n{\nOFFSET 0 0 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
@@ -290,7 +302,8 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     }
     bvhCase("16 MB first line", "longline.bvh", std::string(16u << 20, 'A') + "\n" + kBvh,
             b("longline.bvh", 1) + ": expected 'HIERARCHY', found '" + std::string(40, 'A') + "...'");
-    bvhCase("16 MB number in a row", "longnum.bvh", replaced(kBvh, "0 17 0 0 0 0 5 0 0", std::string(16u << 20, '1') + " 17 0 0 0 0 5 0 0"),
+    bvhCase("16 MB number in a row", "longnum.bvh",
+            replaced(kBvh, "0 17 0 0 0 0 5 0 0", std::string(16u << 20, '1') + " 17 0 0 0 0 5 0 0"),
             b("longnum.bvh", 20) + ": expected a finite number (value 1), found '" + std::string(40, '1') + "...'");
     {
         std::mt19937 rng(8);
@@ -315,22 +328,31 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
                 dir + "/utf16be.bvh: expected UTF-8 or ASCII text, found UTF-16 (byte-order mark FE FF)");
     }
     bvhCase("empty file", "empty.bvh", "", dir + "/empty.bvh: expected mocap text, found an empty file");
-    bvhCase("only blank lines", "blank.bvh", "\n  \r\n\t\n", b("blank.bvh", 1) + ": expected 'HIERARCHY', found no text");
+    bvhCase("only blank lines", "blank.bvh", "\n  \r\n\t\n",
+            b("blank.bvh", 1) + ": expected 'HIERARCHY', found no text");
     {
         const std::string p = dir + "/folder.bvh";
         ::mkdir(p.c_str(), 0755);
-        cases.push_back({"bvh", "directory instead of a file", {"info", p, "--json"}, p + ": expected a file, found a directory"});
+        cases.push_back(
+            {"bvh", "directory instead of a file", {"info", p, "--json"}, p + ": expected a file, found a directory"});
         const std::string dev = dir + "/zero.bvh";
         REQUIRE(::symlink("/dev/zero", dev.c_str()) == 0);
-        cases.push_back({"bvh", "endless device (/dev/zero)", {"info", dev, "--json"}, dev + ": expected a regular file, found a special file"});
+        cases.push_back({"bvh",
+                         "endless device (/dev/zero)",
+                         {"info", dev, "--json"},
+                         dev + ": expected a regular file, found a special file"});
         const std::string missing = dir + "/missing.bvh";
-        cases.push_back({"bvh", "missing file", {"info", missing, "--json"},
+        cases.push_back({"bvh",
+                         "missing file",
+                         {"info", missing, "--json"},
                          missing + ": expected a readable file, found none (No such file or directory)"});
         // chmod 000: root reads it anyway, so the child drops to nobody (65534) before exec.
         const std::string locked = dir + "/locked.bvh";
         test::writeText(locked, kBvh);
         REQUIRE(::chmod(locked.c_str(), 0) == 0);
-        HostileCase c{"bvh", "unreadable file (chmod 000)", {"info", locked, "--json"},
+        HostileCase c{"bvh",
+                      "unreadable file (chmod 000)",
+                      {"info", locked, "--json"},
                       locked + ": expected a readable file, found a file that cannot be opened (Permission denied)"};
         c.limits.dropRoot = true;
         const std::string unreachable = test::unreachableAsNobody({dir});
@@ -343,28 +365,47 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     // ---- the other verbs that read clips -------------------------------------------------
     {
         const std::string p = dir + "/nan.bvh";
-        cases.push_back({"fk", "fk on a NaN-bearing BVH", {"fk", p, "--frame", "1", "--json"},
+        cases.push_back({"fk",
+                         "fk on a NaN-bearing BVH",
+                         {"fk", p, "--frame", "1", "--json"},
                          at(p, 20) + ": expected a finite number (value 7), found 'nan'"});
-        cases.push_back({"fk", "fk frame 10^7", {"fk", bvh, "--frame", "10000000", "--json"},
+        cases.push_back({"fk",
+                         "fk frame 10^7",
+                         {"fk", bvh, "--frame", "10000000", "--json"},
                          "expected --frame in 1..2 (clip frames counted from 1), found 10000000"});
-        cases.push_back({"fk", "fk frame -1", {"fk", bvh, "--frame", "-1"},
+        cases.push_back({"fk",
+                         "fk frame -1",
+                         {"fk", bvh, "--frame", "-1"},
                          "expected --frame in 1..2 (clip frames counted from 1), found -1"});
         const std::string deep = dir + "/deep.bvh";
-        cases.push_back({"render", "render a depth bomb", {"render", deep, "--frame", "1", "--out", dir + "/x.png"},
+        cases.push_back({"render",
+                         "render a depth bomb",
+                         {"render", deep, "--frame", "1", "--out", dir + "/x.png"},
                          at(deep, lineOf(test::readText(deep), "JOINT J257\n")) +
                              ": expected a hierarchy at most 256 joints deep, found 'J257'"});
         const std::string cut = dir + "/cut1.amc";
-        cases.push_back({"render", "render a truncated AMC", {"render", cut, "--skel", asf, "--frame", "1", "--out", dir + "/y.png"},
+        cases.push_back({"render",
+                         "render a truncated AMC",
+                         {"render", cut, "--skel", asf, "--frame", "1", "--out", dir + "/y.png"},
                          at(cut, 10) + ": expected 3 values for bone 'lfemur', found 2"});
-        cases.push_back({"train", "train on a truncated AMC", {"train", cut, "--skel", asf, "--out", dir + "/never.json"},
+        cases.push_back({"train",
+                         "train on a truncated AMC",
+                         {"train", cut, "--skel", asf, "--out", dir + "/never.json"},
                          at(cut, 10) + ": expected 3 values for bone 'lfemur', found 2"});
         const std::string cycle = dir + "/cycle.asf";
-        cases.push_back({"train", "train with a cyclic ASF", {"train", amc, "--skel", cycle, "--out", dir + "/never.json"},
-                         at(cycle, lineOf(test::readText(cycle), "  begin\n     id 1")) +
-                             ": expected bone 'lfemur' to hang from root in :hierarchy, found a cycle through 'lfemur'"});
-        cases.push_back({"train", "train on a BVH of one frame", {"train", bvh, "--out", dir + "/never.json"},
+        cases.push_back(
+            {"train",
+             "train with a cyclic ASF",
+             {"train", amc, "--skel", cycle, "--out", dir + "/never.json"},
+             at(cycle, lineOf(test::readText(cycle), "  begin\n     id 1")) +
+                 ": expected bone 'lfemur' to hang from root in :hierarchy, found a cycle through 'lfemur'"});
+        cases.push_back({"train",
+                         "train on a BVH of one frame",
+                         {"train", bvh, "--out", dir + "/never.json"},
                          "expected at least 3 training frames after --frames/--step, found 1"});
-        cases.push_back({"train", "train on 2 frames", {"train", amc, "--skel", asf, "--out", dir + "/never.json"},
+        cases.push_back({"train",
+                         "train on 2 frames",
+                         {"train", amc, "--skel", asf, "--out", dir + "/never.json"},
                          "expected at least 3 training frames after --frames/--step, found 2"});
     }
 
@@ -386,12 +427,15 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     };
     auto P = [&](const std::string& file) { return dir + "/" + file; };
     const int D = base["D"].get<int>(), N = base["N"].get<int>();
-    modelCase("truncated model JSON", "cut.json", modelText.substr(0, modelText.size() / 2), "",
-              "motiongp: error: " + regexEscape(P("cut.json")) +
-                  R"(: expected a JSON model file \(format motiongp-model\), found damaged JSON \(\[json\.exception\.parse_error\.101\] parse error at line [0-9]+, column [0-9]+: [^\n]*\)\n)");
-    modelCase("empty model file", "empty.json", "", P("empty.json") + ": expected a JSON model file (format motiongp-model), found an empty file");
+    modelCase(
+        "truncated model JSON", "cut.json", modelText.substr(0, modelText.size() / 2), "",
+        "motiongp: error: " + regexEscape(P("cut.json")) +
+            R"(: expected a JSON model file \(format motiongp-model\), found damaged JSON \(\[json\.exception\.parse_error\.101\] parse error at line [0-9]+, column [0-9]+: [^\n]*\)\n)");
+    modelCase("empty model file", "empty.json", "",
+              P("empty.json") + ": expected a JSON model file (format motiongp-model), found an empty file");
     modelCase("wrong D (w disagrees)", "dim.json", mutated([&](nlohmann::json& j) { j["D"] = D - 1; }),
-              P("dim.json") + ": expected w as an array of " + std::to_string(D - 1) + " numbers, found " + std::to_string(D) + " entries");
+              P("dim.json") + ": expected w as an array of " + std::to_string(D - 1) + " numbers, found " +
+                  std::to_string(D) + " entries");
     modelCase("latent_dim 10^9 (must not allocate N×10^9)", "latent.json",
               mutated([&](nlohmann::json& j) { j["latent_dim"] = 1000000000; }),
               P("latent.json") + ": expected positive N, D ≤ 3000 and latent_dim ≤ D, found N=" + std::to_string(N) +
@@ -400,13 +444,14 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
               P("rows.json") + ": expected " + std::to_string(N + 7) + " rows of X, found " + std::to_string(N));
     modelCase("NaN parameter (null)", "nan.json", mutated([&](nlohmann::json& j) { j["log_params"][1] = nullptr; }),
               P("nan.json") + ": expected numbers in log_params, found null");
-    modelCase("1e999 parameter", "ovf.json", replaced(modelText, "\"log_params\": [", "\"log_params\": [1e999,"), "",
-              "motiongp: error: " + regexEscape(P("ovf.json")) +
-                  R"(: expected a JSON model file \(format motiongp-model\), found damaged JSON \([^\n]*number overflow[^\n]*\)\n)");
-    modelCase("ln alpha = 1e308 (exp overflows)", "huge.json", mutated([&](nlohmann::json& j) { j["log_params"][0] = 1e308; }),
+    modelCase(
+        "1e999 parameter", "ovf.json", replaced(modelText, "\"log_params\": [", "\"log_params\": [1e999,"), "",
+        "motiongp: error: " + regexEscape(P("ovf.json")) +
+            R"(: expected a JSON model file \(format motiongp-model\), found damaged JSON \([^\n]*number overflow[^\n]*\)\n)");
+    modelCase("ln alpha = 1e308 (exp overflows)", "huge.json",
+              mutated([&](nlohmann::json& j) { j["log_params"][0] = 1e308; }),
               P("huge.json") + ": expected log_params within ±100 (kernel parameters exp(±100)), found 1e+308");
-    modelCase("non-PD setup (a repeated active point, noiseless)", "nonpd.json",
-              mutated([&](nlohmann::json& j) {
+    modelCase("non-PD setup (a repeated active point, noiseless)", "nonpd.json", mutated([&](nlohmann::json& j) {
                   j["log_params"][2] = 49.0;  // β = e^49: no noise on the diagonal
                   j["active"] = {0, 1, 0};    // two equal rows and columns in K
               }),
@@ -414,12 +459,15 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     modelCase("NaN in the weights (null)", "w.json", mutated([&](nlohmann::json& j) { j["w"][0] = nullptr; }),
               P("w.json") + ": expected numbers in w, found null");
     modelCase("active index out of range", "active.json", mutated([&](nlohmann::json& j) { j["active"][0] = N + 5; }),
-              P("active.json") + ": expected active indices in 0.." + std::to_string(N - 1) + ", found " + std::to_string(N + 5));
+              P("active.json") + ": expected active indices in 0.." + std::to_string(N - 1) + ", found " +
+                  std::to_string(N + 5));
     modelCase("unknown format", "format.json", mutated([&](nlohmann::json& j) { j["format"] = "motiongp-session"; }),
               P("format.json") + ": expected \"format\": \"motiongp-model\", found \"motiongp-session\"");
-    modelCase("future version", "version.json", mutated([&](nlohmann::json& j) { j["version"] = 99; }),
-              P("version.json") + ": expected model file version ≤ 2 (this build reads up to version 2), found version 99");
-    modelCase("1e308 angle in the clip", "pose.json", mutated([&](nlohmann::json& j) { j["clip"]["poses_deg"][0][3] = 1e308; }),
+    modelCase(
+        "future version", "version.json", mutated([&](nlohmann::json& j) { j["version"] = 99; }),
+        P("version.json") + ": expected model file version ≤ 2 (this build reads up to version 2), found version 99");
+    modelCase("1e308 angle in the clip", "pose.json",
+              mutated([&](nlohmann::json& j) { j["clip"]["poses_deg"][0][3] = 1e308; }),
               P("pose.json") + ": expected angles within ±1e10 degrees in clip frame 1, found 1e+308");
     modelCase("a BVH passed as the model", "notjson.json", kBvh, "",
               "motiongp: error: " + regexEscape(P("notjson.json")) +
@@ -427,9 +475,13 @@ std::vector<HostileCase> buildCases(const std::string& dir, const std::string& m
     {
         const std::string p = dir + "/model_dir.json";
         ::mkdir(p.c_str(), 0755);
-        cases.push_back({"model", "directory instead of a model", {"pose", p, "--frame", "1", "--target", "rfoot=0,5,0"},
+        cases.push_back({"model",
+                         "directory instead of a model",
+                         {"pose", p, "--frame", "1", "--target", "rfoot=0,5,0"},
                          p + ": expected a file, found a directory"});
-        cases.push_back({"model", "render a model with a NaN parameter", {"render", P("nan.json"), "--frame", "1", "--out", dir + "/z.png"},
+        cases.push_back({"model",
+                         "render a model with a NaN parameter",
+                         {"render", P("nan.json"), "--frame", "1", "--out", dir + "/z.png"},
                          P("nan.json") + ": expected numbers in log_params, found null"});
     }
     return cases;
@@ -443,10 +495,10 @@ TEST_CASE("hostile inputs through the CLI: one clear error, non-zero exit, bound
     writeSmallModel(model);
     const std::vector<HostileCase> cases = buildCases(dir, model);
     // The base files themselves are fine, so each failure below is its mutation's.
-    for (const auto& args : std::vector<std::vector<std::string>>{
-             {"info", dir + "/t_01.amc", "--skel", dir + "/t.asf", "--json"},
-             {"info", dir + "/ok.bvh", "--json"},
-             {"pose", model, "--frame", "1", "--target", "rfoot=0,5,0", "--json"}}) {
+    for (const auto& args :
+         std::vector<std::vector<std::string>>{{"info", dir + "/t_01.amc", "--skel", dir + "/t.asf", "--json"},
+                                               {"info", dir + "/ok.bvh", "--json"},
+                                               {"pose", model, "--frame", "1", "--target", "rfoot=0,5,0", "--json"}}) {
         const test::CliResult r = test::runCliArgs(args, test::hostileLimits());
         INFO(args[0] << " " << args[1] << ": " << test::describe(r) << "\n" << r.err);
         REQUIRE(r.exitCode == 0);
@@ -505,9 +557,9 @@ std::vector<SessionCase> writeHostileSessions(const std::string& dir) {
         {"truncated session JSON", "cut.mgsession", goodText.substr(0, goodText.size() / 2), "",
          regexEscape(P("cut.mgsession")) +
              R"(: expected a JSON session file \(format motiongp-session\), found damaged JSON \(\[json\.exception\.parse_error\.101\] parse error at line [0-9]+, column [0-9]+: [^\n]*\))"},
-        {"empty session", "empty.mgsession", "", P("empty.mgsession") + ": expected a JSON session file (format motiongp-session), found an empty file", ""},
-        {"session referencing a missing clip", "missing.mgsession",
-         mutated([&](nlohmann::json& j) {
+        {"empty session", "empty.mgsession", "",
+         P("empty.mgsession") + ": expected a JSON session file (format motiongp-session), found an empty file", ""},
+        {"session referencing a missing clip", "missing.mgsession", mutated([&](nlohmann::json& j) {
              j["clip"]["path"] = dir + "/gone.bvh";
              j["clip"]["relative_path"] = "gone.bvh";
          }),
@@ -520,7 +572,8 @@ std::vector<SessionCase> writeHostileSessions(const std::string& dir) {
          P("neg.mgsession") + ": expected frame ≥ 0, found -3", ""},
         {"NaN camera (null)", "nan.mgsession", mutated([&](nlohmann::json& j) { j["camera"]["yaw_deg"] = nullptr; }),
          P("nan.mgsession") + ": expected camera.yaw_deg as a number, found null", ""},
-        {"1e999 in the camera", "ovf.mgsession", replaced(mutated([&](nlohmann::json& j) { j["camera"]["yaw_deg"] = 12345.5; }), "12345.5", "1e999"), "",
+        {"1e999 in the camera", "ovf.mgsession",
+         replaced(mutated([&](nlohmann::json& j) { j["camera"]["yaw_deg"] = 12345.5; }), "12345.5", "1e999"), "",
          regexEscape(P("ovf.mgsession")) +
              R"(: expected a JSON session file \(format motiongp-session\), found damaged JSON \([^\n]*number overflow[^\n]*\))"},
         {"UTF-16 session", "utf16.mgsession", std::string("\xFF\xFE{\0}\0", 6),
@@ -529,7 +582,8 @@ std::vector<SessionCase> writeHostileSessions(const std::string& dir) {
     for (const auto& c : cases) test::writeText(P(c.file), c.text);
     ::mkdir(P("folder.mgsession").c_str(), 0755);
     std::vector<SessionCase> all = cases;
-    all.push_back({"directory instead of a session", "folder.mgsession", "", P("folder.mgsession") + ": expected a file, found a directory", ""});
+    all.push_back({"directory instead of a session", "folder.mgsession", "",
+                   P("folder.mgsession") + ": expected a file, found a directory", ""});
     return all;
 }
 
@@ -541,8 +595,10 @@ TEST_CASE("hostile session files through the library: one clear error each") {
     for (const auto& c : all) {
         CAPTURE(c.name);
         const std::string e = sessionError(dir + "/" + c.file);
-        if (c.pattern.empty()) CHECK(e == c.expected);
-        else CHECK(std::regex_match(e, std::regex(c.pattern)));
+        if (c.pattern.empty())
+            CHECK(e == c.expected);
+        else
+            CHECK(std::regex_match(e, std::regex(c.pattern)));
     }
 }
 
@@ -557,12 +613,15 @@ TEST_CASE("hostile session files through `motiongp gui --offscreen`: exit 2 and 
         MGP_SKIP("no offscreen context for `motiongp gui` here (" << test::describe(probe) << ": " << probe.err << ")");
     for (const auto& c : all) {
         CAPTURE(c.name);
-        const test::CliResult r = test::runCliArgs({"gui", P(c.file), "--offscreen", "--frames", "1"}, test::hostileLimits());
+        const test::CliResult r =
+            test::runCliArgs({"gui", P(c.file), "--offscreen", "--frames", "1"}, test::hostileLimits());
         INFO(test::describe(r) << "\n" << r.err);
         CHECK_FALSE(r.timedOut);
         CHECK(r.signal == 0);
         CHECK(r.exitCode == 2);
-        if (c.pattern.empty()) CHECK(r.err == "motiongp: error: " + c.expected + "\n");
-        else CHECK(std::regex_match(r.err, std::regex("motiongp: error: " + c.pattern + "\n")));
+        if (c.pattern.empty())
+            CHECK(r.err == "motiongp: error: " + c.expected + "\n");
+        else
+            CHECK(std::regex_match(r.err, std::regex("motiongp: error: " + c.pattern + "\n")));
     }
 }

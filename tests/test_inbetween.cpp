@@ -18,10 +18,12 @@ using namespace mgp;
 TEST_CASE("gaps: inside the clip, at least one frame between the keys, increasing, not overlapping") {
     CHECK(validateGaps({{0, 2}, {2, 9}}, 10) == "");
     CHECK(validateGaps({}, 10).find("at least one gap") != std::string::npos);
-    CHECK(validateGaps({{3, 4}}, 10) == "expected at least one frame between the keys of a gap A:B (A + 1 < B), found 4:5");
+    CHECK(validateGaps({{3, 4}}, 10) ==
+          "expected at least one frame between the keys of a gap A:B (A + 1 < B), found 4:5");
     CHECK(validateGaps({{3, 10}}, 10) == "expected gaps inside the clip's frames 1..10, found 4:11");
     CHECK(validateGaps({{-1, 3}}, 10).find("inside the clip") != std::string::npos);
-    CHECK(validateGaps({{4, 8}, {2, 6}}, 10) == "expected gaps in increasing order that do not overlap, found 3:7 after 5:9");
+    CHECK(validateGaps({{4, 8}, {2, 6}}, 10) ==
+          "expected gaps in increasing order that do not overlap, found 3:7 after 5:9");
 }
 
 TEST_CASE("the interpolation baseline: the keys at both ends, every joint's rotation slerped between") {
@@ -66,7 +68,8 @@ TEST_CASE("every method keeps the keys and every frame outside the gaps bit for 
     // The model learned 10_03; the gaps are on 10_02, another take.
     const Clip clip = loadClip(test::mocap("asf_amc/10_02.amc"));
     const std::vector<InbetweenGap> gaps = {{40, 101}, {200, 321}};
-    for (InbetweenMethod method : {InbetweenMethod::kHold, InbetweenMethod::kInterpolate, InbetweenMethod::kRetrieve, InbetweenMethod::kPrior}) {
+    for (InbetweenMethod method :
+         {InbetweenMethod::kHold, InbetweenMethod::kInterpolate, InbetweenMethod::kRetrieve, InbetweenMethod::kPrior}) {
         CAPTURE(std::string(inbetweenMethodName(method)));
         InbetweenJob job = kickJob(clip, method, gaps);
         REQUIRE(job.validate() == "");
@@ -76,8 +79,11 @@ TEST_CASE("every method keeps the keys and every frame outside the gaps bit for 
         int changed = 0;
         for (int t = 0; t < clip.frameCount(); ++t) {
             const bool inner = (t > 40 && t < 101) || (t > 200 && t < 321);
-            if (!inner) CHECK(samePose(job.frames[static_cast<std::size_t>(t)], clip.frames[static_cast<std::size_t>(t)]));
-            else changed += samePose(job.frames[static_cast<std::size_t>(t)], clip.frames[static_cast<std::size_t>(t)]) ? 0 : 1;
+            if (!inner)
+                CHECK(samePose(job.frames[static_cast<std::size_t>(t)], clip.frames[static_cast<std::size_t>(t)]));
+            else
+                changed +=
+                    samePose(job.frames[static_cast<std::size_t>(t)], clip.frames[static_cast<std::size_t>(t)]) ? 0 : 1;
             CHECK(allFinite(job.frames[static_cast<std::size_t>(t)]));
         }
         CHECK(changed == 60 + 120);
@@ -114,7 +120,8 @@ TEST_CASE("the prior's held feet never jump at a key: each foot moves across a j
     };
     const std::vector<InbetweenGap> all = {{136, 256}, {516, 576}, {198, 258}};
     const double captured = worstJoinStep(clip.frames, all);
-    const double filled = std::max(worstJoinStep(job.frames, {{136, 256}, {516, 576}}), worstJoinStep(second.frames, {{198, 258}}));
+    const double filled =
+        std::max(worstJoinStep(job.frames, {{136, 256}, {516, 576}}), worstJoinStep(second.frames, {{198, 258}}));
     MESSAGE("worst foot step across a join: " << filled << " cm (the capture's " << captured << " cm)");
     CHECK(filled <= captured + 1.0);
 }

@@ -73,12 +73,14 @@ TEST_CASE("the position spread is the population standard deviation per coordina
 
 namespace {
 // The whole window turned about the vertical by `yawDeg` and moved by `shift` on the ground.
-std::vector<Pose> movedWindow(const Skeleton& sk, std::vector<Pose> frames, double yawDeg, const Eigen::Vector3d& shift) {
+std::vector<Pose> movedWindow(const Skeleton& sk, std::vector<Pose> frames, double yawDeg,
+                              const Eigen::Vector3d& shift) {
     const Joint& root = sk.joints[0];
     const Eigen::Matrix3d ry = axisRotation(kAxisY, yawDeg * kDegToRad);
     for (Pose& p : frames) {
         p.rootCm = ry * p.rootCm + shift;
-        p.anglesDeg[0] = eulerFromMatrix(root.axis.transpose() * ry * root.axis * eulerMatrix(p.anglesDeg[0], root.order), root.order);
+        p.anglesDeg[0] = eulerFromMatrix(
+            root.axis.transpose() * ry * root.axis * eulerMatrix(p.anglesDeg[0], root.order), root.order);
     }
     return frames;
 }
@@ -90,7 +92,8 @@ TEST_CASE("a window is measured in its first key's frame: turning and moving it 
     const WindowGlobals here = windowGlobals(clip.skeleton, window);
     REQUIRE(here.positions.rows() == 29);
     REQUIRE(here.positions.cols() == 3 * clip.skeleton.jointCount());
-    const WindowGlobals there = windowGlobals(clip.skeleton, movedWindow(clip.skeleton, window, 73.0, Eigen::Vector3d(120.0, 0.0, -40.0)));
+    const WindowGlobals there =
+        windowGlobals(clip.skeleton, movedWindow(clip.skeleton, window, 73.0, Eigen::Vector3d(120.0, 0.0, -40.0)));
     CHECK((here.positions - there.positions).cwiseAbs().maxCoeff() < 1e-9);
     CHECK((here.quaternions - there.quaternions).cwiseAbs().maxCoeff() < 1e-9);
     // Each joint's quaternions stay on one side from frame to frame (no sign flips).

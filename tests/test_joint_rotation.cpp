@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "central_difference.h"
+#include "document_helpers.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "ik/constrained_ik.h"
 #include "skeleton/pose_mirror.h"
-#include "document_helpers.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -54,8 +54,9 @@ TEST_CASE("constrained IK with held DOFs: ∇F over the free unknowns matches ce
     req.startX = latentStartForFrame(*version, 100);
     const int humerus = sk.findBone("lhumerus"), tibia = sk.findBone("rtibia");
     req.held = {{humerus, 0, 20.0}, {humerus, 1, -10.0}, {humerus, 2, 35.0}, {tibia, 0, 40.0}};
-    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
-                       {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
+    req.constraints = {
+        {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(-5, 2, 1), false, 0.9},
+        {Effector::kLFoot, effectorCm(sk, req.start, Effector::kLFoot), true}};
     Eigen::VectorXd z = solver.startPoint(req);
     std::vector<int> held;
     for (const HeldDof& h : req.held) {
@@ -82,8 +83,8 @@ TEST_CASE("constrained IK with held DOFs: ∇F over the free unknowns matches ce
             CHECK((H.row(i).cwiseAbs().sum() - 1.0) == 0.0);
             continue;
         }
-        const double numeric =
-            test::centralDifference([&](const Eigen::VectorXd& v) { return solver.objective(req, v, nullptr); }, z, i, h);
+        const double numeric = test::centralDifference(
+            [&](const Eigen::VectorXd& v) { return solver.objective(req, v, nullptr); }, z, i, h);
         worst = std::max(worst, std::abs(numeric - g[i]));
     }
     MESSAGE("∇F with held DOFs: max abs error " << worst << " against |g|∞ " << g.cwiseAbs().maxCoeff() << ", F " << F);
@@ -109,7 +110,8 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         const char* bone;
         Eigen::Vector3d delta;
     };
-    for (const Case& c : {Case{"lhumerus", {30.0, -20.0, 15.0}}, Case{"lowerback", {15.0, 0.0, 0.0}}, Case{"rfemur", {-25.0, 0.0, 0.0}}}) {
+    for (const Case& c : {Case{"lhumerus", {30.0, -20.0, 15.0}}, Case{"lowerback", {15.0, 0.0, 0.0}},
+                          Case{"rfemur", {-25.0, 0.0, 0.0}}}) {
         CAPTURE(c.bone);
         const int j = sk.findBone(c.bone);
         REQUIRE(j >= 0);
@@ -124,25 +126,30 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         CHECK(prior.learned);
         double heldErr = 0.0;
         for (int a = 0; a < 3; ++a)
-            if (sk.joints[j].dof[a]) heldErr = std::max(heldErr, std::abs(prior.pose.anglesDeg[j][a] - rot.anglesDeg[a]));
+            if (sk.joints[j].dof[a])
+                heldErr = std::max(heldErr, std::abs(prior.pose.anglesDeg[j][a] - rot.anglesDeg[a]));
         double pinErr = 0.0;
         for (const IkConstraintResult& cr : prior.ik.constraints) pinErr = std::max(pinErr, cr.residualCm);
         const Eigen::VectorXd x0 = doc.currentLatent();
         const double likPlain = bestLik(version, plain.pose, x0);
         double plainPinMove = 0.0;
         for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-            plainPinMove = std::max(plainPinMove, (effectorCm(sk, plain.pose, foot) - effectorCm(sk, before, foot)).norm());
+            plainPinMove =
+                std::max(plainPinMove, (effectorCm(sk, plain.pose, foot) - effectorCm(sk, before, foot)).norm());
         MESSAGE(c.bone << " +" << c.delta.transpose() << ": held DOFs " << heldErr << " deg, pins " << pinErr
-                       << " cm, L_IK prior " << prior.ik.lik << " vs plain (best x) " << likPlain << ", " << prior.ik.iterations
-                       << " iterations, " << ikStopName(prior.ik.stop) << "; the plain rotation moves a pinned foot by " << plainPinMove << " cm");
+                       << " cm, L_IK prior " << prior.ik.lik << " vs plain (best x) " << likPlain << ", "
+                       << prior.ik.iterations << " iterations, " << ikStopName(prior.ik.stop)
+                       << "; the plain rotation moves a pinned foot by " << plainPinMove << " cm");
         CHECK(heldErr <= 1e-6);
         CHECK(prior.ik.constraints.size() == 2);
         CHECK(pinErr <= 0.05);
         // Where the plain pose keeps the pins it is a candidate of the prior's problem, so the
         // prior's pose must be at least as likely; where it moves a pinned foot (the femur) it is
         // not, and only the pins are compared.
-        if (plainPinMove < 1e-9) CHECK(prior.ik.lik < likPlain);
-        else CHECK(plainPinMove > 1.0);
+        if (plainPinMove < 1e-9)
+            CHECK(prior.ik.lik < likPlain);
+        else
+            CHECK(plainPinMove > 1.0);
         CHECK(prior.pose.rootCm == before.rootCm);
     }
     CHECK(test::samePose(doc.currentPose(), before));  // solving changes nothing in the document
@@ -163,8 +170,10 @@ TEST_CASE("rotate joint: the plain rotation changes exactly that joint's DOFs an
     CHECK(after.rootCm == before.rootCm);
     for (int k = 0; k < sk.jointCount(); ++k)
         for (int a = 0; a < 3; ++a) {
-            if (k == j && a == 0) CHECK(after.anglesDeg[k][a] == 75.0);
-            else CHECK(after.anglesDeg[k][a] == before.anglesDeg[k][a]);
+            if (k == j && a == 0)
+                CHECK(after.anglesDeg[k][a] == 75.0);
+            else
+                CHECK(after.anglesDeg[k][a] == before.anglesDeg[k][a]);
         }
     CHECK(doc.undoLabel() == "rotate ltibia on frame 13");
     REQUIRE(doc.undo() == "");
@@ -197,7 +206,8 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
     CHECK(doc.currentPose().anglesDeg[lf][0] == before.anglesDeg[rf][0]);
     CHECK(doc.currentPose().anglesDeg[lf][1] == -before.anglesDeg[rf][1]);
     REQUIRE(mirrorCurrentPose(doc) == "");
-    for (int k = 1; k < sk.jointCount(); ++k) CHECK((doc.currentPose().anglesDeg[k] - before.anglesDeg[k]).cwiseAbs().maxCoeff() < 1e-9);
+    for (int k = 1; k < sk.jointCount(); ++k)
+        CHECK((doc.currentPose().anglesDeg[k] - before.anglesDeg[k]).cwiseAbs().maxCoeff() < 1e-9);
     REQUIRE(doc.undo() == "");
     REQUIRE(doc.undo() == "");
     CHECK(test::samePose(doc.currentPose(), before));
@@ -205,7 +215,9 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
     CHECK(mirrorCurrentPose(empty).find("no clip") != std::string::npos);
 }
 
-TEST_CASE("mirror, paste and a rotation with the prior keep a planted foot where it was, on the frame and on its neighbours") {
+TEST_CASE(
+    "mirror, paste and a rotation with the prior keep a planted foot where it was, on the frame and on its "
+    "neighbours") {
     // On a walk frame with a planted foot, the mirrored (or pasted) pose is re-solved under the
     // prior so that the foot stays; a rotation with the prior solves with it held. The spread keeps
     // it on the neighbouring frames where it was planted (it used to follow the pose layer: tens of

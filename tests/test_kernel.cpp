@@ -19,7 +19,9 @@ Eigen::MatrixXd randomPoints(int n, int d, unsigned seed, double scale = 1.0) {
     return X;
 }
 
-Eigen::VectorXd fasParams() { return (Eigen::VectorXd(4) << std::log(3.0), std::log(1.7), std::log(20.0), std::log(2.5)).finished(); }
+Eigen::VectorXd fasParams() {
+    return (Eigen::VectorXd(4) << std::log(3.0), std::log(1.7), std::log(20.0), std::log(2.5)).finished();
+}
 
 }  // namespace
 
@@ -45,8 +47,10 @@ TEST_CASE("kernel: gram, cross and diag agree, angular term is η at the origin"
         const Eigen::VectorXd xi = X.row(i).transpose();
         const Eigen::VectorXd c = k.cross(X, xi);
         for (int j = 0; j < 8; ++j) {
-            if (i == j) CHECK(K(i, i) == doctest::Approx(k.diagF(xi) + 1.0 / k.beta()).epsilon(1e-13));
-            else CHECK(K(i, j) == doctest::Approx(c[j]).epsilon(1e-13));
+            if (i == j)
+                CHECK(K(i, i) == doctest::Approx(k.diagF(xi) + 1.0 / k.beta()).epsilon(1e-13));
+            else
+                CHECK(K(i, j) == doctest::Approx(c[j]).epsilon(1e-13));
         }
     }
     CHECK(k.diagF(Eigen::VectorXd::Zero(3)) == doctest::Approx(k.alpha() + k.eta()).epsilon(1e-15));
@@ -98,7 +102,8 @@ TEST_CASE("kernel: cross and diagonal latent gradients against central differenc
             b[c] -= h;
             const Eigen::VectorXd num = (k.cross(X, a) - k.cross(X, b)) / (2 * h);
             CHECK((num - J.col(c)).cwiseAbs().maxCoeff() < 1e-6 * std::max(1.0, J.cwiseAbs().maxCoeff()));
-            CHECK(std::abs((k.diagF(a) - k.diagF(b)) / (2 * h) - gd[c]) < 1e-6 * std::max(1.0, gd.cwiseAbs().maxCoeff()));
+            CHECK(std::abs((k.diagF(a) - k.diagF(b)) / (2 * h) - gd[c]) <
+                  1e-6 * std::max(1.0, gd.cwiseAbs().maxCoeff()));
         }
     }
 }

@@ -11,7 +11,8 @@
 
 using namespace mgp;
 
-TEST_CASE("latent refit: a solved point is kept on its model, and on the mirrored layout the edit's point is fitted to -x") {
+TEST_CASE(
+    "latent refit: a solved point is kept on its model, and on the mirrored layout the edit's point is fitted to -x") {
     EditorDocument doc;
     const gp::ModelVersionPtr v = test::walkModel35();
     doc.setModel(v, true);

@@ -73,10 +73,12 @@ TEST_CASE("learned IK holds pins within 0.5 cm while a hand is dragged") {
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 50);
     const Skeleton& sk = m.clip.skeleton;
-    const Eigen::Vector3d lf = effectorCm(sk, req.start, Effector::kLFoot), rf = effectorCm(sk, req.start, Effector::kRFoot);
-    req.constraints = {{Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
-                       {Effector::kLFoot, lf, true},
-                       {Effector::kRFoot, rf, true}};
+    const Eigen::Vector3d lf = effectorCm(sk, req.start, Effector::kLFoot),
+                          rf = effectorCm(sk, req.start, Effector::kRFoot);
+    req.constraints = {
+        {Effector::kRHand, effectorCm(sk, req.start, Effector::kRHand) + Eigen::Vector3d(0, 15, 10), false},
+        {Effector::kLFoot, lf, true},
+        {Effector::kRFoot, rf, true}};
     const LearnedIkResult res = solver.solve(req);
     for (const auto& c : res.constraints) {
         CAPTURE(effectorName(c.effector));
@@ -90,7 +92,8 @@ TEST_CASE("learned IK: unreachable and NaN targets give finite results, reached 
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 10, 50);
-    req.constraints = {{Effector::kHead, effectorCm(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
+    req.constraints = {
+        {Effector::kHead, effectorCm(m.clip.skeleton, req.start, Effector::kHead) + Eigen::Vector3d(0, 300, 0), false}};
     LearnedIkResult res = solver.solve(req);
     CHECK_FALSE(res.reached);
     CHECK(std::isfinite(res.constraints[0].residualCm));
@@ -156,11 +159,14 @@ TEST_CASE("learned IK: the stop reason is an enum that agrees with converged and
     const gp::GpModel& m = *version->model;
     LearnedIkSolver solver(version);
     LearnedIkRequest req = test::requestAtFrame(*version, 100, 200);
-    req.constraints = {{Effector::kRFoot, effectorCm(m.clip.skeleton, req.start, Effector::kRFoot) + Eigen::Vector3d(0, 5, 0), false}};
+    req.constraints = {
+        {Effector::kRFoot, effectorCm(m.clip.skeleton, req.start, Effector::kRFoot) + Eigen::Vector3d(0, 5, 0), false}};
     const LearnedIkResult r = solver.solve(req);
     CHECK(r.converged == (r.stop == LearnedIkStop::kConverged));
-    if (r.stop == LearnedIkStop::kLineSearchFailed) CHECK(r.diagnostic.rfind("line search: ", 0) == 0);
-    else CHECK(r.diagnostic == learnedIkStopName(r.stop));
+    if (r.stop == LearnedIkStop::kLineSearchFailed)
+        CHECK(r.diagnostic.rfind("line search: ", 0) == 0);
+    else
+        CHECK(r.diagnostic == learnedIkStopName(r.stop));
     CHECK(r.iterations >= 0);
     CHECK(r.iterations <= req.maxIterations);
     req.maxIterations = 2;

@@ -2,8 +2,8 @@
 // no change from an edit that moves no key.
 #include <algorithm>
 
-#include "motion/motion_quality.h"
 #include "motion/motion_edit.h"
+#include "motion/motion_quality.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -15,7 +15,8 @@ MotionEditJob paperEdit(PathMode mode, int threads) {
     job.version = test::walkModel35();
     job.effector = Effector::kRFoot;
     job.keyFrames = {89 - 1, 103 - 1, 117 - 1, 131 - 1};
-    job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d::Zero()};
+    job.keyOffsetsCm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 20, 0), Eigen::Vector3d(0, 20, 0),
+                        Eigen::Vector3d::Zero()};
     job.mode = mode;
     job.threads = threads;
     return job;
@@ -36,7 +37,8 @@ TEST_CASE("regenerating 89..131 with the middle keys raised 20 cm") {
     FkState fk;
     for (int key : {103 - 1, 117 - 1}) {
         forwardKinematics(clip.skeleton, job.frames[key], fk);
-        CHECK((effectorCm(clip.skeleton, fk, Effector::kRFoot) - (captured[key] + Eigen::Vector3d(0, 20, 0))).norm() < 0.5);
+        CHECK((effectorCm(clip.skeleton, fk, Effector::kRFoot) - (captured[key] + Eigen::Vector3d(0, 20, 0))).norm() <
+              0.5);
     }
     // Untouched frames (outside the open span, and the two end keys) are bit-identical.
     for (int t = 0; t < clip.frameCount(); ++t) {
@@ -77,8 +79,10 @@ TEST_CASE("no edit, no change: a path with every key at its captured position re
             job.run();
             const Clip& clip = version->model->clip;
             double worst = 0.0;
-            for (int t : job.solvedFrames) worst = std::max(worst, largestAngleChangeDeg(job.frames[t], clip.frames[t], clip.skeleton));
-            MESSAGE(clip.name << std::string(mode == PathMode::kDirect ? " direct" : " displacement") << ": largest change " << worst << "°");
+            for (int t : job.solvedFrames)
+                worst = std::max(worst, largestAngleChangeDeg(job.frames[t], clip.frames[t], clip.skeleton));
+            MESSAGE(clip.name << std::string(mode == PathMode::kDirect ? " direct" : " displacement")
+                              << ": largest change " << worst << "°");
             CHECK(worst <= 0.1);
         }
     }

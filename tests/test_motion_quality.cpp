@@ -71,7 +71,9 @@ TEST_CASE("span report: pose change, key and path error, contact travel of a kno
     const Clip c = stillClip(30);
     std::vector<Pose> edited = c.frames;
     // Frames 11..19 turn the right knee by 30°·sin; frame 15 (a key) by 30°.
-    for (int t = 11; t <= 19; ++t) setDof(c, edited[t], 12, PoseLayout(c.skeleton).extract(c.frames[t])[12] + 30.0 * std::sin(3.14159265358979 * (t - 10) / 10.0));
+    for (int t = 11; t <= 19; ++t)
+        setDof(c, edited[t], 12,
+               PoseLayout(c.skeleton).extract(c.frames[t])[12] + 30.0 * std::sin(3.14159265358979 * (t - 10) / 10.0));
     std::vector<Eigen::Vector3d> path;
     for (int t = 10; t <= 20; ++t) path.push_back(effectorCm(c.skeleton, c.frames[t], Effector::kRFoot));
     // The left foot is "held" 12..18 and does not move; the right foot is reported too.

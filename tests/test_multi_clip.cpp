@@ -162,8 +162,8 @@ TEST_CASE("multi-clip: the training range hides ±10 frames of the row's own cli
         std::vector<int> own, byFrameOnly;
         for (std::size_t a = 0; a < m.active.size(); ++a) {
             const int r = m.active[a];
-            const bool near = std::abs(m.trainingFrames[static_cast<std::size_t>(r)] - m.trainingFrames[static_cast<std::size_t>(i)]) <=
-                              kHeldOutWindowFrames;
+            const bool near = std::abs(m.trainingFrames[static_cast<std::size_t>(r)] -
+                                       m.trainingFrames[static_cast<std::size_t>(i)]) <= kHeldOutWindowFrames;
             if (near) byFrameOnly.push_back(static_cast<int>(a));
             if (near && m.rowClip(r) == m.rowClip(i)) own.push_back(static_cast<int>(a));
         }
@@ -212,7 +212,8 @@ TEST_CASE("multi-clip: motiongp train on two kicks, pose --clip on the second, c
     const std::string model = dir + "/two.model";
     const test::CliResult t = test::runCli("train " + kMocap + "/asf_amc/10_02.amc " + kMocap +
                                            "/asf_amc/10_03.amc --frames 1:60 --step 3 --active 15 --iters 1 "
-                                           "--scg-iters 10 --json --out " + model);
+                                           "--scg-iters 10 --json --out " +
+                                           model);
     REQUIRE_MESSAGE(t.exitCode == 0, t.err);
     const auto j = nlohmann::json::parse(t.out);
     CHECK(j["N"] == 40);
@@ -233,8 +234,10 @@ TEST_CASE("multi-clip: motiongp train on two kicks, pose --clip on the second, c
     // edit --clip: the keys are frames of 10_03, the BVH is 10_03, and the adaptive model keeps
     // the file's clip order with the new rows marked as 10_03's.
     const std::string bvh = dir + "/e.bvh", model2 = dir + "/e.model";
-    const test::CliResult e = test::runCli("edit " + model + " --clip 10_03 --effector rhand --keys 10,14,18,22 --offset 0,5,0 "
-                                           "--adaptive --out-model " + model2 + " --out " + bvh);
+    const test::CliResult e = test::runCli("edit " + model +
+                                           " --clip 10_03 --effector rhand --keys 10,14,18,22 --offset 0,5,0 "
+                                           "--adaptive --out-model " +
+                                           model2 + " --out " + bvh);
     REQUIRE_MESSAGE(e.exitCode == 0, e.err);
     const GpModel edited = loadModel(model2);
     CHECK(edited.clipName(0) == "10_02");
@@ -250,8 +253,9 @@ TEST_CASE("multi-clip: motiongp train on two kicks, pose --clip on the second, c
     CHECK(u.err.find("10_02, 10_03") != std::string::npos);
     CHECK(u.err.find("'10_06'") != std::string::npos);
 
-    const test::CliResult x = test::runCli("train " + kMocap + "/asf_amc/10_02.amc " + kMocap +
-                                           "/asf_amc/35_01.amc --frames 1:30 --active 10 --iters 1 --out " + dir + "/x.model");
+    const test::CliResult x =
+        test::runCli("train " + kMocap + "/asf_amc/10_02.amc " + kMocap +
+                     "/asf_amc/35_01.amc --frames 1:30 --active 10 --iters 1 --out " + dir + "/x.model");
     CHECK(x.exitCode == 2);
     CHECK(std::count(x.err.begin(), x.err.end(), '\n') == 1);  // one line
     CHECK(x.err.find("35_01.amc against") != std::string::npos);

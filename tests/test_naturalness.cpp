@@ -7,9 +7,9 @@
 #include "eval/editing_range.h"
 #include "eval/naturalness.h"
 #include "eval/ppca_density.h"
+#include "io/clip_loader.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/forward_kinematics.h"
-#include "io/clip_loader.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -34,7 +34,8 @@ TEST_CASE("PPCA log density equals the Gaussian density of its covariance") {
     const Eigen::VectorXd ev = eig.eigenvalues();  // ascending
     const Eigen::MatrixXd U = eig.eigenvectors().rightCols(3);
     const double s2 = ev.head(3).mean();
-    const Eigen::MatrixXd C = U * ev.tail(3).asDiagonal() * U.transpose() + s2 * (Eigen::MatrixXd::Identity(6, 6) - U * U.transpose());
+    const Eigen::MatrixXd C =
+        U * ev.tail(3).asDiagonal() * U.transpose() + s2 * (Eigen::MatrixXd::Identity(6, 6) - U * U.transpose());
     const Eigen::LLT<Eigen::MatrixXd> llt(C);
     for (int r = 0; r < 5; ++r) {
         const Eigen::VectorXd y = X.row(r * 37).transpose() + Eigen::VectorXd::Constant(6, 0.3 * r);
@@ -130,8 +131,9 @@ TEST_CASE("editing-range sweep: per-test ranges are prefix ranges and the combin
     } else {
         CHECK(binding.empty());
     }
-    MESSAGE("35_01 f101 raise rfoot (T=3, M=100, FAS adaptive): combined " << r.combined << " cm; reach " << r.reach << ", ranges "
-            << r.ranges << ", NN " << r.nearest << ", density " << r.density << ", continuity " << r.continuity);
+    MESSAGE("35_01 f101 raise rfoot (T=3, M=100, FAS adaptive): combined "
+            << r.combined << " cm; reach " << r.reach << ", ranges " << r.ranges << ", NN " << r.nearest << ", density "
+            << r.density << ", continuity " << r.continuity);
 }
 
 TEST_CASE("editing-range sweep, editor drag: the feet planted on the frame stay where they stand") {
@@ -160,7 +162,8 @@ TEST_CASE("editing-range sweep, editor drag: the feet planted on the frame stay 
         for (const EditingStep& s : r.steps) {
             Pose pose = captured;
             PoseLayout(clip.skeleton).apply(s.poseDeg.data(), pose);
-            const double moved = (effectorCm(clip.skeleton, pose, foot) - effectorCm(clip.skeleton, captured, foot)).norm();
+            const double moved =
+                (effectorCm(clip.skeleton, pose, foot) - effectorCm(clip.skeleton, captured, foot)).norm();
             INFO(effectorName(foot) << " at δ = " << s.deltaCm);
             if (s.reach) CHECK(moved <= 0.5);
         }

@@ -53,8 +53,13 @@ bool waitForFile(const std::string& path, double seconds) {
 
 // A short training run written to `out` (ASF/AMC: the train verb does not read BVH).
 std::vector<std::string> trainArgs(const std::string& out) {
-    return {"train", test::mocap("asf_amc/35_01.amc"), "--frames", "1:30", "--active", "10", "--iters", "1",
-            "--scg-iters", "5", "--threads", "1", "--out", out};
+    return {"train",       test::mocap("asf_amc/35_01.amc"),
+            "--frames",    "1:30",
+            "--active",    "10",
+            "--iters",     "1",
+            "--scg-iters", "5",
+            "--threads",   "1",
+            "--out",       out};
 }
 
 test::CliLimits withFault(const std::string& fault) {
@@ -164,7 +169,8 @@ TEST_CASE("models: a full disk (MOTIONGP_FAULT=enospc) fails `motiongp train` cl
     CHECK(r.signal == 0);
     CHECK(r.exitCode != 0);
     CHECK(r.exitCode == 1);  // not bad input (2): the machine's problem
-    CHECK(r.err.find("motiongp: error: " + path + ": expected a writable file, found No space left on device\n") != std::string::npos);
+    CHECK(r.err.find("motiongp: error: " + path + ": expected a writable file, found No space left on device\n") !=
+          std::string::npos);
     CHECK(test::readText(path) == previous);
     CHECK_NOTHROW(gp::loadModel(path));
     CHECK(strays(dir, {"model.json"}).empty());
@@ -186,7 +192,8 @@ TEST_CASE("models: a read-only folder fails `motiongp train` clearly and keeps t
     INFO(test::describe(r));
     CHECK(r.signal == 0);
     CHECK(r.exitCode == 1);
-    CHECK(r.err.find("motiongp: error: " + path + ": expected a writable file, found Permission denied\n") != std::string::npos);
+    CHECK(r.err.find("motiongp: error: " + path + ": expected a writable file, found Permission denied\n") !=
+          std::string::npos);
     CHECK(test::readText(path) == previous);
     CHECK_NOTHROW(gp::loadModel(path));
     CHECK(strays(sub, {"model.json"}).empty());
@@ -246,14 +253,16 @@ TEST_CASE("sessions: a stale temporary of a LIVE process or of another target is
     CHECK(fs::exists(path + ".tmp.notapid"));
 }
 
-TEST_CASE("sessions: a full disk (MOTIONGP_FAULT=enospc) fails saveSession clearly, keeps the previous one, no temporary") {
+TEST_CASE(
+    "sessions: a full disk (MOTIONGP_FAULT=enospc) fails saveSession clearly, keeps the previous one, no temporary") {
     const std::string dir = test::scratchDir("lost_session_enospc");
     const std::string path = dir + "/work.mgsession";
     saveSession(path, sessionWithFrame(3));
     const std::string previous = test::readText(path);
     ::setenv("MOTIONGP_FAULT", "enospc", 1);
     CHECK_THROWS_WITH_AS(saveSession(path, sessionWithFrame(8)),
-                         (path + ": expected a writable file, found No space left on device").c_str(), std::runtime_error);
+                         (path + ": expected a writable file, found No space left on device").c_str(),
+                         std::runtime_error);
     ::unsetenv("MOTIONGP_FAULT");
     CHECK(test::readText(path) == previous);
     checkSessionLoads(path, 3);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -106,9 +106,7 @@ TEST_CASE("training on degenerate clips: a clear error or a finite model, never 
         Clip c = walk(2);
         checkClear(trainOutcome(c, dir + "/two.json"), "expected at least 3 training frames, found 2");
     }
-    SUBCASE("three frames") {
-        CHECK(trainOutcome(walk(3), dir + "/three.json") == "");
-    }
+    SUBCASE("three frames") { CHECK(trainOutcome(walk(3), dir + "/three.json") == ""); }
     SUBCASE("three frames, SGPLVM") {
         gp::TrainOptions opt = smallOptions();
         opt.kind = gp::KernelKind::kSgplvm;
@@ -205,9 +203,10 @@ TEST_CASE("`motiongp train` on degenerate clips: clear error (exit 2, no model) 
         const TrainRun run = cliTrain(dir, "same", amc);
         INFO(test::describe(run.r) << "\n" << run.r.err);
         CHECK(run.r.exitCode == 2);
-        CHECK(run.r.err == "motiongp: error: " + dir +
-                               "/35_same.amc: expected at least one pose DOF that varies over the training frames, found every "
-                               "pose DOF constant (the same pose in every frame)\n");
+        CHECK(run.r.err ==
+              "motiongp: error: " + dir +
+                  "/35_same.amc: expected at least one pose DOF that varies over the training frames, found every "
+                  "pose DOF constant (the same pose in every frame)\n");
         CHECK_FALSE(exists(run.model));
     }
     SUBCASE("three frames") {
@@ -221,8 +220,10 @@ TEST_CASE("`motiongp train` on degenerate clips: clear error (exit 2, no model) 
                                           std::istringstream s(l);
                                           std::string bone;
                                           s >> bone;
-                                          if (bone == "lfemur") return "lfemur " + std::string(t % 2 ? "999999" : "-999999") + " 0 0";
-                                          if (bone == "rhumerus") return "rhumerus 0 0 " + std::to_string(999999 - 13 * t);
+                                          if (bone == "lfemur")
+                                              return "lfemur " + std::string(t % 2 ? "999999" : "-999999") + " 0 0";
+                                          if (bone == "rhumerus")
+                                              return "rhumerus 0 0 " + std::to_string(999999 - 13 * t);
                                           return l;
                                       }));
         INFO(test::describe(run.r) << "\n" << run.r.err);
@@ -231,12 +232,14 @@ TEST_CASE("`motiongp train` on degenerate clips: clear error (exit 2, no model) 
         checkSavedModelFinite(m, dir + "/huge_again.json");
     }
     SUBCASE("a NaN angle") {
-        const TrainRun run = cliTrain(dir, "nan", amcFrom35(10, [](int t, const std::string& l) {
-                                          return t == 4 && l.rfind("lfemur ", 0) == 0 ? std::string("lfemur 1 nan 2") : l;
-                                      }));
+        const TrainRun run =
+            cliTrain(dir, "nan", amcFrom35(10, [](int t, const std::string& l) {
+                         return t == 4 && l.rfind("lfemur ", 0) == 0 ? std::string("lfemur 1 nan 2") : l;
+                     }));
         CHECK(run.r.exitCode == 2);
-        CHECK(std::regex_match(run.r.err, std::regex("motiongp: error: .*/35_nan\\.amc:[0-9]+: expected a finite number for bone "
-                                                     "'lfemur', found 'nan'\n")));
+        CHECK(std::regex_match(run.r.err,
+                               std::regex("motiongp: error: .*/35_nan\\.amc:[0-9]+: expected a finite number for bone "
+                                          "'lfemur', found 'nan'\n")));
         CHECK_FALSE(exists(run.model));
     }
 }
@@ -252,7 +255,6 @@ gp::ModelVersionPtr smallModelVersion() {
     }();
     return v;
 }
-
 
 Eigen::Vector3d effectorOf(const Skeleton& sk, const Pose& p, Effector e) {
     FkState fk;
@@ -280,10 +282,11 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
         bool reachable;
     };
     for (const Target& t : {Target{"10 m away", {1000, 0, 0}, false}, Target{"1 km away", {0, 1e5, 0}, false},
-                            Target{"1e150 cm away", {1e150, 0, 0}, false}, Target{"1e308 cm away", {0, 0, 1e308}, false},
-                            Target{"zero-length", {0, 0, 0}, true}}) {
+                            Target{"1e150 cm away", {1e150, 0, 0}, false},
+                            Target{"1e308 cm away", {0, 0, 1e308}, false}, Target{"zero-length", {0, 0, 0}, true}}) {
         CAPTURE(t.name);
-        req.constraints = {{Effector::kRHand, hand + t.offset, false}, {Effector::kLFoot, effectorOf(clip.skeleton, req.start, Effector::kLFoot), true}};
+        req.constraints = {{Effector::kRHand, hand + t.offset, false},
+                           {Effector::kLFoot, effectorOf(clip.skeleton, req.start, Effector::kLFoot), true}};
         if (!req.constraints[0].targetCm.allFinite()) {  // 1e308 + hand can round to Inf
             CHECK(solver.validate(req) != "");
             continue;
@@ -296,8 +299,10 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
         CHECK(allFinite(r.pose));
         CHECK(r.x.allFinite());
         CHECK(r.y.allFinite());
-        if (t.offset.norm() < 1e154) CHECK(std::isfinite(r.objective));
-        else CHECK(r.diagnostic.find("no finite objective") != std::string::npos);  // F = residual² overflows: said so
+        if (t.offset.norm() < 1e154)
+            CHECK(std::isfinite(r.objective));
+        else
+            CHECK(r.diagnostic.find("no finite objective") != std::string::npos);  // F = residual² overflows: said so
         CHECK(std::isfinite(r.sigma2));
         CHECK(std::isfinite(r.constraints[0].residualCm));
         CHECK(r.reached == t.reachable);
@@ -310,7 +315,8 @@ TEST_CASE("learned IK: unreachable, far-away, zero-length and non-finite targets
             CHECK(r.constraints[0].residualCm <= kReachedToleranceCm);
         }
     }
-    for (const Eigen::Vector3d& bad : {Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d(0, inf, 0), Eigen::Vector3d(0, 0, -inf)}) {
+    for (const Eigen::Vector3d& bad :
+         {Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d(0, inf, 0), Eigen::Vector3d(0, 0, -inf)}) {
         req.constraints = {{Effector::kRHand, bad, false}};
         CHECK(solver.validate(req) == "expected a finite target for rhand, found NaN or Inf");
         // solve() itself must not throw or return NaN even if the caller skipped validate().
@@ -326,7 +332,8 @@ TEST_CASE("`motiongp pose`: a target 1e308 cm away is a finite NOT-reached resul
     gp::saveModel(model, *smallModelVersion()->model);
     for (const char* offset : {"rhand=1000,0,0", "rhand=0,1e300,0", "rhand=0,0,1e308"}) {
         CAPTURE(offset);
-        const test::CliResult r = test::runCliArgs({"pose", model, "--frame", "21", "--target", offset, "--json"}, test::hostileLimits());
+        const test::CliResult r =
+            test::runCliArgs({"pose", model, "--frame", "21", "--target", offset, "--json"}, test::hostileLimits());
         INFO(test::describe(r) << "\n" << r.err);
         REQUIRE(r.exitCode == 0);
         const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -343,9 +350,11 @@ TEST_CASE("`motiongp pose`: a target 1e308 cm away is a finite NOT-reached resul
     }
     for (const char* offset : {"rhand=nan,0,0", "rhand=0,inf,0", "rhand=0,0,1e999"}) {
         CAPTURE(offset);
-        const test::CliResult r = test::runCliArgs({"pose", model, "--frame", "21", "--target", offset}, test::hostileLimits());
+        const test::CliResult r =
+            test::runCliArgs({"pose", model, "--frame", "21", "--target", offset}, test::hostileLimits());
         CHECK(r.exitCode == 2);
-        CHECK(r.err == std::string("motiongp: error: expected --target as dx,dy,dz in cm, found '") + (std::string(offset).substr(6)) + "'\n");
+        CHECK(r.err == std::string("motiongp: error: expected --target as dx,dy,dz in cm, found '") +
+                           (std::string(offset).substr(6)) + "'\n");
     }
 }
 
@@ -356,8 +365,10 @@ TEST_CASE("editor document: unreachable, zero-length and non-finite drags keep a
         // A fresh document on frame 20 (learned: the small model; else plain IK on the walk).
         auto makeDoc = [&] {
             auto doc = std::make_unique<EditorDocument>();
-            if (learned) doc->setModel(smallModelVersion(), true);
-            else doc->setClip(walk(60), true);
+            if (learned)
+                doc->setModel(smallModelVersion(), true);
+            else
+                doc->setClip(walk(60), true);
             REQUIRE(doc->hasModel() == learned);
             doc->setFrame(20);
             return doc;

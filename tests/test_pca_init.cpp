@@ -39,7 +39,8 @@ TEST_CASE("pca_init: whitened latent columns have mean 0 and population variance
             CHECK(std::abs(p.X.col(c).squaredNorm() / n - 1.0) < 1e-12);
         }
         // Components are orthonormal, eigenvalues descend, signs follow the rule.
-        CHECK((p.components.transpose() * p.components - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff() < 1e-12);
+        CHECK((p.components.transpose() * p.components - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff() <
+              1e-12);
         for (int c = 0; c + 1 < dim; ++c) CHECK(p.eigenvalues[c] >= p.eigenvalues[c + 1]);
         for (int c = 0; c < dim; ++c) {
             Eigen::Index big;

@@ -33,7 +33,9 @@ TEST_CASE("plain IK: an unreachable target gives the best effort, reached = fals
     PlainIkJob job;
     job.skeleton = &clip.skeleton;
     job.start = clip.frames[0];
-    job.constraints = {{Effector::kRHand, effectorCm(clip.skeleton, clip.frames[0], Effector::kRHand) + Eigen::Vector3d(0, 500, 0), false}};
+    job.constraints = {{Effector::kRHand,
+                        effectorCm(clip.skeleton, clip.frames[0], Effector::kRHand) + Eigen::Vector3d(0, 500, 0),
+                        false}};
     job.solve();
     CHECK_FALSE(job.reached);
     CHECK(job.results[0].residualCm > 100.0);
@@ -50,7 +52,8 @@ TEST_CASE("plain IK refuses NaN targets and duplicate effectors without touching
     job.solve();
     CHECK(job.diagnostic == "expected a finite target for head, found NaN or Inf");
     CHECK_FALSE(job.reached);
-    job.constraints = {{Effector::kHead, Eigen::Vector3d::Zero(), false}, {Effector::kHead, Eigen::Vector3d::Zero(), true}};
+    job.constraints = {{Effector::kHead, Eigen::Vector3d::Zero(), false},
+                       {Effector::kHead, Eigen::Vector3d::Zero(), true}};
     job.solve();
     CHECK(job.diagnostic == "expected each effector once, found head twice");
 }

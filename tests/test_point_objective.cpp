@@ -71,13 +71,19 @@ TEST_CASE("L_IK: gradients w.r.t. x and y match central differences (including n
                 Eigen::VectorXd a = x, b = x;
                 a[c] += hx;
                 b[c] -= hx;
-                errX = std::max(errX, std::abs((pm.evaluate(a, y, nullptr, nullptr) - pm.evaluate(b, y, nullptr, nullptr)) / (2 * hx) - gx[c]));
+                errX = std::max(
+                    errX,
+                    std::abs((pm.evaluate(a, y, nullptr, nullptr) - pm.evaluate(b, y, nullptr, nullptr)) / (2 * hx) -
+                             gx[c]));
             }
             for (Eigen::Index k = 0; k < y.size(); ++k) {
                 Eigen::VectorXd a = y, b = y;
                 a[k] += hy;
                 b[k] -= hy;
-                errY = std::max(errY, std::abs((pm.evaluate(x, a, nullptr, nullptr) - pm.evaluate(x, b, nullptr, nullptr)) / (2 * hy) - gy[k]));
+                errY = std::max(
+                    errY,
+                    std::abs((pm.evaluate(x, a, nullptr, nullptr) - pm.evaluate(x, b, nullptr, nullptr)) / (2 * hy) -
+                             gy[k]));
             }
             CAPTURE(kernelKindName(kind));
             CAPTURE(xv.transpose());
@@ -110,8 +116,9 @@ TEST_CASE("σ² over many points at once (the latent map's) is predict's σ² at
         Eigen::MatrixXd points(1100, 2);
         for (Eigen::Index i = 0; i < points.rows(); ++i) {
             const double t = double(i) / double(points.rows());
-            points.row(i) = i < s.X.rows() ? Eigen::RowVector2d(s.X.row(i))
-                                            : Eigen::RowVector2d(6.0 * std::cos(40.0 * t) * t, 6.0 * std::sin(40.0 * t) * t - 0.1);
+            points.row(i) = i < s.X.rows()
+                                ? Eigen::RowVector2d(s.X.row(i))
+                                : Eigen::RowVector2d(6.0 * std::cos(40.0 * t) * t, 6.0 * std::sin(40.0 * t) * t - 0.1);
         }
         points.row(1099) << 0.6e-4, -0.8e-4;
         const Eigen::VectorXd v = pm.variances(points);

@@ -36,7 +36,9 @@ TEST_CASE("ActiveSetPosterior::evaluate with a workspace equals the reference ev
     }
 }
 
-TEST_CASE("ActiveSetPosterior::evaluate with a workspace: σ² from the Cholesky factor is smooth where the inverse's cancels") {
+TEST_CASE(
+    "ActiveSetPosterior::evaluate with a workspace: σ² from the Cholesky factor is smooth where the inverse's "
+    "cancels") {
     // σ² = k(x,x) − kᵀK⁻¹k next to a training point is 12 − 12 → ~1e-2. With the explicit K⁻¹ the
     // cancellation leaves noise of κ(K)·ε·k(x,x) in σ²: on weakly trained models L_IK jittered by up
     // to 1e-8 relative from one x to the next, more than the IK's stationarity test allows, and
@@ -62,7 +64,8 @@ TEST_CASE("ActiveSetPosterior::evaluate with a workspace: σ² from the Cholesky
     }
     auto worstSecondDifference = [](const std::vector<double>& s) {
         double worst = 0.0;
-        for (std::size_t i = 1; i + 1 < s.size(); ++i) worst = std::max(worst, std::abs(s[i - 1] - 2.0 * s[i] + s[i + 1]));
+        for (std::size_t i = 1; i + 1 < s.size(); ++i)
+            worst = std::max(worst, std::abs(s[i - 1] - 2.0 * s[i] + s[i + 1]));
         return worst;
     };
     const double kxx = m.kernel().diagF(x0);

@@ -8,9 +8,9 @@ using namespace mgp;
 
 TEST_CASE("pose layer: the Hermite blend weight is 1 at the frame and 0 with zero slope at the ends") {
     CHECK(poseLayerWeight(10, 10, 4) == 1.0);
-    CHECK(poseLayerWeight(12, 10, 4) == doctest::Approx(0.5));    // d = 1/2: (1/4)(2) = 1/2
-    CHECK(poseLayerWeight(11, 10, 4) == doctest::Approx(0.84375)); // d = 1/4: (9/16)(3/2)
-    CHECK(poseLayerWeight(7, 10, 4) == doctest::Approx(0.15625));  // d = 3/4: (1/16)(5/2)
+    CHECK(poseLayerWeight(12, 10, 4) == doctest::Approx(0.5));      // d = 1/2: (1/4)(2) = 1/2
+    CHECK(poseLayerWeight(11, 10, 4) == doctest::Approx(0.84375));  // d = 1/4: (9/16)(3/2)
+    CHECK(poseLayerWeight(7, 10, 4) == doctest::Approx(0.15625));   // d = 3/4: (1/16)(5/2)
     CHECK(poseLayerWeight(14, 10, 4) == 0.0);
     CHECK(poseLayerWeight(20, 10, 4) == 0.0);
     CHECK(poseLayerWeight(10, 10, 0) == 1.0);

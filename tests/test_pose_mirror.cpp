@@ -88,7 +88,9 @@ TEST_CASE("eulerFromMatrix inverts eulerMatrix for all six orders, and eulerAlte
     }
     // The ZYX special case agrees with the general one.
     const Eigen::Vector3d a(12.0, -33.0, 140.0);
-    CHECK((eulerFromMatrix(eulerMatrix(a, kOrderZYX), kOrderZYX) - eulerZYXFromMatrix(eulerMatrix(a, kOrderZYX))).norm() < 1e-12);
+    CHECK(
+        (eulerFromMatrix(eulerMatrix(a, kOrderZYX), kOrderZYX) - eulerZYXFromMatrix(eulerMatrix(a, kOrderZYX))).norm() <
+        1e-12);
 }
 
 TEST_CASE("fitJointAngles: a representable rotation exactly, a missing axis by least squares") {
@@ -111,7 +113,8 @@ TEST_CASE("fitJointAngles: a representable rotation exactly, a missing axis by l
         CHECK((q2.transpose() * eulerMatrix(Eigen::Vector3d(t, 0, 0), kOrderZYX)).trace() <= best + 1e-12);
 }
 
-TEST_CASE("mirror pose on an exactly symmetric skeleton: partners' FK positions are reflections, mirror twice is identity") {
+TEST_CASE(
+    "mirror pose on an exactly symmetric skeleton: partners' FK positions are reflections, mirror twice is identity") {
     const Clip clip = makeSyntheticWalk(40);
     const Skeleton& sk = clip.skeleton;
     const PoseMirror m = mirrorOf(sk);
@@ -155,7 +158,9 @@ TEST_CASE("mirror pose keeps the root position and heading, and mirrors a turned
     CHECK(mp.rootCm == p.rootCm);
 }
 
-TEST_CASE("mirror pose on real CMU clips: mirror twice is identity, and the reflection residual of the capture skeleton's asymmetry") {
+TEST_CASE(
+    "mirror pose on real CMU clips: mirror twice is identity, and the reflection residual of the capture skeleton's "
+    "asymmetry") {
     struct Case {
         const char* file;
         // The stated bound on the FK reflection residual (joints and bone ends, every frame):
@@ -174,13 +179,16 @@ TEST_CASE("mirror pose on real CMU clips: mirror twice is identity, and the refl
         forwardKinematics(clip.skeleton, rest, fk);
         double restAsym = 0.0;
         for (int j = 0; j < clip.skeleton.jointCount(); ++j)
-            restAsym = std::max(restAsym, (fk.jointCm[j] - fk.jointCm[0] - m.reflection() * (fk.jointCm[m.partner(j)] - fk.jointCm[0])).norm());
+            restAsym = std::max(
+                restAsym,
+                (fk.jointCm[j] - fk.jointCm[0] - m.reflection() * (fk.jointCm[m.partner(j)] - fk.jointCm[0])).norm());
         // Rotations are mirrored exactly, so joint j misses its partner's reflection by at most the
         // bones' own asymmetry along its chain: Σ_k ‖offset_k − S offset_π(k)‖ (triangle inequality).
         const Skeleton& sk = clip.skeleton;
         std::vector<double> chain(sk.jointCount(), 0.0);
         for (int j = 1; j < sk.jointCount(); ++j)
-            chain[j] = chain[sk.joints[j].parent] + (sk.joints[j].offsetCm - m.reflection() * sk.joints[m.partner(j)].offsetCm).norm();
+            chain[j] = chain[sk.joints[j].parent] +
+                       (sk.joints[j].offsetCm - m.reflection() * sk.joints[m.partner(j)].offsetCm).norm();
         double worstFk = 0.0, worstTwice = 0.0, meanFk = 0.0, worstOverBound = -1e300;
         FkState fa, fb;
         for (const Pose& p : clip.frames) {
@@ -197,10 +205,11 @@ TEST_CASE("mirror pose on real CMU clips: mirror twice is identity, and the refl
             meanFk += r / clip.frameCount();
             worstTwice = std::max(worstTwice, angleDistanceMod360(m.mirror(mp), p));
         }
-        MESSAGE(c.file << ": rest asymmetry " << restAsym << " cm, " << m.pairCount() << " pairs, lateral axis " << m.lateralAxis().transpose()
-                       << ", mirror twice " << worstTwice << " deg, FK reflection residual max " << worstFk
-                       << " cm (mean of per-frame max " << meanFk << " cm), largest chain asymmetry "
-                       << *std::max_element(chain.begin(), chain.end()) << " cm, " << m.droppedAxes().size() << " dropped axes");
+        MESSAGE(c.file << ": rest asymmetry " << restAsym << " cm, " << m.pairCount() << " pairs, lateral axis "
+                       << m.lateralAxis().transpose() << ", mirror twice " << worstTwice
+                       << " deg, FK reflection residual max " << worstFk << " cm (mean of per-frame max " << meanFk
+                       << " cm), largest chain asymmetry " << *std::max_element(chain.begin(), chain.end()) << " cm, "
+                       << m.droppedAxes().size() << " dropped axes");
         CHECK(worstOverBound <= 1e-9);
         CHECK(worstTwice < 1e-9);
         CHECK(worstFk < c.boundCm);
@@ -225,7 +234,8 @@ TEST_CASE("mirror pose: a DOF the partner lacks is fitted away by least squares,
     const Eigen::Matrix3d target = m.reflection() * eulerMatrix(p.anglesDeg[lw], sk.joints[lw].order) * m.reflection();
     const double best = (target.transpose() * eulerMatrix(mp.anglesDeg[rw], sk.joints[rw].order)).trace();
     for (double t = -180.0; t < 180.0; t += 0.01)
-        CHECK((target.transpose() * eulerMatrix(Eigen::Vector3d(0, t, 0), sk.joints[rw].order)).trace() <= best + 1e-12);
+        CHECK((target.transpose() * eulerMatrix(Eigen::Vector3d(0, t, 0), sk.joints[rw].order)).trace() <=
+              best + 1e-12);
     // Joints that do not hang from the right wrist still mirror exactly.
     FkState fk, fkm;
     forwardKinematics(sk, p, fk);

@@ -46,14 +46,16 @@ TEST_CASE("editor: a pose pasted 70 frames away blends into its neighbours, is h
     CHECK(held.rootCm == pasted.rootCm);
     for (int j = 0; j < s.clip().skeleton.jointCount(); ++j) CHECK(held.anglesDeg[j] == pasted.anglesDeg[j]);
     const double spreadJump = std::max(s.stepDeg(109), s.stepDeg(110));
-    MESSAGE("largest step next to the pasted frame: " << oneFrameJump << " deg as one frame, " << spreadJump << " deg spread");
+    MESSAGE("largest step next to the pasted frame: " << oneFrameJump << " deg as one frame, " << spreadJump
+                                                      << " deg spread");
     CHECK(spreadJump < 0.25 * oneFrameJump);
     // Over the whole span, no step exceeds the capture's by more than the blend's own steepest step
     // (the Hermite weight's slope is at most 1.5 / r, r = 20).
     double worst = 0.0;
     int worstAt = -1;
     for (int t = 89; t <= 130; ++t) {
-        const double excess = s.stepDeg(t) - largestAngleChangeDeg(s.clip().frames[t + 1], s.clip().frames[t], s.clip().skeleton);
+        const double excess =
+            s.stepDeg(t) - largestAngleChangeDeg(s.clip().frames[t + 1], s.clip().frames[t], s.clip().skeleton);
         if (excess > worst) {
             worst = excess;
             worstAt = t;
@@ -96,8 +98,10 @@ TEST_CASE("editor: a pose change on the clip's first frame stays there, and the 
     REQUIRE(s.doc.pastePose(source).empty());
     s.doc.waitIdle();
     const std::string said = s.doc.pollRegenerate();
-    CHECK(said.find("paste pose on frame 1: kept on frame 1 alone, not spread (expected a frame with a captured frame on each "
-                    "side") == 0);
+    CHECK(
+        said.find(
+            "paste pose on frame 1: kept on frame 1 alone, not spread (expected a frame with a captured frame on each "
+            "side") == 0);
     CHECK(s.doc.pollRegenerate().empty());  // said once
     CHECK(s.doc.edits().size() == 1);
 }

@@ -107,7 +107,9 @@ TEST_CASE("a damaged recent list is ignored with a message") {
           file + ": expected a JSON recent-files list, found damaged JSON (ignored)");
     CHECK(loadOf("") == file + ": expected a JSON recent-files list, found an empty file (ignored)");
     CHECK(loadOf("{\"format\": \"motiongp-recent\", \"version\": 1, \"files\": [{\"path\": 3, \"kind\": \"clip\"}]}") ==
-          file + ": expected entries {\"path\": string, \"kind\": session|clip|model}, found '{\"kind\":\"clip\",\"path\":3}' (ignored)");
+          file +
+              ": expected entries {\"path\": string, \"kind\": session|clip|model}, found "
+              "'{\"kind\":\"clip\",\"path\":3}' (ignored)");
     CHECK(loadOf("{\"format\": \"motiongp-recent\", \"version\": 9, \"files\": []}") ==
           file + ": expected version ≤ 1, found '9' (ignored)");
     CHECK(loadOf("[]") == file + ": expected \"format\": \"motiongp-recent\", found another document (ignored)");

@@ -45,7 +45,8 @@ void checkSameDoubles(const SessionData& a, const SessionData& b) {
         const EditRecord& other = b.edits.at(frame);
         CHECK(rec.pose.rootCm == other.pose.rootCm);
         REQUIRE(rec.pose.anglesDeg.size() == other.pose.anglesDeg.size());
-        for (std::size_t k = 0; k < rec.pose.anglesDeg.size(); ++k) CHECK(rec.pose.anglesDeg[k] == other.pose.anglesDeg[k]);
+        for (std::size_t k = 0; k < rec.pose.anglesDeg.size(); ++k)
+            CHECK(rec.pose.anglesDeg[k] == other.pose.anglesDeg[k]);
         CHECK(rec.x.size() == other.x.size());
         CHECK(rec.x == other.x);
         CHECK(rec.moved == other.moved);
@@ -72,7 +73,7 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     Eigen::VectorXd x = model.X.row(12).transpose();
     x[0] += 1.0 / 3.0;
     s.edits[12] = nudgedEdit(model.clip, 12, x);
-    s.edits[12].moved = {Effector::kRHand, Effector::kHead};  // what the admission leaves out
+    s.edits[12].moved = {Effector::kRHand, Effector::kHead};      // what the admission leaves out
     s.edits[40] = nudgedEdit(model.clip, 40, Eigen::VectorXd());  // solved by plain IK
     s.frame = 40;
     s.pins[static_cast<int>(Effector::kLFoot)] = true;
@@ -82,7 +83,8 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     s.compareMode = "model";
     s.adaptiveEnabled = false;
     s.camera = {12.5 / 7.0, -3.0 / 11.0, 417.123456789012345, 35.000000000000007, {0.1, 90.2, -1e-300}, false};
-    s.path = {true, Effector::kRFoot, {20, 30, 45}, {{0, 0, 0}, {1.0 / 3.0, 5, -2}, {0, 0, 0}}, PathMode::kDisplacement};
+    s.path = {
+        true, Effector::kRFoot, {20, 30, 45}, {{0, 0, 0}, {1.0 / 3.0, 5, -2}, {0, 0, 0}}, PathMode::kDisplacement};
     s.ui = {{"panels", {{"latent_map", true}, {"timeline", false}}}, {"zoom", 1.25}, {"name", "ünïcode"}};
 
     const std::string path = dir + "/walk" + kSessionExtension;
@@ -113,7 +115,7 @@ TEST_CASE("a session with a model, edits, pins, camera, path edit and UI state r
     CHECK(r.path.mode == PathMode::kDisplacement);
     CHECK(r.ui == s.ui);
     CHECK(sessionToJsonText(r, path) == test::readText(path));  // nothing lost, nothing added
-    CHECK_FALSE(loadSessionClip(r, path));                       // the model carries the clip
+    CHECK_FALSE(loadSessionClip(r, path));                      // the model carries the clip
 }
 
 TEST_CASE("a session on the synthetic walk needs no file and rebuilds the clip") {
@@ -180,8 +182,9 @@ TEST_CASE("a clip file that changed since the session was saved loads with a war
     test::writeText(dir + "/35_01.amc", test::readText(dir + "/35_01.amc") + "\n");
     const SessionData r = loadSession(dir + "/s.mgsession");
     REQUIRE(r.warnings.size() == 1);
-    CHECK(r.warnings[0] == dir + "/35_01.amc changed since the session was saved (SHA-256 differs): "
-                                 "the edits may not fit the motion");
+    CHECK(r.warnings[0] == dir +
+                               "/35_01.amc changed since the session was saved (SHA-256 differs): "
+                               "the edits may not fit the motion");
     CHECK(loadSessionClip(r, dir + "/s.mgsession"));
 }
 
@@ -216,7 +219,8 @@ TEST_CASE("every damaged session file gives one exact error") {
     CHECK(errorOf("{\"format\": \"motiongp-session\", \"vers") ==
           f + ": expected a JSON session file (format motiongp-session), found damaged JSON "
               "([json.exception.parse_error.101] parse error at line 1, column 37: syntax error while "
-              "parsing object key - invalid string: missing closing quote; last read: '\"vers'; expected string literal)");
+              "parsing object key - invalid string: missing closing quote; last read: '\"vers'; expected string "
+              "literal)");
     CHECK(mutated([](json& j) { j["camera"]["yaw_deg"] = nullptr; }) ==
           f + ": expected camera.yaw_deg as a number, found null");
     CHECK(mutated([](json& j) { j["edits"][0]["root_cm"][1] = nullptr; }) ==
@@ -226,10 +230,12 @@ TEST_CASE("every damaged session file gives one exact error") {
     CHECK(mutated([](json& j) { j["adaptive_enabled"] = 1; }) ==
           f + ": expected adaptive_enabled as true or false, found 1");
     CHECK(mutated([](json& j) { j["edits"] = json::object(); }) == f + ": expected edits as an array, found an object");
-    CHECK(mutated([](json& j) { j["edits"][0]["angles_deg"][0] = json::array({1, 2}); }) ==
-          f + ": expected edits[0].angles_deg[0] as an array of 3 numbers, found an array of 2");
+    CHECK(mutated([](json& j) {
+              j["edits"][0]["angles_deg"][0] = json::array({1, 2});
+          }) == f + ": expected edits[0].angles_deg[0] as an array of 3 numbers, found an array of 2");
     CHECK(mutated([](json& j) { j.erase("camera"); }) == f + ": expected field 'camera', found none");
-    CHECK(mutated([](json& j) { j["camera"].erase("target_cm"); }) == f + ": expected field 'camera.target_cm', found none");
+    CHECK(mutated([](json& j) { j["camera"].erase("target_cm"); }) ==
+          f + ": expected field 'camera.target_cm', found none");
     CHECK(mutated([](json& j) { j["pins"] = json::array({"lknee"}); }) ==
           f + ": expected pins[0] as an effector name (lhand rhand lfoot rfoot head), found \"lknee\"");
     CHECK(mutated([](json& j) { j["edits"][0]["moved"] = json::array({"lknee"}); }) ==
@@ -241,33 +247,49 @@ TEST_CASE("every damaged session file gives one exact error") {
     CHECK(mutated([](json& j) { j["edits"].push_back(j["edits"][0]); }) ==
           f + ": expected distinct edit frames, found frame 5 twice");
     CHECK(mutated([](json& j) { j["frame"] = 1e12; }) == f + ": expected frame as an integer, found 1000000000000.0");
-    CHECK(mutated([](json& j) { j["frame"] = 4000000000LL; }) == f + ": expected frame as an integer, found 4000000000");
-    CHECK(mutated([](json& j) { j["edits"][0]["x"] = json::array({0.5, 0.25}); }) ==
-          f + ": expected edits[0].x of 0 numbers (no model: []), found 2");
-    CHECK(mutated([](json& j) { j["path"] = {{"effector", "rfoot"}, {"key_frames", {10, 5}}, {"key_offsets_cm", {{0, 0, 0}, {0, 0, 0}}}, {"mode", "direct"}}; }) ==
-          f + ": expected path.key_frames strictly increasing from 0, found 5");
+    CHECK(mutated([](json& j) { j["frame"] = 4000000000LL; }) ==
+          f + ": expected frame as an integer, found 4000000000");
+    CHECK(mutated([](json& j) {
+              j["edits"][0]["x"] = json::array({0.5, 0.25});
+          }) == f + ": expected edits[0].x of 0 numbers (no model: []), found 2");
+    CHECK(mutated([](json& j) {
+              j["path"] = {{"effector", "rfoot"},
+                           {"key_frames", {10, 5}},
+                           {"key_offsets_cm", {{0, 0, 0}, {0, 0, 0}}},
+                           {"mode", "direct"}};
+          }) == f + ": expected path.key_frames strictly increasing from 0, found 5");
     CHECK(mutated([](json& j) { j["ui"] = json::array(); }) == f + ": expected ui as an object, found an array of 0");
-    CHECK(mutated([](json& j) { j["keys"] = json::array({4, -1}); }) == f + ": expected distinct key frames ≥ 0, found -1");
-    CHECK(mutated([](json& j) { j["keys"] = json::array({4, 4}); }) == f + ": expected distinct key frames ≥ 0, found 4");
-    CHECK(mutated([](json& j) { j["keys"] = json::array({4.5}); }) == f + ": expected keys[0] as an integer, found 4.5");
+    CHECK(mutated([](json& j) {
+              j["keys"] = json::array({4, -1});
+          }) == f + ": expected distinct key frames ≥ 0, found -1");
+    CHECK(mutated([](json& j) {
+              j["keys"] = json::array({4, 4});
+          }) == f + ": expected distinct key frames ≥ 0, found 4");
+    CHECK(mutated([](json& j) { j["keys"] = json::array({4.5}); }) ==
+          f + ": expected keys[0] as an integer, found 4.5");
     CHECK(mutated([](json& j) { j["keys"] = 3; }) == f + ": expected keys as an array, found 3");
     // A session from before keys existed has none.
     CHECK(mutated([](json& j) { j.erase("keys"); }) == "no error");
-    CHECK(mutated([](json& j) { j["model"] = 7; }) == f + ": expected model as a motiongp-model object or null, found 7");
+    CHECK(mutated([](json& j) { j["model"] = 7; }) ==
+          f + ": expected model as a motiongp-model object or null, found 7");
     CHECK(errorOf("[1, 2]") == f + ": expected \"format\": \"motiongp-session\", found no format field");
-    CHECK(errorOf("{\"format\": \"motiongp-session\", \"version\": 1, \"clip\": {\"synthetic\": false, \"synthetic_frames\": 240, "
-                  "\"path\": \"a.amc\", \"relative_path\": \"\", \"skeleton_path\": \"\", \"skeleton_relative_path\": \"\", "
-                  "\"sha256\": \"\"}, \"model\": null, \"model_version\": 0, \"compare_model\": null, \"edits\": [{\"frame\": 0, "
-                  "\"root_cm\": [1e400, 0, 0], \"angles_deg\": [[0, 0, 0]], \"x\": []}]}") ==
-          f + ": expected a JSON session file (format motiongp-session), found damaged JSON "
-              "([json.exception.out_of_range.406] number overflow parsing '1e400')");
+    CHECK(
+        errorOf(
+            "{\"format\": \"motiongp-session\", \"version\": 1, \"clip\": {\"synthetic\": false, \"synthetic_frames\": "
+            "240, "
+            "\"path\": \"a.amc\", \"relative_path\": \"\", \"skeleton_path\": \"\", \"skeleton_relative_path\": \"\", "
+            "\"sha256\": \"\"}, \"model\": null, \"model_version\": 0, \"compare_model\": null, \"edits\": "
+            "[{\"frame\": 0, "
+            "\"root_cm\": [1e400, 0, 0], \"angles_deg\": [[0, 0, 0]], \"x\": []}]}") ==
+        f + ": expected a JSON session file (format motiongp-session), found damaged JSON "
+            "([json.exception.out_of_range.406] number overflow parsing '1e400')");
 
     // Checks that need the clip.
     SessionData s = sessionFromJsonText(good.dump(), f);
     CHECK(validateAgainstClip(s, clip) == "");
     s.edits[100000] = s.edits[5];
-    CHECK(validateAgainstClip(s, clip) == "expected edit frames in 0.." + std::to_string(clip.frameCount() - 1) +
-                                              " (the clip's frames), found 100000");
+    CHECK(validateAgainstClip(s, clip) ==
+          "expected edit frames in 0.." + std::to_string(clip.frameCount() - 1) + " (the clip's frames), found 100000");
     s.edits.erase(100000);
     s.edits[5].pose.anglesDeg.resize(22);
     CHECK(validateAgainstClip(s, clip) == "expected " + std::to_string(clip.skeleton.jointCount()) +
@@ -309,19 +331,24 @@ TEST_CASE("missing clip, empty file, directory and missing session give clear er
     s.clipPath = dir + "/nowhere/x.amc";
     saveSession(dir + "/s.mgsession", s);
     CHECK_THROWS_WITH_AS(loadSession(dir + "/s.mgsession"),
-                         (dir + "/s.mgsession: expected the session's clip file (nowhere/x.amc relative to the "
-                                "session, or " + dir + "/nowhere/x.amc), found neither").c_str(),
+                         (dir +
+                          "/s.mgsession: expected the session's clip file (nowhere/x.amc relative to the "
+                          "session, or " +
+                          dir + "/nowhere/x.amc), found neither")
+                             .c_str(),
                          ParseError);
     test::writeText(dir + "/empty.mgsession", "");
-    CHECK_THROWS_WITH_AS(loadSession(dir + "/empty.mgsession"),
-                         (dir + "/empty.mgsession: expected a JSON session file (format motiongp-session), found an empty file").c_str(),
-                         ParseError);
+    CHECK_THROWS_WITH_AS(
+        loadSession(dir + "/empty.mgsession"),
+        (dir + "/empty.mgsession: expected a JSON session file (format motiongp-session), found an empty file").c_str(),
+        ParseError);
     fs::create_directories(dir + "/folder.mgsession");
     CHECK_THROWS_WITH_AS(loadSession(dir + "/folder.mgsession"),
                          (dir + "/folder.mgsession: expected a file, found a directory").c_str(), ParseError);
-    CHECK_THROWS_WITH_AS(loadSession(dir + "/none.mgsession"),
-                         (dir + "/none.mgsession: expected a readable file, found none (No such file or directory)").c_str(),
-                         ParseError);
+    CHECK_THROWS_WITH_AS(
+        loadSession(dir + "/none.mgsession"),
+        (dir + "/none.mgsession: expected a readable file, found none (No such file or directory)").c_str(),
+        ParseError);
 }
 
 TEST_CASE("session file: the undo history and the adaptive table round-trip bit-exactly, and version 1 still reads") {
@@ -384,7 +411,8 @@ TEST_CASE("session file: the undo history and the adaptive table round-trip bit-
     // A history frame outside the clip is caught with the clip, naming the step.
     SessionData bad = r;
     bad.undoSteps[0].after[100000] = std::nullopt;
-    CHECK(validateAgainstClip(bad, clip) == "expected undo history frames in 0.." + std::to_string(clip.frameCount() - 1) +
+    CHECK(validateAgainstClip(bad, clip) == "expected undo history frames in 0.." +
+                                                std::to_string(clip.frameCount() - 1) +
                                                 " (the clip's frames), found 100000 in \"drag rhand on frame 6\"");
     json j = json::parse(text);
     j["history"]["undo"][0]["after"][0]["frame"] = "5";

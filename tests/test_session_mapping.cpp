@@ -80,7 +80,8 @@ TEST_CASE("session mapping: a path outside the clip is refused before the docume
     CHECK_THROWS_AS(checkSession(d, "bad.mgsession"), ParseError);
     d.path.keyFrames = {10, 20, 30};
     d.path.keyOffsetsCm.assign(2, Eigen::Vector3d::Zero());
-    CHECK_THROWS_WITH_AS(checkSession(d, "bad.mgsession"), "bad.mgsession: path: expected one offset per key", ParseError);
+    CHECK_THROWS_WITH_AS(checkSession(d, "bad.mgsession"), "bad.mgsession: path: expected one offset per key",
+                         ParseError);
 }
 
 TEST_CASE("session mapping: the undo history and the adaptive table come back with the session") {

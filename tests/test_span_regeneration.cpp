@@ -24,24 +24,26 @@ MotionEditJob edit(gp::ModelVersionPtr v, Effector e, int firstKey1Based, const 
 // The issue's done-when bar, checked on one regenerated span.
 void checkKeepable(const MotionEditJob& job) {
     const SpanQuality& q = job.quality;
-    MESSAGE("key " << q.worstKeyErrorCm << " cm, second difference p95 " << q.edited.p95Deg << "° (captured " << q.captured.p95Deg
-                   << "°), max " << q.edited.maxDeg << "° (captured " << q.captured.maxDeg << "°), stop "
-                   << std::string(spanStopName(job.spanStop)) << " after " << job.spanIterations << " iterations");
+    MESSAGE("key " << q.worstKeyErrorCm << " cm, second difference p95 " << q.edited.p95Deg << "° (captured "
+                   << q.captured.p95Deg << "°), max " << q.edited.maxDeg << "° (captured " << q.captured.maxDeg
+                   << "°), stop " << std::string(spanStopName(job.spanStop)) << " after " << job.spanIterations
+                   << " iterations");
     CHECK(job.spanStop == SpanStop::kConverged);
     CHECK(q.worstKeyErrorCm <= 0.5);
     CHECK(q.worstPathErrorCm <= 0.5);
     CHECK(q.edited.p95Deg <= 1.5 * q.captured.p95Deg + 2.0);
     CHECK(q.edited.maxDeg <= 1.5 * q.captured.maxDeg + 5.0);
     for (const ContactTravel& c : q.contacts) {
-        MESSAGE(std::string(effectorName(c.foot)) << " contact " << c.first + 1 << ".." << c.last + 1 << ": travel " << c.editedCm << " cm (captured "
-                                     << c.capturedCm << " cm)");
+        MESSAGE(std::string(effectorName(c.foot)) << " contact " << c.first + 1 << ".." << c.last + 1 << ": travel "
+                                                  << c.editedCm << " cm (captured " << c.capturedCm << " cm)");
         CHECK(std::abs(c.editedCm - c.capturedCm) <= 1.0);
     }
     // Frames outside the open span are the capture's, bit for bit.
     const Clip& clip = job.version->model->clip;
     for (int t = 0; t < clip.frameCount(); ++t) {
         if (t > job.keyFrames.front() && t < job.keyFrames.back()) continue;
-        for (std::size_t j = 0; j < clip.frames[t].anglesDeg.size(); ++j) REQUIRE(job.frames[t].anglesDeg[j] == clip.frames[t].anglesDeg[j]);
+        for (std::size_t j = 0; j < clip.frames[t].anglesDeg.size(); ++j)
+            REQUIRE(job.frames[t].anglesDeg[j] == clip.frames[t].anglesDeg[j]);
     }
 }
 }  // namespace
@@ -57,7 +59,8 @@ TEST_CASE("span regeneration on 35_01: left foot raised 20 cm over 89..131, the 
 }
 
 TEST_CASE("span regeneration on a held-out kick (10_03, 189..231): raise and sideways, 10 and 40 cm") {
-    for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(0, 40, 0), Eigen::Vector3d(20, 0, 0)}) {
+    for (const Eigen::Vector3d& offset :
+         {Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(0, 40, 0), Eigen::Vector3d(20, 0, 0)}) {
         CAPTURE(offset.transpose());
         MotionEditJob job = edit(test::kickModel1003(), Effector::kRFoot, 189, offset);
         job.run();
@@ -73,8 +76,8 @@ TEST_CASE("per-frame regeneration (the paper's) pops where the span solver does 
     perFrame.run();
     MotionEditJob span = edit(test::kickModel1003(), Effector::kRFoot, 189, Eigen::Vector3d(0, 20, 0));
     span.run();
-    MESSAGE("per-frame p95 " << perFrame.quality.edited.p95Deg << "°, span p95 " << span.quality.edited.p95Deg << "°, captured "
-                             << span.quality.captured.p95Deg << "°");
+    MESSAGE("per-frame p95 " << perFrame.quality.edited.p95Deg << "°, span p95 " << span.quality.edited.p95Deg
+                             << "°, captured " << span.quality.captured.p95Deg << "°");
     CHECK(span.quality.edited.p95Deg < perFrame.quality.edited.p95Deg);
     CHECK(perFrame.quality.worstKeyErrorCm <= 0.5);  // both meet the keys
 }

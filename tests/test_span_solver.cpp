@@ -13,22 +13,26 @@ std::vector<SpanTarget> someTargets(const Clip& clip, int first, int last) {
     std::vector<SpanTarget> t;
     for (int f = first + 1; f < last; ++f) {
         const double s = std::sin(3.14159 * (f - first) / (last - first));
-        t.push_back({f, Effector::kRFoot, effectorCm(clip.skeleton, clip.frames[f], Effector::kRFoot) + Eigen::Vector3d(3 * s, 10 * s, 0),
+        t.push_back({f, Effector::kRFoot,
+                     effectorCm(clip.skeleton, clip.frames[f], Effector::kRFoot) + Eigen::Vector3d(3 * s, 10 * s, 0),
                      SpanTarget::Kind::kPath});
-        if (f % 2 == 0) t.push_back({f, Effector::kLFoot, effectorCm(clip.skeleton, clip.frames[f], Effector::kLFoot), SpanTarget::Kind::kContact});
+        if (f % 2 == 0)
+            t.push_back({f, Effector::kLFoot, effectorCm(clip.skeleton, clip.frames[f], Effector::kLFoot),
+                         SpanTarget::Kind::kContact});
     }
     return t;
 }
 }  // namespace
 
-TEST_CASE("span objective gradient matches central differences, with and without the captured residual, with locality") {
+TEST_CASE(
+    "span objective gradient matches central differences, with and without the captured residual, with locality") {
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     for (bool residual : {true, false}) {
         CAPTURE(residual);
         SpanWeights w;
         w.keepResidual = residual;
-        w.stay = 0.01;  // every term non-negligible
+        w.stay = 0.01;                                // every term non-negligible
         REQUIRE(w.locality == kDefaultSpanLocality);  // weights 0 on the path's limb, 1 elsewhere
         SpanSolver solver(version, 88, 100, w);
         solver.setTargets(someTargets(clip, 88, 100));
@@ -49,7 +53,8 @@ TEST_CASE("span objective gradient matches central differences, with and without
             idx.push_back(i * b + 2 + (i * 7) % version->model->D());
             idx.push_back(i * b + 2);
         }
-        for (int k = 0; k < version->model->D(); ++k) idx.push_back(b + version->model->latentDim() + k);  // one frame, every DOF
+        for (int k = 0; k < version->model->D(); ++k)
+            idx.push_back(b + version->model->latentDim() + k);  // one frame, every DOF
         double worst = 0.0;
         for (int k : idx) {
             const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
@@ -88,7 +93,8 @@ TEST_CASE("span solver refuses targets outside the span and bad spans") {
     CHECK_THROWS_AS(SpanSolver(version, 10, 11), std::invalid_argument);
     CHECK_THROWS_AS(SpanSolver(version, -1, 20), std::invalid_argument);
     SpanSolver solver(version, 10, 20);
-    CHECK(solver.validate({{10, Effector::kRFoot, Eigen::Vector3d::Zero(), SpanTarget::Kind::kPath}}) == "expected target frames in 12..20, found 11");
+    CHECK(solver.validate({{10, Effector::kRFoot, Eigen::Vector3d::Zero(), SpanTarget::Kind::kPath}}) ==
+          "expected target frames in 12..20, found 11");
     CHECK(solver.validate({{12, Effector::kRFoot, Eigen::Vector3d::Constant(NAN), SpanTarget::Kind::kPath}}) ==
           "expected finite targets, found NaN or Inf");
 }

@@ -31,8 +31,9 @@ bool exists(const std::string& path) {
 
 std::string mocap(const std::string& relative) {
     const std::string path = std::string(MOTIONGP_TEST_MOCAP) + "/" + relative;
-    REQUIRE_MESSAGE(exists(path), "expected a shipped clip at " << path
-                                      << ", found none (assets/mocap/README.md lists them; use sharedMocap for the rest)");
+    REQUIRE_MESSAGE(exists(path),
+                    "expected a shipped clip at "
+                        << path << ", found none (assets/mocap/README.md lists them; use sharedMocap for the rest)");
     return path;
 }
 

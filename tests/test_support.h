@@ -48,9 +48,9 @@ struct CliResult {
 // Bounds for one child process, applied in the forked child before exec (so a bad input cannot
 // hang the test run, eat the machine's memory or, as root, read a chmod-000 file).
 struct CliLimits {
-    double timeoutSeconds = 0.0;       // > 0: SIGKILL the child's process group after this long
-    std::size_t addressSpaceBytes = 0; // > 0: setrlimit(RLIMIT_AS): a huge allocation fails
-    bool dropRoot = false;             // as root: setgid/setuid(65534) (nobody) before exec
+    double timeoutSeconds = 0.0;                           // > 0: SIGKILL the child's process group after this long
+    std::size_t addressSpaceBytes = 0;                     // > 0: setrlimit(RLIMIT_AS): a huge allocation fails
+    bool dropRoot = false;                                 // as root: setgid/setuid(65534) (nobody) before exec
     std::vector<std::pair<std::string, std::string>> env;  // extra environment variables
 };
 // The bounds of the hostile-input table: 20 s wall clock, 2 GiB address space.

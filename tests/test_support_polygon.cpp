@@ -10,7 +10,8 @@
 using namespace mgp;
 
 TEST_CASE("support polygon: the convex hull drops interior and collinear points and runs counter-clockwise") {
-    const std::vector<Eigen::Vector2d> hull = convexHull({{0, 0}, {4, 0}, {2, 0}, {4, 3}, {0, 3}, {2, 1}, {0, 3}, {4, 1.5}});
+    const std::vector<Eigen::Vector2d> hull =
+        convexHull({{0, 0}, {4, 0}, {2, 0}, {4, 3}, {0, 3}, {2, 1}, {0, 3}, {4, 1.5}});
     REQUIRE(hull.size() == 4);
     CHECK(hull[0] == Eigen::Vector2d(0, 0));
     CHECK(hull[1] == Eigen::Vector2d(4, 0));
@@ -24,12 +25,12 @@ TEST_CASE("support polygon: the distance outside the polygon grown by half a sol
     SupportPolygon square;
     square.hull = {{0, 0}, {20, 0}, {20, 30}, {0, 30}};
     CHECK(square.outsideCm({10, 10}) == 0.0);
-    CHECK(square.outsideCm({20, 30}) == 0.0);   // a corner
-    CHECK(square.outsideCm({24, 10}) == 0.0);   // within the half sole
-    CHECK(square.outsideCm({28, 10}) == doctest::Approx(3.0));   // 8 cm from the edge
-    CHECK(square.outsideCm({23, 34}) == doctest::Approx(0.0));   // 5 cm from the corner
-    CHECK(square.outsideCm({26, 38}) == doctest::Approx(5.0));   // 10 cm from the corner
-    SupportPolygon foot;  // one foot seen edge-on: a segment
+    CHECK(square.outsideCm({20, 30}) == 0.0);                   // a corner
+    CHECK(square.outsideCm({24, 10}) == 0.0);                   // within the half sole
+    CHECK(square.outsideCm({28, 10}) == doctest::Approx(3.0));  // 8 cm from the edge
+    CHECK(square.outsideCm({23, 34}) == doctest::Approx(0.0));  // 5 cm from the corner
+    CHECK(square.outsideCm({26, 38}) == doctest::Approx(5.0));  // 10 cm from the corner
+    SupportPolygon foot;                                        // one foot seen edge-on: a segment
     foot.hull = {{0, 0}, {0, 20}};
     CHECK(foot.outsideCm({3, 10}) == 0.0);
     CHECK(foot.outsideCm({9, 10}) == doctest::Approx(4.0));
@@ -76,7 +77,8 @@ TEST_CASE("support polygon: the walk's planted feet, and balance judged only whe
             CHECK(self.outsideCm == outside);
         }
     }
-    MESSAGE("35_01: " << planted << " frames with a planted foot (" << balanced << " balanced over it), " << inAir << " without");
+    MESSAGE("35_01: " << planted << " frames with a planted foot (" << balanced << " balanced over it), " << inAir
+                      << " without");
     CHECK(planted > 0);
     CHECK(balanced > 0);
 }

@@ -28,7 +28,7 @@ TEST_CASE("synthetic walk: 22 model bones, human height, feet near the ground, p
     MESSAGE("head height " << minHead << ".." << maxHead << " cm; swing foot rises to " << maxLeftFootHeight);
     CHECK(minHead > 150.0);
     CHECK(maxHead < 190.0);
-    CHECK(maxLeftFootHeight > 8.0);   // the swing foot leaves the ground
+    CHECK(maxLeftFootHeight > 8.0);  // the swing foot leaves the ground
     CHECK(maxLeftFootHeight < 40.0);
     // One cycle is 120 frames: the joint angles repeat exactly.
     for (std::size_t j = 0; j < clip.frames[0].anglesDeg.size(); ++j)

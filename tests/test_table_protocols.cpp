@@ -127,7 +127,8 @@ TEST_CASE("table2 --quick: shape, finite values, the settings used and prefix ra
             const nlohmann::json& r = e[cell];
             checkAllFinite(r, cell);
             const int combined = r["combined"];
-            const int perTest[5] = {r["reach"], r["joint_ranges"], r["nearest_real_pose"], r["density"], r["continuity"]};
+            const int perTest[5] = {r["reach"], r["joint_ranges"], r["nearest_real_pose"], r["density"],
+                                    r["continuity"]};
             CHECK(combined == *std::min_element(perTest, perTest + 5));
             // δ = 0 is the captured frame itself: reached and natural. A range of −1 is a bug.
             CHECK(combined >= 0);
@@ -155,7 +156,7 @@ TEST_CASE("nearest-pose RMS: wrapped differences over the 44 non-root DOFs, the 
     Eigen::VectorXd pose = Eigen::VectorXd::Zero(kAsfPoseDofs);
     pose.head(3).setConstant(1000.0);  // the root DOFs do not count
     Eigen::MatrixXd candidates = Eigen::MatrixXd::Zero(2, kAsfPoseDofs);
-    candidates.row(0).setConstant(10.0);  // RMS 10
+    candidates.row(0).setConstant(10.0);            // RMS 10
     candidates.row(1).tail(44).setConstant(358.0);  // −2 once wrapped: RMS 2
     CHECK(nearestPoseRmsDeg(pose, candidates) == doctest::Approx(2.0));
     candidates(1, 10) = 358.0 + 44.0;  // one DOF at 44 + (−2) → sqrt((43·4 + 42²)/44)
@@ -174,7 +175,8 @@ TEST_CASE("nearest-pose RMS: wrapped differences over the 44 non-root DOFs, the 
 
 TEST_CASE("clip segments: joined in order, and a segment past the trial's end is a clear error") {
     TrialCache cache;
-    const std::string dir = std::filesystem::path(test::mocap("asf_amc/16_35.amc")).parent_path().parent_path().string();
+    const std::string dir =
+        std::filesystem::path(test::mocap("asf_amc/16_35.amc")).parent_path().parent_path().string();
     const Clip joined = joinSegments(dir, {{"16_35", 1, 10}, {"16_35", 21, 25}}, cache);
     CHECK(joined.frameCount() == 15);
     CHECK(cache.size() == 1);
@@ -232,10 +234,11 @@ TEST_CASE("table2 rows from --clip/--edit: the effector, a unit direction, the f
     CHECK(table2RowFromSpec(file, "head:0,-2,0", 7, {}, 100).frame == 7);
     for (const char* bad : {"hand:0,1,0", "head:0,0,0", "head:1,2", "head:1,2,3x", "head"}) {
         INFO(bad);
-        CHECK_THROWS_WITH_AS(table2RowFromSpec(file, bad, 0, {}, 100), doctest::Contains("found '"), std::invalid_argument);
+        CHECK_THROWS_WITH_AS(table2RowFromSpec(file, bad, 0, {}, 100), doctest::Contains("found '"),
+                             std::invalid_argument);
     }
-    CHECK_THROWS_WITH_AS(table2RowFromSpec(file, "head:0,1,0", 101, {}, 100), doctest::Contains("--frame within 1..100"),
-                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(table2RowFromSpec(file, "head:0,1,0", 101, {}, 100),
+                         doctest::Contains("--frame within 1..100"), std::invalid_argument);
 }
 
 TEST_CASE("table1 --clip --runs: each run's pair, mean ± sd per model, a verdict per claim") {
@@ -273,8 +276,9 @@ TEST_CASE("table1 --clip --runs: each run's pair, mean ± sd per model, a verdic
 
 TEST_CASE("table2 --clip --edit --runs: the row as asked, every cell per run with its binding tests, the claims") {
     const std::string clip = test::mocap("asf_amc/16_01.amc");
-    const nlohmann::json out = runJson("table2 --clip " + clip + ":1:120 --frame 60 --edit rfoot:0,1,0 --reference " + clip +
-                                       ":131:322 --iters 2 --active 60 --max-delta 6 --runs 2 --threads 2 --json");
+    const nlohmann::json out =
+        runJson("table2 --clip " + clip + ":1:120 --frame 60 --edit rfoot:0,1,0 --reference " + clip +
+                ":131:322 --iters 2 --active 60 --max-delta 6 --runs 2 --threads 2 --json");
     REQUIRE(out["rows"].size() == 1u);
     const nlohmann::json& e = out["rows"][0];
     CHECK(e["edited_frame"] == 60);
@@ -310,7 +314,8 @@ TEST_CASE("table1/table2 --clip: bad clips and edits are one clear error") {
         {"table2 --edit head:0,1,0", "found no --clip"},
         {"table2 --clip " + test::mocap("bvh/02_03.bvh") + " --edit head:0,1,0", "22 model bones"},
         {"table1 --clip " + clip + ":5:2", "1 ≤ A ≤ B"},
-        {"table2 --clip " + test::mocap("asf_amc/35_01.amc") + ":1:120 --edit lhand:0,1,0 --reference " + test::mocap("bvh/49_04.bvh"),
+        {"table2 --clip " + test::mocap("asf_amc/35_01.amc") + ":1:120 --edit lhand:0,1,0 --reference " +
+             test::mocap("bvh/49_04.bvh"),
          "pose layout"},
         {"table2 --clip " + test::mocap("asf_amc/16_35.amc") + ":1:25 --edit rfoot:0,1,0", "reference frames"},
         {"table2 --clip " + clip + " --edit rfoot:1e308,1e308,0", "non-zero, finite edit direction"},

@@ -217,7 +217,8 @@ TEST_CASE("paced prior: same segments as the smooth prior, equal poses steps giv
 TEST_CASE("paced prior: gradients of the whole prior and of one point by central differences") {
     const std::vector<int> frames{0, 1, 2, 4, 5, 6, 7, 30, 31, 32, 33};
     Eigen::MatrixXd Y(11, 3);
-    for (int i = 0; i < 11; ++i) Y.row(i) << std::sin(0.4 * frames[i]), 0.3 * frames[i] * frames[i] / 10.0, std::cos(frames[i]);
+    for (int i = 0; i < 11; ++i)
+        Y.row(i) << std::sin(0.4 * frames[i]), 0.3 * frames[i] * frames[i] / 10.0, std::cos(frames[i]);
     const TemporalPrior p = TemporalPrior::posePaced(frames, Y, 3.7);
     const Eigen::MatrixXd X = wavy(11);
     checkWholePriorGradient(p, X);

@@ -7,10 +7,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "gp/model_file.h"
 #include "gp/trainer.h"
@@ -38,7 +38,6 @@ TrainOptions smallOptions(KernelKind kind, int threads) {
     o.threads = threads;
     return o;
 }
-
 
 std::string trainAndSave(const mgp::Clip& clip, const TrainingData& data, KernelKind kind, int threads,
                          const std::string& path, TrainResult* out = nullptr) {
@@ -102,9 +101,12 @@ TEST_CASE("trainer: a cancel flag set from another thread stops the loop") {
     int calls = 0;
     TrainOptions o = smallOptions(KernelKind::kFas, 1);
     o.outerIterations = 50;
-    const TrainResult r = train(data, o, [&](const IterationLog&) {
-        if (++calls == 2) cancel.store(true);
-    }, &cancel);
+    const TrainResult r = train(
+        data, o,
+        [&](const IterationLog&) {
+            if (++calls == 2) cancel.store(true);
+        },
+        &cancel);
     CHECK(r.cancelled);
     CHECK(r.log.size() == 2);
 }
@@ -132,7 +134,7 @@ TEST_CASE("trainer: the raw Step-9 test stops the loop once max |Δ| < C") {
     TrainOptions o = smallOptions(KernelKind::kSgplvm, 1);
     o.activeSize = 200;  // no churn
     o.outerIterations = 40;
-    o.tolerance = 1e9;   // any finite change passes
+    o.tolerance = 1e9;  // any finite change passes
     const TrainResult r = train(data, o);
     CHECK(r.converged);
     CHECK(r.log.size() == 1);

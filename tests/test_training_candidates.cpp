@@ -50,10 +50,12 @@ TEST_CASE("training candidates: the shipped kick 10_02 offers 10_03 and refuses 
 
 TEST_CASE("training candidates: BVH, a missing ASF and other files beside the open clip are refused, each with why") {
     const std::string dir = test::scratchDir("training_candidates");
-    for (const char* f : {"asf_amc/10.asf", "asf_amc/10_02.amc", "asf_amc/10_03.amc", "asf_amc/16.asf", "asf_amc/16_01.amc",
-                          "bvh/02_03.bvh"})
-        fs::copy_file(test::mocap(f), dir + "/" + fs::path(f).filename().string(), fs::copy_options::overwrite_existing);
-    fs::copy_file(test::mocap("asf_amc/10_03.amc"), dir + "/77_01.amc", fs::copy_options::overwrite_existing);  // no 77.asf
+    for (const char* f : {"asf_amc/10.asf", "asf_amc/10_02.amc", "asf_amc/10_03.amc", "asf_amc/16.asf",
+                          "asf_amc/16_01.amc", "bvh/02_03.bvh"})
+        fs::copy_file(test::mocap(f), dir + "/" + fs::path(f).filename().string(),
+                      fs::copy_options::overwrite_existing);
+    fs::copy_file(test::mocap("asf_amc/10_03.amc"), dir + "/77_01.amc",
+                  fs::copy_options::overwrite_existing);  // no 77.asf
     test::writeText(dir + "/notes.txt", "not a clip\n");
     const Clip open = loadClip(dir + "/10_03.amc");
     const std::vector<TrainingCandidate> list = trainingCandidates(open);
@@ -83,7 +85,8 @@ TEST_CASE("training candidates: BVH, a missing ASF and other files beside the op
 TEST_CASE("training candidates: an open BVH clip trains, BVH of its hierarchy are offered, others refused") {
     const std::string dir = test::scratchDir("training_candidates_bvh");
     for (const char* f : {"bvh/02_03.bvh", "bvh/49_04.bvh", "asf_amc/02_03.amc", "asf_amc/02.asf"})
-        fs::copy_file(test::mocap(f), dir + "/" + fs::path(f).filename().string(), fs::copy_options::overwrite_existing);
+        fs::copy_file(test::mocap(f), dir + "/" + fs::path(f).filename().string(),
+                      fs::copy_options::overwrite_existing);
     fs::copy_file(test::mocap("bvh/02_03.bvh"), dir + "/02_04.bvh", fs::copy_options::overwrite_existing);
     const Clip open = loadClip(dir + "/02_03.bvh");
     const std::vector<TrainingCandidate> list = trainingCandidates(open);

@@ -4,7 +4,6 @@
 // every clip attached. Tiny models only (CI budget).
 #include <doctest/doctest.h>
 
-
 #include "edit/training_job.h"
 #include "gp/sha256.h"
 #include "gp/training_clips.h"
@@ -42,8 +41,8 @@ TEST_CASE("training clips: two skeletons, repeated names and too few rows are re
         FAIL("clips of two skeletons were accepted");
     } catch (const TrainingInputError& e) {
         const std::string what = e.what();
-        CHECK(what.rfind("expected clips of one skeleton (retargeting is not supported), found " + jump + " against " + kick +
-                             ": joint ",
+        CHECK(what.rfind("expected clips of one skeleton (retargeting is not supported), found " + jump + " against " +
+                             kick + ": joint ",
                          0) == 0);
     }
     CHECK_THROWS_WITH_AS(prepareTrainingClips({loadClip(kick), loadClip(kick)}, {kick, kick}, {}),

@@ -8,8 +8,8 @@
 #include "edit/training_job.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
-#include "trained_model_fixture.h"
 #include "test_paths.h"
+#include "trained_model_fixture.h"
 
 using namespace mgp;
 
@@ -107,7 +107,8 @@ TEST_CASE("training job: publishes the model while the run goes on, and the fina
     CHECK(job.takeRefinement() == nullptr);
 }
 
-TEST_CASE("editor: poses accepted while a model refines wait, and the final model is taught those still on their frames") {
+TEST_CASE(
+    "editor: poses accepted while a model refines wait, and the final model is taught those still on their frames") {
     EditorDocument doc;
     const gp::ModelVersionPtr v0 = test::walkModel35();
     doc.installRefinement(v0, true);

@@ -20,7 +20,8 @@ inline const std::string kTinyAmc =
     "2\nroot 1 2 3 4 5 6\nlfemur 1 2 3\nltibia 5\n";
 
 inline const std::string kTinyBvh =
-    "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation Xrotation\n"
+    "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
+    "Xrotation\n"
     "  JOINT LeftUpLeg\n  {\n    OFFSET 1 -1 0\n    CHANNELS 3 Zrotation Yrotation Xrotation\n"
     "    End Site\n    {\n      OFFSET 0 -7 0\n    }\n  }\n}\nMOTION\nFrames: 2\nFrame Time: .0083333\n"
     "0 17 0 0 0 0 0 0 0\n0 17 0 0 0 0 5 0 0\n";

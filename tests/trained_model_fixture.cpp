@@ -20,7 +20,8 @@ gp::ModelVersionPtr kickModel1003() {
     static std::once_flag once;
     static gp::ModelVersionPtr model;
     std::call_once(once, [] {
-        model = gp::ModelVersion::make(gp::loadModel(std::string(MOTIONGP_TEST_FIXTURES) + "/kick10_03_fas_m100_t3.model"));
+        model =
+            gp::ModelVersion::make(gp::loadModel(std::string(MOTIONGP_TEST_FIXTURES) + "/kick10_03_fas_m100_t3.model"));
     });
     return model;
 }

@@ -26,9 +26,9 @@ struct AdaptiveReport {
     gp::AdaptiveUpdateResult result;
     int versionBefore = 0;
     double seconds = 0.0;
-    int modelRows = 0;          // N after the update
-    long sequence = 0;          // the sample's sequence number
-    int frame = 0;              // the sample's clip frame
+    int modelRows = 0;              // N after the update
+    long sequence = 0;              // the sample's sequence number
+    int frame = 0;                  // the sample's clip frame
     gp::ModelVersionPtr published;  // the current version once this sample is done
 };
 

@@ -22,8 +22,7 @@ constexpr const char* kPrefix = "autosave-";
 
 // Taken during static initialisation, i.e. when this process started: an autosave with our pid
 // that is older than this was written by an earlier process that had the same pid.
-const double kProcessStart =
-    std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+const double kProcessStart = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 
 // "autosave-1234.mgsession" → 1234; 0 for any other name (temporaries included).
 int pidFromName(const std::string& name) {
@@ -81,8 +80,6 @@ bool AutosaveTimer::due(double nowSeconds, bool dirty) const {
     return nowSeconds - *dirtySince_ >= interval_;
 }
 
-void AutosaveTimer::markSaved(double /*nowSeconds*/) {
-    dirtySince_.reset();
-}
+void AutosaveTimer::markSaved(double /*nowSeconds*/) { dirtySince_.reset(); }
 
 }  // namespace mgp

@@ -2,7 +2,8 @@
 
 namespace mgp {
 
-AutosavePolicy::AutosavePolicy(double intervalSeconds, std::string file) : timer_(intervalSeconds), file_(std::move(file)) {}
+AutosavePolicy::AutosavePolicy(double intervalSeconds, std::string file)
+    : timer_(intervalSeconds), file_(std::move(file)) {}
 
 bool AutosavePolicy::due(double nowSeconds, bool unsaved, long revision) const {
     // Only what changed since the last autosave (and is not saved in the session) is worth writing.

@@ -20,7 +20,7 @@ public:
     void write(const SessionData& session, double nowSeconds, long revision);
     // A save or an open holds everything: the autosave file goes and the clock restarts.
     void forget(double nowSeconds, long revision);
-    void discard();  // a normal quit: no autosave is left to offer
+    void discard();                                    // a normal quit: no autosave is left to offer
     const std::string& file() const { return file_; }  // "" before the first write
     double interval() const { return timer_.interval(); }
 

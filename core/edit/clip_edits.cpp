@@ -35,8 +35,10 @@ FrameEdits ClipEdits::current(const FrameEdits& frames) const {
 
 void ClipEdits::apply(const FrameEdits& frames) {
     for (const auto& [frame, record] : frames) {
-        if (record) edits_[frame] = *record;
-        else edits_.erase(frame);
+        if (record)
+            edits_[frame] = *record;
+        else
+            edits_.erase(frame);
     }
 }
 

@@ -8,23 +8,23 @@
 #include <vector>
 
 #include "edit/adaptive_worker.h"
-#include "gp/model_version.h"
 #include "eval/admission.h"
+#include "gp/model_version.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp {
 
 struct DeferredPose {
-    int frame = 0;          // the edited clip frame (0-based)
-    Eigen::VectorXd yKept;  // the accepted pose, the model's kept columns
-    Pose edited;            // the frame's pose as accepted (it is taught only if the frame still has it)
+    int frame = 0;                // the edited clip frame (0-based)
+    Eigen::VectorXd yKept;        // the accepted pose, the model's kept columns
+    Pose edited;                  // the frame's pose as accepted (it is taught only if the frame still has it)
     std::vector<Effector> moved;  // what the edit put where the animator asked (eval/admission.h)
     Balance balance;              // judgeBalance of the pose on its frame (model-independent)
 };
 
 struct DeferredTeaching {
-    AdaptiveSample sample;          // x found on the model, the pose, the frame
-    AdmissionVerdict verdict;   // whether the model admits it (as a drag's pose is admitted)
+    AdaptiveSample sample;     // x found on the model, the pose, the frame
+    AdmissionVerdict verdict;  // whether the model admits it (as a drag's pose is admitted)
 };
 
 // The latest entry per frame, oldest frame first: a frame edited twice is taught its last pose.

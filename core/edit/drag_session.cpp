@@ -64,8 +64,10 @@ void DragSession::dragTo(const Eigen::Vector3d& targetCm, int maxIterations) {
     targetCm_ = targetCm;
     refineBudget_ = kRefineBudgetIterations;
     readout_.iterations = 0;
-    if (learned()) solveLearned(maxIterations);
-    else solvePlain();
+    if (learned())
+        solveLearned(maxIterations);
+    else
+        solvePlain();
     solveCompare();
 }
 
@@ -110,8 +112,8 @@ void DragSession::solveLearned(int maxIterations) {
     request_.locality = locality_;
     request_.localityReference = startPose_;
     // The root rotation is held (stiffly) near where the drag began, not where the last event left it.
-    request_.rootReferenceDeg = startPose_.anglesDeg.empty() ? std::nullopt
-                                                             : std::optional<Eigen::Vector3d>(startPose_.anglesDeg[0]);
+    request_.rootReferenceDeg =
+        startPose_.anglesDeg.empty() ? std::nullopt : std::optional<Eigen::Vector3d>(startPose_.anglesDeg[0]);
     if (!solver_->validate(request_).empty()) return;
     solver_->solve(request_, result_);
     if (!allFinite(result_.pose) || !result_.x.allFinite()) return;  // keep the last good pose
@@ -194,7 +196,8 @@ void DragSession::solveCompare() {
         compareSolver_ = std::make_unique<ConstrainedIkSolver>(compareModel_);
     ConstrainedIkRequest req;
     req.start = startPose_;
-    req.startX = latentStartForFrame(*compareModel_, std::min(compareFrame_, compareModel_->model->clip.frameCount() - 1));
+    req.startX =
+        latentStartForFrame(*compareModel_, std::min(compareFrame_, compareModel_->model->clip.frameCount() - 1));
     req.constraints = constraints();
     req.maxIterations = kPlainIterations;
     if (!compareSolver_->validate(req).empty()) return;
@@ -202,7 +205,8 @@ void DragSession::solveCompare() {
     if (allFinite(r.pose)) comparePose_ = r.pose;
 }
 
-void DragSession::beginLatent(const Skeleton& skeleton, gp::ModelVersionPtr model, Eigen::VectorXd x, const Pose& pose) {
+void DragSession::beginLatent(const Skeleton& skeleton, gp::ModelVersionPtr model, Eigen::VectorXd x,
+                              const Pose& pose) {
     skeleton_ = &skeleton;
     layout_.emplace(skeleton);
     model_ = std::move(model);

@@ -56,8 +56,8 @@ public:
     // pins (effector held at a position), `contactPins` the feet in contact where they were
     // when the drag began: both are held unless they are the dragged effector, and a foot the
     // user pinned is held by its pin only.
-    void begin(const Skeleton& skeleton, Effector e, const Pose& start, gp::ModelVersionPtr model, Eigen::VectorXd startX,
-               std::vector<IkConstraint> pins, std::vector<IkConstraint> contactPins);
+    void begin(const Skeleton& skeleton, Effector e, const Pose& start, gp::ModelVersionPtr model,
+               Eigen::VectorXd startX, std::vector<IkConstraint> pins, std::vector<IkConstraint> contactPins);
     // How the learned solves of the next drags hold the body (ConstrainedIkRequest): the floor
     // hands and feet stay above (none: no floor) and the locality ℓ, against the drag's start pose.
     void setFloor(std::optional<double> floorCm) { floorCm_ = floorCm; }

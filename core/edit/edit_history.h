@@ -17,9 +17,9 @@
 namespace mgp {
 
 struct EditStep {
-    std::string label;  // "drag rfoot on frame 101", shown as "Undo drag rfoot on frame 101"
-    FrameEdits before, after;  // per touched frame (0-based)
-    std::vector<long> samples;                               // adaptive sample sequence numbers
+    std::string label;          // "drag rfoot on frame 101", shown as "Undo drag rfoot on frame 101"
+    FrameEdits before, after;   // per touched frame (0-based)
+    std::vector<long> samples;  // adaptive sample sequence numbers
     // Resolved on the first undo (the updates may still run when the step is recorded); both
     // null when the step leaves the model alone (no samples, or a model installed since).
     bool modelResolved = false;

@@ -1,8 +1,8 @@
 #include "edit/editor_document.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "edit/held_effectors.h"
@@ -96,9 +96,7 @@ void EditorDocument::setFrame(int frame) {
     updatePinPositions();
 }
 
-const Pose& EditorDocument::currentPose() const {
-    return drag_.active() ? drag_.pose() : store_.pose(frame_);
-}
+const Pose& EditorDocument::currentPose() const { return drag_.active() ? drag_.pose() : store_.pose(frame_); }
 
 void EditorDocument::clearEdit(int frame) {
     if (!store_.isEdited(frame)) return;
@@ -120,12 +118,13 @@ std::string EditorDocument::pastePose(const Pose& pose) {
 std::vector<IkConstraint> EditorDocument::keptInPlace() const {
     std::vector<IkConstraint> out = holdConstraints();
     for (const IkConstraint& c : contactHolds())
-        if (std::none_of(out.begin(), out.end(), [&](const IkConstraint& o) { return o.effector == c.effector; })) out.push_back(c);
+        if (std::none_of(out.begin(), out.end(), [&](const IkConstraint& o) { return o.effector == c.effector; }))
+            out.push_back(c);
     return out;
 }
 
 std::string EditorDocument::setCurrentPose(const Pose& given, const std::string& stepLabel, PoseHolds holds,
-                                          const std::vector<Effector>& followLayer) {
+                                           const std::vector<Effector>& followLayer) {
     if (!hasClip()) return "no clip to edit";
     finishRunningFalloff();  // a previous pose change's spread lands first, as before a drag
     if (regenerating()) return "wait for the regeneration to finish before editing a pose";
@@ -140,7 +139,8 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
     if (v && v->model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
         const PoseLayout layout(clip().skeleton);
         x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(given)));
-        const std::vector<IkConstraint> kept = holds == PoseHolds::kResolve ? keptInPlace() : std::vector<IkConstraint>{};
+        const std::vector<IkConstraint> kept =
+            holds == PoseHolds::kResolve ? keptInPlace() : std::vector<IkConstraint>{};
         if (!kept.empty() && x.allFinite()) {
             // The new pose as the animator gave it, re-solved under the prior so that every pin,
             // placed effector and planted foot of this frame stays where it was (as the spread keeps
@@ -254,7 +254,7 @@ void EditorDocument::installModel(gp::ModelVersionPtr version, bool adoptClip) {
         store_.mutableClip().name = version->model->clip.name;
     }
     drag_.finish();
-    stopRegeneration();  // a running regeneration solves on the old model: its result is dropped
+    stopRegeneration();                       // a running regeneration solves on the old model: its result is dropped
     if (!adoptClip) history_.forgetModels();  // the steps' versions belong to the old model
     ++lineage_;
     installWorker(std::move(version));
@@ -342,7 +342,9 @@ std::vector<IkConstraint> EditorDocument::pinConstraints() const {
     return out;
 }
 
-std::vector<Effector> EditorDocument::heldEffectors() const { return hasClip() ? heldOn(store_, frame_) : std::vector<Effector>{}; }
+std::vector<Effector> EditorDocument::heldEffectors() const {
+    return hasClip() ? heldOn(store_, frame_) : std::vector<Effector>{};
+}
 
 bool EditorDocument::held(Effector e) const { return hasClip() && isHeld(store_, frame_, e); }
 
@@ -440,11 +442,14 @@ std::string EditorDocument::beginDrag(Effector e) {
     updatePinPositions();
     drag_.setCompare(compare_, compareModel_, frame_);
     drag_.setFloor(store_.contacts().floorCm);
-    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holdConstraints(), contactHolds());
+    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holdConstraints(),
+                contactHolds());
     return "";
 }
 
-void EditorDocument::dragTo(const Eigen::Vector3d& targetCm, int maxIterations) { drag_.dragTo(targetCm, maxIterations); }
+void EditorDocument::dragTo(const Eigen::Vector3d& targetCm, int maxIterations) {
+    drag_.dragTo(targetCm, maxIterations);
+}
 
 bool EditorDocument::refine(int maxIterations) { return drag_.refine(maxIterations); }
 
@@ -470,8 +475,8 @@ std::optional<DragRecord> EditorDocument::endDrag() {
     const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
                              drag_.keptPose().allFinite() && drag_.x().allFinite();
     const AdmissionVerdict verdict =
-        learnedPose ? admitPose(*solvedOn, rec.after.pose, rec.after.moved, r.reached,
-                                anyBelowFloor(r.constraints), r.sigma2, r.lik, balanceOf(frame_, rec.after.pose))
+        learnedPose ? admitPose(*solvedOn, rec.after.pose, rec.after.moved, r.reached, anyBelowFloor(r.constraints),
+                                r.sigma2, r.lik, balanceOf(frame_, rec.after.pose))
                     : AdmissionVerdict{};
     if (learnedPose && models_.updating() && !verdict.admitted)
         models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
@@ -502,8 +507,8 @@ void EditorDocument::setBodyStiffness(double scale) {
     drag_.setLocality(kDefaultLocality * bodyStiffness_);
 }
 
-void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose, bool holdInPlace,
-                                      const std::vector<Effector>& followLayer) {
+void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose,
+                                      bool holdInPlace, const std::vector<Effector>& followLayer) {
     const gp::ModelVersionPtr v = model();
     if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
     const Clip& mc = v->model->clip;
@@ -530,16 +535,19 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
         // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
         // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
         addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);
-        const int first = std::max(0, rec.frame - falloffRadius_), last = std::min(frameCount() - 1, rec.frame + falloffRadius_);
-        for (int t = first; t <= last; ++t) base->x[static_cast<std::size_t>(t)] = Eigen::VectorXd();  // their poses moved
+        const int first = std::max(0, rec.frame - falloffRadius_),
+                  last = std::min(frameCount() - 1, rec.frame + falloffRadius_);
+        for (int t = first; t <= last; ++t)
+            base->x[static_cast<std::size_t>(t)] = Eigen::VectorXd();  // their poses moved
         base->frames[dragged] = rec.after.pose;
         base->x[dragged] = rec.after.x;
     }
     std::string problem;
-    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_, pinnedEffectors(),
-                                       &problem, std::move(base));
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_,
+                                       pinnedEffectors(), &problem, std::move(base));
     if (!problem.empty()) {  // the change stays a one-frame edit: say so
-        falloffSkipped_ = stepLabel + ": kept on frame " + std::to_string(rec.frame + 1) + " alone, not spread (" + problem + ")";
+        falloffSkipped_ =
+            stepLabel + ": kept on frame " + std::to_string(rec.frame + 1) + " alone, not spread (" + problem + ")";
         return;
     }
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
@@ -547,7 +555,8 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& 
     // (after a whole-pose change: where its layer moved it, so that the span stays smooth).
     // A whole-pose change keeps every placement on its records, the displaced effector's too (the
     // solve does not hold that one: it follows its displaced path).
-    job.heldPlaced = heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
+    job.heldPlaced =
+        heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
     job.placesEffector = !wholePose;
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
     if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
@@ -593,8 +602,10 @@ void EditorDocument::pushStep(EditStep step) {
 void EditorDocument::applyFrames(const FrameEdits& frames) {
     store_.apply(frames);
     for (const auto& [frame, edit] : frames) {
-        if (edit) editLineage_[frame] = lineage_;
-        else editLineage_.erase(frame);
+        if (edit)
+            editLineage_[frame] = lineage_;
+        else
+            editLineage_.erase(frame);
     }
     updatePinPositions();
 }
@@ -645,8 +656,10 @@ std::string EditorDocument::undoOrRedo(bool undo) {
     if (undo) models_.resolveStep(*step);
     applyFrames(undo ? step->before : step->after);
     installVersion(undo ? step->modelBefore : step->modelAfter);
-    if (undo) history_.moveUndoToRedo();
-    else history_.moveRedoToUndo();
+    if (undo)
+        history_.moveUndoToRedo();
+    else
+        history_.moveRedoToUndo();
     ++revision_;
     return "";
 }
@@ -760,7 +773,8 @@ std::optional<InbetweenGap> EditorDocument::keyGapAt(int frame) const {
 
 std::vector<InbetweenGap> EditorDocument::keyGapsIn(int first, int last) const {
     std::vector<InbetweenGap> gaps;
-    for (auto k = keys_.lower_bound(first); k != keys_.end() && std::next(k) != keys_.end() && *std::next(k) <= last; ++k)
+    for (auto k = keys_.lower_bound(first); k != keys_.end() && std::next(k) != keys_.end() && *std::next(k) <= last;
+         ++k)
         if (*k + 1 < *std::next(k)) gaps.push_back({*k, *std::next(k)});
     return gaps;
 }
@@ -789,7 +803,8 @@ std::string EditorDocument::startFill(InbetweenMethod method, std::optional<std:
     // The capture the clip is a take of, judged on the unedited clip (edited frames would hide it):
     // its frames in the gap are never read, whatever was edited.
     job.sameCapture = gp::findCapture(*v->model, clip());
-    for (int t = 0; t < frameCount(); ++t) job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
+    for (int t = 0; t < frameCount(); ++t)
+        job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
     job.gaps = std::move(gaps);
     job.method = method;
     if (const std::string problem = job.validate(); !problem.empty()) return problem;
@@ -830,14 +845,15 @@ std::string EditorDocument::pollFill(std::string* error) {
     const std::size_t n = job->gaps.size();
     char summary[240];
     if (r.sourceClip.empty())
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gap%s (%s)", first + 2, last, n, n == 1 ? "" : "s",
-                      inbetweenMethodName(job->method));
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gap%s (%s)", first + 2, last, n,
+                      n == 1 ? "" : "s", inbetweenMethodName(job->method));
     else if (n == 1)
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d from %s frames %d-%d in %.2f s (feet held within %.2f cm)",
-                      first + 2, last, r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, seconds, held);
+        std::snprintf(summary, sizeof summary,
+                      "filled frames %d-%d from %s frames %d-%d in %.2f s (feet held within %.2f cm)", first + 2, last,
+                      r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, seconds, held);
     else
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gaps, in %.2f s (feet held within %.2f cm)", first + 2, last, n,
-                      seconds, held);
+        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gaps, in %.2f s (feet held within %.2f cm)",
+                      first + 2, last, n, seconds, held);
     return summary;
 }
 
@@ -857,8 +873,8 @@ std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     if (drag_.active()) {
         const SolveReadout& r = drag_.readout();
         if (!r.valid || !r.learned) return std::nullopt;
-        return admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints), r.sigma2,
-                         r.lik, balanceOf(frame_, drag_.pose()));
+        return admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
+                         r.sigma2, r.lik, balanceOf(frame_, drag_.pose()));
     }
     const auto it = store_.edits().find(frame_);
     if (it == store_.edits().end()) return std::nullopt;
@@ -876,8 +892,8 @@ std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     v->posterior->predict(x, mean, sigma2);
     // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
     const bool lastDragged = lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose);
-    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor, sigma2, lik,
-                     balanceOf(frame_, e.pose));
+    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor,
+                     sigma2, lik, balanceOf(frame_, e.pose));
 }
 
 }  // namespace mgp

@@ -13,13 +13,13 @@
 //
 // Units: cm, world Y up (docs/maths.md, conventions). One drag, one latent drag, one regeneration or one
 // cleared edit = one undo step.
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <algorithm>
 #include <optional>
 #include <set>
 #include <string>
@@ -28,8 +28,8 @@
 #include "edit/adaptive_worker.h"
 #include "edit/clip_edits.h"
 #include "edit/compare_mode.h"
-#include "edit/drag_session.h"
 #include "edit/deferred_teaching.h"
+#include "edit/drag_session.h"
 #include "edit/edit_history.h"
 #include "edit/edit_record.h"
 #include "edit/model_host.h"
@@ -138,7 +138,9 @@ public:
     int adaptiveUpdates() const { return models_.updates(); }
     // Every update since the model was installed, oldest first.
     std::vector<AdaptiveHistoryEntry> adaptiveHistory() const { return models_.history(); }
-    void restoreAdaptiveHistory(std::vector<AdaptiveHistoryEntry> entries) { models_.restoreHistory(std::move(entries)); }
+    void restoreAdaptiveHistory(std::vector<AdaptiveHistoryEntry> entries) {
+        models_.restoreHistory(std::move(entries));
+    }
     // The comparison model for CompareMode::kSecondModel (e.g. SGPLVM beside FASGPLVM).
     void setCompareModel(gp::ModelVersionPtr version) {
         compareModel_ = std::move(version);
@@ -242,15 +244,17 @@ public:
     const std::optional<PathEdit>& pathEdit() const { return paths_.edit(); }
     // New key frames (0-based); keys at frames that were keys keep their offsets.
     std::string setPathKeyFrames(std::vector<int> keyFrames) { return paths_.setKeyFrames(std::move(keyFrames)); }
-    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) { return paths_.setKeyOffset(key, offsetCm); }
+    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) {
+        return paths_.setKeyOffset(key, offsetCm);
+    }
     // Moves a key to a world position (its offset becomes position − captured position).
     std::string setPathKeyPosition(int key, const Eigen::Vector3d& positionCm) {
         return paths_.setKeyPosition(key, positionCm);
     }
     void setPathMode(PathMode mode) { paths_.setMode(mode); }
     Eigen::Vector3d pathKeyPosition(int key) const { return paths_.keyPosition(key); }  // captured + offset (cm)
-    std::vector<Eigen::Vector3d> pathTargets() const { return paths_.targets(); }     // edited, first..last key
-    std::vector<Eigen::Vector3d> pathCaptured() const { return paths_.captured(); }   // captured, first..last key
+    std::vector<Eigen::Vector3d> pathTargets() const { return paths_.targets(); }       // edited, first..last key
+    std::vector<Eigen::Vector3d> pathCaptured() const { return paths_.captured(); }     // captured, first..last key
     // Solves the span between the first and last key on a background thread; "" or why not.
     std::string startRegenerate(int maxIterations = 500);
     bool regenerating() const { return regenerate_.running() || fill_.busy(); }
@@ -292,7 +296,8 @@ public:
     // (frames first..last, 0-based) or, without one, keyGapAt(frame()). "" or why not. While it
     // runs, regenerating() is true (undo, poses and paths wait for it, drags are refused) and
     // cancelRegenerate() cancels it too.
-    std::string startFill(InbetweenMethod method = InbetweenMethod::kPrior, std::optional<std::pair<int, int>> range = std::nullopt);
+    std::string startFill(InbetweenMethod method = InbetweenMethod::kPrior,
+                          std::optional<std::pair<int, int>> range = std::nullopt);
     bool filling() const { return fill_.busy(); }
     // Call once per UI frame: a finished fill becomes one undo step. Returns its summary, else "";
     // `error` is set when it failed or was cancelled.
@@ -325,8 +330,8 @@ private:
     // whole change over the span first (motion/pose_layer.h); `holdInPlace`: what is held on the
     // neighbours is held where it was before the layer (EditBase::holdFrames), except
     // `followLayer` (EditBase::followLayer).
-    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false, bool holdInPlace = false,
-                          const std::vector<Effector>& followLayer = {});
+    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false,
+                          bool holdInPlace = false, const std::vector<Effector>& followLayer = {});
     void finishRunningFalloff();
     void dropRunningFalloff();
     void stopRegeneration();
@@ -402,7 +407,7 @@ private:
     mutable const void* cacheModel_ = nullptr;
     mutable bool cacheEdited_ = false;
     mutable bool cacheCurrent_ = false;  // the edit's x belonged to the installed model
-    mutable Pose cachePose_;  // the edit's pose the point was fitted to
+    mutable Pose cachePose_;             // the edit's pose the point was fitted to
     mutable Eigen::VectorXd cacheX_;
 };
 

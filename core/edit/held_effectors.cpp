@@ -24,7 +24,8 @@ bool isHeld(const ClipEdits& edits, int frame, Effector e) {
 }
 
 bool anyHeld(const ClipEdits& edits) {
-    return std::any_of(edits.edits().begin(), edits.edits().end(), [](const auto& entry) { return !entry.second.moved.empty(); });
+    return std::any_of(edits.edits().begin(), edits.edits().end(),
+                       [](const auto& entry) { return !entry.second.moved.empty(); });
 }
 
 std::vector<Effector> heldOn(const ClipEdits& edits, int frame) {
@@ -61,7 +62,8 @@ FrameEdits releaseRun(const ClipEdits& edits, int frame, Effector e) {
     FrameEdits out;
     if (!isHeld(edits, frame, e)) return out;
     for (int t = frame; t >= 0 && isHeld(edits, t, e); --t) out[t] = without(*recordAt(edits, t), e);
-    for (int t = frame + 1; t < edits.frameCount() && isHeld(edits, t, e); ++t) out[t] = without(*recordAt(edits, t), e);
+    for (int t = frame + 1; t < edits.frameCount() && isHeld(edits, t, e); ++t)
+        out[t] = without(*recordAt(edits, t), e);
     return out;
 }
 

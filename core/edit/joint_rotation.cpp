@@ -105,9 +105,9 @@ std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, Join
     // foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing
     // frames").
     const std::string label = jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame());
-    const std::string err =
-        solved.learned ? doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved, rotationMovers(doc, r.joint))
-                       : doc.setCurrentPose(solved.pose, label);
+    const std::string err = solved.learned ? doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved,
+                                                                rotationMovers(doc, r.joint))
+                                           : doc.setCurrentPose(solved.pose, label);
     if (result) *result = std::move(solved);
     return err;
 }

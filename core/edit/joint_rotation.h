@@ -23,7 +23,7 @@ struct JointRotation {
 };
 
 struct JointRotationResult {
-    std::string error;       // "" when `pose` is the rotated pose
+    std::string error;  // "" when `pose` is the rotated pose
     Pose pose;
     bool learned = false;    // the prior re-solved the rest of the pose
     ConstrainedIkResult ik;  // the solve, when learned

@@ -22,13 +22,13 @@ struct AdaptiveHistoryEntry {
     std::chrono::system_clock::time_point when;  // when the update finished
     int frame = 0;                               // the edited clip frame (0-based)
     bool accepted = false;
-    std::string diagnostic;                      // why it was rejected ("ok" if accepted)
-    double seconds = 0.0;                        // how long the update took
-    int versionBefore = 0, versionAfter = 0;     // equal when rejected
-    int rowsAfter = 0;                           // N after the update
-    int activeSize = 0;                          // M after the update
-    int activeChanged = 0;                       // points that entered the active set
-    bool newPointActive = false;                 // the edited pose itself entered it
+    std::string diagnostic;                              // why it was rejected ("ok" if accepted)
+    double seconds = 0.0;                                // how long the update took
+    int versionBefore = 0, versionAfter = 0;             // equal when rejected
+    int rowsAfter = 0;                                   // N after the update
+    int activeSize = 0;                                  // M after the update
+    int activeChanged = 0;                               // points that entered the active set
+    bool newPointActive = false;                         // the edited pose itself entered it
     double objectiveBefore = 0.0, objectiveAfter = 0.0;  // L_GP around Step 6
 };
 

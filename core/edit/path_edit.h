@@ -10,7 +10,7 @@ namespace mgp {
 
 struct PathEdit {
     Effector effector = Effector::kRFoot;
-    std::vector<int> keyFrames;                // 0-based, strictly increasing, ≥ 2
+    std::vector<int> keyFrames;                 // 0-based, strictly increasing, ≥ 2
     std::vector<Eigen::Vector3d> keyOffsetsCm;  // one per key (cm, from the captured position)
     PathMode mode = PathMode::kDisplacement;
 };

@@ -7,7 +7,8 @@
 
 namespace mgp {
 
-PathSession::PathSession(const Clip& clip, std::function<void()> onChange) : clip_(clip), onChange_(std::move(onChange)) {}
+PathSession::PathSession(const Clip& clip, std::function<void()> onChange)
+    : clip_(clip), onChange_(std::move(onChange)) {}
 
 void PathSession::reset() {
     path_.reset();

@@ -34,9 +34,9 @@ public:
     std::string setKeyPosition(int key, const Eigen::Vector3d& positionCm);
     void setMode(PathMode mode);
 
-    Eigen::Vector3d keyPosition(int key) const;    // captured + offset (cm)
-    std::vector<Eigen::Vector3d> targets() const;  // the edited path, frames first..last
-    std::vector<Eigen::Vector3d> captured() const; // the captured path, frames first..last
+    Eigen::Vector3d keyPosition(int key) const;     // captured + offset (cm)
+    std::vector<Eigen::Vector3d> targets() const;   // the edited path, frames first..last
+    std::vector<Eigen::Vector3d> captured() const;  // the captured path, frames first..last
 
 private:
     const std::vector<Eigen::Vector3d>& capturedTrajectory(Effector e) const;

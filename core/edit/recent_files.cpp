@@ -23,7 +23,6 @@ constexpr const char* kRecentFormat = "motiongp-recent";
 constexpr int kRecentVersion = 1;
 const char* const kKindNames[] = {"session", "clip", "model"};
 
-
 std::string env(const char* name) {
     const char* v = std::getenv(name);
     return v ? v : "";
@@ -31,7 +30,8 @@ std::string env(const char* name) {
 
 std::vector<RecentFile> parseRecent(const std::string& text, const std::string& file) {
     const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (j.is_discarded()) throwParseError(file, 0, "a JSON recent-files list", text.empty() ? "an empty file" : "damaged JSON");
+    if (j.is_discarded())
+        throwParseError(file, 0, "a JSON recent-files list", text.empty() ? "an empty file" : "damaged JSON");
     if (!j.is_object() || j.value("format", json()) != kRecentFormat)
         throwParseError(file, 0, std::string("\"format\": \"") + kRecentFormat + "\"", "another document");
     const json version = j.value("version", json());
@@ -55,10 +55,14 @@ std::vector<RecentFile> parseRecent(const std::string& text, const std::string& 
 
 std::string userDirectory(const char* overrideVar, const char* xdgVar, const char* homeRelative) {
     fs::path dir;
-    if (const std::string o = env(overrideVar); !o.empty()) dir = o;
-    else if (const std::string x = env(xdgVar); !x.empty()) dir = fs::path(x) / "motiongp";
-    else if (const std::string h = env("HOME"); !h.empty()) dir = fs::path(h) / homeRelative;
-    else dir = fs::temp_directory_path() / "motiongp";  // no HOME at all (a bare service account)
+    if (const std::string o = env(overrideVar); !o.empty())
+        dir = o;
+    else if (const std::string x = env(xdgVar); !x.empty())
+        dir = fs::path(x) / "motiongp";
+    else if (const std::string h = env("HOME"); !h.empty())
+        dir = fs::path(h) / homeRelative;
+    else
+        dir = fs::temp_directory_path() / "motiongp";  // no HOME at all (a bare service account)
     std::error_code ec;
     fs::create_directories(dir, ec);
     return dir.string();
@@ -111,7 +115,8 @@ std::string RecentFiles::load() {
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         for (const RecentFile& f : parseRecent(text, file_)) {
             const std::string abs = realPath(f.path);
-            const bool seen = std::any_of(entries_.begin(), entries_.end(), [&](const RecentFile& e) { return e.path == abs; });
+            const bool seen =
+                std::any_of(entries_.begin(), entries_.end(), [&](const RecentFile& e) { return e.path == abs; });
             if (!seen && entries_.size() < kMaxEntries) entries_.push_back({abs, f.kind});
         }
     } catch (const ParseError& e) {

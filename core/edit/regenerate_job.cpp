@@ -6,9 +6,10 @@
 namespace mgp {
 
 RegenerateJob::RegenerateJob()
-    : worker_(WorkerPolicy::kLatestRequest,
-              [this](MotionEditJob& job, const std::atomic<bool>& cancel) { return run(job, cancel); },
-              "regeneration failed: ") {}
+    : worker_(
+          WorkerPolicy::kLatestRequest,
+          [this](MotionEditJob& job, const std::atomic<bool>& cancel) { return run(job, cancel); },
+          "regeneration failed: ") {}
 
 std::string RegenerateJob::start(MotionEditJob job) {
     static const char* const kBusy = "a regeneration is already running";

@@ -24,8 +24,8 @@ FrameEdits regeneratedFrames(const MotionEditJob& job) {
 EditStep regenerationStep(const MotionEditJob& job, const ClipEdits& edits) {
     EditStep step;
     char label[96];
-    std::snprintf(label, sizeof label, "regenerate %s, frames %d-%d", effectorName(job.effector), job.keyFrames.front() + 2,
-                  job.keyFrames.back());
+    std::snprintf(label, sizeof label, "regenerate %s, frames %d-%d", effectorName(job.effector),
+                  job.keyFrames.front() + 2, job.keyFrames.back());
     step.label = label;
     step.after = regeneratedFrames(job);
     step.before = edits.current(step.after);
@@ -57,19 +57,22 @@ std::vector<AdaptiveSample> movedKeySamples(const MotionEditJob& job) {
 std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
     const SpanQuality& q = job.quality;
     char summary[320];
-    std::snprintf(summary, sizeof summary,
-                  "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
-                  "(captured %.1f°); %zu contact(s) held%s",
-                  job.solvedFrames.size(), job.maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
-                  q.captured.maxDeg, job.held.size() - static_cast<std::size_t>(job.placedRunsHeld),
-                  updateQueued ? " (adaptive update queued)" : "");
+    std::snprintf(
+        summary, sizeof summary,
+        "regenerated %zu frames, max residual %.3f cm; angle 2nd difference p95 %.1f° (captured %.1f°), max %.1f° "
+        "(captured %.1f°); %zu contact(s) held%s",
+        job.solvedFrames.size(), job.maxResidualCm, q.edited.p95Deg, q.captured.p95Deg, q.edited.maxDeg,
+        q.captured.maxDeg, job.held.size() - static_cast<std::size_t>(job.placedRunsHeld),
+        updateQueued ? " (adaptive update queued)" : "");
     std::string out = summary;
-    if (job.placedRunsHeld > 0) out += "; " + std::to_string(job.placedRunsHeld) + " placed effector run(s) held where you put them";
+    if (job.placedRunsHeld > 0)
+        out += "; " + std::to_string(job.placedRunsHeld) + " placed effector run(s) held where you put them";
     // A key the solve could not meet is said here too, not only in the Path panel's red rows.
     for (const MotionEditJob::KeyResult& k : job.keys) {
         if (k.reached) continue;
         char missed[96];
-        std::snprintf(missed, sizeof missed, "; the key on frame %d missed its target by %.1f cm", k.frame + 1, k.errorCm);
+        std::snprintf(missed, sizeof missed, "; the key on frame %d missed its target by %.1f cm", k.frame + 1,
+                      k.errorCm);
         out += missed;
     }
     return out;

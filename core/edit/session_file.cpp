@@ -1,8 +1,8 @@
 #include "edit/session_file.h"
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -46,7 +46,8 @@ json editJson(const EditRecord& rec) {
 
 json frameEditsJson(const FrameEdits& frames) {
     json out = json::array();
-    for (const auto& [frame, record] : frames) out.push_back({{"frame", frame}, {"edit", record ? editJson(*record) : json(nullptr)}});
+    for (const auto& [frame, record] : frames)
+        out.push_back({{"frame", frame}, {"edit", record ? editJson(*record) : json(nullptr)}});
     return out;
 }
 
@@ -54,10 +55,7 @@ json stepJson(const EditStep& step) {
     return {{"label", step.label}, {"before", frameEditsJson(step.before)}, {"after", frameEditsJson(step.after)}};
 }
 
-json modelJson(const std::optional<gp::GpModel>& m) {
-    return m ? json::parse(gp::modelToJsonText(*m)) : json(nullptr);
-}
-
+json modelJson(const std::optional<gp::GpModel>& m) { return m ? json::parse(gp::modelToJsonText(*m)) : json(nullptr); }
 
 std::string relativeTo(const std::string& absPath, const fs::path& dir) {
     return absPath.empty() ? absPath : fs::path(absPath).lexically_relative(dir).string();
@@ -123,7 +121,8 @@ public:
         if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
             bad(what, size >= 0 ? "an array of " + std::to_string(size) + " numbers" : "an array of numbers", j);
         Eigen::VectorXd v(static_cast<Eigen::Index>(j.size()));
-        for (std::size_t i = 0; i < j.size(); ++i) v[static_cast<Eigen::Index>(i)] = number(j[i], what + "[" + std::to_string(i) + "]");
+        for (std::size_t i = 0; i < j.size(); ++i)
+            v[static_cast<Eigen::Index>(i)] = number(j[i], what + "[" + std::to_string(i) + "]");
         return v;
     }
     Eigen::Vector3d vec3(const json& j, const std::string& what) const { return vector(j, what, 3); }
@@ -268,9 +267,12 @@ void readPath(const Reader& r, const json& p, SessionPathEdit& path) {
         path.keyOffsetsCm.push_back(r.vec3(offsets[i], "path.key_offsets_cm" + at));
     }
     const std::string mode = r.string(r.field(p, "mode", "path"), "path.mode");
-    if (mode == "direct") path.mode = PathMode::kDirect;
-    else if (mode == "displacement") path.mode = PathMode::kDisplacement;
-    else r.fail("path.mode direct or displacement", describe(json(mode)));
+    if (mode == "direct")
+        path.mode = PathMode::kDirect;
+    else if (mode == "displacement")
+        path.mode = PathMode::kDisplacement;
+    else
+        r.fail("path.mode direct or displacement", describe(json(mode)));
 }
 
 void readCamera(const Reader& r, const json& c, SessionCamera& cam) {
@@ -340,9 +342,12 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
     json j;
     j["format"] = kSessionFileFormat;
     j["version"] = kSessionFileVersion;
-    j["clip"] = {{"synthetic", s.syntheticClip}, {"synthetic_frames", s.syntheticFrames},
-                 {"path", clipAbs}, {"relative_path", relativeTo(clipAbs, dir)},
-                 {"skeleton_path", skelAbs}, {"skeleton_relative_path", relativeTo(skelAbs, dir)},
+    j["clip"] = {{"synthetic", s.syntheticClip},
+                 {"synthetic_frames", s.syntheticFrames},
+                 {"path", clipAbs},
+                 {"relative_path", relativeTo(clipAbs, dir)},
+                 {"skeleton_path", skelAbs},
+                 {"skeleton_relative_path", relativeTo(skelAbs, dir)},
                  {"sha256", s.clipSha256}};
     j["model"] = modelJson(s.model);
     j["model_version"] = s.modelVersion;
@@ -366,13 +371,14 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
     j["compare_mode"] = s.compareMode;
     j["adaptive_enabled"] = s.adaptiveEnabled;
     const SessionCamera& c = s.camera;
-    j["camera"] = {{"yaw_deg", c.yawDeg}, {"pitch_deg", c.pitchDeg}, {"distance_cm", c.distanceCm},
-                   {"fov_y_deg", c.fovYDeg}, {"target_cm", vec3Json(c.targetCm)},
-                   {"follow_character", c.followCharacter}};
+    j["camera"] = {
+        {"yaw_deg", c.yawDeg},    {"pitch_deg", c.pitchDeg},           {"distance_cm", c.distanceCm},
+        {"fov_y_deg", c.fovYDeg}, {"target_cm", vec3Json(c.targetCm)}, {"follow_character", c.followCharacter}};
     if (s.path.present) {
         json offsets = json::array();
         for (const auto& o : s.path.keyOffsetsCm) offsets.push_back(vec3Json(o));
-        j["path"] = {{"effector", effectorName(s.path.effector)}, {"key_frames", s.path.keyFrames},
+        j["path"] = {{"effector", effectorName(s.path.effector)},
+                     {"key_frames", s.path.keyFrames},
                      {"key_offsets_cm", offsets},
                      {"mode", s.path.mode == PathMode::kDirect ? "direct" : "displacement"}};
     } else {
@@ -385,14 +391,20 @@ std::string sessionToJsonText(const SessionData& s, const std::string& sessionPa
     j["history"] = {{"undo", undo}, {"redo", redo}};
     json adaptive = json::array();
     for (const AdaptiveHistoryEntry& h : s.adaptiveHistory) {
-        const long long ms =
-            std::chrono::duration_cast<std::chrono::milliseconds>(h.when.time_since_epoch()).count();
-        adaptive.push_back({{"when_unix_ms", ms}, {"frame", h.frame}, {"accepted", h.accepted},
-                            {"diagnostic", h.diagnostic}, {"seconds", h.seconds},
-                            {"version_before", h.versionBefore}, {"version_after", h.versionAfter},
-                            {"rows_after", h.rowsAfter}, {"active_size", h.activeSize},
-                            {"active_changed", h.activeChanged}, {"new_point_active", h.newPointActive},
-                            {"objective_before", h.objectiveBefore}, {"objective_after", h.objectiveAfter}});
+        const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(h.when.time_since_epoch()).count();
+        adaptive.push_back({{"when_unix_ms", ms},
+                            {"frame", h.frame},
+                            {"accepted", h.accepted},
+                            {"diagnostic", h.diagnostic},
+                            {"seconds", h.seconds},
+                            {"version_before", h.versionBefore},
+                            {"version_after", h.versionAfter},
+                            {"rows_after", h.rowsAfter},
+                            {"active_size", h.activeSize},
+                            {"active_changed", h.activeChanged},
+                            {"new_point_active", h.newPointActive},
+                            {"objective_before", h.objectiveBefore},
+                            {"objective_after", h.objectiveAfter}});
     }
     j["adaptive_history"] = adaptive;
     return j.dump(1) + "\n";
@@ -475,9 +487,11 @@ SessionData loadSession(const std::string& path) {
     const fs::path dir = fs::absolute(path).lexically_normal().parent_path();
     s.clipPath = resolveReference(r, dir, s.clipRelativePath, s.clipPath, "the session's clip file");
     if (!s.skeletonPath.empty() || !s.skeletonRelativePath.empty())
-        s.skeletonPath = resolveReference(r, dir, s.skeletonRelativePath, s.skeletonPath, "the session's skeleton file");
+        s.skeletonPath =
+            resolveReference(r, dir, s.skeletonRelativePath, s.skeletonPath, "the session's skeleton file");
     if (!s.clipSha256.empty() && gp::sha256OfFile(s.clipPath) != s.clipSha256)
-        s.warnings.push_back(s.clipPath + " changed since the session was saved (SHA-256 differs): "
+        s.warnings.push_back(s.clipPath +
+                             " changed since the session was saved (SHA-256 differs): "
                              "the edits may not fit the motion");
     return s;
 }

@@ -85,21 +85,21 @@ struct SessionData {
     std::string clipPath, skeletonPath;  // absolute when saved; "" for synthetic
     std::string clipSha256;              // of the clip file (AMC or BVH); "" if synthetic
     bool syntheticClip = false;
-    int syntheticFrames = 240;           // makeSyntheticWalk's length
-    std::optional<gp::GpModel> model;    // the latest model version (active set + parameters)
-    int modelVersion = 0;                // its ModelVersion::number
+    int syntheticFrames = 240;         // makeSyntheticWalk's length
+    std::optional<gp::GpModel> model;  // the latest model version (active set + parameters)
+    int modelVersion = 0;              // its ModelVersion::number
     std::optional<gp::GpModel> compareModel;
-    std::map<int, EditRecord> edits;     // accepted poses per 0-based frame
+    std::map<int, EditRecord> edits;  // accepted poses per 0-based frame
     int frame = 0;
     std::array<bool, kEffectorCount> pins{};
-    std::set<int> keys;                  // marked key frames (0-based)
-    int selectedEffector = -1;           // an Effector value, -1 none
-    std::string compareMode = "none";    // none | plain | model
+    std::set<int> keys;                // marked key frames (0-based)
+    int selectedEffector = -1;         // an Effector value, -1 none
+    std::string compareMode = "none";  // none | plain | model
     bool adaptiveEnabled = true;
     SessionCamera camera;
     SessionPathEdit path;
-    nlohmann::json ui = nlohmann::json::object();  // free-form UI state, stored as given
-    std::vector<EditStep> undoSteps, redoSteps;     // oldest first; frames only (no model versions)
+    nlohmann::json ui = nlohmann::json::object();       // free-form UI state, stored as given
+    std::vector<EditStep> undoSteps, redoSteps;         // oldest first; frames only (no model versions)
     std::vector<AdaptiveHistoryEntry> adaptiveHistory;  // the Model panel's update table, oldest first
 
     // Filled on reading, never saved as such: the clip paths as stored relative to the session

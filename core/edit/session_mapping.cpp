@@ -50,7 +50,8 @@ CheckedSession checkSession(SessionData d, const std::string& file) {
     if (d.path.present) {
         std::string problem = validatePathKeys(d.path.keyFrames, target.frameCount());
         if (problem.empty() && !target.skeleton.hasEffector(d.path.effector))
-            problem = std::string("expected an effector of the clip's skeleton, found ") + effectorName(d.path.effector);
+            problem =
+                std::string("expected an effector of the clip's skeleton, found ") + effectorName(d.path.effector);
         if (problem.empty() && d.path.keyOffsetsCm.size() != d.path.keyFrames.size())
             problem = "expected one offset per key";
         if (!problem.empty()) throw ParseError(file + ": path: " + problem);
@@ -65,14 +66,17 @@ CheckedSession checkSession(SessionData d, const std::string& file) {
 
 void applySession(EditorDocument& doc, CheckedSession& s, const std::string& file) {
     SessionData& d = s.data;
-    if (s.model) doc.setModel(s.model, true);
-    else doc.setClip(std::move(*s.clip), d.syntheticClip);
+    if (s.model)
+        doc.setModel(s.model, true);
+    else
+        doc.setClip(std::move(*s.clip), d.syntheticClip);
     if (s.compareModel) doc.setCompareModel(s.compareModel);
     doc.setAdaptiveEnabled(d.adaptiveEnabled);
     doc.restoreEdits(std::move(d.edits));
     doc.setFrame(d.frame);
     for (int i = 0; i < kEffectorCount; ++i) doc.setPinned(static_cast<Effector>(i), d.pins[i]);
-    if (const std::string problem = doc.restoreKeys(std::move(d.keys)); !problem.empty()) throw ParseError(file + ": keys: " + problem);
+    if (const std::string problem = doc.restoreKeys(std::move(d.keys)); !problem.empty())
+        throw ParseError(file + ": keys: " + problem);
     CompareMode mode = CompareMode::kNone;
     parseCompareMode(d.compareMode, mode);  // checked when the file was read
     doc.setCompareMode(mode);

@@ -87,7 +87,8 @@ std::vector<TrainingCandidate> trainingCandidates(const Clip& open) {
     std::vector<std::string> files;
     for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string ext = lowerExtension(it->path().string());
-        if ((ext == ".amc" || ext == ".bvh") && it->is_regular_file(ec) && !sameFile(it->path().string(), open.sourcePath))
+        if ((ext == ".amc" || ext == ".bvh") && it->is_regular_file(ec) &&
+            !sameFile(it->path().string(), open.sourcePath))
             files.push_back(it->path().string());
     }
     std::map<std::string, std::string> verdicts;

@@ -17,17 +17,20 @@ bool publishDue(const PublishPolicy& policy, int iter, double sinceLast, int cou
 }  // namespace
 
 TrainingJob::TrainingJob()
-    : worker_(WorkerPolicy::kLatestRequest, [this](Request& r, const std::atomic<bool>& cancel) { return run(r, cancel); },
-              "training failed: ") {}
+    : worker_(
+          WorkerPolicy::kLatestRequest, [this](Request& r, const std::atomic<bool>& cancel) { return run(r, cancel); },
+          "training failed: ") {}
 
 std::string TrainingJob::start(const Clip& clip, const gp::TrainOptions& options, const std::string& sourceFile) {
-    if (clip.frameCount() < 3) return "expected at least 3 frames to train on, found " + std::to_string(clip.frameCount());
+    if (clip.frameCount() < 3)
+        return "expected at least 3 frames to train on, found " + std::to_string(clip.frameCount());
     if (worker_.busy()) return "a training run is already in progress";  // before copying the clip
     gp::TrainingClip one;
     one.clip = clip;
     unwrapClip(one.clip);  // the model's clip must match its (unwrapped) training rows
     one.path = sourceFile;
-    one.frames = gp::trainingFrames(clip.frameCount(), clip.restFrame, gp::FrameSelection{}, clip.name);  // all but a rest frame
+    one.frames =
+        gp::trainingFrames(clip.frameCount(), clip.restFrame, gp::FrameSelection{}, clip.name);  // all but a rest frame
     std::vector<gp::TrainingClip> clips;
     clips.push_back(std::move(one));
     return startRequest(Request{std::move(clips), gp::FrameSelection{}, options});
@@ -120,7 +123,8 @@ JobOutcome<gp::ModelVersionPtr> TrainingJob::run(Request& request, const std::at
         progress_.publishedObjective = e.L;
     };
     gp::TrainResult res = gp::train(gp::trainingDataOf(request.clips), options, control);
-    if (res.cancelled) return {std::nullopt, "training cancelled after " + std::to_string(res.log.size()) + " iterations"};
+    if (res.cancelled)
+        return {std::nullopt, "training cancelled after " + std::to_string(res.log.size()) + " iterations"};
     gp::attachTrainingClips(res.model, std::move(request.clips), request.selection);
     char buf[160];
     std::snprintf(buf, sizeof buf, "trained %s: %zu iterations in %.1f s%s", gp::kernelKindName(options.kind),

@@ -1,6 +1,6 @@
 #pragma once
-// TrainingJob: trains a model from one clip or several clips of one skeleton on a background thread, one outer iteration at a time,
-// with progress, an ETA and cancellation (docs/architecture.md §4: the app never blocks the UI on
+// TrainingJob: trains a model from one clip or several clips of one skeleton on a background thread, one outer
+// iteration at a time, with progress, an ETA and cancellation (docs/architecture.md §4: the app never blocks the UI on
 // training). The UI polls progress() every frame and takes the finished model once. The thread,
 // the cancel flag and the take-once model are a BackgroundWorker's (core/util/background_worker.h),
 // one run at a time. No GL or ImGui here.

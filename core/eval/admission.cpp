@@ -19,8 +19,8 @@ const char* judgementWords(PoseJudgement j) {
     return "?";
 }
 
-AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved, bool reached,
-                           bool belowFloor, double sigma2, double lik, const Balance& balance) {
+AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved,
+                           bool reached, bool belowFloor, double sigma2, double lik, const Balance& balance) {
     AdmissionVerdict v;
     v.reached = reached;
     v.balance = balance;
@@ -70,19 +70,21 @@ std::string admissionDetails(const AdmissionVerdict& v, const gp::GpModel& model
     char buf[320];
     std::string out;
     if (v.capture.nearestClip >= 0) {
-        std::snprintf(buf, sizeof buf,
-                      "nearest captured frame: %s frame %d, %.1f cm away (the capture's own moments: typically %.1f cm, "
-                      "at most %.1f cm)\n",
-                      model.clipName(v.capture.nearestClip).c_str(), v.capture.nearestFrame + 1, v.capture.nearestCm,
-                      v.nearestMedianCm, v.nearestLimitCm);
+        std::snprintf(
+            buf, sizeof buf,
+            "nearest captured frame: %s frame %d, %.1f cm away (the capture's own moments: typically %.1f cm, "
+            "at most %.1f cm)\n",
+            model.clipName(v.capture.nearestClip).c_str(), v.capture.nearestFrame + 1, v.capture.nearestCm,
+            v.nearestMedianCm, v.nearestLimitCm);
         out += buf;
     }
     if (v.capture.ranges) {
         out += "joint ranges: every angle within the captured range\n";
     } else {
         const PoseLayout layout(model.clip.skeleton);
-        std::snprintf(buf, sizeof buf, "joint ranges: %d angle(s) outside, worst %s by %.0f deg\n", v.capture.rangeViolations,
-                      layout.dofName(model.clip.skeleton, v.capture.worstDof).c_str(), v.capture.worstExcessDeg);
+        std::snprintf(buf, sizeof buf, "joint ranges: %d angle(s) outside, worst %s by %.0f deg\n",
+                      v.capture.rangeViolations, layout.dofName(model.clip.skeleton, v.capture.worstDof).c_str(),
+                      v.capture.worstExcessDeg);
         out += buf;
     }
     if (!v.reached) out += "a target or pin was not reached\n";
@@ -93,8 +95,8 @@ std::string admissionDetails(const AdmissionVerdict& v, const gp::GpModel& model
                       v.balance.outsideCm, kBalanceToleranceCm);
         out += buf;
     }
-    std::snprintf(buf, sizeof buf, "model's score: sigma^2 %.4g (held-out p%g %.4g), L_IK %.4g (held-out p%g %.4g)", v.sigma2,
-                  v.range.percentile, v.range.sigma2Percentile, v.lik, v.range.percentile, v.range.likLimit);
+    std::snprintf(buf, sizeof buf, "model's score: sigma^2 %.4g (held-out p%g %.4g), L_IK %.4g (held-out p%g %.4g)",
+                  v.sigma2, v.range.percentile, v.range.sigma2Percentile, v.lik, v.range.percentile, v.range.likLimit);
     out += buf;
     return out;
 }

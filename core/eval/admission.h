@@ -44,14 +44,14 @@ struct AdmissionVerdict {
     // Where the pose sits on the amber ramp, from the capture's median distance (0) to its limit (1).
     double unusual = 0.0;
     double sigma2 = 0.0, lik = 0.0;  // the model's score of the pose (shown, not judged)
-    gp::TrainingRange range;             // the model's held-out score percentiles (shown, not judged)
-    std::string reason;  // "" when admitted, else why not (one line, with the number that decided)
+    gp::TrainingRange range;         // the model's held-out score percentiles (shown, not judged)
+    std::string reason;              // "" when admitted, else why not (one line, with the number that decided)
 };
 
 // `pose`: the edited pose (the model's skeleton); `moved`: the effectors the edit put somewhere.
 // `balance`: judgeBalance of the pose on its frame (default: not judged).
-AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved, bool reached,
-                           bool belowFloor, double sigma2, double lik, const Balance& balance = {});
+AdmissionVerdict admitPose(const gp::ModelVersion& version, const Pose& pose, const std::vector<Effector>& moved,
+                           bool reached, bool belowFloor, double sigma2, double lik, const Balance& balance = {});
 
 // The numbers behind a verdict, a line each (the legend's tooltip): the nearest captured frame and
 // its distance against the capture's own, the joint ranges, the model's σ² and L_IK against their

@@ -112,17 +112,19 @@ nlohmann::json spreadJson(const Spread& s) {
 namespace {
 
 nlohmann::json testJson(const SignedRankTest& t) {
-    return {{"pairs", t.pairs}, {"positive", t.positive}, {"negative", t.negative}, {"zero", t.zero},
-            {"w_plus", t.wPlus}, {"w_minus", t.wMinus}, {"p", t.p}};
+    return {{"pairs", t.pairs}, {"positive", t.positive}, {"negative", t.negative},
+            {"zero", t.zero},   {"w_plus", t.wPlus},      {"w_minus", t.wMinus},
+            {"p", t.p}};
 }
 
 }  // namespace
 
-nlohmann::json claimJson(const std::string& claim, const std::string& difference, const std::vector<std::string>& groups,
-                         const std::vector<std::vector<double>>& differences, double alpha) {
+nlohmann::json claimJson(const std::string& claim, const std::string& difference,
+                         const std::vector<std::string>& groups, const std::vector<std::vector<double>>& differences,
+                         double alpha) {
     if (groups.size() != differences.size())
-        throw std::invalid_argument("expected one list of differences per group, found " + std::to_string(differences.size()) +
-                                    " for " + std::to_string(groups.size()));
+        throw std::invalid_argument("expected one list of differences per group, found " +
+                                    std::to_string(differences.size()) + " for " + std::to_string(groups.size()));
     nlohmann::json perGroup = nlohmann::json::array();
     std::vector<double> pooled;
     int dropped = 0;
@@ -130,16 +132,20 @@ nlohmann::json claimJson(const std::string& claim, const std::string& difference
         // A pair without a finite difference (both measures 0 in a ratio) has no sign to count.
         std::vector<double> d;
         for (double x : differences[g])
-            if (std::isfinite(x)) d.push_back(x);
-            else ++dropped;
+            if (std::isfinite(x))
+                d.push_back(x);
+            else
+                ++dropped;
         if (d.empty()) continue;
         pooled.insert(pooled.end(), d.begin(), d.end());
-        perGroup.push_back({{"group", groups[g]}, {"difference", spreadJson(spreadOf(d))}, {"test", testJson(wilcoxonSignedRank(d))}});
+        perGroup.push_back(
+            {{"group", groups[g]}, {"difference", spreadJson(spreadOf(d))}, {"test", testJson(wilcoxonSignedRank(d))}});
     }
     const SignedRankTest all = wilcoxonSignedRank(pooled);
     return {{"claim", claim},
             {"difference", difference + " (positive favours the claim)"},
-            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " + std::to_string(alpha).substr(0, 4)},
+            {"test", "exact two-sided Wilcoxon signed-rank over every (row, run) pair, alpha = " +
+                         std::to_string(alpha).substr(0, 4)},
             {"scope", "runs of a row share its motion: the verdict is about these motions under this perturbation"},
             {"per_group", perGroup},
             {"pooled", testJson(all)},

@@ -23,10 +23,10 @@ Spread spreadOf(const std::vector<double>& values);
 std::string formatSpread(const Spread& s, int decimals);
 
 struct SignedRankTest {
-    int pairs = 0;                         // all differences given
+    int pairs = 0;  // all differences given
     int positive = 0, negative = 0, zero = 0;
-    double wPlus = 0.0, wMinus = 0.0;      // rank sums over the non-zero differences (mid-ranks on ties)
-    double p = 1.0;                        // exact two-sided p under H0 (signs ±1 equally likely)
+    double wPlus = 0.0, wMinus = 0.0;  // rank sums over the non-zero differences (mid-ranks on ties)
+    double p = 1.0;                    // exact two-sided p under H0 (signs ±1 equally likely)
 };
 // Zero differences are dropped (Wilcoxon's rule); ties in |d| get mid-ranks and the exact null
 // distribution is taken over those ranks. Throws std::invalid_argument on a NaN difference.
@@ -44,7 +44,8 @@ nlohmann::json spreadJson(const Spread& s);
 // favouring the claim: per group its spread and test, pooled over every pair the test that
 // decides, and the verdict. Groups without differences are left out of the pool; a non-finite
 // difference is left out and counted.
-nlohmann::json claimJson(const std::string& claim, const std::string& difference, const std::vector<std::string>& groups,
-                         const std::vector<std::vector<double>>& differences, double alpha = 0.05);
+nlohmann::json claimJson(const std::string& claim, const std::string& difference,
+                         const std::vector<std::string>& groups, const std::vector<std::vector<double>>& differences,
+                         double alpha = 0.05);
 
 }  // namespace mgp

@@ -9,7 +9,8 @@ namespace mgp {
 std::string describeSegments(const std::vector<ClipSegment>& segments) {
     std::string s;
     for (const ClipSegment& g : segments)
-        s += (s.empty() ? "" : " + ") + g.trial + " [" + std::to_string(g.first) + ":" + (g.last == 0 ? "end" : std::to_string(g.last)) + "]";
+        s += (s.empty() ? "" : " + ") + g.trial + " [" + std::to_string(g.first) + ":" +
+             (g.last == 0 ? "end" : std::to_string(g.last)) + "]";
     return s;
 }
 
@@ -33,14 +34,14 @@ ClipSegment parseClipSpec(const std::string& spec) {
     int a = 0, b = 0;
     if (c1 != std::string::npos && parseFrameNumber(spec.substr(c1 + 1, c2 - c1 - 1), a) &&
         parseFrameNumber(spec.substr(c2 + 1), b)) {
-        if (a < 1 || b < a)
-            throw std::invalid_argument("expected FILE:A:B with 1 ≤ A ≤ B, found '" + spec + "'");
+        if (a < 1 || b < a) throw std::invalid_argument("expected FILE:A:B with 1 ≤ A ≤ B, found '" + spec + "'");
         seg.trial = spec.substr(0, c1);
         seg.first = a;
         seg.last = b;
     }
     if (!isClipFile(seg.trial))
-        throw std::invalid_argument("expected a clip file (a path with '/' or an extension) in FILE[:A:B], found '" + spec + "'");
+        throw std::invalid_argument("expected a clip file (a path with '/' or an extension) in FILE[:A:B], found '" +
+                                    spec + "'");
     return seg;
 }
 

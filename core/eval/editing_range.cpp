@@ -80,7 +80,8 @@ EditingRange EditingRangeJob::run() const {
             req.rootReferenceDeg = m0.clip.frames[frame].anglesDeg[0];
             req.reachedToleranceCm = 0.5;  // test 1, as the learned IK's `reached`
             const ConstrainedIkResult r = drag->solve(req);
-            res = {r.pose, r.x, r.y, r.constraints.empty() ? res.residualCm : r.constraints[0].residualCm, r.lik, r.reached};
+            res = {r.pose, r.x,      r.y, r.constraints.empty() ? res.residualCm : r.constraints[0].residualCm,
+                   r.lik,  r.reached};
             for (const IkConstraintResult& c : r.constraints) res.residualCm = std::max(res.residualCm, c.residualCm);
         } else {
             if (!learned || learned->version() != current) learned = std::make_unique<LearnedIkSolver>(current);
@@ -90,7 +91,8 @@ EditingRange EditingRangeJob::run() const {
             req.constraints = {target};
             req.maxIterations = ikIterations;
             const LearnedIkResult r = learned->solve(req);
-            res = {r.pose, r.x, r.y, r.constraints.empty() ? res.residualCm : r.constraints[0].residualCm, r.lik, r.reached};
+            res = {r.pose, r.x,      r.y, r.constraints.empty() ? res.residualCm : r.constraints[0].residualCm,
+                   r.lik,  r.reached};
         }
         EditingStep step;
         step.deltaCm = delta;
@@ -101,8 +103,8 @@ EditingRange EditingRangeJob::run() const {
         step.verdict = tests->judge(sk, poseDeg, delta == 0 ? nullptr : &previous);
         step.accepted = step.reach && step.verdict.all();
         step.poseDeg = poseDeg;
-        const bool pass[6] = {step.accepted, step.reach, step.verdict.ranges, step.verdict.nearest, step.verdict.density,
-                              step.verdict.continuity};
+        const bool pass[6] = {step.accepted,        step.reach,           step.verdict.ranges,
+                              step.verdict.nearest, step.verdict.density, step.verdict.continuity};
         for (int k = 0; k < 6; ++k) {
             passing[k] = passing[k] && pass[k];
             if (passing[k]) *ranges[k] = delta;

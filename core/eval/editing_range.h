@@ -25,9 +25,9 @@ struct EditingStep {
     double lik = 0.0;
     bool reach = false;
     NaturalnessVerdict verdict;
-    bool accepted = false;     // reach and every naturalness test
-    bool updatedModel = false; // an adaptive update was applied after this step
-    Eigen::VectorXd poseDeg;   // the solved pose vector (degrees, skeleton/pose_layout.h)
+    bool accepted = false;      // reach and every naturalness test
+    bool updatedModel = false;  // an adaptive update was applied after this step
+    Eigen::VectorXd poseDeg;    // the solved pose vector (degrees, skeleton/pose_layout.h)
 };
 
 struct EditingRange {
@@ -41,7 +41,7 @@ struct EditingRange {
 
 struct EditingRangeJob {
     gp::ModelVersionPtr version;
-    int frame = 0;                              // clip frame (0-based)
+    int frame = 0;  // clip frame (0-based)
     Effector effector = Effector::kRFoot;
     Eigen::Vector3d direction = Eigen::Vector3d::UnitY();
     const NaturalnessTests* tests = nullptr;

@@ -12,8 +12,9 @@
 namespace mgp {
 
 WindowGlobals windowGlobals(const Skeleton& skeleton, const std::vector<Pose>& frames) {
-    if (frames.size() < 3) throw std::invalid_argument("expected a window of key, transition and key, found " +
-                                                       std::to_string(frames.size()) + " frames");
+    if (frames.size() < 3)
+        throw std::invalid_argument("expected a window of key, transition and key, found " +
+                                    std::to_string(frames.size()) + " frames");
     const int J = skeleton.jointCount();
     const int T = static_cast<int>(frames.size()) - 2;
     FkState fk;
@@ -43,7 +44,8 @@ WindowGlobals windowGlobals(const Skeleton& skeleton, const std::vector<Pose>& f
 }
 
 Eigen::VectorXd positionSpread(const std::vector<WindowGlobals>& windows) {
-    if (windows.empty()) throw std::invalid_argument("expected at least one window for the position spread, found none");
+    if (windows.empty())
+        throw std::invalid_argument("expected at least one window for the position spread, found none");
     const Eigen::Index C = windows.front().positions.cols();
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(C), sumSq = Eigen::VectorXd::Zero(C);
     double n = 0.0;
@@ -95,12 +97,14 @@ NpssTerms npssTerms(const Eigen::MatrixXd& truth, const Eigen::MatrixXd& predict
     return terms;
 }
 
-void InbetweenScore::add(const WindowGlobals& truth, const WindowGlobals& prediction, const Eigen::VectorXd& positionSd) {
+void InbetweenScore::add(const WindowGlobals& truth, const WindowGlobals& prediction,
+                         const Eigen::VectorXd& positionSd) {
     if (truth.positions.rows() != prediction.positions.rows() || truth.positions.cols() != positionSd.size() ||
         prediction.positions.cols() != positionSd.size() || truth.quaternions.cols() != prediction.quaternions.cols())
         throw std::invalid_argument("expected truth and prediction windows of one shape and skeleton");
     for (Eigen::Index t = 0; t < truth.positions.rows(); ++t) {
-        l2pSum_ += ((truth.positions.row(t) - prediction.positions.row(t)).transpose().cwiseQuotient(positionSd)).norm();
+        l2pSum_ +=
+            ((truth.positions.row(t) - prediction.positions.row(t)).transpose().cwiseQuotient(positionSd)).norm();
         l2qSum_ += (truth.quaternions.row(t) - prediction.quaternions.row(t)).norm();
     }
     frames_ += static_cast<int>(truth.positions.rows());

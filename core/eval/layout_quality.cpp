@@ -47,7 +47,8 @@ double percentile(std::vector<double> v, double q) {
 ContinuityReport latentContinuity(const Eigen::MatrixXd& X, const std::vector<int>& frames) {
     if (static_cast<Eigen::Index>(frames.size()) != X.rows())
         throw std::invalid_argument("latentContinuity: expected one frame per latent row, found " +
-                                    std::to_string(frames.size()) + " frames for " + std::to_string(X.rows()) + " rows");
+                                    std::to_string(frames.size()) + " frames for " + std::to_string(X.rows()) +
+                                    " rows");
     ContinuityReport r;
     const Eigen::Index n = X.rows();
     if (n < 2) return r;
@@ -182,7 +183,8 @@ HeldOutSplit everyNthHeldOut(std::vector<int> frames, int every, int offset) {
     frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
     HeldOutSplit s;
     const auto e = static_cast<std::size_t>(every), o = static_cast<std::size_t>(offset);
-    for (std::size_t k = 0; k < frames.size(); ++k) ((k + 1) % e == o ? s.heldFrames : s.trainFrames).push_back(frames[k]);
+    for (std::size_t k = 0; k < frames.size(); ++k)
+        ((k + 1) % e == o ? s.heldFrames : s.trainFrames).push_back(frames[k]);
     return s;
 }
 
@@ -220,9 +222,10 @@ HeldOutOffsetsReport heldOutOverOffsets(const gp::GpModel& model, const gp::Trai
     for (int offset : offsets) {
         const HeldOutSplit split = everyNthHeldOut(model.trainingFrames, every, offset);
         if (split.trainFrames.size() < 3 || split.heldFrames.empty())
-            throw std::invalid_argument("heldOutOverOffsets: expected at least 3 training and 1 held-out frame at offset " +
-                                        std::to_string(offset) + ", found " + std::to_string(split.trainFrames.size()) +
-                                        " and " + std::to_string(split.heldFrames.size()));
+            throw std::invalid_argument(
+                "heldOutOverOffsets: expected at least 3 training and 1 held-out frame at offset " +
+                std::to_string(offset) + ", found " + std::to_string(split.trainFrames.size()) + " and " +
+                std::to_string(split.heldFrames.size()));
         const auto t0 = std::chrono::steady_clock::now();
         gp::TrainResult r = gp::train(gp::trainingDataFromClip(model.clip, split.trainFrames), options);
         rep.trainSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

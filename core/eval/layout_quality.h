@@ -79,8 +79,7 @@ struct HeldOutReport {
     double worstFrameRmsDeg = 0.0, medianFrameRmsDeg = 0.0;
 };
 // `model` was trained without heldFrames; its clip supplies the true poses.
-HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames,
-                                    int iterations = 200);
+HeldOutReport heldOutReconstruction(const gp::GpModel& model, const std::vector<int>& heldFrames, int iterations = 200);
 
 // Mean and spread of one measure over several held-out splits (offsets). sd is the sample
 // standard deviation (n − 1; 0 for one value): how far one retraining on one split can move it.

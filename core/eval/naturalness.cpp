@@ -59,10 +59,12 @@ NaturalnessTests::NaturalnessTests(std::vector<ReferenceFrame> frames, Effector 
     qMin_ = poses_.colwise().minCoeff().transpose();
     qMax_ = poses_.colwise().maxCoeff().transpose();
     // τ_NN: 99th percentile of leave-one-clip-out d_NN (single clip: leave out ±10 frames).
-    const bool singleGroup = std::all_of(frames_.begin(), frames_.end(), [&](const ReferenceFrame& f) { return f.group == frames_[0].group; });
+    const bool singleGroup = std::all_of(frames_.begin(), frames_.end(),
+                                         [&](const ReferenceFrame& f) { return f.group == frames_[0].group; });
     std::vector<double> d(n);
     for (int i = 0; i < n; ++i)
-        d[i] = singleGroup ? nearestDistance(shapes_.row(i).transpose(), frames_[i].group, frames_[i].frame - 10, frames_[i].frame + 10)
+        d[i] = singleGroup ? nearestDistance(shapes_.row(i).transpose(), frames_[i].group, frames_[i].frame - 10,
+                                             frames_[i].frame + 10)
                            : nearestDistance(shapes_.row(i).transpose(), frames_[i].group);
     std::sort(d.begin(), d.end());
     tauNN_ = d[std::min<std::size_t>(d.size() - 1, static_cast<std::size_t>(0.99 * (d.size() - 1)))];
@@ -76,7 +78,8 @@ NaturalnessTests::NaturalnessTests(std::vector<ReferenceFrame> frames, Effector 
 }
 
 std::pair<double, double> NaturalnessTests::rangeBounds(int dof) const {
-    const double margin = std::max(gp::kCaptureRangeMarginDeg, gp::kCaptureRangeMarginFraction * (qMax_[dof] - qMin_[dof]));
+    const double margin =
+        std::max(gp::kCaptureRangeMarginDeg, gp::kCaptureRangeMarginFraction * (qMax_[dof] - qMin_[dof]));
     return {qMin_[dof] - margin, qMax_[dof] + margin};
 }
 

@@ -25,16 +25,16 @@ namespace mgp {
 struct ReferenceFrame {
     const Clip* clip = nullptr;  // its skeleton is used for FK
     int frame = 0;
-    int group = 0;               // clip id for leave-one-clip-out
+    int group = 0;  // clip id for leave-one-clip-out
 };
 
 struct NaturalnessVerdict {
     bool ranges = false, nearest = false, density = false, continuity = false;
     double dNN = 0.0, logDensity = 0.0, maxStepDeg = 0.0;
     int rangeViolations = 0;
-    int worstRangeDof = -1;     // the DOF furthest outside its range (−1: none)
+    int worstRangeDof = -1;  // the DOF furthest outside its range (−1: none)
     double worstRangeExcessDeg = 0.0;
-    int maxStepDof = -1;        // the DOF that moved most since δ − 1
+    int maxStepDof = -1;  // the DOF that moved most since δ − 1
     bool all() const { return ranges && nearest && density && continuity; }
 };
 
@@ -61,9 +61,9 @@ public:
 
 private:
     std::vector<ReferenceFrame> frames_;
-    std::vector<bool> boneMask_;       // 22 entries, false for the excluded bone
-    Eigen::MatrixXd shapes_;           // |R| × 66
-    Eigen::MatrixXd poses_;            // |R| × 47
+    std::vector<bool> boneMask_;  // 22 entries, false for the excluded bone
+    Eigen::MatrixXd shapes_;      // |R| × 66
+    Eigen::MatrixXd poses_;       // |R| × 47
     Eigen::VectorXd qMin_, qMax_;
     std::vector<int> densityColumns_;  // non-constant columns used by the density
     std::unique_ptr<PpcaDensity> density_;

@@ -15,10 +15,10 @@ public:
 
 private:
     Eigen::VectorXd mu_;
-    Eigen::MatrixXd U_;        // D×q principal directions
-    Eigen::VectorXd lambda_;   // q eigenvalues
+    Eigen::MatrixXd U_;       // D×q principal directions
+    Eigen::VectorXd lambda_;  // q eigenvalues
     double sigma2_ = 1.0;
-    double logNorm_ = 0.0;     // −½ ln|C| − (D/2) ln 2π
+    double logNorm_ = 0.0;  // −½ ln|C| − (D/2) ln 2π
 };
 
 // The 1st-percentile (or `quantile`) held-out log density: k contiguous folds, each scored by a

@@ -39,10 +39,11 @@ void validateRunSettings(int runs, double startNoise, int workers) {
 std::string describeRunPerturbation(int runs, double startNoise) {
     if (runs <= 1) return "one run: every frame, the paper's start";
     char buf[320];
-    std::snprintf(buf, sizeof buf,
-                  "%d runs; run r drops the frames f with (f - anchor) mod %d = 1 + (r mod %d) (one in ten; the anchor "
-                  "is Table 2's edited frame, frame 1 in Table 1) and adds N(0, %.3g^2) seeded with r to the whitened-PCA start",
-                  runs, kRunDropPeriod, kRunDropPeriod - 1, startNoise);
+    std::snprintf(
+        buf, sizeof buf,
+        "%d runs; run r drops the frames f with (f - anchor) mod %d = 1 + (r mod %d) (one in ten; the anchor "
+        "is Table 2's edited frame, frame 1 in Table 1) and adds N(0, %.3g^2) seeded with r to the whitened-PCA start",
+        runs, kRunDropPeriod, kRunDropPeriod - 1, startNoise);
     return buf;
 }
 

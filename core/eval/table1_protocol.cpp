@@ -14,15 +14,27 @@ const std::vector<Table1Clip>& table1Clips() {
     // All ASF/AMC from the full CMU set; frame counts from its README.
     static const std::vector<Table1Clip> c = {
         {"kick", 341, 52, {{"10_03", 1, 362}}, "soccer kick 10_03, whole trial (362 frames, +6 % of 341)"},
-        {"run", 264, 46, {{"09_01", 1, 148}, {"09_02", 1, 130}},
+        {"run",
+         264,
+         46,
+         {{"09_01", 1, 148}, {"09_02", 1, 130}},
          "no single run trial is within ±10 % of 264 (02_03 173, 09_01 148, 09_02 130, 16_35 162, 16_36 189): "
          "two whole runs of subject 09 concatenated, 278 frames (+5 %); the GPLVM ignores frame order"},
-        {"jump", 536, 71, {{"16_02", 1, 466}, {"16_01", 1, 70}},
+        {"jump",
+         536,
+         71,
+         {{"16_02", 1, 466}, {"16_01", 1, 70}},
          "no AMC run-and-jump here and no single jump within ±10 % of 536 (16_02 has 466): jump 16_02 whole "
          "plus the first 70 frames of jump 16_01 (same subject), 536 frames"},
-        {"box", 452, 63, {{"13_17", 1001, 1452}},
+        {"box",
+         452,
+         63,
+         {{"13_17", 1001, 1452}},
          "boxing 13_17 frames 1001-1452 (452 of 4840; a stretch inside the trial, past its start)"},
-        {"forward_jump", 367, 58, {{"16_06", 21, 387}},
+        {"forward_jump",
+         367,
+         58,
+         {{"16_06", 21, 387}},
          "forward jump 16_06 frames 21-387 (367 of 407, trimming 20 frames at each end)"},
     };
     return c;
@@ -69,7 +81,9 @@ namespace {
 
 nlohmann::json paramsJson(gp::KernelKind kind, const Eigen::VectorXd& psi) {
     const gp::Kernel k(kind, psi);
-    return {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
+    return {{"alpha", k.alpha()},
+            {"beta", k.beta()},
+            {"gamma", k.gamma()},
             {"eta", k.hasEta() ? nlohmann::json(k.eta()) : nlohmann::json(nullptr)}};
 }
 
@@ -126,8 +140,11 @@ nlohmann::json table1Run(const gp::TrainingData& data, const gp::TrainOptions& o
     }
     nlohmann::json traj = nlohmann::json::array();
     for (const auto& x : trainer.log())
-        traj.push_back({{"iter", x.iter}, {"L", x.L}, {"max_delta_raw", x.maxDeltaRaw},
-                        {"max_delta_log", x.maxDeltaLog}, {"active_overlap", x.activeOverlap}});
+        traj.push_back({{"iter", x.iter},
+                        {"L", x.L},
+                        {"max_delta_raw", x.maxDeltaRaw},
+                        {"max_delta_log", x.maxDeltaLog},
+                        {"active_overlap", x.activeOverlap}});
     out["log"] = traj;
     out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
@@ -139,12 +156,18 @@ namespace {
 const std::vector<std::pair<std::string, nlohmann::json::json_pointer>>& table1SpreadQuantities() {
     using P = nlohmann::json::json_pointer;
     static const std::vector<std::pair<std::string, P>> q = {
-        {"raw_max_delta", P("/raw_max_delta")}, {"log_max_delta", P("/log_max_delta")},
-        {"abs_delta_L_fixed_active", P("/abs_delta_L_fixed_active")}, {"grad_inf", P("/grad_inf")},
-        {"active_overlap", P("/active_overlap")}, {"frozen_raw_max_delta", P("/frozen_raw_max_delta")},
+        {"raw_max_delta", P("/raw_max_delta")},
+        {"log_max_delta", P("/log_max_delta")},
+        {"abs_delta_L_fixed_active", P("/abs_delta_L_fixed_active")},
+        {"grad_inf", P("/grad_inf")},
+        {"active_overlap", P("/active_overlap")},
+        {"frozen_raw_max_delta", P("/frozen_raw_max_delta")},
         {"frozen_log_max_delta", P("/frozen_log_max_delta")},
-        {"alpha", P("/params/alpha")}, {"beta", P("/params/beta")}, {"gamma", P("/params/gamma")},
-        {"eta", P("/params/eta")}, {"seconds", P("/seconds")}};
+        {"alpha", P("/params/alpha")},
+        {"beta", P("/params/beta")},
+        {"gamma", P("/params/gamma")},
+        {"eta", P("/params/eta")},
+        {"seconds", P("/seconds")}};
     return q;
 }
 
@@ -163,7 +186,8 @@ nlohmann::json table1Spread(const std::vector<nlohmann::json>& runs, const std::
 // paper's raw measure (a), the scale-free (b), and (b) with the active set frozen for the last
 // five iterations, which leaves the optimiser without the set's churn) and meets the paper's
 // stopping test in fewer iterations (T + 1 when it never does).
-nlohmann::json table1Claims(const std::vector<std::string>& kinds, const std::vector<std::vector<nlohmann::json>>& runs) {
+nlohmann::json table1Claims(const std::vector<std::string>& kinds,
+                            const std::vector<std::vector<nlohmann::json>>& runs) {
     auto differences = [&](auto&& diff) {
         std::vector<std::vector<double>> d(runs.size());
         for (std::size_t c = 0; c < runs.size(); ++c)
@@ -176,19 +200,23 @@ nlohmann::json table1Claims(const std::vector<std::string>& kinds, const std::ve
         };
     };
     auto firstMet = [](const nlohmann::json& x) {
-        return x["first_iter_raw_test_met"].is_null() ? x["T"].get<double>() + 1.0 : x["first_iter_raw_test_met"].get<double>();
+        return x["first_iter_raw_test_met"].is_null() ? x["T"].get<double>() + 1.0
+                                                      : x["first_iter_raw_test_met"].get<double>();
     };
     nlohmann::json claims = nlohmann::json::array();
     claims.push_back(claimJson("FASGPLVM converges more precisely: smaller (a), the paper's max |delta param| at T",
                                "log10((a) SGPLVM / (a) FASGPLVM)", kinds, differences(logRatio("raw_max_delta"))));
     claims.push_back(claimJson("FASGPLVM converges more precisely: smaller (b), max |delta ln param| at T",
                                "log10((b) SGPLVM / (b) FASGPLVM)", kinds, differences(logRatio("log_max_delta"))));
-    claims.push_back(claimJson("FASGPLVM's optimiser converges more precisely: smaller (b) with the active set frozen from T - 5",
-                               "log10(frozen (b) SGPLVM / frozen (b) FASGPLVM)", kinds,
-                               differences(logRatio("frozen_log_max_delta"))));
-    claims.push_back(claimJson("FASGPLVM converges faster: meets the paper's test max |delta param| < C in fewer iterations",
-                               "first iteration SGPLVM - first iteration FASGPLVM (T + 1 when never met)", kinds,
-                               differences([&](const nlohmann::json& fas, const nlohmann::json& sg) { return firstMet(sg) - firstMet(fas); })));
+    claims.push_back(claimJson(
+        "FASGPLVM's optimiser converges more precisely: smaller (b) with the active set frozen from T - 5",
+        "log10(frozen (b) SGPLVM / frozen (b) FASGPLVM)", kinds, differences(logRatio("frozen_log_max_delta"))));
+    claims.push_back(
+        claimJson("FASGPLVM converges faster: meets the paper's test max |delta param| < C in fewer iterations",
+                  "first iteration SGPLVM - first iteration FASGPLVM (T + 1 when never met)", kinds,
+                  differences([&](const nlohmann::json& fas, const nlohmann::json& sg) {
+                      return firstMet(sg) - firstMet(fas);
+                  })));
     return claims;
 }
 
@@ -207,15 +235,23 @@ nlohmann::json runTable1(const std::string& mocapDir, const Table1Settings& s, c
         reductions.push_back("SCG iterations per Step 6: " + std::to_string(s.train.scgIterations) + " instead of " +
                              std::to_string(paper.scgIterations));
     if (s.train.activeSize != paper.activeSize)
-        reductions.push_back("M = " + std::to_string(s.train.activeSize) + " instead of " + std::to_string(paper.activeSize));
+        reductions.push_back("M = " + std::to_string(s.train.activeSize) + " instead of " +
+                             std::to_string(paper.activeSize));
     out["reductions"] = reductions;
-    out["settings"] = {{"M", s.train.activeSize}, {"scg_iterations", s.train.scgIterations},
-                       {"point_iterations", s.train.pointIterations}, {"tolerance_C", s.train.tolerance},
-                       {"scg_tolx", s.train.scgTolX}, {"scg_tolf", s.train.scgTolF}, {"iters_scale", s.itersScale},
+    out["settings"] = {{"M", s.train.activeSize},
+                       {"scg_iterations", s.train.scgIterations},
+                       {"point_iterations", s.train.pointIterations},
+                       {"tolerance_C", s.train.tolerance},
+                       {"scg_tolx", s.train.scgTolX},
+                       {"scg_tolf", s.train.scgTolF},
+                       {"iters_scale", s.itersScale},
                        {"initial", "alpha = beta = gamma = eta = 1, w = 1, whitened PCA X"},
                        {"objective", "corrected eq. 5: -M sum ln w, gauge sum ln w = 0, W profiled"},
-                       {"literal_runs", s.literal}, {"prior", s.train.prior == gp::LatentPrior::kNone ? "none" : "smooth"},
-                       {"stop_on_convergence", s.train.stopOnConvergence}, {"quick", s.quick}, {"mocap_dir", mocapDir}};
+                       {"literal_runs", s.literal},
+                       {"prior", s.train.prior == gp::LatentPrior::kNone ? "none" : "smooth"},
+                       {"stop_on_convergence", s.train.stopOnConvergence},
+                       {"quick", s.quick},
+                       {"mocap_dir", mocapDir}};
     out["settings"]["runs"] = s.runs;
     out["settings"]["perturbation"] = describeRunPerturbation(s.runs, s.startNoise);
     TrialCache cache;

@@ -39,10 +39,10 @@ struct Table1Settings {
     std::vector<Table1Clip> clips = table1Clips();
     double itersScale = 1.0;  // T = max(3, round(itersScale · paper T))
     bool literal = false;
-    bool quick = false;       // only reported: the caller chose the clips and sizes
-    int runs = 1;             // repeated, perturbed runs per cell (eval/protocol_runs.h)
+    bool quick = false;  // only reported: the caller chose the clips and sizes
+    int runs = 1;        // repeated, perturbed runs per cell (eval/protocol_runs.h)
     double startNoise = kRunStartNoise;
-    int workers = 1;          // runs trained at once (each Step 8 then single-threaded)
+    int workers = 1;  // runs trained at once (each Step 8 then single-threaded)
     // The training options of every run; kind, outerIterations and paperLiteral are set per run.
     gp::TrainOptions train = table1TrainOptions();
 

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-
 namespace mgp::gp {
 
 LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, const std::vector<int>& active) {
@@ -20,8 +19,8 @@ LatentTerm priorOnActive(const TemporalPrior& prior, const Eigen::MatrixXd& X, c
 }
 
 double activeStepObjective(KernelKind kind, const Eigen::VectorXd& z, int m, const Eigen::MatrixXd& Yhat,
-                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g, double* jitter,
-                           GpWorkspace* workspace) {
+                           const GpObjectiveOptions& objective, const LatentTerm& extra, Eigen::VectorXd& g,
+                           double* jitter, GpWorkspace* workspace) {
     const int p = paramCount(kind);
     const int d = m > 0 ? static_cast<int>((z.size() - p) / m) : 0;
     Eigen::VectorXd psi;
@@ -85,7 +84,8 @@ ActiveStepResult optimizeActiveStep(KernelKind kind, const Eigen::VectorXd& psi0
     out.ok = fin.ok && std::isfinite(fin.value);
     if (out.ok) {
         out.w = fin.w;
-        out.gradInf = std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
+        out.gradInf =
+            std::max(fin.gradPsi.cwiseAbs().maxCoeff(), fin.gradX.size() ? fin.gradX.cwiseAbs().maxCoeff() : 0.0);
     }
     return out;
 }

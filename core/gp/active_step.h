@@ -14,16 +14,16 @@
 namespace mgp::gp {
 
 struct ActiveStepResult {
-    Eigen::VectorXd psi;     // clamped to the kernel's box, so it is the value evaluated
-    Eigen::MatrixXd XI;      // optimised active latent points
-    Eigen::VectorXd w;       // profiled weights at the end (empty if the end was not finite)
-    double before = 0.0;     // L_GP at the warm start
-    double after = 0.0;      // L_GP at the end
-    double gradInf = 0.0;    // ‖∇L_GP‖∞ at the end
-    double jitter = 0.0;     // Cholesky jitter at the end point (0 normally)
+    Eigen::VectorXd psi;          // clamped to the kernel's box, so it is the value evaluated
+    Eigen::MatrixXd XI;           // optimised active latent points
+    Eigen::VectorXd w;            // profiled weights at the end (empty if the end was not finite)
+    double before = 0.0;          // L_GP at the warm start
+    double after = 0.0;           // L_GP at the end
+    double gradInf = 0.0;         // ‖∇L_GP‖∞ at the end
+    double jitter = 0.0;          // Cholesky jitter at the end point (0 normally)
     double trialJitterMax = 0.0;  // largest jitter of any evaluation, rejected trial steps included
     int iterations = 0;
-    bool ok = false;         // the end point evaluated finitely
+    bool ok = false;  // the end point evaluated finitely
 };
 
 // An extra term on the active latent points (the temporal prior, docs/maths.md §19): returns its

@@ -15,14 +15,14 @@
 namespace mgp::gp {
 
 struct AdaptiveUpdateResult {
-    ModelVersionPtr version;      // null when rejected
+    ModelVersionPtr version;  // null when rejected
     bool accepted = false;
-    std::string diagnostic;       // why it was rejected, or "ok"
+    std::string diagnostic;  // why it was rejected, or "ok"
     int scgIterations = 0;
     double objectiveBefore = 0.0;  // L_GP on the new active set before Step 6
     double objectiveAfter = 0.0;
-    bool newPointActive = false;   // x* entered the active set
-    int activeChanged = 0;         // points in the new active set that were not in the old one
+    bool newPointActive = false;  // x* entered the active set
+    int activeChanged = 0;        // points in the new active set that were not in the old one
 };
 
 // yKept: the D kept pose columns of the accepted pose (degrees). clipFrame: the edited frame

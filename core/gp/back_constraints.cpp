@@ -10,7 +10,8 @@ namespace mgp::gp {
 
 BackConstraint::BackConstraint(const Eigen::MatrixXd& Ybar, int maxBasis) {
     const int n = static_cast<int>(Ybar.rows());
-    if (n < 2) throw std::invalid_argument("back-constraints: expected at least 2 training rows, found " + std::to_string(n));
+    if (n < 2)
+        throw std::invalid_argument("back-constraints: expected at least 2 training rows, found " + std::to_string(n));
     if (maxBasis < 1) throw std::invalid_argument("back-constraints: expected at least 1 basis row");
     const int stride = (n + maxBasis - 1) / maxBasis;
     for (int i = 0; i < n; i += stride) basis_.push_back(i);
@@ -60,7 +61,8 @@ double backConstrainedObjective(KernelKind kind, const Eigen::VectorXd& z, const
     Eigen::MatrixXd KI(m, r);
     for (int i = 0; i < m; ++i) KI.row(i) = bc.kernel().row(active[static_cast<std::size_t>(i)]);
     Eigen::VectorXd gz;
-    double value = activeStepObjective(kind, packParams(psi, KI * A), m, Yhat, objective, nullptr, gz, jitter, workspace);
+    double value =
+        activeStepObjective(kind, packParams(psi, KI * A), m, Yhat, objective, nullptr, gz, jitter, workspace);
     Eigen::VectorXd gpsi;
     Eigen::MatrixXd gXI;
     unpackParams(gz, p, m, d, gpsi, gXI);
@@ -89,7 +91,8 @@ BackStepResult optimizeBackConstrainedStep(KernelKind kind, const Eigen::VectorX
     GpWorkspace workspace;
     const ValueAndGradient fg = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
         double jitter = 0.0;
-        const double value = backConstrainedObjective(kind, z, bc, active, Yhat, prior, objective, g, &jitter, &workspace);
+        const double value =
+            backConstrainedObjective(kind, z, bc, active, Yhat, prior, objective, g, &jitter, &workspace);
         out.trialJitterMax = std::max(out.trialJitterMax, jitter);
         return value;
     };

@@ -32,7 +32,7 @@ public:
     explicit BackConstraint(const Eigen::MatrixXd& Ybar, int maxBasis = kMaxBackBasis);
 
     bool empty() const { return K_.size() == 0; }
-    const Eigen::MatrixXd& kernel() const { return K_; }          // N×R
+    const Eigen::MatrixXd& kernel() const { return K_; }  // N×R
     const std::vector<int>& basisRows() const { return basis_; }
     double lengthScaleSquared() const { return ell2_; }
 

@@ -27,8 +27,8 @@ double shapeDistance(const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Re
 
 // The nearest captured frame to `shape`, skipping clip `skipClip`'s frames within ±window of
 // `skipFrame` (skipClip < 0: none skipped).
-std::pair<double, int> nearestShape(const CaptureRange& range, const Eigen::VectorXd& shape, const std::vector<bool>& leftOut,
-                                    int skipClip, int skipFrame, int window) {
+std::pair<double, int> nearestShape(const CaptureRange& range, const Eigen::VectorXd& shape,
+                                    const std::vector<bool>& leftOut, int skipClip, int skipFrame, int window) {
     double best = std::numeric_limits<double>::infinity();
     int at = -1;
     for (int i = 0; i < range.frames(); ++i) {

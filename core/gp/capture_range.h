@@ -38,11 +38,11 @@ constexpr double kCaptureNearestPercentile = 99.0;
 constexpr int kCaptureLimitQueries = 800;
 
 struct CaptureRange {
-    Eigen::VectorXd qMin, qMax;     // per pose-vector DOF, degrees (unwrapped as the model's clips)
-    std::vector<bool> judged;       // false for the root's rotation and DOFs the skeleton lacks
-    Eigen::MatrixXd shapes;         // frames × 3J: joints relative to the root, heading removed (cm)
+    Eigen::VectorXd qMin, qMax;        // per pose-vector DOF, degrees (unwrapped as the model's clips)
+    std::vector<bool> judged;          // false for the root's rotation and DOFs the skeleton lacks
+    Eigen::MatrixXd shapes;            // frames × 3J: joints relative to the root, heading removed (cm)
     std::vector<int> clipOf, frameOf;  // each shape's source clip and frame (0-based)
-    double nearestLimitCm = 0.0;    // the percentile above
+    double nearestLimitCm = 0.0;       // the percentile above
     double nearestMedianCm = 0.0;
     int frames() const { return static_cast<int>(shapes.rows()); }
 };
@@ -52,13 +52,13 @@ struct CaptureRange {
 std::shared_ptr<const CaptureRange> computeCaptureRange(const GpModel& model);
 
 struct CaptureLikeness {
-    double nearestCm = 0.0;          // d(y)
+    double nearestCm = 0.0;  // d(y)
     int nearestClip = -1, nearestFrame = -1;
-    bool nearest = false;            // nearestCm ≤ the limit
-    int rangeViolations = 0;         // DOFs outside their range
-    int worstDof = -1;               // the DOF furthest outside its range (−1: none)
+    bool nearest = false;     // nearestCm ≤ the limit
+    int rangeViolations = 0;  // DOFs outside their range
+    int worstDof = -1;        // the DOF furthest outside its range (−1: none)
     double worstExcessDeg = 0.0;
-    bool ranges = false;             // no DOF outside its range
+    bool ranges = false;  // no DOF outside its range
     bool like() const { return nearest && ranges; }
 };
 

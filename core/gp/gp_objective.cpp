@@ -83,7 +83,7 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
         G.noalias() = Linv.transpose().triangularView<Eigen::Upper>() * Linv;  // K⁻¹
         const Eigen::MatrixXd A = (G * Yhat) * ev.w.asDiagonal();
         G *= 0.5 * static_cast<double>(D);
-        G.selfadjointView<Eigen::Lower>().rankUpdate(A, -0.5);  // G = ½(D K⁻¹ − A Aᵀ), lower half
+        G.selfadjointView<Eigen::Lower>().rankUpdate(A, -0.5);     // G = ½(D K⁻¹ − A Aᵀ), lower half
         G.triangularView<Eigen::StrictlyUpper>() = G.transpose();  // exactly symmetric for gradX
         ev.gradPsi = kernel.gradLogParams(parts, G);
         ev.gradPsi.array() += 1.0;  // each +ln θ prior adds exactly 1
@@ -106,8 +106,7 @@ Eigen::VectorXd packParams(const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI
     return z;
 }
 
-void unpackParams(const Eigen::VectorXd& z, int paramCount, int m, int d, Eigen::VectorXd& psi,
-                  Eigen::MatrixXd& XI) {
+void unpackParams(const Eigen::VectorXd& z, int paramCount, int m, int d, Eigen::VectorXd& psi, Eigen::MatrixXd& XI) {
     psi = z.head(paramCount);
     XI = Eigen::Map<const Eigen::MatrixXd>(z.data() + paramCount, m, d);
 }

@@ -30,12 +30,12 @@ struct GpObjectiveOptions {
 
 struct GpEvaluation {
     bool ok = false;
-    double value = 0.0;           // +∞ when !ok
-    Eigen::VectorXd gradPsi;      // ∂L/∂ψ (paramCount)
-    Eigen::MatrixXd gradX;        // ∂L/∂X_I (M×d)
-    Eigen::VectorXd gradLogW;     // raw ∂L/∂ln w_k = w_k² s_k − c (W not projected)
-    Eigen::VectorXd w, s;         // weights used and the quadratic forms s_k
-    double jitter = 0.0;          // jitter added to K's diagonal (0 normally)
+    double value = 0.0;        // +∞ when !ok
+    Eigen::VectorXd gradPsi;   // ∂L/∂ψ (paramCount)
+    Eigen::MatrixXd gradX;     // ∂L/∂X_I (M×d)
+    Eigen::VectorXd gradLogW;  // raw ∂L/∂ln w_k = w_k² s_k − c (W not projected)
+    Eigen::VectorXd w, s;      // weights used and the quadratic forms s_k
+    double jitter = 0.0;       // jitter added to K's diagonal (0 normally)
 };
 
 // Cholesky with escalating jitter (docs/maths.md §4.4 step 2): no jitter, then 1e-5·mean(diag K),
@@ -62,7 +62,6 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
 
 // Packing of the Step-6 optimisation vector z = [ψ; vec(X_I)] (X_I column-major).
 Eigen::VectorXd packParams(const Eigen::VectorXd& psi, const Eigen::MatrixXd& XI);
-void unpackParams(const Eigen::VectorXd& z, int paramCount, int m, int d, Eigen::VectorXd& psi,
-                  Eigen::MatrixXd& XI);
+void unpackParams(const Eigen::VectorXd& z, int paramCount, int m, int d, Eigen::VectorXd& psi, Eigen::MatrixXd& XI);
 
 }  // namespace mgp::gp

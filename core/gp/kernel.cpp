@@ -9,23 +9,26 @@ namespace mgp::gp {
 const char* kernelKindName(KernelKind k) { return k == KernelKind::kFas ? "fas" : "sgplvm"; }
 
 bool parseKernelKind(const std::string& s, KernelKind& out) {
-    if (s == "fas" || s == "fasgplvm") out = KernelKind::kFas;
-    else if (s == "sgplvm") out = KernelKind::kSgplvm;
-    else return false;
+    if (s == "fas" || s == "fasgplvm")
+        out = KernelKind::kFas;
+    else if (s == "sgplvm")
+        out = KernelKind::kSgplvm;
+    else
+        return false;
     return true;
 }
 
 int paramCount(KernelKind k) { return k == KernelKind::kFas ? 4 : 3; }
 
 Kernel::Kernel(KernelKind kind, const Eigen::VectorXd& logParams) : kind_(kind) {
-    if (logParams.size() != gp::paramCount(kind))
-        throw std::invalid_argument("Kernel: wrong number of log-parameters");
+    if (logParams.size() != gp::paramCount(kind)) throw std::invalid_argument("Kernel: wrong number of log-parameters");
     psi_ = logParams;
     for (Eigen::Index i = 0; i < psi_.size(); ++i) {
         // A NaN has no place in the box: say so rather than evaluate some other θ
         // (docs/maths.md §3).
         if (std::isnan(psi_[i]))
-            throw std::invalid_argument("expected finite kernel log-parameters, found NaN at index " + std::to_string(i));
+            throw std::invalid_argument("expected finite kernel log-parameters, found NaN at index " +
+                                        std::to_string(i));
         psi_[i] = std::clamp(psi_[i], -kLogParamBound, kLogParamBound);
     }
     alpha_ = std::exp(psi_[kAlpha]);

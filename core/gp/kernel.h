@@ -64,7 +64,8 @@ public:
     Eigen::MatrixXd gram(const GramParts& p) const;
     Eigen::VectorXd gradLogParams(const GramParts& p, const Eigen::MatrixXd& G) const;
     Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G) const;
-    Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G, GradXScratch& scratch) const;
+    Eigen::MatrixXd gradX(const Eigen::MatrixXd& X, const GramParts& p, const Eigen::MatrixXd& G,
+                          GradXScratch& scratch) const;
 
     // Σ_ij G_ij ∂K_ij/∂ψ_p for every log-parameter p (G any M×M matrix).
     Eigen::VectorXd gradLogParams(const Eigen::MatrixXd& X, const Eigen::MatrixXd& G) const;

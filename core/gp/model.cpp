@@ -24,7 +24,8 @@ Eigen::MatrixXd GpModel::activeX() const {
 ActiveSetPosterior GpModel::posterior() const { return ActiveSetPosterior(kernel(), activeX(), activeYhat(), mu, w); }
 
 Eigen::VectorXd GpModel::fullPose(const Eigen::VectorXd& kept) const {
-    Eigen::VectorXd full = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keptColumns.size() + constantColumns.size()));
+    Eigen::VectorXd full =
+        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keptColumns.size() + constantColumns.size()));
     for (std::size_t k = 0; k < keptColumns.size(); ++k) full[keptColumns[k]] = kept[k];
     for (std::size_t k = 0; k < constantColumns.size(); ++k) full[constantColumns[k]] = constantValues[k];
     return full;
@@ -79,8 +80,8 @@ int findCapture(const GpModel& model, const Clip& open, std::string* difference)
 
 GpModel withPrimaryClip(GpModel model, int index) {
     if (index < 0 || index >= model.clipCount())
-        throw std::out_of_range("withPrimaryClip: expected a clip index in 0.." + std::to_string(model.clipCount() - 1) +
-                                ", found " + std::to_string(index));
+        throw std::out_of_range("withPrimaryClip: expected a clip index in 0.." +
+                                std::to_string(model.clipCount() - 1) + ", found " + std::to_string(index));
     if (index == 0) return model;
     SourceClip& other = model.moreClips[static_cast<std::size_t>(index - 1)];
     std::swap(model.clip, other.clip);

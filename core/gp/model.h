@@ -28,13 +28,13 @@ namespace mgp::gp {
 
 // The settings a model was trained with (provenance; deterministic values only).
 struct TrainingSettings {
-    int activeSize = 200;        // M
-    int outerIterations = 100;   // T
-    int scgIterations = 100;     // SCG iterations per Step 6
-    int pointIterations = 100;   // SCG iterations per point in Step 8
-    double tolerance = 0.01;     // C of Step 9
-    int frameFirst = 1, frameLast = 0;  // --frames A:B as given (1-based; 0 = to the end)
-    int frameStep = 1;                  // --step K
+    int activeSize = 200;                    // M
+    int outerIterations = 100;               // T
+    int scgIterations = 100;                 // SCG iterations per Step 6
+    int pointIterations = 100;               // SCG iterations per point in Step 8
+    double tolerance = 0.01;                 // C of Step 9
+    int frameFirst = 1, frameLast = 0;       // --frames A:B as given (1-based; 0 = to the end)
+    int frameStep = 1;                       // --step K
     LatentPrior prior = LatentPrior::kNone;  // temporal prior (docs/maths.md §19)
     double priorWeight = 0.0;                // its λ (0 with kNone)
     bool backConstraints = false;            // X a function of the poses (docs/maths.md §22)
@@ -49,26 +49,26 @@ struct SourceClip {
 
 struct GpModel {
     KernelKind kind = KernelKind::kFas;
-    Eigen::VectorXd logParams;  // ψ = ln θ in the Kernel order (α, γ, β[, η])
-    Eigen::VectorXd w;          // D scale weights (Σ ln w = 0)
-    Eigen::VectorXd mu;         // D training mean
-    Eigen::MatrixXd X;          // N×d latent points
-    Eigen::MatrixXd Y;          // N×D training rows (kept columns, uncentred, degrees)
-    std::vector<int> active;    // active set (row indices into X/Y)
+    Eigen::VectorXd logParams;         // ψ = ln θ in the Kernel order (α, γ, β[, η])
+    Eigen::VectorXd w;                 // D scale weights (Σ ln w = 0)
+    Eigen::VectorXd mu;                // D training mean
+    Eigen::MatrixXd X;                 // N×d latent points
+    Eigen::MatrixXd Y;                 // N×D training rows (kept columns, uncentred, degrees)
+    std::vector<int> active;           // active set (row indices into X/Y)
     std::vector<int> keptColumns;      // D indices into the pose vector
     std::vector<int> constantColumns;  // removed indices into the pose vector
     Eigen::VectorXd constantValues;    // their values (column means)
     std::vector<int> trainingFrames;   // frame index (0-based) of each training row within its clip
     std::vector<int> trainingClips;    // clip index of each training row; empty = all clip 0
 
-    Clip clip;                  // the primary source clip (pose vectors, root translations, bones)
-    std::string sourceFile;     // file name of the primary clip (no directory), provenance only
-    std::string sourceSha256;   // SHA-256 of the source file ("" for a synthetic clip)
+    Clip clip;                          // the primary source clip (pose vectors, root translations, bones)
+    std::string sourceFile;             // file name of the primary clip (no directory), provenance only
+    std::string sourceSha256;           // SHA-256 of the source file ("" for a synthetic clip)
     std::vector<SourceClip> moreClips;  // clips 1..K−1 (empty for a single-clip model)
 
     TrainingSettings settings;
-    int iterations = 0;         // outer iterations run
-    bool converged = false;     // the Step-9 test triggered
+    int iterations = 0;      // outer iterations run
+    bool converged = false;  // the Step-9 test triggered
     // Training convergence: entry 0 is L_init (L_GP at θ = 1 and the PCA latent points, on the
     // first active set), entry t (1..iterations) is L_GP after Step 6 of outer iteration t. Either
     // empty (a model file from before this field, or a non-finite objective) or iterations + 1
@@ -79,7 +79,9 @@ struct GpModel {
     // Source clips: K = clipCount() ≥ 1; clip i's data, file and name (its file stem, clip.name).
     int clipCount() const { return 1 + static_cast<int>(moreClips.size()); }
     const Clip& clipAt(int i) const { return i == 0 ? clip : moreClips[static_cast<std::size_t>(i - 1)].clip; }
-    const std::string& clipFile(int i) const { return i == 0 ? sourceFile : moreClips[static_cast<std::size_t>(i - 1)].file; }
+    const std::string& clipFile(int i) const {
+        return i == 0 ? sourceFile : moreClips[static_cast<std::size_t>(i - 1)].file;
+    }
     const std::string& clipSha256(int i) const {
         return i == 0 ? sourceSha256 : moreClips[static_cast<std::size_t>(i - 1)].sha256;
     }

@@ -51,9 +51,10 @@ const json& need(const json& j, const char* key, const std::string& file) {
 // An integer that fits in an int. nlohmann's get<int>() converts a float (1e300) or a 64-bit
 // value with a plain cast (undefined behaviour for 1e300): check first.
 int intOf(const json& v, const std::string& file, const std::string& what) {
-    const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= std::numeric_limits<int>::max()
-                      : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
-                            v.get<long long>() <= std::numeric_limits<int>::max();
+    const bool fits = v.is_number_unsigned()
+                          ? v.get<unsigned long long>() <= std::numeric_limits<int>::max()
+                          : v.is_number_integer() && v.get<long long>() >= std::numeric_limits<int>::min() &&
+                                v.get<long long>() <= std::numeric_limits<int>::max();
     if (!fits) throwParseError(file, 0, "an integer for " + what, v.dump());
     return static_cast<int>(v.get<long long>());
 }
@@ -64,8 +65,9 @@ int needInt(const json& j, const char* key, const std::string& file) {
 
 Eigen::VectorXd readVec(const json& j, const std::string& file, const char* what, Eigen::Index size = -1) {
     if (!j.is_array() || (size >= 0 && static_cast<Eigen::Index>(j.size()) != size))
-        throwParseError(file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) + " " : "") + "numbers",
-                        j.is_array() ? std::to_string(j.size()) + " entries" : j.type_name());
+        throwParseError(
+            file, 0, std::string(what) + " as an array of " + (size >= 0 ? std::to_string(size) + " " : "") + "numbers",
+            j.is_array() ? std::to_string(j.size()) + " entries" : j.type_name());
     Eigen::VectorXd v(j.size());
     for (std::size_t i = 0; i < j.size(); ++i) {
         if (!j[i].is_number()) throwParseError(file, 0, std::string("numbers in ") + what, j[i].dump());
@@ -103,7 +105,8 @@ void readMoreClips(const json& j, const std::string& file, int n, GpModel& m) {
     }
     for (int a = 0; a < m.clipCount(); ++a)
         for (int b = 0; b < a; ++b)
-            if (m.clipName(a) == m.clipName(b)) throwParseError(file, 0, "distinct clip names", m.clipName(a) + " twice");
+            if (m.clipName(a) == m.clipName(b))
+                throwParseError(file, 0, "distinct clip names", m.clipName(a) + " twice");
     m.trainingClips = readInts(need(j, "training_clips", file), file, "training_clips");
     if (static_cast<int>(m.trainingClips.size()) != n)
         throwParseError(file, 0, std::to_string(n) + " training clips", std::to_string(m.trainingClips.size()));
@@ -122,7 +125,9 @@ std::string modelToJsonText(const GpModel& m) {
     j["kernel"] = kernelKindName(m.kind);
     j["log_params"] = vecJson(m.logParams);
     const Kernel k = m.kernel();
-    j["params"] = {{"alpha", k.alpha()}, {"beta", k.beta()}, {"gamma", k.gamma()},
+    j["params"] = {{"alpha", k.alpha()},
+                   {"beta", k.beta()},
+                   {"gamma", k.gamma()},
                    {"eta", k.hasEta() ? json(k.eta()) : json(nullptr)}};
     j["N"] = m.N();
     j["D"] = m.D();
@@ -140,13 +145,20 @@ std::string modelToJsonText(const GpModel& m) {
         for (const SourceClip& c : m.moreClips)
             clips.push_back({{"file", c.file}, {"sha256", c.sha256}, {"clip", clipToJson(c.clip)}});
         j["more_clips"] = clips;
-        j["training_clips"] = m.trainingClips.empty() ? std::vector<int>(static_cast<std::size_t>(m.N()), 0) : m.trainingClips;
+        j["training_clips"] =
+            m.trainingClips.empty() ? std::vector<int>(static_cast<std::size_t>(m.N()), 0) : m.trainingClips;
     }
     const TrainingSettings& s = m.settings;
-    j["training"] = {{"active_size", s.activeSize}, {"outer_iterations", s.outerIterations},
-                     {"scg_iterations", s.scgIterations}, {"point_iterations", s.pointIterations},
-                     {"tolerance", s.tolerance}, {"frame_first", s.frameFirst}, {"frame_last", s.frameLast},
-                     {"frame_step", s.frameStep}, {"iterations", m.iterations}, {"converged", m.converged},
+    j["training"] = {{"active_size", s.activeSize},
+                     {"outer_iterations", s.outerIterations},
+                     {"scg_iterations", s.scgIterations},
+                     {"point_iterations", s.pointIterations},
+                     {"tolerance", s.tolerance},
+                     {"frame_first", s.frameFirst},
+                     {"frame_last", s.frameLast},
+                     {"frame_step", s.frameStep},
+                     {"iterations", m.iterations},
+                     {"converged", m.converged},
                      {"objective_history", m.objectiveHistory}};
     // Only written for a prior other than none, so the paper model's file is unchanged.
     if (s.prior != LatentPrior::kNone)
@@ -163,7 +175,8 @@ std::string modelToJsonText(const GpModel& m) {
         const int f = m.trainingFrames[static_cast<std::size_t>(r)];
         const int c = m.rowClip(static_cast<int>(r));
         bool same = c >= 0 && c < m.clipCount() && f >= 0 && f < m.clipAt(c).frameCount();
-        for (int k = 0; same && k < m.D(); ++k) same = m.Y(r, k) == poses[static_cast<std::size_t>(c)](f, m.keptColumns[k]);
+        for (int k = 0; same && k < m.D(); ++k)
+            same = m.Y(r, k) == poses[static_cast<std::size_t>(c)](f, m.keptColumns[k]);
         if (!same) edited.push_back({{"row", r}, {"y", vecJson(m.Y.row(r).transpose())}});
     }
     if (!edited.empty()) j["edited_rows"] = edited;
@@ -183,8 +196,9 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
                         j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
     const json& ver = need(j, "version", file);
     if (!ver.is_number_integer() || ver.get<long long>() < 1 || ver.get<long long>() > kModelFileVersion)
-        throwParseError(file, 0, "model file version ≤ " + std::to_string(kModelFileVersion) +
-                                     " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
+        throwParseError(file, 0,
+                        "model file version ≤ " + std::to_string(kModelFileVersion) +
+                            " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
                         "version " + ver.dump());
     GpModel m;
     try {
@@ -209,7 +223,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         m.mu = readVec(need(j, "mu", file), file, "mu", D);
         const json& xj = need(j, "X", file);
         if (!xj.is_array() || static_cast<int>(xj.size()) != n)
-            throwParseError(file, 0, std::to_string(n) + " rows of X", xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
+            throwParseError(file, 0, std::to_string(n) + " rows of X",
+                            xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
         // Check every row's length before allocating N×d: a damaged latent_dim (say 10^9) must
         // be an error, not a multi-GB allocation.
         for (int r = 0; r < n; ++r)
@@ -220,7 +235,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
         for (int r = 0; r < n; ++r) m.X.row(r) = readVec(xj[r], file, "X", d).transpose();
         m.active = readInts(need(j, "active", file), file, "active");
         for (int i : m.active)
-            if (i < 0 || i >= n) throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
+            if (i < 0 || i >= n)
+                throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
         if (m.active.empty()) throwParseError(file, 0, "a non-empty active set", "[]");
         // A repeated active row makes K singular (not positive definite without noise); the
         // active set is a set.
@@ -228,7 +244,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
             std::vector<char> inActive(static_cast<std::size_t>(n), 0);
             for (int i : m.active)
                 if (inActive[static_cast<std::size_t>(i)]++)
-                    throwParseError(file, 0, "distinct active indices (a positive definite K)", std::to_string(i) + " twice");
+                    throwParseError(file, 0, "distinct active indices (a positive definite K)",
+                                    std::to_string(i) + " twice");
         }
         m.keptColumns = readInts(need(j, "kept_columns", file), file, "kept_columns");
         m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
@@ -293,7 +310,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
             const int f = m.trainingFrames[r];
             const Clip& c = m.clipAt(m.rowClip(r));
             if (f < 0 || f >= c.frameCount())
-                throwParseError(file, 0, "training frames of clip " + c.name + " in 0.." + std::to_string(c.frameCount() - 1),
+                throwParseError(file, 0,
+                                "training frames of clip " + c.name + " in 0.." + std::to_string(c.frameCount() - 1),
                                 std::to_string(f));
             for (int k = 0; k < D; ++k) m.Y(r, k) = poses[static_cast<std::size_t>(m.rowClip(r))](f, m.keptColumns[k]);
         }
@@ -302,7 +320,8 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
             if (!edited.is_array()) throwParseError(file, 0, "edited_rows as an array", edited.type_name());
             for (const json& e : edited) {
                 const int r = needInt(e, "row", file);
-                if (r < 0 || r >= n) throwParseError(file, 0, "edited_rows row in 0.." + std::to_string(n - 1), std::to_string(r));
+                if (r < 0 || r >= n)
+                    throwParseError(file, 0, "edited_rows row in 0.." + std::to_string(n - 1), std::to_string(r));
                 m.Y.row(r) = readVec(need(e, "y", file), file, "edited_rows y", D).transpose();
             }
         }
@@ -311,7 +330,6 @@ GpModel modelFromJsonText(const std::string& text, const std::string& file) {
     }
     return m;
 }
-
 
 void saveModel(const std::string& path, const GpModel& model) { writeFileAtomically(path, modelToJsonText(model)); }
 

@@ -25,7 +25,8 @@ struct ModelVersion {
     // Builds the precomputation; throws std::runtime_error if K cannot be factored. `update`: the
     // version this one updates (an adaptive update of the same clips), whose range and capture
     // reference it keeps, so that teaching a pose never moves the limits the next pose is judged by.
-    static std::shared_ptr<const ModelVersion> make(GpModel model, int number = 0, const ModelVersion* update = nullptr);
+    static std::shared_ptr<const ModelVersion> make(GpModel model, int number = 0,
+                                                    const ModelVersion* update = nullptr);
 };
 
 using ModelVersionPtr = std::shared_ptr<const ModelVersion>;

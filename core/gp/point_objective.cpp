@@ -20,7 +20,7 @@ double likFromResidual(double E, double s2, double D, const Eigen::VectorXd& x) 
 }  // namespace
 
 ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
-                       const Eigen::VectorXd& mu, const Eigen::VectorXd& w)
+                                       const Eigen::VectorXd& mu, const Eigen::VectorXd& w)
     : kernel_(kernel), XI_(XI), mu_(mu), w_(w) {
     if (Yhat.rows() != XI.rows() || Yhat.cols() != mu.size() || w.size() != mu.size())
         throw std::invalid_argument("ActiveSetPosterior: inconsistent sizes");
@@ -35,7 +35,7 @@ ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::Matrix
 }
 
 double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
-                            Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
+                                    Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
     const Eigen::Index m = XI_.rows(), d = XI_.cols();
     const double D = static_cast<double>(mu_.size());
     const double alpha = kernel_.alpha(), gamma = kernel_.gamma(), eta = kernel_.eta();
@@ -124,7 +124,7 @@ void ActiveSetPosterior::gradients(const Eigen::VectorXd& x, PointWorkspace& ws,
 }
 
 void ActiveSetPosterior::meanVarianceJacobians(const Eigen::VectorXd& x, const PointWorkspace& ws, Eigen::MatrixXd& Jf,
-                                       Eigen::VectorXd& dSigma2) const {
+                                               Eigen::VectorXd& dSigma2) const {
     const Eigen::Index d = XI_.cols();
     Jf.resize(mu_.size(), d);
     dSigma2.resize(d);
@@ -170,8 +170,9 @@ void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace&
                 if (fas) {
                     const double A = ws.angular[j], C = ws.cosine[j];
                     const double ga = (phiI_(j, a) - C * ws.phiX[a]) / n, gb = (phiI_(j, b) - C * ws.phiX[b]) / n;
-                    const double dgab = -(gb * ws.phiX[a] + C * ((a == b ? 1.0 / n : 0.0) - x[a] * x[b] / (n2 * n))) / n -
-                                        ga * x[b] / n2;
+                    const double dgab =
+                        -(gb * ws.phiX[a] + C * ((a == b ? 1.0 / n : 0.0) - x[a] * x[b] / (n2 * n))) / n -
+                        ga * x[b] / n2;
                     h += A * (ga * gb + dgab);
                 }
                 H(a, b) += u * h;
@@ -183,7 +184,8 @@ void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace&
         for (Eigen::Index b = 0; b <= a; ++b) {
             const double qb = Jf.col(b).dot(ws.wr);
             double h = Jf.col(a).cwiseProduct(w_).dot(Jf.col(b).cwiseProduct(w_)) / s;
-            h += (qa * dSigma2[b] + dSigma2[a] * qb) / (s * s) + (E / (s * s * s) - D / (2.0 * s * s)) * dSigma2[a] * dSigma2[b];
+            h += (qa * dSigma2[b] + dSigma2[a] * qb) / (s * s) +
+                 (E / (s * s * s) - D / (2.0 * s * s)) * dSigma2[a] * dSigma2[b];
             H(a, b) += h;
         }
     }
@@ -193,13 +195,15 @@ void ActiveSetPosterior::latentHessian(const Eigen::VectorXd& x, PointWorkspace&
         // ∂_i kᵀ K⁻¹ ∂_j k = (L⁻¹∂_i k)·(L⁻¹∂_j k): d triangular products with the stored L⁻¹ (as σ²
         // in evaluate()), half the work of d products with K⁻¹.
         ws.linvJ.resize(m, d);
-        for (Eigen::Index b = 0; b < d; ++b) ws.linvJ.col(b).noalias() = Linv_.triangularView<Eigen::Lower>() * ws.J.col(b);
+        for (Eigen::Index b = 0; b < d; ++b)
+            ws.linvJ.col(b).noalias() = Linv_.triangularView<Eigen::Lower>() * ws.J.col(b);
         const double eps2 = kAngularEps * kAngularEps;
         const double ephi = fas ? kernel_.eta() * std::exp(ws.phiX.squaredNorm()) : 0.0;
         for (Eigen::Index a = 0; a < d; ++a)
             for (Eigen::Index b = 0; b <= a; ++b) {
-                const double diag = ephi * (4.0 * eps2 * eps2 * x[a] * x[b] / (n2 * n2 * n2 * n2) +
-                                            2.0 * eps2 * ((a == b ? 1.0 : 0.0) / (n2 * n2) - 4.0 * x[a] * x[b] / (n2 * n2 * n2)));
+                const double diag =
+                    ephi * (4.0 * eps2 * eps2 * x[a] * x[b] / (n2 * n2 * n2 * n2) +
+                            2.0 * eps2 * ((a == b ? 1.0 : 0.0) / (n2 * n2) - 4.0 * x[a] * x[b] / (n2 * n2 * n2)));
                 H(a, b) += c * (diag - 2.0 * ws.linvJ.col(a).dot(ws.linvJ.col(b)));
             }
     }
@@ -228,13 +232,14 @@ Eigen::VectorXd ActiveSetPosterior::variances(const Eigen::MatrixXd& points) con
         k.resize(XI_.rows(), n);
         for (Eigen::Index j = 0; j < n; ++j) k.col(j) = kernel_.cross(XI_, points.row(first + j).transpose());
         a.noalias() = Kinv_ * k;
-        for (Eigen::Index j = 0; j < n; ++j) v[first + j] = varianceGiven(points.row(first + j).transpose(), k.col(j).dot(a.col(j)));
+        for (Eigen::Index j = 0; j < n; ++j)
+            v[first + j] = varianceGiven(points.row(first + j).transpose(), k.col(j).dot(a.col(j)));
     }
     return v;
 }
 
-void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut, Eigen::VectorXd& mean,
-                                   double& variance) const {
+void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::vector<int>& heldOut,
+                                           Eigen::VectorXd& mean, double& variance) const {
     if (heldOut.empty()) return predict(x, mean, variance);
     const Eigen::Index b = static_cast<Eigen::Index>(heldOut.size());
     // z = k(x) with the held-out entries zeroed; v = K⁻¹z holds P k_keep (kept rows) and Qᵀ k_keep
@@ -248,7 +253,8 @@ void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::
     for (Eigen::Index r = 0; r < b; ++r) {
         vB[r] = v[heldOut[static_cast<std::size_t>(r)]];
         BB.row(r) = B_.row(heldOut[static_cast<std::size_t>(r)]);
-        for (Eigen::Index c = 0; c < b; ++c) S(r, c) = Kinv_(heldOut[static_cast<std::size_t>(r)], heldOut[static_cast<std::size_t>(c)]);
+        for (Eigen::Index c = 0; c < b; ++c)
+            S(r, c) = Kinv_(heldOut[static_cast<std::size_t>(r)], heldOut[static_cast<std::size_t>(c)]);
     }
     const Eigen::VectorXd t = S.llt().solve(vB);  // S⁻¹ v_B (S is a principal block of K⁻¹: SPD)
     // B_keep = (K⁻¹Ŷ)_keep, and (K_{−B})⁻¹Ŷ_keep = B_keep − Q S⁻¹ B_B, so the mean is
@@ -257,15 +263,15 @@ void ActiveSetPosterior::predictHoldingOut(const Eigen::VectorXd& x, const std::
     variance = 1.0 / kernel_.beta() + std::max(0.0, kernel_.diagF(x) - z.dot(v) + vB.dot(t));
 }
 
-double ActiveSetPosterior::evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const std::vector<int>& heldOut,
-                                      double& variance) const {
+double ActiveSetPosterior::evaluateHoldingOut(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
+                                              const std::vector<int>& heldOut, double& variance) const {
     Eigen::VectorXd mean;
     predictHoldingOut(x, heldOut, mean, variance);
     return likFromResidual(w_.cwiseProduct(y - mean).squaredNorm(), variance, static_cast<double>(mu_.size()), x);
 }
 
 double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
-                            Eigen::VectorXd* gradY) const {
+                                    Eigen::VectorXd* gradY) const {
     const double D = static_cast<double>(mu_.size());
     const Eigen::VectorXd k = kernel_.cross(XI_, x);
     const Eigen::VectorXd a = Kinv_ * k;
@@ -324,8 +330,8 @@ void optimizePass(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, con
 }  // namespace
 
 void optimizeInactivePoints(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
-                            Eigen::MatrixXd& X, const ScgOptions& options, int threads,
-                            const std::atomic<bool>* cancel, const TemporalPrior* prior) {
+                            Eigen::MatrixXd& X, const ScgOptions& options, int threads, const std::atomic<bool>* cancel,
+                            const TemporalPrior* prior) {
     if (points.empty()) return;
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (!prior || prior->empty()) {

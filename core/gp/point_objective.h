@@ -24,11 +24,11 @@ namespace mgp::gp {
 // Scratch for the allocation-free ActiveSetPosterior::evaluate overload: sized on first use, reused after.
 struct PointWorkspace {
     Eigen::VectorXd k, v, a, f, r, wr, bwr, phiX;  // v = L⁻¹k (K = LLᵀ), a = K⁻¹k
-    Eigen::VectorXd rbf, angular, cosine;  // per active point: the RBF and angular parts of k, φ(x)·φ(x_j)
-    Eigen::MatrixXd J;      // M×d: ∂k/∂x
-    Eigen::MatrixXd linvJ;  // M×d: L⁻¹ ∂k/∂x (latentHessian)
-    double variance = 0.0;  // σ²(x) of the last evaluation
-    bool clamped = false;   // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
+    Eigen::VectorXd rbf, angular, cosine;          // per active point: the RBF and angular parts of k, φ(x)·φ(x_j)
+    Eigen::MatrixXd J;                             // M×d: ∂k/∂x
+    Eigen::MatrixXd linvJ;                         // M×d: L⁻¹ ∂k/∂x (latentHessian)
+    double variance = 0.0;                         // σ²(x) of the last evaluation
+    bool clamped = false;  // the noise-free part of σ² was clamped at 0 (σ² = 1/β, flat in x)
 };
 
 class ActiveSetPosterior {
@@ -36,7 +36,7 @@ public:
     // XI: active latent points (M×d); Yhat: centred active rows (M×D); mu: training mean (D);
     // w: scale weights (D). Throws std::runtime_error if K cannot be factored.
     ActiveSetPosterior(const Kernel& kernel, const Eigen::MatrixXd& XI, const Eigen::MatrixXd& Yhat,
-               const Eigen::VectorXd& mu, const Eigen::VectorXd& w);
+                       const Eigen::VectorXd& mu, const Eigen::VectorXd& w);
 
     int latentDim() const { return static_cast<int>(XI_.cols()); }
     int poseDim() const { return static_cast<int>(mu_.size()); }
@@ -81,8 +81,8 @@ public:
     // After evaluate(x, y, ws, gradX, …) with a gradient and meanVarianceJacobians(x, ws, Jf, dSigma2)
     // on the same x: the exact Hessian ∂²L_IK/∂x² (d×d, y fixed), from the kernel's second
     // derivatives (docs/maths-ik.md §2). No allocation once ws and H have their sizes.
-    void latentHessian(const Eigen::VectorXd& x, PointWorkspace& ws, const Eigen::MatrixXd& Jf, const Eigen::VectorXd& dSigma2,
-                       Eigen::MatrixXd& H) const;
+    void latentHessian(const Eigen::VectorXd& x, PointWorkspace& ws, const Eigen::MatrixXd& Jf,
+                       const Eigen::VectorXd& dSigma2, Eigen::MatrixXd& H) const;
 
 private:
     // σ²(x) = 1/β + max(0, k(x,x) − explained), where explained = k(x)ᵀK⁻¹k(x): predict's and

@@ -17,10 +17,14 @@ const char* latentPriorName(LatentPrior p) {
 }
 
 bool parseLatentPrior(const std::string& s, LatentPrior& out) {
-    if (s == "none") out = LatentPrior::kNone;
-    else if (s == "smooth") out = LatentPrior::kSmooth;
-    else if (s == "paced") out = LatentPrior::kPaced;
-    else return false;
+    if (s == "none")
+        out = LatentPrior::kNone;
+    else if (s == "smooth")
+        out = LatentPrior::kSmooth;
+    else if (s == "paced")
+        out = LatentPrior::kPaced;
+    else
+        return false;
     return true;
 }
 
@@ -34,12 +38,13 @@ double medianOf(std::vector<double> v) {
 }  // namespace
 
 template <class Gap>
-TemporalPrior TemporalPrior::build(const std::vector<int>& frames, const std::vector<int>& clips, double weight, Gap gap) {
+TemporalPrior TemporalPrior::build(const std::vector<int>& frames, const std::vector<int>& clips, double weight,
+                                   Gap gap) {
     if (!(weight >= 0.0) || !std::isfinite(weight))
         throw std::invalid_argument("TemporalPrior: expected a finite weight ≥ 0, found " + std::to_string(weight));
     if (!clips.empty() && clips.size() != frames.size())
-        throw std::invalid_argument("TemporalPrior: expected one clip index per frame (" + std::to_string(frames.size()) +
-                                    "), found " + std::to_string(clips.size()));
+        throw std::invalid_argument("TemporalPrior: expected one clip index per frame (" +
+                                    std::to_string(frames.size()) + "), found " + std::to_string(clips.size()));
     TemporalPrior p;
     p.weight_ = weight;
     const int n = static_cast<int>(frames.size());
@@ -87,7 +92,8 @@ TemporalPrior TemporalPrior::build(const std::vector<int>& frames, const std::ve
     return p;
 }
 
-TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight, const std::vector<int>& clips) {
+TemporalPrior TemporalPrior::secondDifference(const std::vector<int>& frames, double weight,
+                                              const std::vector<int>& clips) {
     return build(frames, clips, weight,
                  [](const std::vector<int>& order, const std::vector<int>& joinedAt, double hbar,
                     const std::vector<int>& fr, std::vector<double>& h) {

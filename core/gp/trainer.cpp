@@ -124,7 +124,8 @@ void TrainOptions::validate() const {
         throw std::invalid_argument("TrainOptions: expected scgIterations, pointIterations ≥ 0");
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw std::invalid_argument("TrainOptions: expected a finite tolerance > 0");
-    if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0)) throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
+    if (!(scgTolX >= 0.0) || !(scgTolF >= 0.0))
+        throw std::invalid_argument("TrainOptions: expected SCG tolerances ≥ 0");
     if (priorWeight && (!(*priorWeight >= 0.0) || !std::isfinite(*priorWeight)))
         throw std::invalid_argument("TrainOptions: expected a finite priorWeight ≥ 0");
     if (!(startNoise >= 0.0) || !std::isfinite(startNoise))
@@ -167,8 +168,8 @@ Trainer::Trainer(TrainingData data, const TrainOptions& options) : data_(std::mo
         X_ = back_.latent(A_);
     }
     active_ = selectActive();
-    const GpEvaluation ev = evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_),
-                                       objective(), false);
+    const GpEvaluation ev =
+        evaluateGp(Kernel(opt_.kind, psi_), rowsOf(X_, active_), centredRows(data_, active_), objective(), false);
     lInit_ = ev.value;
     if (!prior_.empty()) lInit_ += prior_.value(X_);
     prevW_ = ev.ok ? ev.w : Eigen::VectorXd::Ones(data_.Y.cols());
@@ -198,15 +199,16 @@ double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* ent
     if (cancel) so.shouldStop = [cancel] { return cancel->load(); };
     ActiveStepResult step;
     if (!back_.empty()) {  // every point moves with A (docs/maths.md §22)
-        BackStepResult back = optimizeBackConstrainedStep(opt_.kind, psi_, A_, back_, active, centredRows(data_, active),
-                                                          prior_, so, objective());
+        BackStepResult back = optimizeBackConstrainedStep(opt_.kind, psi_, A_, back_, active,
+                                                          centredRows(data_, active), prior_, so, objective());
         A_ = std::move(back.A);
         X_ = back_.latent(A_);
         step = std::move(back.step);
     } else {
         // The inactive rows stay where they are during Step 6.
         const LatentTerm extra = prior_.empty() ? LatentTerm() : priorOnActive(prior_, X_, active);
-        step = optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
+        step =
+            optimizeActiveStep(opt_.kind, psi_, rowsOf(X_, active), centredRows(data_, active), so, objective(), extra);
     }
     psi_ = step.psi;
     for (std::size_t i = 0; i < active.size(); ++i) X_.row(active[i]) = step.XI.row(static_cast<Eigen::Index>(i));
@@ -262,24 +264,26 @@ bool Trainer::step(const std::atomic<bool>* cancel) {
     IterationLog e;
     e.iter = static_cast<int>(log_.size()) + 1;
     const std::vector<int> previous = active_;
-    const std::vector<int> i5 = frozen_ ? active_ : selectActive();          // Step 5
-    optimizeActive(i5, &e, cancel);                                            // Step 6
+    const std::vector<int> i5 = frozen_ ? active_ : selectActive();  // Step 5
+    optimizeActive(i5, &e, cancel);                                  // Step 6
     if (isCancelled()) {
         cancelled_ = true;
         return false;
     }
-    active_ = frozen_ ? i5 : selectActive();                                   // Step 7
-    optimizeInactive(active_, cancel);                                         // Step 8
-    if (isCancelled()) {  // the state is part-way through an iteration: not logged
+    active_ = frozen_ ? i5 : selectActive();  // Step 7
+    optimizeInactive(active_, cancel);        // Step 8
+    if (isCancelled()) {                      // the state is part-way through an iteration: not logged
         cancelled_ = true;
         return false;
     }
     // Step 9.
-    const Eigen::VectorXd rawNow = rawParams(e.psi), rawPrev = rawParams(log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi);
-    const Eigen::VectorXd logNow = e.psi, logPrev = log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi;
+    const Eigen::VectorXd rawNow = rawParams(e.psi),
+                          rawPrev = rawParams(log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi);
+    const Eigen::VectorXd logNow = e.psi,
+                          logPrev = log_.empty() ? Eigen::VectorXd::Zero(e.psi.size()) : log_.back().psi;
     e.maxDeltaRaw = std::max((rawNow - rawPrev).cwiseAbs().maxCoeff(), (e.w - prevW_).cwiseAbs().maxCoeff());
-    e.maxDeltaLog = std::max((logNow - logPrev).cwiseAbs().maxCoeff(),
-                             (e.w.array().log() - prevW_.array().log()).abs().maxCoeff());
+    e.maxDeltaLog =
+        std::max((logNow - logPrev).cwiseAbs().maxCoeff(), (e.w.array().log() - prevW_.array().log()).abs().maxCoeff());
     e.activeOverlap = overlapFraction(active_, previous);
     prevW_ = e.w;
     e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -293,7 +297,8 @@ TrainingData trainingDataFromClip(const Clip& clip, const std::vector<int>& fram
     Eigen::MatrixXd rows(frames.size(), all.cols());
     for (std::size_t r = 0; r < frames.size(); ++r) {
         if (frames[r] < 0 || frames[r] >= clip.frameCount())
-            throw std::invalid_argument("trainingDataFromClip: frame " + std::to_string(frames[r]) + " outside the clip");
+            throw std::invalid_argument("trainingDataFromClip: frame " + std::to_string(frames[r]) +
+                                        " outside the clip");
         rows.row(static_cast<Eigen::Index>(r)) = all.row(frames[r]);
     }
     return prepareTrainingData(rows, frames);
@@ -323,8 +328,8 @@ TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const 
     return out;
 }
 
-TrainResult trainOnClip(Clip clip, const TrainOptions& options, const std::function<void(const IterationLog&)>& progress,
-                        const std::atomic<bool>* cancel) {
+TrainResult trainOnClip(Clip clip, const TrainOptions& options,
+                        const std::function<void(const IterationLog&)>& progress, const std::atomic<bool>* cancel) {
     return trainOnClip(std::move(clip), options, controlOf(progress, cancel));
 }
 

@@ -51,7 +51,7 @@ struct TrainOptions {
     double scgTolX = 1e-4, scgTolF = 1e-4;
     ConvergenceTest test = ConvergenceTest::kRaw;
     bool stopOnConvergence = true;
-    int threads = 0;            // Step 8 threads, ≤ 0: hardware concurrency
+    int threads = 0;  // Step 8 threads, ≤ 0: hardware concurrency
     // The paper-literal eq. 5 (for Table 1's comparison run only): Jacobian term −N Σ ln w_k
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
     // (docs/maths.md §4.2); the default corrected objective uses c = M and Σ ln w_k = 0.
@@ -79,12 +79,12 @@ struct TrainOptions {
 
 // The training matrix after docs/maths.md §5 steps 1–3.
 struct TrainingData {
-    Eigen::MatrixXd Y;                 // N×D kept columns (degrees)
-    Eigen::VectorXd mu;                // D
+    Eigen::MatrixXd Y;   // N×D kept columns (degrees)
+    Eigen::VectorXd mu;  // D
     std::vector<int> keptColumns, constantColumns;
     Eigen::VectorXd constantValues;
-    std::vector<int> frames;           // frame index of each row within its clip
-    std::vector<int> clips;            // clip index of each row (empty: all one clip, clip 0)
+    std::vector<int> frames;  // frame index of each row within its clip
+    std::vector<int> clips;   // clip index of each row (empty: all one clip, clip 0)
 };
 // poses: N×P pose vectors (skeleton/pose_layout.h, unwrapped); frames: clip frame index of each row.
 TrainingData prepareTrainingData(const Eigen::MatrixXd& poses, const std::vector<int>& frames);
@@ -96,13 +96,13 @@ TrainingData trainingDataFromClips(const std::vector<const Clip*>& clips, const 
 
 struct IterationLog {
     int iter = 0;
-    double L = 0.0;               // L_GP after Step 6 (on Step 5's active set), plus the temporal
-                                  // prior's value over all rows when one is used
-    double L_before = 0.0;        // L_GP before Step 6 on the same active set
-    double maxDeltaRaw = 0.0;     // the paper's Step-9 metric
-    double maxDeltaLog = 0.0;     // max |Δ ln(·)| over the same parameters
-    double activeOverlap = 1.0;   // |I_t ∩ I_{t−1}| / M (Step-7 sets)
-    double gradInf = 0.0;         // ‖∇L_GP‖∞ at the end of Step 6
+    double L = 0.0;              // L_GP after Step 6 (on Step 5's active set), plus the temporal
+                                 // prior's value over all rows when one is used
+    double L_before = 0.0;       // L_GP before Step 6 on the same active set
+    double maxDeltaRaw = 0.0;    // the paper's Step-9 metric
+    double maxDeltaLog = 0.0;    // max |Δ ln(·)| over the same parameters
+    double activeOverlap = 1.0;  // |I_t ∩ I_{t−1}| / M (Step-7 sets)
+    double gradInf = 0.0;        // ‖∇L_GP‖∞ at the end of Step 6
     int scgIterations = 0;
     double jitter = 0.0;          // Cholesky jitter at the end of Step 6 (0 normally)
     double trialJitterMax = 0.0;  // largest jitter on any Step-6 evaluation, rejected SCG trials
@@ -140,9 +140,9 @@ public:
     Eigen::VectorXd currentWeights() const;
 
     // Individual steps (public for the benchmark and tests).
-    std::vector<int> selectActive() const;                       // Step 5/7
+    std::vector<int> selectActive() const;  // Step 5/7
     double optimizeActive(const std::vector<int>& active, IterationLog* entry,
-                          const std::atomic<bool>* cancel = nullptr);  // Step 6
+                          const std::atomic<bool>* cancel = nullptr);                                  // Step 6
     void optimizeInactive(const std::vector<int>& active, const std::atomic<bool>* cancel = nullptr);  // Step 8
 
 private:

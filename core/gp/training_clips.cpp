@@ -44,13 +44,14 @@ std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const st
         if (!out.empty()) {
             std::string difference;
             if (!sameSkeleton(out.front().clip.skeleton, clip.skeleton, &difference))
-                throw TrainingInputError("expected clips of one skeleton (retargeting is not supported), found " + shown +
-                                         " against " + (paths.front().empty() ? out.front().clip.name : paths.front()) +
-                                         ": " + difference);
+                throw TrainingInputError(
+                    "expected clips of one skeleton (retargeting is not supported), found " + shown + " against " +
+                    (paths.front().empty() ? out.front().clip.name : paths.front()) + ": " + difference);
         }
         for (const TrainingClip& c : out)
             if (c.clip.name == clip.name)
-                throw TrainingInputError("expected clips with distinct names (file stems), found " + clip.name + " twice");
+                throw TrainingInputError("expected clips with distinct names (file stems), found " + clip.name +
+                                         " twice");
         TrainingClip t;
         t.frames = trainingFrames(clip.frameCount(), clip.restFrame, selection, clip.name);
         rows += t.frames.size();
@@ -61,7 +62,8 @@ std::vector<TrainingClip> prepareTrainingClips(std::vector<Clip> clips, const st
         out.push_back(std::move(t));
     }
     if (rows < 3)
-        throw TrainingInputError("expected at least 3 training frames after --frames/--step, found " + std::to_string(rows));
+        throw TrainingInputError("expected at least 3 training frames after --frames/--step, found " +
+                                 std::to_string(rows));
     return out;
 }
 

@@ -35,7 +35,8 @@ std::vector<int> selectFrames(int frameCount, const FrameSelection& selection, c
 
 // selectFrames on one clip, less its rest frame (frame 0 when Clip::restFrame) if the selection
 // holds it.
-std::vector<int> trainingFrames(int frameCount, bool restFrame, const FrameSelection& selection, const std::string& name);
+std::vector<int> trainingFrames(int frameCount, bool restFrame, const FrameSelection& selection,
+                                const std::string& name);
 
 struct TrainingClip {
     Clip clip;                // unwrapped, so the model's clip matches its training rows

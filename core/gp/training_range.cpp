@@ -16,8 +16,8 @@ double percentileOf(std::vector<double> v, double p) {
     return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
 
-void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,
-                         std::vector<double>& lik) {
+void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames,
+                         std::vector<double>& sigma2, std::vector<double>& lik) {
     sigma2.clear();
     lik.clear();
     Eigen::VectorXd x, y;

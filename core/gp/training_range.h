@@ -5,7 +5,8 @@
 //
 // The reference is the captured motion scored as NEW poses: for every training row i, the GP
 // conditioned on the active points except those within ±kHeldOutWindowFrames clip frames of row
-// i (rows of the same source clip only: another clip's frame numbers say nothing) predicts at x_i (ActiveSetPosterior::predictHoldingOut), giving σ²_i and
+// i (rows of the same source clip only: another clip's frame numbers say nothing) predicts at x_i
+// (ActiveSetPosterior::predictHoldingOut), giving σ²_i and
 //   L_IK,i = ‖W(y_i − f_{−i}(x_i))‖² / (2σ²_i) + (D/2) ln σ²_i + ½‖x_i‖²,
 // what a natural pose from a moment the model has not seen scores (docs/maths-ik.md §5). Scored
 // in-sample instead, a row sits at σ² ≈ 1/β and L_IK far below anything an edit can reach.
@@ -32,7 +33,7 @@ struct TrainingRange {
     double percentile = kTrainingRangePercentile;
     double sigma2Percentile = 0.0;  // of the held-out σ²_i
     double sigma2Limit = 0.0;       // kSigma2Margin × sigma2Percentile
-    double likLimit = 0.0;     // percentile of the held-out L_IK,i
+    double likLimit = 0.0;          // percentile of the held-out L_IK,i
     double sigma2Median = 0.0, likMedian = 0.0;
     int rows = 0;
 };
@@ -44,8 +45,8 @@ double percentileOf(std::vector<double> v, double p);
 
 // The held-out σ²_i and L_IK,i of every training row (in row order) of `model` under `point`
 // (its precomputation, docs/maths.md §9.1), each row's moment hidden by ±windowFrames clip frames.
-void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames, std::vector<double>& sigma2,
-                         std::vector<double>& lik);
+void heldOutMomentScores(const GpModel& model, const ActiveSetPosterior& point, int windowFrames,
+                         std::vector<double>& sigma2, std::vector<double>& lik);
 
 // The percentiles of heldOutMomentScores with the default window.
 TrainingRange computeTrainingRange(const GpModel& model, const ActiveSetPosterior& point,

@@ -14,7 +14,7 @@ constexpr double kMaxDamping = 1e12;
 constexpr double kConvergedDamping = 1e-2;  // above this the decrement is not a Newton decrement
 constexpr int kProjections = 5;             // second-order corrections onto the pins per trial
 constexpr double kNewtonDamping = 1e-3;     // at or below, after an accepted step: full Newton model
-constexpr double kFirstShift = 1e-8;         // first τ of an indefinite model, relative to max |H_ii|
+constexpr double kFirstShift = 1e-8;        // first τ of an indefinite model, relative to max |H_ii|
 constexpr double kMaxStepDeg = 20.0;        // longest change of one angle in one step
 // A trial may leave the pins by at most this much (cm; 1/50 of the reached tolerance) when the
 // corrections of a long step have not brought them back yet; the next KKT step restores them.
@@ -24,17 +24,17 @@ constexpr double kPinSlackCm = 1e-3;
 // latent step bound becomes a trust radius that grows after good steps it cut (docs/maths-ik.md §3).
 // Solves that stop earlier take exactly the steps they took without these rules.
 constexpr int kCrawlIterations = 20;
-constexpr double kMinAngleRadiusDeg = 0.5;    // a crawling solve's angle trust radius: its floor
-constexpr double kAccurateGain = 0.1;        // |gain − 1| at most this: the model predicted the step
-constexpr double kGoodGain = 0.75;           // gain above this: a good step (trust radii may grow)
-constexpr double kAccurateDamping = 0.1;     // a crawling solve's μ factor after such a step
-constexpr int kShiftBisections = 4;          // the smallest factorising shift to within 10^(1/16)
-constexpr double kShiftMargin = 4.0;         // a crawling solve's shift: this times that smallest
-constexpr double kMaxLatentRadius = 16.0;    // the latent trust radius, in half length scales
+constexpr double kMinAngleRadiusDeg = 0.5;       // a crawling solve's angle trust radius: its floor
+constexpr double kAccurateGain = 0.1;            // |gain − 1| at most this: the model predicted the step
+constexpr double kGoodGain = 0.75;               // gain above this: a good step (trust radii may grow)
+constexpr double kAccurateDamping = 0.1;         // a crawling solve's μ factor after such a step
+constexpr int kShiftBisections = 4;              // the smallest factorising shift to within 10^(1/16)
+constexpr double kShiftMargin = 4.0;             // a crawling solve's shift: this times that smallest
+constexpr double kMaxLatentRadius = 16.0;        // the latent trust radius, in half length scales
 constexpr double kMinLatentRadius = 1.0 / 16.0;  // its floor once it cut a rejected step (same unit)
-constexpr int kDirectTrials = 5;             // trials before the latent refinement starts
-constexpr int kLatentRefinements = 3;        // Newton steps in x per trial point (variable projection)
-constexpr int kRefineBacktracks = 5;         // halvings of one such step before it is given up
+constexpr int kDirectTrials = 5;                 // trials before the latent refinement starts
+constexpr int kLatentRefinements = 3;            // Newton steps in x per trial point (variable projection)
+constexpr int kRefineBacktracks = 5;             // halvings of one such step before it is given up
 // Past the interactive budget (a drag event's and `pose --iterations 50`'s cap), a solve whose exact
 // target is still out of tolerance is in the large-residual regime, where Gauss–Newton converges
 // only linearly: from then on its model is the full Newton one (docs/maths-ik.md §3).
@@ -107,9 +107,10 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
 std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
     const Skeleton& sk = version_->model->clip.skeleton;
     if (static_cast<int>(r.start.anglesDeg.size()) != sk.jointCount())
-        return "expected a start pose of the model's skeleton, found one with " + std::to_string(r.start.anglesDeg.size()) +
-               " joints";
-    if (r.startX.size() != d_) return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
+        return "expected a start pose of the model's skeleton, found one with " +
+               std::to_string(r.start.anglesDeg.size()) + " joints";
+    if (r.startX.size() != d_)
+        return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
     if (!r.startX.allFinite()) return "expected a finite latent start, found NaN or Inf";
     if (!r.start.rootCm.allFinite()) return "expected a finite root translation, found NaN or Inf";
     for (const auto& a : r.start.anglesDeg)
@@ -117,7 +118,8 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
     if (r.maxIterations < 1) return "expected at least 1 iteration, found " + std::to_string(r.maxIterations);
     if (!(r.rootStiffness >= 0.0) || !std::isfinite(r.rootStiffness))
         return "expected a root stiffness ≥ 0, found " + std::to_string(r.rootStiffness);
-    if (r.rootReferenceDeg && !r.rootReferenceDeg->allFinite()) return "expected a finite root reference, found NaN or Inf";
+    if (r.rootReferenceDeg && !r.rootReferenceDeg->allFinite())
+        return "expected a finite root reference, found NaN or Inf";
     if (!(r.locality >= 0.0) || !std::isfinite(r.locality))
         return "expected a locality ≥ 0, found " + std::to_string(r.locality);
     if (r.localityReference) {
@@ -127,16 +129,18 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
         for (const auto& a : r.localityReference->anglesDeg)
             if (!a.allFinite()) return "expected a finite locality reference, found NaN or Inf";
     }
-    if (r.floorCm && !std::isfinite(*r.floorCm)) return "expected a finite floor height, found " + std::to_string(*r.floorCm);
+    if (r.floorCm && !std::isfinite(*r.floorCm))
+        return "expected a finite floor height, found " + std::to_string(*r.floorCm);
     for (std::size_t i = 0; i < r.held.size(); ++i) {
         const HeldDof& h = r.held[i];
         if (h.joint < 0 || h.joint >= sk.jointCount() || h.axis < 0 || h.axis > 2)
-            return "expected a held DOF of a joint 0.." + std::to_string(sk.jointCount() - 1) + " and an axis 0..2, found joint " +
-                   std::to_string(h.joint) + " axis " + std::to_string(h.axis);
+            return "expected a held DOF of a joint 0.." + std::to_string(sk.jointCount() - 1) +
+                   " and an axis 0..2, found joint " + std::to_string(h.joint) + " axis " + std::to_string(h.axis);
         if (!std::isfinite(h.valueDeg)) return "expected a finite held angle, found NaN or Inf";
         for (std::size_t k = 0; k < i; ++k)
             if (r.held[k].joint == h.joint && r.held[k].axis == h.axis)
-                return "expected each held DOF once, found joint " + std::to_string(h.joint) + " axis " + std::to_string(h.axis) + " twice";
+                return "expected each held DOF once, found joint " + std::to_string(h.joint) + " axis " +
+                       std::to_string(h.axis) + " twice";
     }
     return validateConstraints(sk, r.constraints);
 }
@@ -369,7 +373,8 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             sLdlt_.compute(S_);
             nu_ = -sLdlt_.solve(A_ * g_);
             for (std::size_t i = 0; i < pins_.size(); ++i)
-                addConstraintCurvature(r.constraints[pins_[i]].effector, nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
+                addConstraintCurvature(r.constraints[pins_[i]].effector,
+                                       nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
         }
         if (curvature_) freezeHeld(true);
     }
@@ -498,7 +503,8 @@ void ConstrainedIkSolver::solve(const ConstrainedIkRequest& request, Constrained
     const auto belowFloor = [&request](const IkConstraint& c) {
         return request.floorCm && !c.pin && c.effector != Effector::kHead && c.targetCm.y() < *request.floorCm;
     };
-    if (!std::any_of(request.constraints.begin(), request.constraints.end(), belowFloor) || !validate(request).empty()) {
+    if (!std::any_of(request.constraints.begin(), request.constraints.end(), belowFloor) ||
+        !validate(request).empty()) {
         solveOnFloor(request, result);
         return;
     }
@@ -544,7 +550,7 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
     int it = 0;
     bool lastAccepted = false;
     double latentRadius = latentStepBound_;  // grows only once the solve is crawling
-    double angleRadius = kMaxStepDeg;         // shrinks only once the solve is crawling
+    double angleRadius = kMaxStepDeg;        // shrinks only once the solve is crawling
     bool largeResidual = false;              // Newton model after every accepted step (see above)
     bool straightLimbNewton = false;         // Gauss–Newton failed at a straight limb (see above)
     bool rejectedSinceAccepted = false;
@@ -590,11 +596,14 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
         double shift = 0.0;
         bool latentOnly = crawling && !keepIndefiniteNewton;
         auto addShift = [&](double amount) {
-            if (latentOnly) Hd_.diagonal().head(d_).array() += amount;
-            else Hd_.diagonal().array() += amount;
+            if (latentOnly)
+                Hd_.diagonal().head(d_).array() += amount;
+            else
+                Hd_.diagonal().array() += amount;
         };
         while (llt_.info() != Eigen::Success) {
-            const double next = shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+            const double next =
+                shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
             addShift(next - shift);
             shift = next;
             llt_.compute(Hd_);
@@ -745,8 +754,8 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
         // trials at μ far below the model's curvature (docs/maths-ik.md §3 step 5).
         retryAngleCap = retryLatentCap = std::numeric_limits<double>::infinity();
         if (std::isfinite(Ft) && !pinsHeld && !newton && predictedWell) {
-            const double shorten =
-                std::clamp(std::sqrt(pinAllowance / cTrial_.cwiseAbs().maxCoeff()), kMinRetryShortening, kMaxRetryShortening);
+            const double shorten = std::clamp(std::sqrt(pinAllowance / cTrial_.cwiseAbs().maxCoeff()),
+                                              kMinRetryShortening, kMaxRetryShortening);
             retryAngleCap = shorten * delta_.tail(D_).cwiseAbs().maxCoeff();
             retryLatentCap = shorten * delta_.head(d_).norm();
         }
@@ -772,8 +781,10 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
             // same step until Nielsen's ladder has raised μ to the model's curvature, up to seven
             // trials later (docs/maths-ik.md §3 step 6).
             if (angleCut) {
-                if (!accepted) angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
-                else if (gain > kGoodGain) angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
+                if (!accepted)
+                    angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
+                else if (gain > kGoodGain)
+                    angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
             } else if (!accepted && scale >= 1.0 && !shortenedRetry && std::isfinite(Ft) && pinsHeld) {
                 angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * delta_.tail(D_).cwiseAbs().maxCoeff());
             }
@@ -786,13 +797,16 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
             // A shortened retry that succeeds keeps the μ its rejection raised: it shows that the
             // short step holds the pins, not that the next full-length one will.
             if (!shortenedRetry)
-                mu *= crawling && predictedWell ? kAccurateDamping : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
+                mu *= crawling && predictedWell ? kAccurateDamping
+                                                : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
             mu = std::max(mu, 1e-12);
             // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
             // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.
-            const ExactTargetReach reach = it > kCrawlIterations ? exactTargetReach(request.reachedToleranceCm) : ExactTargetReach{};
+            const ExactTargetReach reach =
+                it > kCrawlIterations ? exactTargetReach(request.reachedToleranceCm) : ExactTargetReach{};
             straightLimbNewton = straightLimbNewton || (rejectedSinceAccepted && reach.outsideAtStraightLimb);
-            largeResidual = (it >= kLargeResidualIterations && reach.outside) || (straightLimbNewton && reach.outsideAtStraightLimb);
+            largeResidual = (it >= kLargeResidualIterations && reach.outside) ||
+                            (straightLimbNewton && reach.outsideAtStraightLimb);
             rejectedSinceAccepted = false;
             curvature_ = mu <= kNewtonDamping || largeResidual;  // the next model is a Newton one: it needs C
             F = evaluate(z_, true);

@@ -128,8 +128,8 @@ struct HeldDof {
 };
 
 struct ConstrainedIkRequest {
-    Pose start;                // warm start pose (root translation is kept)
-    Eigen::VectorXd startX;    // warm start latent point (d)
+    Pose start;              // warm start pose (root translation is kept)
+    Eigen::VectorXd startX;  // warm start latent point (d)
     std::vector<IkConstraint> constraints;
     std::vector<HeldDof> held;  // joint angles fixed at their values (none: every angle is free)
     int maxIterations = 50;
@@ -137,9 +137,9 @@ struct ConstrainedIkRequest {
     std::optional<Eigen::Vector3d> rootReferenceDeg;  // r_ref; default: the start's root rotation
     // Locality ℓ per degree² (docs/maths-ik.md §1): ½ ℓ Σ_k w_k (y_k − y_ref,k)², w_k by the DOF's
     // distance along the skeleton from the targets' effectors (localityWeights). 0: off.
-    double locality = kDefaultLocality;  // 0: off
+    double locality = kDefaultLocality;     // 0: off
     std::optional<Pose> localityReference;  // y_ref; default: the start pose
-    std::optional<double> floorCm;  // world Y (cm) that hands and feet may not pass; none: no floor
+    std::optional<double> floorCm;          // world Y (cm) that hands and feet may not pass; none: no floor
     double pinToleranceCm = 1e-5;
     double stationarityAbsolute = 1e-6;
     double stationarityRelative = 1e-10;
@@ -148,18 +148,18 @@ struct ConstrainedIkRequest {
 
 struct ConstrainedIkResult {
     Pose pose;
-    Eigen::VectorXd x, y;          // latent point (d), kept pose columns (D, degrees)
-    double sigma2 = 0.0;           // σ²(x)
-    double lik = 0.0;              // L_IK(x, y)
-    double objective = 0.0;        // F (without the pins, which hold)
-    double decrement = 0.0;        // the last stationarity measure (see above)
+    Eigen::VectorXd x, y;                         // latent point (d), kept pose columns (D, degrees)
+    double sigma2 = 0.0;                          // σ²(x)
+    double lik = 0.0;                             // L_IK(x, y)
+    double objective = 0.0;                       // F (without the pins, which hold)
+    double decrement = 0.0;                       // the last stationarity measure (see above)
     std::vector<IkConstraintResult> constraints;  // in request order
-    bool reached = false;          // every target and pin within reachedToleranceCm
-    bool converged = false;        // stop == kConverged
+    bool reached = false;                         // every target and pin within reachedToleranceCm
+    bool converged = false;                       // stop == kConverged
     IkStop stop = IkStop::kInvalidRequest;
     int iterations = 0;
     int evaluations = 0;
-    std::string diagnostic;        // human-readable; the validation error for kInvalidRequest
+    std::string diagnostic;  // human-readable; the validation error for kInvalidRequest
 };
 
 class ConstrainedIkSolver {
@@ -216,14 +216,14 @@ private:
     std::vector<int> yOfDof_;  // pose-vector index → index into y (−1 if constant)
     std::vector<int> heldY_;   // indices into y of the request's held DOFs
     int rootY_[3] = {-1, -1, -1};
-    std::vector<Effector> floorGuarded_;  // hands and feet on no constraint, kept above the floor
+    std::vector<Effector> floorGuarded_;       // hands and feet on no constraint, kept above the floor
     Eigen::VectorXd localityW_, localityRef_;  // ℓ·w_k and y_ref on the kept columns (held: 0)
-    double latentStepBound_ = 0.0;  // longest latent step (half the RBF length scale)
+    double latentStepBound_ = 0.0;             // longest latent step (half the RBF length scale)
 
     // Bound request.
     const ConstrainedIkRequest* request_ = nullptr;
     std::vector<int> pins_, targets_, exactTargets_;  // indices into request_->constraints
-    std::vector<int> correctionRow_;  // per target: its first row in Aall_, −1 if not exact
+    std::vector<int> correctionRow_;                  // per target: its first row in Aall_, −1 if not exact
     Eigen::Vector3d rootRef_ = Eigen::Vector3d::Zero();
 
     // Workspace.

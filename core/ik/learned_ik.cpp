@@ -91,8 +91,10 @@ void LearnedIkSolver::computeScaling(const Eigen::VectorXd& z0) {
 std::string LearnedIkSolver::validate(const LearnedIkRequest& r) const {
     const Skeleton& sk = version_->model->clip.skeleton;
     if (static_cast<int>(r.start.anglesDeg.size()) != sk.jointCount())
-        return "expected a start pose of the model's skeleton, found one with " + std::to_string(r.start.anglesDeg.size()) + " joints";
-    if (r.startX.size() != d_) return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
+        return "expected a start pose of the model's skeleton, found one with " +
+               std::to_string(r.start.anglesDeg.size()) + " joints";
+    if (r.startX.size() != d_)
+        return "expected a " + std::to_string(d_) + "-D latent start, found " + std::to_string(r.startX.size());
     if (!r.startX.allFinite()) return "expected a finite latent start, found NaN or Inf";
     if (!r.start.rootCm.allFinite()) return "expected a finite root translation, found NaN or Inf";
     for (const auto& a : r.start.anglesDeg)
@@ -165,8 +167,10 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     lbfgsParam_.past = std::max(1, request.stallWindow);
     lbfgsParam_.delta = std::max(0.0, request.stallRelative);
     lbfgsParam_.max_iterations = request.maxIterations;
-    if (request.precondition) computeScaling(z_);
-    else scale_.setOnes();
+    if (request.precondition)
+        computeScaling(z_);
+    else
+        scale_.setOnes();
     // L-BFGS runs on u = S⁻¹ z. The functor carries the line-search counter CountingLineSearch
     // increments.
     int lineSearches = 0;
@@ -184,7 +188,8 @@ void LearnedIkSolver::solve(const LearnedIkRequest& request, LearnedIkResult& re
     double fz = 0.0;
     try {
         result.iterations = lbfgs_->minimize(f, u_, fz);
-        result.stop = result.iterations >= request.maxIterations ? LearnedIkStop::kIterationCap : LearnedIkStop::kStalled;
+        result.stop =
+            result.iterations >= request.maxIterations ? LearnedIkStop::kIterationCap : LearnedIkStop::kStalled;
         result.diagnostic = learnedIkStopName(result.stop);
     } catch (const std::exception& e) {
         result.stop = LearnedIkStop::kLineSearchFailed;

@@ -14,8 +14,8 @@
 // LearnedIkSolver holds a preallocated workspace for one model version (vectors, FK state, the
 // L-BFGS solver): after the first solve, a drag allocates nothing of ours; LBFGS++ itself makes
 // two small temporaries per iteration (its add_correction(x − x_prev, g − g_prev)).
-#include <Eigen/Core>
 #include <LBFGS.h>
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,12 +28,12 @@
 namespace mgp {
 
 struct LearnedIkRequest {
-    Pose start;                    // full pose of the model's skeleton (root translation is kept)
-    Eigen::VectorXd startX;        // latent warm start (d)
+    Pose start;              // full pose of the model's skeleton (root translation is kept)
+    Eigen::VectorXd startX;  // latent warm start (d)
     std::vector<IkConstraint> constraints;
     double lambda = 0.999;
-    int maxIterations = 50;        // cap per call (the UI refines further when idle)
-    double stallRelative = 1e-7;   // F change over `stallWindow` iterations
+    int maxIterations = 50;       // cap per call (the UI refines further when idle)
+    double stallRelative = 1e-7;  // F change over `stallWindow` iterations
     int stallWindow = 5;
     double convergedResidualCm = 0.05;
     // Diagonal preconditioning: L-BFGS runs on u with z = S·u, S = diag(H_ii^(-1/2)) from the
@@ -60,8 +60,8 @@ const char* learnedIkStopKey(LearnedIkStop stop);
 template <class Scalar>
 struct CountingLineSearch {
     template <typename Foo, typename Vector, typename Param>
-    static void LineSearch(Foo& f, Scalar& fx, Vector& x, Vector& grad, Scalar& step, const Vector& drt, const Vector& xp,
-                           const Param& param) {
+    static void LineSearch(Foo& f, Scalar& fx, Vector& x, Vector& grad, Scalar& step, const Vector& drt,
+                           const Vector& xp, const Param& param) {
         ++*f.lineSearches;
         LBFGSpp::LineSearchBacktracking<Scalar>::LineSearch(f, fx, x, grad, step, drt, xp, param);
     }
@@ -69,18 +69,18 @@ struct CountingLineSearch {
 
 struct LearnedIkResult {
     Pose pose;
-    Eigen::VectorXd x;             // latent point (d)
-    Eigen::VectorXd y;             // kept pose columns (D, degrees)
-    double sigma2 = 0.0;           // σ²(x)
-    double lik = 0.0;              // L_IK(x, y)
-    double objective = 0.0;        // F
+    Eigen::VectorXd x;       // latent point (d)
+    Eigen::VectorXd y;       // kept pose columns (D, degrees)
+    double sigma2 = 0.0;     // σ²(x)
+    double lik = 0.0;        // L_IK(x, y)
+    double objective = 0.0;  // F
     std::vector<IkConstraintResult> constraints;
-    bool reached = false;          // every target and pin within 0.5 cm
-    bool converged = false;        // stopping rule met with every residual < 0.05 cm
-    int iterations = 0;            // L-BFGS iterations completed (also when a line search failed)
+    bool reached = false;    // every target and pin within 0.5 cm
+    bool converged = false;  // stopping rule met with every residual < 0.05 cm
+    int iterations = 0;      // L-BFGS iterations completed (also when a line search failed)
     int evaluations = 0;
     LearnedIkStop stop = LearnedIkStop::kInvalidRequest;
-    std::string diagnostic;        // "converged", "iteration cap", a line-search message, ...
+    std::string diagnostic;  // "converged", "iteration cap", a line-search message, ...
 };
 
 class LearnedIkSolver {

@@ -8,7 +8,8 @@ namespace mgp {
 std::string PlainIkJob::validate() const {
     if (!skeleton) return "expected a skeleton, found none";
     if (static_cast<int>(start.anglesDeg.size()) != skeleton->jointCount())
-        return "expected a start pose for this skeleton, found one with " + std::to_string(start.anglesDeg.size()) + " joints";
+        return "expected a start pose for this skeleton, found one with " + std::to_string(start.anglesDeg.size()) +
+               " joints";
     if (const int P = PoseLayout(*skeleton).size(); !frozenDofs.empty() && static_cast<int>(frozenDofs.size()) != P)
         return "expected " + std::to_string(P) + " frozen-DOF flags, found " + std::to_string(frozenDofs.size());
     return validateConstraints(*skeleton, constraints);
@@ -38,7 +39,8 @@ void PlainIkJob::solve() {
 
     auto evaluate = [&](const Pose& p, Eigen::VectorXd& e) {
         forwardKinematics(sk, p, fk);
-        for (int c = 0; c < m; ++c) e.segment<3>(3 * c) = constraints[c].targetCm - effectorCm(sk, fk, constraints[c].effector);
+        for (int c = 0; c < m; ++c)
+            e.segment<3>(3 * c) = constraints[c].targetCm - effectorCm(sk, fk, constraints[c].effector);
         return e.squaredNorm();
     };
     double cost = evaluate(pose, err);

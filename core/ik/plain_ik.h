@@ -16,10 +16,10 @@ struct PlainIkJob {
     const Skeleton* skeleton = nullptr;
     Pose start;
     std::vector<IkConstraint> constraints;
-    std::vector<bool> frozenDofs;      // optional, one per pose-vector DOF: true = keep it at its start value
+    std::vector<bool> frozenDofs;  // optional, one per pose-vector DOF: true = keep it at its start value
     int maxIterations = 500;
-    double toleranceCm = 1e-3;          // stop once every residual is below this
-    double initialDamping = 1.0;        // λ of (JJᵀ + λ² I), in cm
+    double toleranceCm = 1e-3;    // stop once every residual is below this
+    double initialDamping = 1.0;  // λ of (JJᵀ + λ² I), in cm
 
     // Outputs.
     Pose pose;

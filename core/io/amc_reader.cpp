@@ -10,7 +10,7 @@ namespace mgp {
 
 namespace {
 
-constexpr double kMaxAbsAngleDeg = 1e6;   // beyond this a value is corrupt, not a pose
+constexpr double kMaxAbsAngleDeg = 1e6;  // beyond this a value is corrupt, not a pose
 constexpr double kMaxAbsTranslation = 1e7;
 constexpr long long kMaxAbsFrameNumber = 1'000'000'000'000;
 
@@ -65,8 +65,8 @@ Clip readAmcClip(TextReader& r, const AsfSkeleton& asf) {
         if (bonesThisFrame == bonesWithDofs) return;
         for (int j = 0; j < sk.jointCount(); ++j)
             if (!asf.channels[j].empty() && seenInFrame[j] != clip.frameCount() - 1)
-                r.failAt(frameLine, "a line for bone '" + sk.joints[j].name + "' in frame " +
-                                        std::to_string(expectedNumber - 1),
+                r.failAt(frameLine,
+                         "a line for bone '" + sk.joints[j].name + "' in frame " + std::to_string(expectedNumber - 1),
                          "none");
     };
 
@@ -83,26 +83,21 @@ Clip readAmcClip(TextReader& r, const AsfSkeleton& asf) {
             if (number < -kMaxAbsFrameNumber || number > kMaxAbsFrameNumber)
                 r.failAt(line, "a frame number within ±1e12", quoteToken(tok[0]));
             if (!clip.frames.empty() && number != expectedNumber)
-                r.failAt(line, "frame number " + std::to_string(expectedNumber),
-                         quoteToken(tok[0]));
+                r.failAt(line, "frame number " + std::to_string(expectedNumber), quoteToken(tok[0]));
             if (clip.frames.empty()) clip.firstFrameLabel = number;
-            if (clip.frames.size() >= 10'000'000u)
-                r.failAt(line, "at most 10,000,000 frames", "more");
+            if (clip.frames.size() >= 10'000'000u) r.failAt(line, "at most 10,000,000 frames", "more");
             expectedNumber = number + 1;
             frameLine = line;
             bonesThisFrame = 0;
             clip.frames.push_back(blank);
             continue;
         }
-        if (clip.frames.empty())
-            r.failAt(line, "a frame number (a line holding one integer)", quoteToken(raw));
+        if (clip.frames.empty()) r.failAt(line, "a frame number (a line holding one integer)", quoteToken(raw));
         const auto it = jointByName.find(std::string(tok[0]));
-        if (it == jointByName.end())
-            r.failAt(line, "a bone of " + asf.path, "unknown bone " + quoteToken(tok[0]));
+        if (it == jointByName.end()) r.failAt(line, "a bone of " + asf.path, "unknown bone " + quoteToken(tok[0]));
         const int j = it->second;
         const auto& channels = asf.channels[j];
-        if (channels.empty())
-            r.failAt(line, "only bones with DOFs", "bone '" + sk.joints[j].name + "' which has none");
+        if (channels.empty()) r.failAt(line, "only bones with DOFs", "bone '" + sk.joints[j].name + "' which has none");
         if (seenInFrame[j] == clip.frameCount() - 1)
             r.failAt(line, "bone '" + sk.joints[j].name + "' once per frame", "it twice");
         if (tok.size() - 1 != channels.size())
@@ -112,8 +107,7 @@ Clip readAmcClip(TextReader& r, const AsfSkeleton& asf) {
         for (std::size_t i = 0; i < channels.size(); ++i) {
             double v = 0.0;
             if (!parseDouble(tok[i + 1], v))
-                r.failAt(line, "a finite number for bone '" + sk.joints[j].name + "'",
-                         quoteToken(tok[i + 1]));
+                r.failAt(line, "a finite number for bone '" + sk.joints[j].name + "'", quoteToken(tok[i + 1]));
             if (channels[i].translation) {
                 if (std::abs(v) > kMaxAbsTranslation)
                     r.failAt(line, "a root translation within ±1e7", quoteToken(tok[i + 1]));

@@ -53,13 +53,11 @@ double needNumber(const TextReader& r, int line, std::string_view token, const c
     return v;
 }
 
-Eigen::Vector3d needVector(const TextReader& r, int line, const std::vector<std::string_view>& tok,
-                           std::size_t first, const char* what) {
+Eigen::Vector3d needVector(const TextReader& r, int line, const std::vector<std::string_view>& tok, std::size_t first,
+                           const char* what) {
     if (tok.size() < first + 3)
-        r.failAt(line, std::string("3 numbers for ") + what,
-                 std::to_string(tok.size() - first) + " values");
-    return {needNumber(r, line, tok[first], "a number"),
-            needNumber(r, line, tok[first + 1], "a number"),
+        r.failAt(line, std::string("3 numbers for ") + what, std::to_string(tok.size() - first) + " values");
+    return {needNumber(r, line, tok[first], "a number"), needNumber(r, line, tok[first + 1], "a number"),
             needNumber(r, line, tok[first + 2], "a number")};
 }
 
@@ -83,7 +81,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
     bool sawRoot = false, sawBones = false, sawHierarchy = false;
     std::vector<AsfBone> bones;
     std::map<std::string, int> boneIndex;
-    std::vector<int> parentOf;  // per bone: -1 = root, -2 = not yet placed
+    std::vector<int> parentOf;                    // per bone: -1 = root, -2 = not yet placed
     std::vector<std::vector<int>> childrenOf(1);  // index 0 = root, bone i → i + 1
 
     std::string section;
@@ -94,14 +92,13 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
         const auto tok = splitTokens(raw);
         if (raw.front() == ':') {
             section = toLower(tok[0]);
-            if (section == ":units" || section == ":root" || section == ":documentation" ||
-                section == ":bonedata" || section == ":hierarchy" || section == ":skin")
+            if (section == ":units" || section == ":root" || section == ":documentation" || section == ":bonedata" ||
+                section == ":hierarchy" || section == ":skin")
                 ;
             else if (section == ":version" || section == ":name")
                 continue;
             else
-                r.failAt(line, "an ASF section (:units, :root, :bonedata, :hierarchy)",
-                         quoteToken(tok[0]));
+                r.failAt(line, "an ASF section (:units, :root, :bonedata, :hierarchy)", quoteToken(tok[0]));
             if (section == ":root") sawRoot = true;
             if (section == ":bonedata") sawBones = true;
             if (section == ":hierarchy") sawHierarchy = true;
@@ -116,8 +113,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
                 if (!(lengthUnit > 0.0)) r.failAt(line, "a positive length unit", quoteToken(tok[1]));
             } else if (key == "angle") {
                 const std::string u = toLower(tok[1]);
-                if (u != "deg" && u != "rad")
-                    r.failAt(line, "angle unit 'deg' or 'rad'", quoteToken(tok[1]));
+                if (u != "deg" && u != "rad") r.failAt(line, "angle unit 'deg' or 'rad'", quoteToken(tok[1]));
                 out.anglesInRadians = u == "rad";
             }
         } else if (section == ":root") {
@@ -130,8 +126,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
                 }
             } else if (key == "axis") {
                 if (tok.size() < 2 || !parseAxisOrder(tok[1], rootAxisOrder))
-                    r.failAt(line, "a root axis order such as XYZ",
-                             tok.size() < 2 ? "nothing" : quoteToken(tok[1]));
+                    r.failAt(line, "a root axis order such as XYZ", tok.size() < 2 ? "nothing" : quoteToken(tok[1]));
             } else if (key == "orientation") {
                 rootOrientation = needVector(r, line, tok, 1, "the root orientation");
             } else if (key == "position") {
@@ -180,8 +175,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
                         if (!parseChannel(bt[i], false, c))
                             r.failAt(bl, "a bone dof among rx ry rz", quoteToken(bt[i]));
                         for (const Channel& prev : bone.channels)
-                            if (prev.axis == c.axis)
-                                r.failAt(bl, "each dof once", "a repeated " + std::string(bt[i]));
+                            if (prev.axis == c.axis) r.failAt(bl, "each dof once", "a repeated " + std::string(bt[i]));
                         bone.channels.push_back(c);
                     }
                 } else if (bk == "limits") {
@@ -190,16 +184,15 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
                 } else if (bk == "begin" || bk.front() == ':') {
                     r.failAt(bl, "'end' of bone '" + bone.name + "'", quoteToken(bt[0]));
                 } else {
-                    r.failAt(bl, "a bone field (id, name, direction, length, axis, dof, limits)",
-                             quoteToken(bt[0]));
+                    r.failAt(bl, "a bone field (id, name, direction, length, axis, dof, limits)", quoteToken(bt[0]));
                 }
             }
-            if (!ended) r.failAt(r.lastLineNumber(), "'end' of the bone begun at line " +
-                                 std::to_string(bone.line), "the end of the file");
+            if (!ended)
+                r.failAt(r.lastLineNumber(), "'end' of the bone begun at line " + std::to_string(bone.line),
+                         "the end of the file");
             if (bone.name.empty()) r.failAt(bone.line, "a 'name' in this bone", "none");
             if (!bone.hasDirection || !bone.hasLength)
-                r.failAt(bone.line, "'direction' and 'length' for bone '" + bone.name + "'",
-                         "a bone without them");
+                r.failAt(bone.line, "'direction' and 'length' for bone '" + bone.name + "'", "a bone without them");
             if (bone.name == "root" || boneIndex.count(bone.name))
                 r.failAt(bone.line, "a unique bone name", "a second '" + bone.name + "'");
             boneIndex[bone.name] = static_cast<int>(bones.size());
@@ -211,16 +204,14 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
             auto lookup = [&](std::string_view name) -> int {
                 if (name == "root") return 0;
                 const auto it = boneIndex.find(std::string(name));
-                if (it == boneIndex.end())
-                    r.failAt(line, "a bone declared in :bonedata", quoteToken(name));
+                if (it == boneIndex.end()) r.failAt(line, "a bone declared in :bonedata", quoteToken(name));
                 return it->second + 1;
             };
             const int parent = lookup(tok[0]);
             for (std::size_t i = 1; i < tok.size(); ++i) {
                 const int child = lookup(tok[i]);
                 if (child == 0 || parentOf[child - 1] != -2)
-                    r.failAt(line, "each bone to have one parent",
-                             "a second parent for '" + std::string(tok[i]) + "'");
+                    r.failAt(line, "each bone to have one parent", "a second parent for '" + std::string(tok[i]) + "'");
                 parentOf[child - 1] = parent - 1;
                 childrenOf[parent].push_back(child);
             }
@@ -270,8 +261,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
         jointOfNode[node] = sk.jointCount();
         sk.joints.push_back(j);
         out.channels.push_back(b.channels);
-        for (auto it = childrenOf[node].rbegin(); it != childrenOf[node].rend(); ++it)
-            stack.push_back(*it);
+        for (auto it = childrenOf[node].rbegin(); it != childrenOf[node].rend(); ++it) stack.push_back(*it);
     }
     for (std::size_t i = 0; i < bones.size(); ++i) {
         if (jointOfNode[i + 1] >= 0) continue;
@@ -283,8 +273,7 @@ AsfSkeleton readAsfSkeleton(TextReader& r) {
         if (parentOf[b] >= 0)
             r.failAt(bones[i].line, "bone '" + bones[i].name + "' to hang from root in :hierarchy",
                      "a cycle through '" + bones[i].name + "'");
-        r.failAt(bones[b].line, "bone '" + bones[b].name + "' to appear in :hierarchy",
-                 "a bone with no parent");
+        r.failAt(bones[b].line, "bone '" + bones[b].name + "' to appear in :hierarchy", "a bone with no parent");
     }
     sk.resolveEffectors();
     return out;

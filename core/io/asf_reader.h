@@ -11,7 +11,7 @@ namespace mgp {
 
 struct AsfSkeleton {
     std::string path;
-    Skeleton skeleton;                               // root + every ASF bone, hierarchy order
+    Skeleton skeleton;                           // root + every ASF bone, hierarchy order
     std::vector<std::vector<Channel>> channels;  // per joint, in AMC value order
     double cmPerUnit = 2.54;
     bool anglesInRadians = false;

@@ -33,8 +33,10 @@ Fault faultFromEnvironment() {
     const char* v = std::getenv("MOTIONGP_FAULT");
     if (!v) return f;
     const std::string s(v), slow = "slow-write:";
-    if (s == "enospc") f.noSpace = true;
-    else if (s.compare(0, slow.size(), slow) == 0) f.sleepMs = std::atoll(s.c_str() + slow.size());
+    if (s == "enospc")
+        f.noSpace = true;
+    else if (s.compare(0, slow.size(), slow) == 0)
+        f.sleepMs = std::atoll(s.c_str() + slow.size());
     return f;
 }
 

@@ -123,7 +123,8 @@ private:
                 Channel ch;
                 if (lower.size() == 9 && lower.compare(1, 8, "rotation") == 0 && lower[0] >= 'x' && lower[0] <= 'z') {
                     ch.axis = lower[0] - 'x';
-                } else if (lower.size() == 9 && lower.compare(1, 8, "position") == 0 && lower[0] >= 'x' && lower[0] <= 'z') {
+                } else if (lower.size() == 9 && lower.compare(1, 8, "position") == 0 && lower[0] >= 'x' &&
+                           lower[0] <= 'z') {
                     ch.translation = true;
                     ch.axis = lower[0] - 'x';
                     if (parent >= 0)
@@ -200,18 +201,19 @@ Clip readBvhClip(TextReader& r) {
     const int framesLine = r.lineNumber();
     auto framesTok = splitTokens(r.nextLine());
     long long frames = -1;
-    if (framesTok.size() == 2 && framesTok[0] == "Frames:") parseInt(framesTok[1], frames);
+    if (framesTok.size() == 2 && framesTok[0] == "Frames:")
+        parseInt(framesTok[1], frames);
     else if (framesTok.size() == 3 && framesTok[0] == "Frames" && framesTok[1] == ":")
         parseInt(framesTok[2], frames);
-    else r.failAt(framesLine, "'Frames: N'", quoteToken(framesTok.empty() ? "" : framesTok[0]));
+    else
+        r.failAt(framesLine, "'Frames: N'", quoteToken(framesTok.empty() ? "" : framesTok[0]));
     if (frames < 1) r.failAt(framesLine, "a frame count of at least 1", quoteToken(framesTok.back()));
     r.skipBlankAndComments("");
     if (r.atEnd()) r.failAt(r.lastLineNumber(), "'Frame Time: SECONDS'", "the end of the file");
     const int timeLine = r.lineNumber();
     auto timeTok = splitTokens(r.nextLine());
     double frameTime = 0.0;
-    if (!(timeTok.size() == 3 && timeTok[0] == "Frame" && timeTok[1] == "Time:" &&
-          parseDouble(timeTok[2], frameTime)))
+    if (!(timeTok.size() == 3 && timeTok[0] == "Frame" && timeTok[1] == "Time:" && parseDouble(timeTok[2], frameTime)))
         r.failAt(timeLine, "'Frame Time: SECONDS'", quoteToken(timeTok.empty() ? "" : timeTok[0]));
     if (!(frameTime > 0.0 && frameTime < 10.0))
         r.failAt(timeLine, "a frame time in (0, 10) seconds", quoteToken(timeTok[2]));
@@ -271,11 +273,9 @@ Clip readBvhClip(TextReader& r) {
         const int line = r.lineNumber();
         const auto tok = splitTokens(r.nextLine());
         if (tok.empty()) continue;
-        if (read == frames)
-            r.failAt(line, std::to_string(frames) + " frame rows (Frames:)", "more rows");
+        if (read == frames) r.failAt(line, std::to_string(frames) + " frame rows (Frames:)", "more rows");
         if (static_cast<int>(tok.size()) != channelTotal)
-            r.failAt(line, std::to_string(channelTotal) + " values per frame row",
-                     std::to_string(tok.size()));
+            r.failAt(line, std::to_string(channelTotal) + " values per frame row", std::to_string(tok.size()));
         Pose pose = blank;
         pose.rootCm = rootOffset;
         std::size_t k = 0;
@@ -283,20 +283,19 @@ Clip readBvhClip(TextReader& r) {
             for (const Channel& c : raw[j].channels) {
                 double v = 0.0;
                 if (!parseDouble(tok[k], v))
-                    r.failAt(line, "a finite number (value " + std::to_string(k + 1) + ")",
-                             quoteToken(tok[k]));
-                if (std::abs(v) > kMaxAbsValue)
-                    r.failAt(line, "a value within ±1e7", quoteToken(tok[k]));
+                    r.failAt(line, "a finite number (value " + std::to_string(k + 1) + ")", quoteToken(tok[k]));
+                if (std::abs(v) > kMaxAbsValue) r.failAt(line, "a value within ±1e7", quoteToken(tok[k]));
                 ++k;
-                if (c.translation) pose.rootCm[c.axis] = rootOffset[c.axis] + v * conv.cmPerUnit;
-                else pose.anglesDeg[j][c.axis] = v;
+                if (c.translation)
+                    pose.rootCm[c.axis] = rootOffset[c.axis] + v * conv.cmPerUnit;
+                else
+                    pose.anglesDeg[j][c.axis] = v;
             }
         clip.frames.push_back(std::move(pose));
         ++read;
     }
     if (read != frames)
-        r.failAt(r.lastLineNumber(), std::to_string(frames) + " frame rows (Frames:)",
-                 std::to_string(read));
+        r.failAt(r.lastLineNumber(), std::to_string(frames) + " frame rows (Frames:)", std::to_string(read));
     clip.restFrame = conv.convertersAddRestFrame && clip.frames[0].anglesDeg[0].isZero(0.0);
     return clip;
 }

@@ -104,7 +104,9 @@ std::string formatBvh(const Clip& clip) {
     std::vector<std::vector<int>> children(n);
     for (int j = 1; j < n; ++j)
         if (keep[j]) children[sk.joints[j].parent].push_back(j);
-    auto nameOf = [&](int j) { return j == 0 ? std::string("root") : sk.joints[j].bone.empty() ? sk.joints[j].name : sk.joints[j].bone; };
+    auto nameOf = [&](int j) {
+        return j == 0 ? std::string("root") : sk.joints[j].bone.empty() ? sk.joints[j].name : sk.joints[j].bone;
+    };
 
     std::string out = "HIERARCHY\n";
     std::vector<int> order;  // joints in file (channel) order
@@ -130,7 +132,8 @@ std::string formatBvh(const Clip& clip) {
         appendf(out, "%.9f %.9f %.9f", root.x(), root.y(), root.z());
         for (int j : order) {
             const Joint& joint = sk.joints[j];
-            const Eigen::Matrix3d local = joint.axis * eulerMatrix(pose.anglesDeg[j], joint.order) * joint.axis.transpose();
+            const Eigen::Matrix3d local =
+                joint.axis * eulerMatrix(pose.anglesDeg[j], joint.order) * joint.axis.transpose();
             const Eigen::Vector3d e = eulerZYXFromMatrix(local);  // (x, y, z)
             appendf(out, " %.9f %.9f %.9f", e.z(), e.y(), e.x());
         }

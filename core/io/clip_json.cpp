@@ -103,8 +103,9 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
         clip.convention = field(j, "convention", file, "clip").get<std::string>();
         clip.fps = field(j, "fps", file, "clip").get<double>();
         clip.cmPerFileUnit = field(j, "cm_per_file_unit", file, "clip").get<double>();
-        clip.firstFrameLabel = integerOf(field(j, "first_frame_label", file, "clip"), std::numeric_limits<long long>::min(),
-                                         std::numeric_limits<long long>::max(), file, "first_frame_label");
+        clip.firstFrameLabel =
+            integerOf(field(j, "first_frame_label", file, "clip"), std::numeric_limits<long long>::min(),
+                      std::numeric_limits<long long>::max(), file, "first_frame_label");
         clip.restFrame = field(j, "rest_frame", file, "clip").get<bool>();
         clip.sourcePath = "";
         const auto& joints = field(j, "joints", file, "clip");
@@ -114,7 +115,7 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
             jt.name = field(jj, "name", file, "joint").get<std::string>();
             jt.bone = field(jj, "bone", file, "joint").get<std::string>();
             jt.parent = static_cast<int>(integerOf(field(jj, "parent", file, "joint"), std::numeric_limits<int>::min(),
-                                                  std::numeric_limits<int>::max(), file, "parent"));
+                                                   std::numeric_limits<int>::max(), file, "parent"));
             jt.offsetCm = readVec3(field(jj, "offset_cm", file, "joint"), file, "offset_cm");
             jt.tailCm = readVec3(field(jj, "tail_cm", file, "joint"), file, "tail_cm");
             const auto& a = field(jj, "axis", file, "joint");
@@ -136,7 +137,8 @@ Clip clipFromJson(const nlohmann::json& j, const std::string& file) {
                 throwParseError(file, 0, "parents listed before their children", "joint '" + jt.name + "'");
             clip.skeleton.joints.push_back(jt);
         }
-        if (clip.format == ClipFormat::kBvh || clip.format == ClipFormat::kGltf) clip.skeleton.poseVector = PoseVectorKind::kChannels;
+        if (clip.format == ClipFormat::kBvh || clip.format == ClipFormat::kGltf)
+            clip.skeleton.poseVector = PoseVectorKind::kChannels;
         clip.skeleton.validate();
         clip.skeleton.resolveEffectors();
         const auto& poses = field(j, "poses_deg", file, "clip");

@@ -34,8 +34,7 @@ Clip loadClip(const std::string& path, const std::string& skeletonPath) {
         return readAmc(path, asf);
     }
     if (ext == "asf")
-        throwParseError(path, 0, "a motion clip (.amc or .bvh; pass the .asf with --skel)",
-                        "a skeleton file");
+        throwParseError(path, 0, "a motion clip (.amc or .bvh; pass the .asf with --skel)", "a skeleton file");
     throwParseError(path, 0, "a clip ending in .amc, .bvh, .glb or .gltf", "'." + ext + "'");
 }
 

@@ -19,13 +19,12 @@ bool isFile(const std::string& p) {
 }
 }  // namespace
 
-bool isMocapFolder(const std::string& dir) {
-    return !dir.empty() && (isDir(dir + "/asf_amc") || isDir(dir + "/bvh"));
-}
+bool isMocapFolder(const std::string& dir) { return !dir.empty() && (isDir(dir + "/asf_amc") || isDir(dir + "/bvh")); }
 
 namespace {
 // The first of exeDir + relative that is a mocap folder ("" exeDir: none).
-std::optional<std::string> firstMocapFolderBeside(const std::string& exeDir, std::initializer_list<const char*> relatives) {
+std::optional<std::string> firstMocapFolderBeside(const std::string& exeDir,
+                                                  std::initializer_list<const char*> relatives) {
     if (!exeDir.empty())
         for (const char* rel : relatives)
             if (isMocapFolder(exeDir + rel)) return exeDir + rel;
@@ -38,8 +37,7 @@ std::optional<std::string> findMocapFolder(const std::string& cliDir, const std:
         if (isMocapFolder(cliDir)) return cliDir;
         return std::nullopt;  // an explicit choice that does not exist is not silently replaced
     }
-    if (const char* env = std::getenv("MOTIONGP_DATA"); env && isMocapFolder(env))
-        return std::string(env);
+    if (const char* env = std::getenv("MOTIONGP_DATA"); env && isMocapFolder(env)) return std::string(env);
 #ifdef MOTIONGP_SHARED_MOCAP
     if (isMocapFolder(MOTIONGP_SHARED_MOCAP)) return std::string(MOTIONGP_SHARED_MOCAP);
 #endif

@@ -110,8 +110,9 @@ void exportFbxThroughBlender(const Clip& clip, const std::string& fbxPath,
     say("Blender: importing the glTF and writing the FBX (" + std::to_string(clip.frameCount()) + " frames)");
     char fpsText[32];
     std::snprintf(fpsText, sizeof fpsText, "%.9g", clip.fps);
-    std::vector<std::string> args{blender, "-b", "--factory-startup", "--python-exit-code", "1",
-                                  "--python-expr", kBlenderScript, "--", glb, fbx, fpsText};
+    std::vector<std::string> args{
+        blender, "-b",   "--factory-startup", "--python-exit-code", "1", "--python-expr", kBlenderScript, "--", glb,
+        fbx,     fpsText};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -130,10 +131,10 @@ void exportFbxThroughBlender(const Clip& clip, const std::string& fbxPath,
     }
     struct stat st {};
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || ::stat(fbx.c_str(), &st) != 0 || st.st_size == 0)
-        throw std::runtime_error(fbxPath + ": expected Blender to write the FBX, found " +
-                                 (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                                    : std::string("a crash")) +
-                                 "; Blender's last lines:" + lastLinesOf(log, 6));
+        throw std::runtime_error(
+            fbxPath + ": expected Blender to write the FBX, found " +
+            (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : std::string("a crash")) +
+            "; Blender's last lines:" + lastLinesOf(log, 6));
     if (::rename(fbx.c_str(), fbxPath.c_str()) != 0)
         throw std::runtime_error(fbxPath + ": expected a writable file, found " + std::strerror(errno));
     say("wrote " + fbxPath);

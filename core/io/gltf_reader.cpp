@@ -1,10 +1,10 @@
 #include "io/gltf_reader.h"
 
+#include <tiny_gltf.h>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <tiny_gltf.h>
 
 #include "io/parse_error.h"
 #include "io/text_reader.h"
@@ -67,10 +67,13 @@ tinygltf::Model loadGltfModel(const std::string& path) {
     std::string err, warn;
     const bool binary = fileExtension(path) == "glb";
     const auto size = static_cast<unsigned>(bytes.size());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                         size, baseDir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
-    if (!ok) throwParseError(path, 0, binary ? "a binary glTF 2.0 file" : "a glTF 2.0 JSON file", err.empty() ? "an unreadable file" : err);
+    const bool ok = binary
+                        ? loader.LoadBinaryFromMemory(
+                              &model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, baseDir)
+                        : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
+    if (!ok)
+        throwParseError(path, 0, binary ? "a binary glTF 2.0 file" : "a glTF 2.0 JSON file",
+                        err.empty() ? "an unreadable file" : err);
     return model;
 }
 
@@ -91,7 +94,8 @@ Clip readGltfClip(const std::string& path) {
     std::map<int, int> skinIndexOf;
     for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
         const int node = skin.joints[k];
-        if (node < 0 || node >= nodeCount) throwParseError(path, 0, "skin joints that are nodes", "node " + std::to_string(node));
+        if (node < 0 || node >= nodeCount)
+            throwParseError(path, 0, "skin joints that are nodes", "node " + std::to_string(node));
         skinIndexOf[node] = k;
     }
     std::vector<int> parentJointNode(skin.joints.size(), -1);
@@ -102,8 +106,8 @@ Clip readGltfClip(const std::string& path) {
         parentJointNode[k] = a >= 0 && skinIndexOf.count(a) ? a : -1;
         if (parentJointNode[k] < 0) {
             if (rootNode >= 0)
-                throwParseError(path, 0, "one root joint", "'" + model.nodes[rootNode].name + "' and '" +
-                                                               model.nodes[skin.joints[k]].name + "'");
+                throwParseError(path, 0, "one root joint",
+                                "'" + model.nodes[rootNode].name + "' and '" + model.nodes[skin.joints[k]].name + "'");
             rootNode = skin.joints[k];
         }
     }
@@ -137,15 +141,20 @@ Clip readGltfClip(const std::string& path) {
         Joint joint;
         joint.name = nd.name.empty() ? "node" + std::to_string(node) : nd.name;
         joint.parent = node == rootNode ? -1 : jointOf.at(parentJointNode[skinIndexOf.at(node)]);
-        if (!nd.matrix.empty()) throwParseError(path, 0, "joint transforms as translation/rotation", "a matrix on '" + joint.name + "'");
+        if (!nd.matrix.empty())
+            throwParseError(path, 0, "joint transforms as translation/rotation", "a matrix on '" + joint.name + "'");
         for (double s : nd.scale)
-            if (std::abs(s - 1.0) > 1e-6) throwParseError(path, 0, "joints with scale 1", "scale " + std::to_string(s) + " on '" + joint.name + "'");
+            if (std::abs(s - 1.0) > 1e-6)
+                throwParseError(path, 0, "joints with scale 1",
+                                "scale " + std::to_string(s) + " on '" + joint.name + "'");
         if (nd.translation.size() == 3)
             joint.offsetCm = Eigen::Vector3d(nd.translation[0], nd.translation[1], nd.translation[2]) * kCmPerMetre;
-        restRotation.push_back(nd.rotation.size() == 4
-                                   ? Eigen::Quaterniond(nd.rotation[3], nd.rotation[0], nd.rotation[1], nd.rotation[2]).normalized()
-                                   : Eigen::Quaterniond::Identity());
-        if (const tinygltf::Value* bone = extraOf(nd.extras, "bone"); bone && bone->IsString()) joint.bone = bone->Get<std::string>();
+        restRotation.push_back(
+            nd.rotation.size() == 4
+                ? Eigen::Quaterniond(nd.rotation[3], nd.rotation[0], nd.rotation[1], nd.rotation[2]).normalized()
+                : Eigen::Quaterniond::Identity());
+        if (const tinygltf::Value* bone = extraOf(nd.extras, "bone"); bone && bone->IsString())
+            joint.bone = bone->Get<std::string>();
         if (const tinygltf::Value* tail = extraOf(nd.extras, "tail_m")) joint.tailCm = vectorOf(*tail) * kCmPerMetre;
         if (joint.bone.empty()) clip.unmappedJoints.push_back(joint.name);
         sk.joints.push_back(joint);
@@ -160,7 +169,8 @@ Clip readGltfClip(const std::string& path) {
         const int j = jointOf.at(channel.target_node);
         const std::string& name = sk.joints[j].name;
         if (channel.sampler < 0 || channel.sampler >= static_cast<int>(animation.samplers.size()))
-            throwParseError(path, 0, "a channel with a sampler", "sampler " + std::to_string(channel.sampler) + " on '" + name + "'");
+            throwParseError(path, 0, "a channel with a sampler",
+                            "sampler " + std::to_string(channel.sampler) + " on '" + name + "'");
         const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(channel.sampler)];
         if (sampler.interpolation != "LINEAR" && sampler.interpolation != "STEP")
             throwParseError(path, 0, "LINEAR or STEP keys", sampler.interpolation + " on '" + name + "'");
@@ -171,20 +181,24 @@ Clip readGltfClip(const std::string& path) {
         if (!same) throwParseError(path, 0, "every channel keyed at the same times", "other times on '" + name + "'");
         if (channel.target_path == "rotation") {
             rotation[j] = readFloatAccessor(path, model, sampler.output, 4, "rotations of '" + name + "'");
-            if (rotation[j].size() != 4 * times.size()) throwParseError(path, 0, "one rotation per key", "another count on '" + name + "'");
+            if (rotation[j].size() != 4 * times.size())
+                throwParseError(path, 0, "one rotation per key", "another count on '" + name + "'");
         } else if (channel.target_path == "translation") {
             if (j != 0) throwParseError(path, 0, "translation animated on the root joint only", "on '" + name + "'");
             rootTranslation[0] = readFloatAccessor(path, model, sampler.output, 3, "translations of '" + name + "'");
-            if (rootTranslation[0].size() != 3 * times.size()) throwParseError(path, 0, "one translation per key", "another count on '" + name + "'");
+            if (rootTranslation[0].size() != 3 * times.size())
+                throwParseError(path, 0, "one translation per key", "another count on '" + name + "'");
         } else if (channel.target_path == "scale") {
             for (float s : readFloatAccessor(path, model, sampler.output, 3, "scales of '" + name + "'"))
-                if (std::abs(s - 1.0f) > 1e-5f) throwParseError(path, 0, "joints with scale 1", "animated scale on '" + name + "'");
+                if (std::abs(s - 1.0f) > 1e-5f)
+                    throwParseError(path, 0, "joints with scale 1", "animated scale on '" + name + "'");
         }
     }
     if (times.empty()) throwParseError(path, 0, "an animation that keys the skeleton's joints", "none");
 
     clip.fps = 0.0;
-    if (const tinygltf::Value* fps = extraOf(model.asset.extras, "fps"); fps && fps->IsNumber()) clip.fps = fps->GetNumberAsDouble();
+    if (const tinygltf::Value* fps = extraOf(model.asset.extras, "fps"); fps && fps->IsNumber())
+        clip.fps = fps->GetNumberAsDouble();
     if (!(clip.fps > 0.0) && times.size() > 1 && times.back() > times.front())
         clip.fps = static_cast<double>(times.size() - 1) / (times.back() - times.front());
     if (!(clip.fps > 0.0)) clip.fps = 30.0;  // a single key has no rate; any will do

@@ -1,12 +1,12 @@
 #include "io/gltf_writer.h"
 
+#include <tiny_gltf.h>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cstdint>
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <tiny_gltf.h>
 
 #include "io/atomic_file.h"
 #include "io/text_reader.h"
@@ -23,14 +23,12 @@ constexpr double kMinBoneCm = 0.5;
 // One glTF buffer with its views and accessors, appended to as the export goes.
 class GltfBuffer {
 public:
-    explicit GltfBuffer(tinygltf::Model& model) : model_(model) {
-        model_.buffers.emplace_back();
-    }
+    explicit GltfBuffer(tinygltf::Model& model) : model_(model) { model_.buffers.emplace_back(); }
 
     // A tightly packed accessor of `count` elements of `type` (TINYGLTF_TYPE_*) and
     // `componentType`, from `bytes` (count × element size), in a view of its own aligned to 4.
-    int addAccessor(const void* bytes, std::size_t byteLength, std::size_t count, int type,
-                    int componentType, int target = 0) {
+    int addAccessor(const void* bytes, std::size_t byteLength, std::size_t count, int type, int componentType,
+                    int target = 0) {
         std::vector<unsigned char>& data = model_.buffers[0].data;
         data.resize((data.size() + 3) / 4 * 4, 0);
         tinygltf::BufferView view;
@@ -53,8 +51,8 @@ public:
     // Floats, `width` per element (1, 3, 4 or 16); with min/max per component when asked (the
     // specification requires them for POSITION and for animation inputs).
     int addFloats(const std::vector<float>& values, int width, bool withBounds, int target = 0) {
-        static const std::map<int, int> kTypeOfWidth = {{1, TINYGLTF_TYPE_SCALAR}, {3, TINYGLTF_TYPE_VEC3},
-                                                        {4, TINYGLTF_TYPE_VEC4}, {16, TINYGLTF_TYPE_MAT4}};
+        static const std::map<int, int> kTypeOfWidth = {
+            {1, TINYGLTF_TYPE_SCALAR}, {3, TINYGLTF_TYPE_VEC3}, {4, TINYGLTF_TYPE_VEC4}, {16, TINYGLTF_TYPE_MAT4}};
         const std::size_t count = values.size() / static_cast<std::size_t>(width);
         const int index = addAccessor(values.data(), values.size() * sizeof(float), count, kTypeOfWidth.at(width),
                                       TINYGLTF_COMPONENT_TYPE_FLOAT, target);
@@ -118,7 +116,8 @@ struct FigureMesh {
 };
 
 tinygltf::Value vectorValue(const Eigen::Vector3d& v) {
-    return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(v.x()), tinygltf::Value(v.y()), tinygltf::Value(v.z())});
+    return tinygltf::Value(
+        tinygltf::Value::Array{tinygltf::Value(v.x()), tinygltf::Value(v.y()), tinygltf::Value(v.z())});
 }
 
 // The joint nodes (parents precede children, as in the skeleton); returns their world rest
@@ -184,9 +183,9 @@ int addSkinnedFigure(const Clip& clip, const std::vector<Eigen::Vector3d>& restM
         buffer.addAccessor(figure.joints.data(), figure.joints.size() * sizeof(std::uint16_t), figure.joints.size() / 4,
                            TINYGLTF_TYPE_VEC4, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TARGET_ARRAY_BUFFER);
     primitive.attributes["WEIGHTS_0"] = buffer.addFloats(figure.weights, 4, false, TINYGLTF_TARGET_ARRAY_BUFFER);
-    primitive.indices =
-        buffer.addAccessor(figure.indices.data(), figure.indices.size() * sizeof(std::uint32_t), figure.indices.size(),
-                           TINYGLTF_TYPE_SCALAR, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    primitive.indices = buffer.addAccessor(figure.indices.data(), figure.indices.size() * sizeof(std::uint32_t),
+                                           figure.indices.size(), TINYGLTF_TYPE_SCALAR,
+                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     tinygltf::Mesh mesh;
     mesh.name = clip.name + "_figure";
     mesh.primitives.push_back(primitive);
@@ -215,7 +214,8 @@ void addAnimation(const Clip& clip, GltfBuffer& buffer, tinygltf::Model& model) 
         appendVector(rootTranslation, fk.jointCm[0] * kMetresPerCm);
         for (int j = 0; j < n; ++j) {
             const int p = sk.joints[j].parent;
-            const Eigen::Matrix3d local = p < 0 ? fk.global[j] : Eigen::Matrix3d(fk.global[p].transpose() * fk.global[j]);
+            const Eigen::Matrix3d local =
+                p < 0 ? fk.global[j] : Eigen::Matrix3d(fk.global[p].transpose() * fk.global[j]);
             Eigen::Quaterniond q(local);
             q.normalize();
             if (f > 0 && q.dot(previous[j]) < 0.0) q.coeffs() = -q.coeffs();
@@ -247,8 +247,8 @@ void addAnimation(const Clip& clip, GltfBuffer& buffer, tinygltf::Model& model) 
 tinygltf::Model gltfModelOf(const Clip& clip) {
     const int n = clip.skeleton.jointCount(), frames = clip.frameCount();
     if (n == 0 || frames == 0)
-        throw std::invalid_argument("glTF export: expected a clip with joints and frames, found " +
-                                    std::to_string(n) + " joints and " + std::to_string(frames) + " frames");
+        throw std::invalid_argument("glTF export: expected a clip with joints and frames, found " + std::to_string(n) +
+                                    " joints and " + std::to_string(frames) + " frames");
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "MotionGP";

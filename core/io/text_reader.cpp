@@ -25,8 +25,7 @@ std::string describeParseProblem(const std::string& file, int line, const std::s
     return os.str();
 }
 
-void throwParseError(const std::string& file, int line, const std::string& expected,
-                     const std::string& found) {
+void throwParseError(const std::string& file, int line, const std::string& expected, const std::string& found) {
     throw ParseError(describeParseProblem(file, line, expected, found));
 }
 
@@ -41,7 +40,9 @@ std::string readFileBytes(const std::string& path, std::size_t maxBytes, const s
                         std::to_string(st.st_size) + " bytes");
     std::ifstream in(path, std::ios::binary);
     // Say why (a chmod-000 file, EACCES, is the usual case).
-    if (!in) throwParseError(path, 0, "a readable file", std::string("a file that cannot be opened (") + std::strerror(errno) + ")");
+    if (!in)
+        throwParseError(path, 0, "a readable file",
+                        std::string("a file that cannot be opened (") + std::strerror(errno) + ")");
     std::string text(static_cast<std::size_t>(st.st_size), '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<std::size_t>(in.gcount()));
@@ -84,9 +85,7 @@ TextReader TextReader::fromString(std::string name, std::string text) {
 
 int TextReader::lineNumber() const { return static_cast<int>(next_) + 1; }
 
-std::string_view TextReader::peekLine() const {
-    return atEnd() ? std::string_view() : lines_[next_];
-}
+std::string_view TextReader::peekLine() const { return atEnd() ? std::string_view() : lines_[next_]; }
 
 std::string_view TextReader::nextLine() {
     if (atEnd()) fail("more lines", "the end of the file");
@@ -141,8 +140,7 @@ bool parseDouble(std::string_view token, double& out) {
     buf[token.size()] = '\0';
     // strtod accepts "nan"/"inf"/hex; require a plain decimal number.
     for (char c : token)
-        if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' ||
-              c == 'e' || c == 'E'))
+        if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E'))
             return false;
     char* end = nullptr;
     errno = 0;
@@ -179,7 +177,8 @@ bool parseIntList(std::string_view text, long long lo, long long hi, std::vector
     while (true) {
         const std::size_t comma = text.find(',', start);
         long long v = 0;
-        const std::string_view item = text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+        const std::string_view item =
+            text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
         if (!parseInt(trim(item), v) || v < lo || v > hi) return false;
         out.push_back(v);
         if (comma == std::string_view::npos) return true;

@@ -5,8 +5,10 @@
 
 namespace mgp {
 
-BlockBandedMatrix::BlockBandedMatrix(int blocks, int blockSize, int bandwidth) : n_(blocks), b_(blockSize), w_(bandwidth) {
-    if (blocks < 0 || blockSize < 1 || bandwidth < 0) throw std::invalid_argument("expected a non-empty block-banded shape");
+BlockBandedMatrix::BlockBandedMatrix(int blocks, int blockSize, int bandwidth)
+    : n_(blocks), b_(blockSize), w_(bandwidth) {
+    if (blocks < 0 || blockSize < 1 || bandwidth < 0)
+        throw std::invalid_argument("expected a non-empty block-banded shape");
     blocks_.assign(static_cast<std::size_t>(n_) * (w_ + 1), Eigen::MatrixXd::Zero(b_, b_));
 }
 
@@ -68,7 +70,8 @@ Eigen::VectorXd BlockBandedMatrix::solve(const Eigen::VectorXd& rhs) const {
     // Backward: Lᵀ x = y.
     for (int i = n_ - 1; i >= 0; --i) {
         auto xi = x.segment(i * b_, b_);
-        for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) xi.noalias() -= block(k, i).transpose() * x.segment(k * b_, b_);
+        for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k)
+            xi.noalias() -= block(k, i).transpose() * x.segment(k * b_, b_);
         block(i, i).transpose().triangularView<Eigen::Upper>().solveInPlace(xi);
     }
     return x;

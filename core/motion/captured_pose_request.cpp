@@ -4,8 +4,9 @@
 
 namespace mgp {
 
-ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int frame, std::vector<IkConstraint> constraints,
-                                         const ContactSet& contacts, int maxIterations) {
+ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int frame,
+                                         std::vector<IkConstraint> constraints, const ContactSet& contacts,
+                                         int maxIterations) {
     const Clip& clip = version.model->clip;
     ConstrainedIkRequest req;
     req.start = clip.frames[frame];
@@ -13,7 +14,8 @@ ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int fr
     FkState fk;
     forwardKinematics(clip.skeleton, req.start, fk);
     req.constraints = std::move(constraints);
-    for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, req.constraints)) req.constraints.push_back(pin);
+    for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, req.constraints))
+        req.constraints.push_back(pin);
     req.maxIterations = maxIterations;
     req.floorCm = contacts.floorCm;
     return req;

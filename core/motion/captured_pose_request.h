@@ -12,7 +12,8 @@
 namespace mgp {
 
 // `frame` is 0-based; `contacts` is detectFootContacts of the version's clip.
-ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int frame, std::vector<IkConstraint> constraints,
-                                         const ContactSet& contacts, int maxIterations);
+ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int frame,
+                                         std::vector<IkConstraint> constraints, const ContactSet& contacts,
+                                         int maxIterations);
 
 }  // namespace mgp

@@ -24,17 +24,20 @@ MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int
     const int n = job.version->model->clip.frameCount();
     if (radius < 1) return fail("expected a falloff radius of at least 1 frame, found " + std::to_string(radius));
     if (frame < 1 || frame > n - 2)
-        return fail("expected a frame with a captured frame on each side (2.." + std::to_string(n - 1) + "), found " + std::to_string(frame + 1));
+        return fail("expected a frame with a captured frame on each side (2.." + std::to_string(n - 1) + "), found " +
+                    std::to_string(frame + 1));
     const Skeleton& skeleton = job.version->model->clip.skeleton;
     if (static_cast<int>(dragPose.anglesDeg.size()) != skeleton.jointCount())
-        return fail("expected a drag pose of the model's skeleton, found one with " + std::to_string(dragPose.anglesDeg.size()) +
-                    " joints");
-    if (!skeleton.hasEffector(effector)) return fail(std::string("expected an effector of this skeleton, found ") + effectorName(effector));
+        return fail("expected a drag pose of the model's skeleton, found one with " +
+                    std::to_string(dragPose.anglesDeg.size()) + " joints");
+    if (!skeleton.hasEffector(effector))
+        return fail(std::string("expected an effector of this skeleton, found ") + effectorName(effector));
     const Eigen::Vector3d targetCm = effectorCm(skeleton, dragPose, effector);
     if (!targetCm.allFinite()) return fail("expected a finite drag pose, found NaN or Inf");
     const int first = std::max(0, frame - radius), last = std::min(n - 1, frame + radius);
     if (job.base)
-        if (const std::string invalid = validateEditBase(*job.version->model, *job.base); !invalid.empty()) return fail(invalid);
+        if (const std::string invalid = validateEditBase(*job.version->model, *job.base); !invalid.empty())
+            return fail(invalid);
     const Eigen::Vector3d captured = job.capturedTrajectory()[frame];
     job.keyFrames = {first, frame, last};
     job.keyOffsetsCm = {Eigen::Vector3d::Zero(), targetCm - captured, Eigen::Vector3d::Zero()};

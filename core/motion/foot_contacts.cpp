@@ -15,12 +15,14 @@ void validateRule(const ContactRule& rule, double fps) {
     if (!finitePositive(rule.enterHeightCm) || !finitePositive(rule.enterSpeedCmPerFrame))
         throw std::invalid_argument("contact rule: expected positive enter thresholds");
     if (!(rule.exitHeightCm >= rule.enterHeightCm) || !(rule.exitSpeedCmPerFrame >= rule.enterSpeedCmPerFrame))
-        throw std::invalid_argument("contact rule: expected exit thresholds at least the enter thresholds, found "
-                                    "a tighter exit (no hysteresis)");
-    if (rule.mergeGapFrames < 0) throw std::invalid_argument("contact rule: expected mergeGapFrames >= 0, found " +
-                                                             std::to_string(rule.mergeGapFrames));
-    if (rule.minFrames < 1) throw std::invalid_argument("contact rule: expected minFrames >= 1, found " +
-                                                        std::to_string(rule.minFrames));
+        throw std::invalid_argument(
+            "contact rule: expected exit thresholds at least the enter thresholds, found "
+            "a tighter exit (no hysteresis)");
+    if (rule.mergeGapFrames < 0)
+        throw std::invalid_argument("contact rule: expected mergeGapFrames >= 0, found " +
+                                    std::to_string(rule.mergeGapFrames));
+    if (rule.minFrames < 1)
+        throw std::invalid_argument("contact rule: expected minFrames >= 1, found " + std::to_string(rule.minFrames));
     if (!(rule.groundPercentile >= 0.0 && rule.groundPercentile <= 1.0))
         throw std::invalid_argument("contact rule: expected a ground percentile in [0, 1]");
     if (!finitePositive(fps)) throw std::invalid_argument("contact rule: expected a positive frame rate");
@@ -65,8 +67,10 @@ void detectOne(Effector e, const std::vector<Eigen::Vector3d>& foot, double grou
     if (planted) close(n - 1);
     std::vector<FootContact> merged;
     for (const FootContact& c : raw) {
-        if (!merged.empty() && c.first - merged.back().last - 1 <= rule.mergeGapFrames) merged.back().last = c.last;
-        else merged.push_back(c);
+        if (!merged.empty() && c.first - merged.back().last - 1 <= rule.mergeGapFrames)
+            merged.back().last = c.last;
+        else
+            merged.push_back(c);
     }
     for (const FootContact& c : merged)
         if (c.length() >= rule.minFrames) out.push_back(c);
@@ -103,7 +107,8 @@ ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
     return set;
 }
 
-std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames, Effector effector) {
+std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames,
+                                                Effector effector) {
     std::vector<Eigen::Vector3d> out;
     if (!skeleton.hasEffector(effector)) return out;
     out.reserve(frames.size());

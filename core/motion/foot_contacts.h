@@ -27,31 +27,31 @@ struct ContactRule {
     // Defaults chosen on 35_01 (walk), 10_03 (kick), 16_01 (jump) and 09_01 (run): the ankle of
     // a planted foot sits 0.3–2.5 cm above the ground level and moves < 0.2 cm/frame; heel
     // strike and toe-off pass 3.5 cm or 0.4 cm/frame within a few frames.
-    double enterHeightCm = 2.5;          // planted when at most this high above ground …
-    double enterSpeedCmPerFrame = 0.2;   // … and at most this fast (24 cm/s at 120 fps)
-    double exitHeightCm = 3.5;           // a planted foot lifts off above this height …
-    double exitSpeedCmPerFrame = 0.4;    // … or above this speed (48 cm/s at 120 fps)
-    int mergeGapFrames = 3;              // two contacts this close in time are one (a jitter)
-    int minFrames = 6;                   // shorter contacts are noise (50 ms at 120 fps)
-    double groundPercentile = 0.05;      // of each foot's height over the clip
+    double enterHeightCm = 2.5;         // planted when at most this high above ground …
+    double enterSpeedCmPerFrame = 0.2;  // … and at most this fast (24 cm/s at 120 fps)
+    double exitHeightCm = 3.5;          // a planted foot lifts off above this height …
+    double exitSpeedCmPerFrame = 0.4;   // … or above this speed (48 cm/s at 120 fps)
+    int mergeGapFrames = 3;             // two contacts this close in time are one (a jitter)
+    int minFrames = 6;                  // shorter contacts are noise (50 ms at 120 fps)
+    double groundPercentile = 0.05;     // of each foot's height over the clip
 };
 
 struct FootContact {
     Effector foot = Effector::kLFoot;
-    int first = 0;          // first planted frame (0-based, inclusive)
-    int last = 0;           // last planted frame (inclusive)
-    bool enabled = true;    // the user can switch a contact off
+    int first = 0;        // first planted frame (0-based, inclusive)
+    int last = 0;         // last planted frame (inclusive)
+    bool enabled = true;  // the user can switch a contact off
     bool contains(int frame) const { return frame >= first && frame <= last; }
     int length() const { return last - first + 1; }
 };
 
 struct ContactSet {
-    double groundCm = 0.0;               // the clip's ground level (world Y, cm)
+    double groundCm = 0.0;  // the clip's ground level (world Y, cm)
     // The floor the solves keep hands and feet above (ConstrainedIkRequest::floorCm): the lowest
     // height either foot effector reaches over the clip, so no captured frame is below it. None
     // when the skeleton has no feet.
     std::optional<double> floorCm;
-    std::vector<FootContact> contacts;   // sorted by foot, then by first frame
+    std::vector<FootContact> contacts;  // sorted by foot, then by first frame
     // The enabled contact of `foot` that holds `frame`, or nullptr.
     const FootContact* at(Effector foot, int frame) const;
     FootContact* at(Effector foot, int frame);
@@ -69,7 +69,8 @@ ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule = {});
 // One effector's world position at every frame of the clip, or of `frames` (cm; empty when the
 // skeleton has no such effector).
 std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effector);
-std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames, Effector effector);
+std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames,
+                                                Effector effector);
 
 // The feet a pose solve holds by default on `frame`: each foot in ground contact there
 // (`contacts`), not released and not already in `constraints`, as a pin where it stands (`fk` of

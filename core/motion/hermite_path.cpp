@@ -8,7 +8,8 @@ namespace mgp {
 HermitePath::HermitePath(std::vector<HermiteKey> keys, const Eigen::Vector3d& startTangent,
                          const Eigen::Vector3d& endTangent)
     : keys_(std::move(keys)) {
-    if (keys_.size() < 2) throw std::invalid_argument("expected at least 2 Hermite keys, found " + std::to_string(keys_.size()));
+    if (keys_.size() < 2)
+        throw std::invalid_argument("expected at least 2 Hermite keys, found " + std::to_string(keys_.size()));
     for (std::size_t i = 1; i < keys_.size(); ++i)
         if (!(keys_[i].frame > keys_[i - 1].frame))
             throw std::invalid_argument("expected strictly increasing key frames, found " +
@@ -22,8 +23,8 @@ HermitePath::HermitePath(std::vector<HermiteKey> keys, const Eigen::Vector3d& st
 }
 
 int HermitePath::segmentOf(double t) const {
-    const auto it = std::upper_bound(keys_.begin(), keys_.end(), t,
-                                     [](double v, const HermiteKey& k) { return v < k.frame; });
+    const auto it =
+        std::upper_bound(keys_.begin(), keys_.end(), t, [](double v, const HermiteKey& k) { return v < k.frame; });
     const int i = static_cast<int>(it - keys_.begin()) - 1;
     return std::clamp(i, 0, static_cast<int>(keys_.size()) - 2);
 }

@@ -17,8 +17,7 @@ struct HermiteKey {
 class HermitePath {
 public:
     // keys: at least 2, strictly increasing frames. Throws std::invalid_argument otherwise.
-    HermitePath(std::vector<HermiteKey> keys, const Eigen::Vector3d& startTangent,
-                const Eigen::Vector3d& endTangent);
+    HermitePath(std::vector<HermiteKey> keys, const Eigen::Vector3d& startTangent, const Eigen::Vector3d& endTangent);
 
     // Position at frame t (clamped to the first/last key outside the range).
     Eigen::Vector3d position(double t) const;

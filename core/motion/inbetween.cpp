@@ -25,7 +25,8 @@ std::string validateGaps(const std::vector<InbetweenGap>& gaps, int frameCount) 
         const std::string name = std::to_string(g.a + 1) + ":" + std::to_string(g.b + 1);
         if (g.a < 0 || g.b >= frameCount)
             return "expected gaps inside the clip's frames 1.." + std::to_string(frameCount) + ", found " + name;
-        if (g.a + 1 >= g.b) return "expected at least one frame between the keys of a gap A:B (A + 1 < B), found " + name;
+        if (g.a + 1 >= g.b)
+            return "expected at least one frame between the keys of a gap A:B (A + 1 < B), found " + name;
         if (i > 0 && g.a < gaps[i - 1].b)
             return "expected gaps in increasing order that do not overlap, found " + name + " after " +
                    std::to_string(gaps[i - 1].a + 1) + ":" + std::to_string(gaps[i - 1].b + 1);
@@ -50,7 +51,8 @@ Pose blendPoses(const Pose& a, const Pose& b, double s) {
     Pose p = a;
     p.rootCm = (1.0 - s) * a.rootCm + s * b.rootCm;
     for (std::size_t j = 0; j < a.anglesDeg.size(); ++j)
-        for (int k = 0; k < 3; ++k) p.anglesDeg[j][k] = a.anglesDeg[j][k] + s * wrap180(b.anglesDeg[j][k] - a.anglesDeg[j][k]);
+        for (int k = 0; k < 3; ++k)
+            p.anglesDeg[j][k] = a.anglesDeg[j][k] + s * wrap180(b.anglesDeg[j][k] - a.anglesDeg[j][k]);
     return p;
 }
 
@@ -111,12 +113,14 @@ struct Stretch {
     int clip = -1, first = 0, last = 0;
     double cost = std::numeric_limits<double>::infinity();
     // The source frame nearest to frame i of an L-frame gap (0 and L: the stretch's ends).
-    int sourceFrame(int i, int L) const { return static_cast<int>(std::lround(first + static_cast<double>(i) * (last - first) / L)); }
+    int sourceFrame(int i, int L) const {
+        return static_cast<int>(std::lround(first + static_cast<double>(i) * (last - first) / L));
+    }
 };
 
 // The stretch of the model's clips that best joins keys a and b of `target` (clip −1 if none fits).
-Stretch bestStretch(const std::vector<MotionFeatures>& sources, int excludeClip,
-                    const MotionFeatures& target, int a, int b, int targetFrames) {
+Stretch bestStretch(const std::vector<MotionFeatures>& sources, int excludeClip, const MotionFeatures& target, int a,
+                    int b, int targetFrames) {
     const int L = b - a;
     const double J = static_cast<double>(target.shape.front().size() / 3);
     const Eigen::Vector3d travelKey = target.heading[a] * (target.root[b] - target.root[a]);
@@ -133,9 +137,13 @@ Stretch bestStretch(const std::vector<MotionFeatures>& sources, int excludeClip,
             for (int s = 1; s + Ls + 1 < n; ++s) {
                 const int e = s + Ls;
                 if (c == excludeClip && s <= b && e >= a) continue;  // never read the gap itself
-                double cost = ((src.shape[s] - target.shape[a]).squaredNorm() + (src.shape[e] - target.shape[b]).squaredNorm()) / J;
-                if (velocityAtA) cost += kVelocityWeight * (rate * src.velocityIn[s] - target.velocityIn[a]).squaredNorm() / J;
-                if (velocityAtB) cost += kVelocityWeight * (rate * src.velocityOut[e] - target.velocityOut[b]).squaredNorm() / J;
+                double cost =
+                    ((src.shape[s] - target.shape[a]).squaredNorm() + (src.shape[e] - target.shape[b]).squaredNorm()) /
+                    J;
+                if (velocityAtA)
+                    cost += kVelocityWeight * (rate * src.velocityIn[s] - target.velocityIn[a]).squaredNorm() / J;
+                if (velocityAtB)
+                    cost += kVelocityWeight * (rate * src.velocityOut[e] - target.velocityOut[b]).squaredNorm() / J;
                 const Eigen::Vector3d travel = src.heading[s] * (src.root[e] - src.root[s]);
                 cost += kTravelWeight * (travel - travelKey).squaredNorm();
                 const double turn = wrap180(wrap180(src.yaw[e] - src.yaw[s]) - turnKey);
@@ -195,7 +203,8 @@ std::vector<Pose> warpedStretch(const Skeleton& sk, const std::vector<Pose>& sou
         const double wr = static_cast<double>(i) / L;
         Pose& p = out[static_cast<std::size_t>(i)];
         p.rootCm += (1.0 - wr) * da.rootCm + wr * db.rootCm;
-        for (std::size_t j = 0; j < p.anglesDeg.size(); ++j) p.anglesDeg[j] += (1.0 - w) * da.anglesDeg[j] + w * db.anglesDeg[j];
+        for (std::size_t j = 0; j < p.anglesDeg.size(); ++j)
+            p.anglesDeg[j] += (1.0 - w) * da.anglesDeg[j] + w * db.anglesDeg[j];
     }
     out.front() = ka;
     out.back() = kb;
@@ -225,8 +234,8 @@ std::vector<int> nearestRows(const gp::GpModel& m, int c) {
 // and eases (smoothstep) to that middle place by its end, so a foot the stretch plants elsewhere
 // than the key does neither jumps at the key nor strands the leg; one ending on the last inner
 // frame eases into key b's place likewise; one doing both moves linearly from key a's to key b's.
-std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& filled, int a, int b, const ContactSet& source,
-                                 const Stretch& stretch) {
+std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& filled, int a, int b,
+                                 const ContactSet& source, const Stretch& stretch) {
     std::vector<SpanTarget> targets;
     const int L = b - a;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
@@ -243,9 +252,12 @@ std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& fi
                 // Along the run, 0 on the frame after its first and 1 on the frame after its last.
                 const double along = smoothstep(static_cast<double>(k - i + 1) / (j - i + 2));
                 Eigen::Vector3d p = mid;
-                if (fromA && toB) p = pa + (pb - pa) * (static_cast<double>(k) / L);
-                else if (fromA) p = pa + (mid - pa) * along;
-                else if (toB) p = mid + (pb - mid) * along;
+                if (fromA && toB)
+                    p = pa + (pb - pa) * (static_cast<double>(k) / L);
+                else if (fromA)
+                    p = pa + (mid - pa) * along;
+                else if (toB)
+                    p = mid + (pb - mid) * along;
                 targets.push_back({a + k, foot, p, SpanTarget::Kind::kContact});
             }
             i = j;
@@ -301,8 +313,8 @@ std::string InbetweenJob::validate() const {
         while (fits(most + 1)) ++most;
         for (const InbetweenGap& g : gaps)
             if (!fits(g.b - g.a))
-                return "expected gaps the model's clips can fill (keys at most " + std::to_string(most) + " frames apart), found " +
-                       std::to_string(g.a + 1) + ":" + std::to_string(g.b + 1);
+                return "expected gaps the model's clips can fill (keys at most " + std::to_string(most) +
+                       " frames apart), found " + std::to_string(g.a + 1) + ":" + std::to_string(g.b + 1);
     }
     return "";
 }
@@ -344,22 +356,25 @@ void InbetweenJob::run() {
         GapReport& r = reports[g];
         r.gap = gaps[g];
         if (method == InbetweenMethod::kHold) {
-            for (int t = a + 1; t < b; ++t) frames[static_cast<std::size_t>(t)] = clip.frames[static_cast<std::size_t>(a)];
+            for (int t = a + 1; t < b; ++t)
+                frames[static_cast<std::size_t>(t)] = clip.frames[static_cast<std::size_t>(a)];
         } else if (method == InbetweenMethod::kInterpolate) {
             for (int t = a + 1; t < b; ++t)
-                frames[static_cast<std::size_t>(t)] = interpolatedPose(sk, clip.frames[static_cast<std::size_t>(a)],
-                                                                       clip.frames[static_cast<std::size_t>(b)],
-                                                                       static_cast<double>(t - a) / L);
+                frames[static_cast<std::size_t>(t)] =
+                    interpolatedPose(sk, clip.frames[static_cast<std::size_t>(a)],
+                                     clip.frames[static_cast<std::size_t>(b)], static_cast<double>(t - a) / L);
         } else {
             const Stretch& st = stretches[g] = bestStretch(sources, capture, target, a, b, clip.frameCount());
-            if (st.clip < 0) throw std::invalid_argument("expected training clips long enough for a " + std::to_string(L) +
-                                                         "-frame gap, found none");
-            const std::vector<Pose> warped = warpedStretch(sk, m.clipAt(st.clip).frames, st.first, st.last,
-                                                           clip.frames[static_cast<std::size_t>(a)],
-                                                           clip.frames[static_cast<std::size_t>(b)], L);
+            if (st.clip < 0)
+                throw std::invalid_argument("expected training clips long enough for a " + std::to_string(L) +
+                                            "-frame gap, found none");
+            const std::vector<Pose> warped =
+                warpedStretch(sk, m.clipAt(st.clip).frames, st.first, st.last, clip.frames[static_cast<std::size_t>(a)],
+                              clip.frames[static_cast<std::size_t>(b)], L);
             for (int i = 1; i < L; ++i) {
                 frames[static_cast<std::size_t>(a + i)] = warped[static_cast<std::size_t>(i)];
-                x[static_cast<std::size_t>(a + i)] = m.X.row(rowOf[st.clip][static_cast<std::size_t>(st.sourceFrame(i, L))]).transpose();
+                x[static_cast<std::size_t>(a + i)] =
+                    m.X.row(rowOf[st.clip][static_cast<std::size_t>(st.sourceFrame(i, L))]).transpose();
             }
             r.sourceClip = m.clipName(st.clip);
             r.sourceFirst = st.first;
@@ -382,14 +397,16 @@ void InbetweenJob::run() {
             const int a = gaps[g].a, b = gaps[g].b;
             GapReport& r = reports[g];
             SpanSolver solver(version, a, b, spanWeights, &base);
-            std::vector<SpanTarget> held = heldFeet(sk, frames, a, b, sourceContacts[static_cast<std::size_t>(stretches[g].clip)], stretches[g]);
+            std::vector<SpanTarget> held =
+                heldFeet(sk, frames, a, b, sourceContacts[static_cast<std::size_t>(stretches[g].clip)], stretches[g]);
             r.heldFootFrames = static_cast<int>(held.size());
             solver.setTargets(std::move(held));
             const SpanResult res = solver.solve(maxIterations, spanTolerance, cancel);
             if (res.stop == SpanStop::kCancelled) return giveUp();
             for (int i = 0; i + 1 < b - a; ++i) {
                 const std::size_t t = static_cast<std::size_t>(a + 1 + i);
-                frames[t] = base.frames[t] = res.poses[static_cast<std::size_t>(i)];  // a next gap joins the solved frames
+                frames[t] = base.frames[t] =
+                    res.poses[static_cast<std::size_t>(i)];  // a next gap joins the solved frames
                 x[t] = base.x[t] = res.x[static_cast<std::size_t>(i)];
             }
             for (double e : res.targetResidualCm) r.maxHeldResidualCm = std::max(r.maxHeldResidualCm, e);
@@ -403,8 +420,9 @@ void InbetweenJob::run() {
         const int a = gaps[g].a, b = gaps[g].b;
         r.smoothness = secondDifferences(frames, sk, a, b);
         r.reference = secondDifferences(clip.frames, sk, a, b);
-        r.keyErrorCm = std::max(keyErrorCm(sk, frames[static_cast<std::size_t>(a)], clip.frames[static_cast<std::size_t>(a)]),
-                                keyErrorCm(sk, frames[static_cast<std::size_t>(b)], clip.frames[static_cast<std::size_t>(b)]));
+        r.keyErrorCm =
+            std::max(keyErrorCm(sk, frames[static_cast<std::size_t>(a)], clip.frames[static_cast<std::size_t>(a)]),
+                     keyErrorCm(sk, frames[static_cast<std::size_t>(b)], clip.frames[static_cast<std::size_t>(b)]));
         if (!retrieves) continue;
         double sum = 0.0;
         Eigen::VectorXd mean;

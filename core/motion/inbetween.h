@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "motion/motion_quality.h"
 #include "gp/model_version.h"
+#include "motion/motion_quality.h"
 #include "motion/span_solver.h"
 #include "skeleton/clip.h"
 
@@ -53,19 +53,19 @@ SpanWeights heldFeetWeights();
 struct InbetweenJob {
     // Inputs.
     gp::ModelVersionPtr version;
-    Clip clip;                     // the clip whose gaps are filled (the model's skeleton)
+    Clip clip;  // the clip whose gaps are filled (the model's skeleton)
     std::vector<InbetweenGap> gaps;
     InbetweenMethod method = InbetweenMethod::kPrior;
     // The model's clip that `clip` is a take of (its frames overlapping a gap are never read), −1
     // for none; unset: gp::findCapture of `clip` (which an edited copy no longer matches).
     std::optional<int> sameCapture;
     SpanWeights spanWeights = heldFeetWeights();  // kPrior
-    int maxIterations = 100;       // kPrior: LM iterations per gap
+    int maxIterations = 100;                      // kPrior: LM iterations per gap
     double spanTolerance = 1e-6;
     const std::atomic<bool>* cancel = nullptr;  // optional; run() then sets `cancelled`
 
     // Outputs.
-    std::vector<Pose> frames;      // the whole clip, gaps filled
+    std::vector<Pose> frames;  // the whole clip, gaps filled
     // Per clip frame: the latent point of each generated frame (kRetrieve, kPrior), else empty.
     std::vector<Eigen::VectorXd> x;
     struct GapReport {
@@ -76,11 +76,11 @@ struct InbetweenJob {
         std::string sourceClip;
         int sourceFirst = -1, sourceLast = -1;
         double timeScale = 1.0, matchCost = 0.0;
-        SecondDifferenceStats smoothness;  // of the result, centres a..b (both joins count)
-        SecondDifferenceStats reference;   // the same of the clip's own frames (where it has them)
-        double keyErrorCm = 0.0;           // largest joint distance at the two keys from the clip's
-        double maxHeldResidualCm = 0.0;    // kPrior: worst held-foot target residual
-        int heldFootFrames = 0;            // kPrior: foot-frames held
+        SecondDifferenceStats smoothness;              // of the result, centres a..b (both joins count)
+        SecondDifferenceStats reference;               // the same of the clip's own frames (where it has them)
+        double keyErrorCm = 0.0;                       // largest joint distance at the two keys from the clip's
+        double maxHeldResidualCm = 0.0;                // kPrior: worst held-foot target residual
+        int heldFootFrames = 0;                        // kPrior: foot-frames held
         double meanVariance = 0.0, maxVariance = 0.0;  // σ²(x) along the path (kRetrieve, kPrior)
         SpanStop stop = SpanStop::kConverged;
         int iterations = 0;

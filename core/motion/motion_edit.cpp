@@ -16,7 +16,8 @@ std::string MotionEditJob::validate() const {
     const int n = version->model->clip.frameCount();
     if (keyFrames.size() < 2) return "expected at least 2 key frames, found " + std::to_string(keyFrames.size());
     if (keyOffsetsCm.size() != keyFrames.size())
-        return "expected one offset per key (" + std::to_string(keyFrames.size()) + "), found " + std::to_string(keyOffsetsCm.size());
+        return "expected one offset per key (" + std::to_string(keyFrames.size()) + "), found " +
+               std::to_string(keyOffsetsCm.size());
     for (std::size_t i = 0; i < keyFrames.size(); ++i) {
         if (keyFrames[i] < 0 || keyFrames[i] >= n)
             return "expected key frames in 1.." + std::to_string(n) + ", found " + std::to_string(keyFrames[i] + 1);
@@ -31,7 +32,9 @@ std::string MotionEditJob::validate() const {
     for (const ContactInterval& c : heldPlaced) {
         if (!version->model->clip.skeleton.hasEffector(c.foot))
             return std::string("expected held effectors of this skeleton, found ") + effectorName(c.foot);
-        if (c.first > c.last) return "expected held intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." + std::to_string(c.last + 1);
+        if (c.first > c.last)
+            return "expected held intervals first ≤ last, found " + std::to_string(c.first + 1) + ".." +
+                   std::to_string(c.last + 1);
     }
     if (!(lambda > 0.0 && lambda < 1.0)) return "expected 0 < λ < 1, found " + std::to_string(lambda);
     if (base)
@@ -44,12 +47,13 @@ std::string MotionEditJob::validate() const {
             return "expected the held frame inside the span (" + std::to_string(keyFrames.front() + 2) + ".." +
                    std::to_string(keyFrames.back()) + "), found " + std::to_string(heldPose->frame + 1);
         if (static_cast<int>(heldPose->pose.anglesDeg.size()) != version->model->clip.skeleton.jointCount())
-            return "expected a held pose of the model's skeleton, found one with " + std::to_string(heldPose->pose.anglesDeg.size()) +
-                   " joints";
+            return "expected a held pose of the model's skeleton, found one with " +
+                   std::to_string(heldPose->pose.anglesDeg.size()) + " joints";
         if (heldPose->x.size() != 0 && heldPose->x.size() != version->model->latentDim())
             return "expected a " + std::to_string(version->model->latentDim()) + "-D held latent point, found " +
                    std::to_string(heldPose->x.size());
-        if (!heldPose->x.allFinite() || !allFinite(heldPose->pose)) return "expected a finite held pose, found NaN or Inf";
+        if (!heldPose->x.allFinite() || !allFinite(heldPose->pose))
+            return "expected a finite held pose, found NaN or Inf";
     }
     return "";
 }
@@ -64,18 +68,19 @@ std::vector<Eigen::Vector3d> editTargetPath(const std::vector<Eigen::Vector3d>& 
                                             const std::vector<int>& keyFrames,
                                             const std::vector<Eigen::Vector3d>& keyOffsetsCm, PathMode mode) {
     const int first = keyFrames.front(), last = keyFrames.back();
-    const bool unmoved = std::all_of(keyOffsetsCm.begin(), keyOffsetsCm.end(),
-                                     [](const Eigen::Vector3d& o) { return o.isZero(0.0); });
+    const bool unmoved =
+        std::all_of(keyOffsetsCm.begin(), keyOffsetsCm.end(), [](const Eigen::Vector3d& o) { return o.isZero(0.0); });
     if (unmoved) return {captured.begin() + first, captured.begin() + last + 1};  // no edit: the captured path
     std::vector<HermiteKey> keys;
     for (std::size_t i = 0; i < keyFrames.size(); ++i) {
-        const Eigen::Vector3d p = mode == PathMode::kDirect ? Eigen::Vector3d(captured[keyFrames[i]] + keyOffsetsCm[i])
-                                                            : keyOffsetsCm[i];
+        const Eigen::Vector3d p =
+            mode == PathMode::kDirect ? Eigen::Vector3d(captured[keyFrames[i]] + keyOffsetsCm[i]) : keyOffsetsCm[i];
         keys.push_back({double(keyFrames[i]), p});
     }
-    const HermitePath path = mode == PathMode::kDirect
-                                 ? HermitePath(keys, capturedVelocity(captured, first), capturedVelocity(captured, last))
-                                 : HermitePath(keys, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    const HermitePath path =
+        mode == PathMode::kDirect
+            ? HermitePath(keys, capturedVelocity(captured, first), capturedVelocity(captured, last))
+            : HermitePath(keys, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
     std::vector<Eigen::Vector3d> out;
     for (int t = first; t <= last; ++t) {
         const Eigen::Vector3d c = path.position(t);
@@ -116,7 +121,8 @@ void MotionEditJob::run() {
     held.clear();
     if (holdContacts) {
         for (const FootContact& c : contactSet.contacts)
-            if (c.enabled && c.foot != effector && c.last > first && c.first < last) held.push_back({c.foot, c.first, c.last});
+            if (c.enabled && c.foot != effector && c.last > first && c.first < last)
+                held.push_back({c.foot, c.first, c.last});
     }
     const std::size_t contactsHeld = held.size();
     for (const ContactInterval& c : heldPlaced)
@@ -140,7 +146,8 @@ void MotionEditJob::run() {
             std::sort(hold.begin(), hold.end());
             hold.erase(std::unique(hold.begin(), hold.end()), hold.end());
             if (hold.empty()) continue;
-            forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t], fk);
+            forwardKinematics(clip.skeleton, holdElsewhere ? base->holdFrames[static_cast<std::size_t>(t)] : start[t],
+                              fk);
             for (Effector e : hold) holds[i].push_back({e, effectorCm(clip.skeleton, fk, e), true});
             if (base && !base->placedFrames.empty()) {
                 forwardKinematics(clip.skeleton, base->placedFrames[static_cast<std::size_t>(t)], fk);
@@ -211,7 +218,8 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
     for (const Effector e : effectors) {
         std::vector<char> heldHere(static_cast<std::size_t>(count)), key(static_cast<std::size_t>(count));
         for (int i = 0; i < count; ++i) {
-            heldHere[i] = std::any_of(holds[i].begin(), holds[i].end(), [&](const IkConstraint& c) { return c.effector == e; });
+            heldHere[i] =
+                std::any_of(holds[i].begin(), holds[i].end(), [&](const IkConstraint& c) { return c.effector == e; });
             key[i] = std::find(keyFrames.begin(), keyFrames.end(), solvedFrames[i]) != keyFrames.end();
         }
         // Each run of frames between two anchors: a frame that holds `e` at its old place, or a key
@@ -232,7 +240,8 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
             const int leftLength = rightHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
             const int rightLength = leftHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
             for (int i = lo; (leftHeld || rightHeld) && i <= hi; ++i) {
-                const double w = (leftHeld ? ramp(i - lo + 1, leftLength) : 1.0) * (rightHeld ? ramp(hi - i + 1, rightLength) : 1.0);
+                const double w =
+                    (leftHeld ? ramp(i - lo + 1, leftLength) : 1.0) * (rightHeld ? ramp(hi - i + 1, rightLength) : 1.0);
                 if (w >= 1.0) continue;  // past the blend: the effector follows the layered motion freely
                 const auto t = static_cast<std::size_t>(solvedFrames[i]);
                 forwardKinematics(clip.skeleton, base->holdFrames[t], fk);
@@ -310,7 +319,8 @@ void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& ho
             if (cancel && cancel->load()) return;
             const int t = solvedFrames[i];
             req.start = start[t];
-            req.startX = base && !base->x.empty() && base->x[t].size() > 0 ? base->x[t] : latentStartForFrame(*version, t);
+            req.startX =
+                base && !base->x.empty() && base->x[t].size() > 0 ? base->x[t] : latentStartForFrame(*version, t);
             req.constraints = {{effector, pathCm[i], false}};
             req.constraints.insert(req.constraints.end(), holds[i].begin(), holds[i].end());
             solver.solve(req, results[i]);

@@ -26,10 +26,10 @@
 #include <optional>
 #include <vector>
 
-#include "motion/motion_quality.h"
 #include "ik/learned_ik.h"
 #include "motion/foot_contacts.h"
 #include "motion/hermite_path.h"
+#include "motion/motion_quality.h"
 #include "motion/span_solver.h"
 
 namespace mgp {
@@ -48,9 +48,9 @@ struct MotionEditJob {
     // Inputs.
     gp::ModelVersionPtr version;
     Effector effector = Effector::kRFoot;
-    std::vector<int> keyFrames;                  // clip frame indices, strictly increasing
-    std::vector<Eigen::Vector3d> keyOffsetsCm;   // one per key
-    PathMode mode = PathMode::kDisplacement;  // no edit, no change; kDirect is the paper's
+    std::vector<int> keyFrames;                 // clip frame indices, strictly increasing
+    std::vector<Eigen::Vector3d> keyOffsetsCm;  // one per key
+    PathMode mode = PathMode::kDisplacement;    // no edit, no change; kDirect is the paper's
     EditSolver solver = EditSolver::kSpan;
     // Effectors held at their captured position on every inner frame (user pins, whole span).
     std::vector<Effector> pins;
@@ -81,19 +81,19 @@ struct MotionEditJob {
     // the span all come from it. Null: the model's captured clip.
     std::shared_ptr<const EditBase> base;
     double lambda = 0.999;
-    SpanWeights spanWeights;                     // kSpan only (lambda above overrides its λ)
+    SpanWeights spanWeights;  // kSpan only (lambda above overrides its λ)
     SpanMethod spanMethod = SpanMethod::kLevenbergMarquardt;
-    double spanTolerance = 1e-6;                 // stop when a step lowers F by less (relative)
-    int maxIterations = 500;                     // per frame (kPerFrame) or in all (kSpan)
-    int threads = 0;                             // ≤ 0: hardware concurrency
-    std::atomic<int>* framesDone = nullptr;      // optional: counts solved frames (progress bars)
-    const std::atomic<bool>* cancel = nullptr;   // optional: stop early; run() then sets `cancelled`
+    double spanTolerance = 1e-6;                // stop when a step lowers F by less (relative)
+    int maxIterations = 500;                    // per frame (kPerFrame) or in all (kSpan)
+    int threads = 0;                            // ≤ 0: hardware concurrency
+    std::atomic<int>* framesDone = nullptr;     // optional: counts solved frames (progress bars)
+    const std::atomic<bool>* cancel = nullptr;  // optional: stop early; run() then sets `cancelled`
 
     // Outputs.
-    std::vector<Pose> frames;                    // the whole edited motion (every clip frame)
-    std::vector<int> solvedFrames;               // frames that were re-solved
-    std::vector<LearnedIkResult> results;        // one per solved frame
-    std::vector<Eigen::Vector3d> pathCm;         // the target path at each solved frame
+    std::vector<Pose> frames;              // the whole edited motion (every clip frame)
+    std::vector<int> solvedFrames;         // frames that were re-solved
+    std::vector<LearnedIkResult> results;  // one per solved frame
+    std::vector<Eigen::Vector3d> pathCm;   // the target path at each solved frame
     // Each inner key (not the two end keys, which keep their frames): where the effector ended
     // against the path there, met within kReachedToleranceCm or not.
     struct KeyResult {
@@ -103,14 +103,14 @@ struct MotionEditJob {
     };
     std::vector<KeyResult> keys;
     bool keysReached() const;
-    double maxResidualCm = 0.0;                  // worst path target residual
-    double maxHeldResidualCm = 0.0;              // worst contact / pin / placement / guided-end residual
-    SpanStop spanStop = SpanStop::kInvalid;      // kSpan only
-    int spanIterations = 0;                      // kSpan only (−1: unknown, line search ended it)
-    SpanQuality quality;                         // the span's report (motion_quality.h)
-    std::vector<ContactInterval> held;           // the contact intervals that were held, then the placed ones
-    int placedRunsHeld = 0;                      // how many of `held` are placements (heldPlaced), at its end
-    bool cancelled = false;                      // `frames` is then the unedited clip
+    double maxResidualCm = 0.0;              // worst path target residual
+    double maxHeldResidualCm = 0.0;          // worst contact / pin / placement / guided-end residual
+    SpanStop spanStop = SpanStop::kInvalid;  // kSpan only
+    int spanIterations = 0;                  // kSpan only (−1: unknown, line search ended it)
+    SpanQuality quality;                     // the span's report (motion_quality.h)
+    std::vector<ContactInterval> held;       // the contact intervals that were held, then the placed ones
+    int placedRunsHeld = 0;                  // how many of `held` are placements (heldPlaced), at its end
+    bool cancelled = false;                  // `frames` is then the unedited clip
 
     std::string validate() const;  // "" or "expected …, found …"
     void run();                    // throws std::invalid_argument if validate() fails

@@ -17,12 +17,14 @@ double percentile(std::vector<double> values, double q) {
     return values[std::min(i, values.size() - 1)];
 }
 
-SecondDifferenceStats secondDifferences(const std::vector<Pose>& frames, const Skeleton& skeleton, int first, int last) {
+SecondDifferenceStats secondDifferences(const std::vector<Pose>& frames, const Skeleton& skeleton, int first,
+                                        int last) {
     const PoseLayout layout(skeleton);
     SecondDifferenceStats s;
     const int n = static_cast<int>(frames.size());
     for (int c = std::max(first, 1); c <= std::min(last, n - 2); ++c) {
-        const Eigen::VectorXd a = layout.extract(frames[c - 1]), b = layout.extract(frames[c]), d = layout.extract(frames[c + 1]);
+        const Eigen::VectorXd a = layout.extract(frames[c - 1]), b = layout.extract(frames[c]),
+                              d = layout.extract(frames[c + 1]);
         double worst = 0.0;
         for (int k = 0; k < layout.size(); ++k) {
             if (layout.joint(k) < 0) continue;
@@ -52,7 +54,8 @@ double horizontalTravelCm(const std::vector<Eigen::Vector3d>& p, int first, int 
     last = std::min(last, static_cast<int>(p.size()) - 1);
     double worst = 0.0;
     for (int i = first; i <= last; ++i)
-        for (int j = i + 1; j <= last; ++j) worst = std::max(worst, std::hypot(p[i].x() - p[j].x(), p[i].z() - p[j].z()));
+        for (int j = i + 1; j <= last; ++j)
+            worst = std::max(worst, std::hypot(p[i].x() - p[j].x(), p[i].z() - p[j].z()));
     return worst;
 }
 
@@ -77,7 +80,8 @@ SpanQuality measureSpan(const Clip& captured, const std::vector<Pose>& edited, i
         forwardKinematics(sk, edited[t], fk);
         const double err = (effectorCm(sk, fk, effector) - pathCm[i]).norm();
         q.worstPathErrorCm = std::max(q.worstPathErrorCm, err);
-        if (std::find(keyFrames.begin(), keyFrames.end(), t) != keyFrames.end()) q.worstKeyErrorCm = std::max(q.worstKeyErrorCm, err);
+        if (std::find(keyFrames.begin(), keyFrames.end(), t) != keyFrames.end())
+            q.worstKeyErrorCm = std::max(q.worstKeyErrorCm, err);
     }
     for (const ContactInterval& c : contacts) {
         std::vector<Eigen::Vector3d> e, k;
@@ -86,7 +90,8 @@ SpanQuality measureSpan(const Clip& captured, const std::vector<Pose>& edited, i
             e.push_back(inside ? effectorCm(sk, edited[t], c.foot) : Eigen::Vector3d::Zero());
             k.push_back(inside ? effectorCm(sk, captured.frames[t], c.foot) : Eigen::Vector3d::Zero());
         }
-        q.contacts.push_back({c.foot, c.first, c.last, horizontalTravelCm(e, c.first, c.last), horizontalTravelCm(k, c.first, c.last)});
+        q.contacts.push_back(
+            {c.foot, c.first, c.last, horizontalTravelCm(e, c.first, c.last), horizontalTravelCm(k, c.first, c.last)});
     }
     return q;
 }

@@ -19,7 +19,7 @@ namespace mgp {
 struct SecondDifferenceStats {
     double p95Deg = 0.0;
     double maxDeg = 0.0;
-    int maxFrame = -1;  // centre frame of the largest one
+    int maxFrame = -1;                // centre frame of the largest one
     std::vector<double> perFrameDeg;  // one per counted centre frame
 };
 
@@ -43,11 +43,11 @@ struct ContactTravel {
 double horizontalTravelCm(const std::vector<Eigen::Vector3d>& trajectoryCm, int first, int last);
 
 struct SpanQuality {
-    int first = 0, last = 0;              // the span's captured end frames
+    int first = 0, last = 0;  // the span's captured end frames
     SecondDifferenceStats edited, captured;
-    double worstKeyErrorCm = 0.0;         // over the keys strictly inside the span
-    double worstPathErrorCm = 0.0;        // over every inner frame's path target
-    double worstPoseChangeDeg = 0.0;      // largest per-frame change from the capture
+    double worstKeyErrorCm = 0.0;     // over the keys strictly inside the span
+    double worstPathErrorCm = 0.0;    // over every inner frame's path target
+    double worstPoseChangeDeg = 0.0;  // largest per-frame change from the capture
     int worstPoseChangeFrame = -1;
     std::vector<ContactTravel> contacts;  // held feet overlapping the span
 };

@@ -33,7 +33,8 @@ void addPoseLayer(std::vector<Pose>& frames, int t0, int radius, const Pose& fro
         const double w = poseLayerWeight(t, t0, radius);
         Pose& p = frames[static_cast<std::size_t>(t)];
         p.rootCm += w * rootDelta;
-        for (std::size_t j = 0; j < angleDelta.size() && j < p.anglesDeg.size(); ++j) p.anglesDeg[j] += w * angleDelta[j];
+        for (std::size_t j = 0; j < angleDelta.size() && j < p.anglesDeg.size(); ++j)
+            p.anglesDeg[j] += w * angleDelta[j];
     }
 }
 

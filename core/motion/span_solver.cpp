@@ -1,15 +1,15 @@
 #include "motion/span_solver.h"
 
-#include <Eigen/Eigenvalues>
 #include <LBFGS.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "ik/learned_ik.h"
 #include "ik/ik_types.h"
+#include "ik/learned_ik.h"
 #include "ik/locality.h"
 
 namespace mgp {
@@ -33,7 +33,8 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
     if (first < 0 || last >= frames_ || first + 1 >= last)
         throw std::invalid_argument("expected a span first < last − 1 inside the clip's " + std::to_string(frames_) +
                                     " frames, found " + std::to_string(first + 1) + ".." + std::to_string(last + 1));
-    if (!(w_.lambda > 0.0 && w_.lambda < 1.0)) throw std::invalid_argument("expected 0 < λ < 1, found " + std::to_string(w_.lambda));
+    if (!(w_.lambda > 0.0 && w_.lambda < 1.0))
+        throw std::invalid_argument("expected 0 < λ < 1, found " + std::to_string(w_.lambda));
     if (!(w_.locality >= 0.0) || !std::isfinite(w_.locality))
         throw std::invalid_argument("expected a locality ≥ 0, found " + std::to_string(w_.locality));
     n_ = last - first - 1;
@@ -97,7 +98,8 @@ SpanSolver::SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWei
 std::string validateEditBase(const gp::GpModel& model, const EditBase& base) {
     const int n = model.clip.frameCount();
     if (static_cast<int>(base.frames.size()) != n)
-        return "expected a base motion of " + std::to_string(n) + " frames, found " + std::to_string(base.frames.size());
+        return "expected a base motion of " + std::to_string(n) + " frames, found " +
+               std::to_string(base.frames.size());
     if (!base.x.empty() && base.x.size() != base.frames.size())
         return "expected a base latent point per frame, found " + std::to_string(base.x.size());
     for (const Pose& p : base.frames)
@@ -123,10 +125,11 @@ std::string SpanSolver::validate(const std::vector<SpanTarget>& targets) const {
     const Skeleton& sk = version_->model->clip.skeleton;
     for (const SpanTarget& t : targets) {
         if (t.frame <= first_ || t.frame >= last_)
-            return "expected target frames in " + std::to_string(first_ + 2) + ".." + std::to_string(last_) + ", found " +
-                   std::to_string(t.frame + 1);
+            return "expected target frames in " + std::to_string(first_ + 2) + ".." + std::to_string(last_) +
+                   ", found " + std::to_string(t.frame + 1);
         if (!t.targetCm.allFinite()) return "expected finite targets, found NaN or Inf";
-        if (!sk.hasEffector(t.effector)) return std::string("expected an effector of this skeleton, found ") + effectorName(t.effector);
+        if (!sk.hasEffector(t.effector))
+            return std::string("expected an effector of this skeleton, found ") + effectorName(t.effector);
     }
     return "";
 }
@@ -135,7 +138,8 @@ void SpanSolver::setTargets(std::vector<SpanTarget> targets) {
     if (const std::string p = validate(targets); !p.empty()) throw std::invalid_argument(p);
     targets_ = std::move(targets);
     targetsOf_.assign(n_, {});
-    for (std::size_t k = 0; k < targets_.size(); ++k) targetsOf_[targets_[k].frame - first_ - 1].push_back(static_cast<int>(k));
+    for (std::size_t k = 0; k < targets_.size(); ++k)
+        targetsOf_[targets_[k].frame - first_ - 1].push_back(static_cast<int>(k));
     targetJac_.assign(targets_.size(), Eigen::MatrixXd::Zero(3, D_));
     std::vector<Effector> edited;
     for (const SpanTarget& t : targets_)
@@ -155,8 +159,10 @@ std::string SpanSolver::holdFrame(int frame, const Pose& pose, const Eigen::Vect
         return "expected a held frame in " + std::to_string(first_ + 2) + ".." + std::to_string(last_) + ", found " +
                std::to_string(frame + 1);
     if (static_cast<int>(pose.anglesDeg.size()) != m.clip.skeleton.jointCount())
-        return "expected a held pose of the model's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) + " joints";
-    if (x.size() != d_) return "expected a " + std::to_string(d_) + "-D held latent point, found " + std::to_string(x.size());
+        return "expected a held pose of the model's skeleton, found one with " + std::to_string(pose.anglesDeg.size()) +
+               " joints";
+    if (x.size() != d_)
+        return "expected a " + std::to_string(d_) + "-D held latent point, found " + std::to_string(x.size());
     if (!x.allFinite() || !allFinite(pose)) return "expected a finite held pose, found NaN or Inf";
     heldInner_ = frame - first_ - 1;
     heldPose_ = pose;
@@ -226,12 +232,16 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
     // Second differences of u and v, centres first..last (those with both neighbours in the clip).
     const int frames = frames_;
     auto uAt = [&](int t, Eigen::VectorXd& out) {  // u at frame t (0 outside the span)
-        if (t > first_ && t < last_) out = z.segment((t - first_ - 1) * b + d_, D_) - yCap_[t - first_ + 1];
-        else out.setZero(D_);
+        if (t > first_ && t < last_)
+            out = z.segment((t - first_ - 1) * b + d_, D_) - yCap_[t - first_ + 1];
+        else
+            out.setZero(D_);
     };
     auto vAt = [&](int t, Eigen::VectorXd& out) {
-        if (t > first_ && t < last_) out = z.segment((t - first_ - 1) * b, d_) - xCap_[t - first_ + 1];
-        else out.setZero(d_);
+        if (t > first_ && t < last_)
+            out = z.segment((t - first_ - 1) * b, d_) - xCap_[t - first_ + 1];
+        else
+            out.setZero(d_);
     };
     Eigen::VectorXd a, bb, cc, acc;
     // w‖q(s−1) − 2q(s) + q(s+1)‖² for one block of variables (q = u or v, at `offset` in a frame's
@@ -287,7 +297,8 @@ void SpanSolver::computeScaling() {
             }
         }
         for (int k = 0; k < D_; ++k) {
-            double h = kappa_ * m.w[k] * m.w[k] / s2 + 2.0 * gradFull_[m.keptColumns[k]] + 2.0 * stay_[k] + 12.0 * w_.smoothPose;
+            double h = kappa_ * m.w[k] * m.w[k] / s2 + 2.0 * gradFull_[m.keptColumns[k]] + 2.0 * stay_[k] +
+                       12.0 * w_.smoothPose;
             if (m.keptColumns[k] < 3) h += 2.0 * w_.root;
             scale_[i * b + d_ + k] = 1.0 / std::sqrt(h);
         }
@@ -298,7 +309,8 @@ void SpanSolver::computeScaling() {
             version_->posterior->evaluate(xp, yt_, pointWs_, &g1, nullptr);
             xp[j] -= 2.0 * h;
             version_->posterior->evaluate(xp, yt_, pointWs_, &g2, nullptr);
-            const double curv = kappa_ * std::abs(g1[j] - g2[j]) / (2.0 * h) + 12.0 * w_.smoothLatent + 2.0 * w_.stayLatent;
+            const double curv =
+                kappa_ * std::abs(g1[j] - g2[j]) / (2.0 * h) + 12.0 * w_.smoothLatent + 2.0 * w_.stayLatent;
             scale_[i * b + j] = 1.0 / std::sqrt(std::max(curv, 1e-9));
         }
         (void)c;
@@ -381,7 +393,6 @@ SpanResult SpanSolver::finish(SpanResult r, const Eigen::VectorXd& best) {
     }
     return r;
 }
-
 
 void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
     const gp::GpModel& m = *version_->model;
@@ -486,7 +497,8 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
             step = chol.solve(g);
             // Trust region in joint space: no DOF turns more than kMaxStepDeg in one iteration.
             double largest = 0.0;
-            for (int i = 0; i < n_; ++i) largest = std::max(largest, step.segment(i * (d_ + D_) + d_, D_).cwiseAbs().maxCoeff());
+            for (int i = 0; i < n_; ++i)
+                largest = std::max(largest, step.segment(i * (d_ + D_) + d_, D_).cwiseAbs().maxCoeff());
             if (largest > kMaxStepDeg) step *= kMaxStepDeg / largest;
             // Backtrack along the step before damping more: far from the solution the FK's
             // rotations make the full Gauss–Newton step overshoot, yet its direction is good.
@@ -521,7 +533,8 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
     return finish(std::move(r), z);
 }
 
-SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel, SpanMethod method) {
+SpanResult SpanSolver::solve(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel,
+                             SpanMethod method) {
     return method == SpanMethod::kLbfgs ? solveLbfgs(maxIterations, relativeTolerance, cancel)
                                         : solveLm(maxIterations, relativeTolerance, cancel);
 }

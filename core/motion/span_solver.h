@@ -82,15 +82,15 @@ struct EditBase {
 std::string validateEditBase(const gp::GpModel& model, const EditBase& base);
 
 struct SpanWeights {
-    double lambda = 0.999;       // κ = (1 − λ)/λ on L_IK
-    double target = 100.0;        // weight of every target, per cm² (scales the targets' term)
-    double smoothPose = 0.1;     // s_y, per deg² of second difference of u
-    double smoothLatent = 10.0;  // s_x, per (latent unit)² of second difference of v
-    double root = 0.1;           // ρ_root, per deg² of root orientation change
-    double stay = 1e-4;          // ρ, per deg² of any change
+    double lambda = 0.999;                   // κ = (1 − λ)/λ on L_IK
+    double target = 100.0;                   // weight of every target, per cm² (scales the targets' term)
+    double smoothPose = 0.1;                 // s_y, per deg² of second difference of u
+    double smoothLatent = 10.0;              // s_x, per (latent unit)² of second difference of v
+    double root = 0.1;                       // ρ_root, per deg² of root orientation change
+    double stay = 1e-4;                      // ρ, per deg² of any change
     double locality = kDefaultSpanLocality;  // ℓ per deg² of change, weighted by w_k and ½κ (see above)
-    double stayLatent = 10.0;    // ρ_x, per (latent unit)² of change of x
-    bool keepResidual = true;    // prior on y − r_t (see above); false: the paper's L_IK(x, y)
+    double stayLatent = 10.0;                // ρ_x, per (latent unit)² of change of x
+    bool keepResidual = true;                // prior on y − r_t (see above); false: the paper's L_IK(x, y)
 };
 
 enum class SpanMethod { kLevenbergMarquardt, kLbfgs };
@@ -99,10 +99,10 @@ enum class SpanStop { kConverged, kIterationCap, kLineSearch, kCancelled, kInval
 const char* spanStopName(SpanStop s);
 
 struct SpanResult {
-    std::vector<Pose> poses;          // one per inner frame, first+1..last−1
-    std::vector<Eigen::VectorXd> x;   // latent points
-    std::vector<Eigen::VectorXd> y;   // kept pose columns
-    std::vector<double> lik;          // L_IK(x_t, y_t − r_t)
+    std::vector<Pose> poses;               // one per inner frame, first+1..last−1
+    std::vector<Eigen::VectorXd> x;        // latent points
+    std::vector<Eigen::VectorXd> y;        // kept pose columns
+    std::vector<double> lik;               // L_IK(x_t, y_t − r_t)
     std::vector<double> targetResidualCm;  // one per SpanTarget, in request order
     double objective = 0.0;
     int iterations = 0;
@@ -119,7 +119,8 @@ public:
     // skeleton (MotionEditJob::validate checks it). Its root translations are kept. A base of
     // another frame count is another clip (in-betweening, motion/inbetween.h): it must carry a
     // latent point for every inner frame, else std::invalid_argument.
-    SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {}, const EditBase* base = nullptr);
+    SpanSolver(gp::ModelVersionPtr version, int first, int last, SpanWeights weights = {},
+               const EditBase* base = nullptr);
 
     int innerCount() const { return n_; }
     int variableCount() const { return n_ * (d_ + D_); }
@@ -153,18 +154,18 @@ private:
     SpanWeights w_;
     int first_, last_, n_, d_, D_;
     double kappa_;
-    std::vector<Eigen::VectorXd> xCap_;    // x̂ of frames first−1..last+1 (index t − first + 1)
-    std::vector<Eigen::VectorXd> yCap_;    // ŷ likewise
-    std::vector<Eigen::VectorXd> resid_;   // r_t of inner frames
-    std::vector<Pose> innerBase_;          // the base (or captured) pose of each inner frame
-    int frames_ = 0;                       // frames of the base motion (the clip's without one)
+    std::vector<Eigen::VectorXd> xCap_;        // x̂ of frames first−1..last+1 (index t − first + 1)
+    std::vector<Eigen::VectorXd> yCap_;        // ŷ likewise
+    std::vector<Eigen::VectorXd> resid_;       // r_t of inner frames
+    std::vector<Pose> innerBase_;              // the base (or captured) pose of each inner frame
+    int frames_ = 0;                           // frames of the base motion (the clip's without one)
     std::vector<std::vector<int>> targetsOf_;  // inner frame → indices into targets_
     std::vector<SpanTarget> targets_;
-    std::vector<int> rootKept_;            // kept-column indices of the root orientation
-    int heldInner_ = -1;                   // inner index of the held frame (holdFrame), or −1
+    std::vector<int> rootKept_;  // kept-column indices of the root orientation
+    int heldInner_ = -1;         // inner index of the held frame (holdFrame), or −1
     Pose heldPose_;
     Eigen::VectorXd z0_, scale_;
-    Eigen::VectorXd stay_;                 // ρ + ℓ w_k per kept column
+    Eigen::VectorXd stay_;  // ρ + ℓ w_k per kept column
     // Workspace.
     gp::PointWorkspace pointWs_;
     FkState fk_;

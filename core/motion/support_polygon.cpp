@@ -69,7 +69,8 @@ std::vector<Eigen::Vector2d> SupportPolygon::grownOutline(int samples) const {
     return convexHull(std::move(points));
 }
 
-std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkState& fk, const ContactSet& contacts, int frame) {
+std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkState& fk, const ContactSet& contacts,
+                                             int frame) {
     SupportPolygon out;
     std::vector<Eigen::Vector2d> points;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {

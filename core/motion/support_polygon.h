@@ -38,12 +38,13 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points);
 
 // The support polygon of clip frame `frame` for the pose whose FK is `fk` (the feet where this
 // pose puts them), or none when no foot is planted on that frame.
-std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkState& fk, const ContactSet& contacts, int frame);
+std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkState& fk, const ContactSet& contacts,
+                                             int frame);
 
 struct Balance {
-    bool judged = false;       // a planted foot on the frame and the captured pose balanced on it
-    double outsideCm = 0.0;    // the edited pose's centre of mass outside its support (cm)
-    bool offBalance = false;   // judged and outsideCm > kBalanceToleranceCm
+    bool judged = false;      // a planted foot on the frame and the captured pose balanced on it
+    double outsideCm = 0.0;   // the edited pose's centre of mass outside its support (cm)
+    bool offBalance = false;  // judged and outsideCm > kBalanceToleranceCm
 };
 
 // Judges `edited` on clip frame `frame`: only where the captured pose's centre of mass lies over its

@@ -12,16 +12,16 @@ namespace {
 // measured from the proximal joint, as the bones run. The ASF bones only approximate de Leva's
 // landmarks (the CMU lowerback / upperback / thorax do not end at the omphalion or xiphion).
 constexpr BodySegment kSegments[] = {
-    {"lfemur", 0.1416, 0.4095},   {"rfemur", 0.1416, 0.4095},    // thigh, from the hip
-    {"ltibia", 0.0433, 0.4459},   {"rtibia", 0.0433, 0.4459},    // shank, from the knee
-    {"lfoot", 0.0137, 0.4415},    {"rfoot", 0.0137, 0.4415},     // foot, from the ankle
-    {"lhumerus", 0.0271, 0.5772}, {"rhumerus", 0.0271, 0.5772},  // upper arm, from the shoulder
-    {"lradius", 0.0162, 0.4574},  {"rradius", 0.0162, 0.4574},   // forearm, from the elbow
-    {"lhand", 0.0061, 0.7900},    {"rhand", 0.0061, 0.7900},     // hand, from the wrist
-    {"head", 0.0694, 1.0 - 0.5002},                              // head and neck
-    {"lowerback", 0.1117, 1.0 - 0.6115},                         // lower trunk
-    {"upperback", 0.1633, 1.0 - 0.4502},                         // middle trunk
-    {"thorax", 0.1596, 1.0 - 0.5066},                            // upper trunk
+    {"lfemur", 0.1416, 0.4095},          {"rfemur", 0.1416, 0.4095},    // thigh, from the hip
+    {"ltibia", 0.0433, 0.4459},          {"rtibia", 0.0433, 0.4459},    // shank, from the knee
+    {"lfoot", 0.0137, 0.4415},           {"rfoot", 0.0137, 0.4415},     // foot, from the ankle
+    {"lhumerus", 0.0271, 0.5772},        {"rhumerus", 0.0271, 0.5772},  // upper arm, from the shoulder
+    {"lradius", 0.0162, 0.4574},         {"rradius", 0.0162, 0.4574},   // forearm, from the elbow
+    {"lhand", 0.0061, 0.7900},           {"rhand", 0.0061, 0.7900},     // hand, from the wrist
+    {"head", 0.0694, 1.0 - 0.5002},                                     // head and neck
+    {"lowerback", 0.1117, 1.0 - 0.6115},                                // lower trunk
+    {"upperback", 0.1633, 1.0 - 0.4502},                                // middle trunk
+    {"thorax", 0.1596, 1.0 - 0.5066},                                   // upper trunk
 };
 }  // namespace
 

@@ -17,7 +17,8 @@ const char* clipFormatName(ClipFormat f) {
 
 void appendFrames(Clip& into, const Clip& from, int first, int count) {
     if (first < 0 || count < 0 || first + count > from.frameCount())
-        throw std::invalid_argument("expected frames within 1.." + std::to_string(from.frameCount()) + " of " + from.name);
+        throw std::invalid_argument("expected frames within 1.." + std::to_string(from.frameCount()) + " of " +
+                                    from.name);
     if (into.frames.empty() && into.skeleton.joints.empty()) {
         std::vector<Pose> none;
         into = from;
@@ -34,8 +35,10 @@ void unwrapAngles(Eigen::MatrixXd& a) {
         for (Eigen::Index r = 1; r < a.rows(); ++r) {
             // Compare raw neighbours: the shift accumulates for this frame and every later one.
             const double step = a(r, c) + shift - a(r - 1, c);
-            if (step > 180.0) shift -= 360.0 * std::ceil((step - 180.0) / 360.0);
-            else if (step < -180.0) shift += 360.0 * std::ceil((-step - 180.0) / 360.0);
+            if (step > 180.0)
+                shift -= 360.0 * std::ceil((step - 180.0) / 360.0);
+            else if (step < -180.0)
+                shift += 360.0 * std::ceil((-step - 180.0) / 360.0);
             a(r, c) += shift;
         }
     }

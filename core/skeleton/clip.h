@@ -18,13 +18,13 @@ struct Clip {
     std::string sourcePath;    // the AMC/BVH file ("" for synthetic)
     std::string skeletonPath;  // the ASF file (AMC only)
     ClipFormat format = ClipFormat::kAmc;
-    std::string convention;    // "cmu-asf", "cgspeed-daz", "cgspeed-motionbuilder", ...
+    std::string convention;  // "cmu-asf", "cgspeed-daz", "cgspeed-motionbuilder", ...
     double fps = 120.0;
     double cmPerFileUnit = 1.0;  // how source lengths were scaled to cm
     Skeleton skeleton;
     std::vector<Pose> frames;
-    long long firstFrameLabel = 1;     // the file's own number of frame 0 (AMC), else 1
-    bool restFrame = false;            // frame 0 is a converter-added rest/T-pose (BVH)
+    long long firstFrameLabel = 1;            // the file's own number of frame 0 (AMC), else 1
+    bool restFrame = false;                   // frame 0 is a converter-added rest/T-pose (BVH)
     std::vector<std::string> unmappedJoints;  // source joints with no ASF bone role
 
     int frameCount() const { return static_cast<int>(frames.size()); }

@@ -23,7 +23,8 @@ bool sameCapture(const Clip& a, const Clip& b, std::string* difference) {
         return differs(difference, std::to_string(ja.size()) + " joints against " + std::to_string(jb.size()));
     for (std::size_t j = 0; j < ja.size(); ++j)
         if (ja[j].name != jb[j].name)
-            return differs(difference, "joint " + std::to_string(j + 1) + " is " + ja[j].name + " against " + jb[j].name);
+            return differs(difference,
+                           "joint " + std::to_string(j + 1) + " is " + ja[j].name + " against " + jb[j].name);
     if (a.frameCount() != b.frameCount())
         return differs(difference,
                        std::to_string(a.frameCount()) + " frames against " + std::to_string(b.frameCount()));
@@ -45,7 +46,8 @@ bool sameCapture(const Clip& a, const Clip& b, std::string* difference) {
         for (int d = 0; d < layout.size(); ++d) {
             const double gap = std::abs(wrap180(ya[d] - yb[d]));
             if (!(gap <= kTolerance)) {
-                std::snprintf(text, sizeof text, "frame %d, %s: %.3g° apart", f + 1, layout.dofName(a.skeleton, d).c_str(), gap);
+                std::snprintf(text, sizeof text, "frame %d, %s: %.3g° apart", f + 1,
+                              layout.dofName(a.skeleton, d).c_str(), gap);
                 return differs(difference, text);
             }
         }
@@ -78,16 +80,20 @@ bool sameSkeleton(const Skeleton& a, const Skeleton& b, std::string* difference)
         if (x.name != y.name) return differs(difference, where + "is " + x.name + " against " + y.name);
         const std::string at = where + x.name + ": ";
         if (x.parent != y.parent) {
-            auto parentName = [](const std::vector<Joint>& js, int p) { return p < 0 ? std::string("none") : js[p].name; };
-            return differs(difference, at + "parent " + parentName(ja, x.parent) + " against " + parentName(jb, y.parent));
+            auto parentName = [](const std::vector<Joint>& js, int p) {
+                return p < 0 ? std::string("none") : js[p].name;
+            };
+            return differs(difference,
+                           at + "parent " + parentName(ja, x.parent) + " against " + parentName(jb, y.parent));
         }
-        if (x.dof != y.dof) return differs(difference, at + "DOF channels " + dofText(x.dof) + " against " + dofText(y.dof));
+        if (x.dof != y.dof)
+            return differs(difference, at + "DOF channels " + dofText(x.dof) + " against " + dofText(y.dof));
         if (x.order != y.order) return differs(difference, at + "a different rotation order");
         if (!((x.offsetCm - y.offsetCm).cwiseAbs().maxCoeff() <= kSkeletonToleranceCm))
             return differs(difference, at + "offset " + vec3(x.offsetCm) + " cm against " + vec3(y.offsetCm) + " cm");
         if (!((x.tailCm - y.tailCm).cwiseAbs().maxCoeff() <= kSkeletonToleranceCm))
-            return differs(difference, at + "bone (direction × length) " + vec3(x.tailCm) + " cm against " + vec3(y.tailCm) +
-                                           " cm");
+            return differs(difference, at + "bone (direction × length) " + vec3(x.tailCm) + " cm against " +
+                                           vec3(y.tailCm) + " cm");
         if (!((x.axis - y.axis).cwiseAbs().maxCoeff() <= kSkeletonAxisTolerance))
             return differs(difference, at + "a different axis frame");
     }

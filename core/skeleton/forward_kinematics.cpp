@@ -54,8 +54,7 @@ Eigen::Vector3d effectorCm(const Skeleton& skeleton, const Pose& pose, Effector 
     return effectorCm(skeleton, fk, e);
 }
 
-Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
-                             int joint, int axis) {
+Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose, int joint, int axis) {
     // With R = R_o0 · R_o1 · R_o2, the DOF o_k rotates about (base · R_o0 ⋯ R_o(k-1)) e_{o_k}.
     const RotationOrder& order = skeleton.joints[joint].order;
     Eigen::Matrix3d frame = fk.parentFrame[joint];
@@ -67,9 +66,8 @@ Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const 
     return frame.col(axis);  // unreachable for a valid order
 }
 
-void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                      const Pose& pose, Effector e,
-                      Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
+void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                      Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
     jac.setZero();
     const EffectorSite& site = skeleton.effectorSite(e);
     if (site.joint < 0) return;
@@ -82,9 +80,8 @@ void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const 
     }
 }
 
-void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                               const Pose& pose, Effector e, const Eigen::Vector3d& lambda,
-                               Eigen::Ref<Eigen::MatrixXd> out) {
+void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                               Effector e, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out) {
     out.setZero();
     const EffectorSite& site = skeleton.effectorSite(e);
     if (site.joint < 0) return;
@@ -128,8 +125,10 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
         for (int b = a; b < n; ++b) {
             // Which of the two is upstream: the ancestor joint, or the outer axis of one joint.
             bool aUp;
-            if (joint[a] == joint[b]) aUp = rank[a] <= rank[b];
-            else aUp = depth[a] < depth[b];  // both lie on the root-to-effector path
+            if (joint[a] == joint[b])
+                aUp = rank[a] <= rank[b];
+            else
+                aUp = depth[a] < depth[b];  // both lie on the root-to-effector path
             const int up = aUp ? a : b, down = aUp ? b : a;
             const double h = k2 * lambda.dot(w[up].cross(v[down]));
             out(dof[a], dof[b]) = h;

@@ -12,9 +12,9 @@ namespace mgp {
 // Per-joint results of one FK pass. Reuse one instance across calls: forwardKinematics only
 // resizes it when the joint count changes, so a solver loop allocates nothing.
 struct FkState {
-    std::vector<Eigen::Vector3d> jointCm;       // joint (bone start) positions
-    std::vector<Eigen::Matrix3d> global;        // G_j
-    std::vector<Eigen::Matrix3d> parentFrame;   // G_parent · C_j (the DOF axes' base frame)
+    std::vector<Eigen::Vector3d> jointCm;      // joint (bone start) positions
+    std::vector<Eigen::Matrix3d> global;       // G_j
+    std::vector<Eigen::Matrix3d> parentFrame;  // G_parent · C_j (the DOF axes' base frame)
 };
 
 void forwardKinematics(const Skeleton& skeleton, const Pose& pose, FkState& fk);
@@ -33,20 +33,18 @@ Eigen::Vector3d effectorCm(const Skeleton& skeleton, const FkState& fk, Effector
 Eigen::Vector3d effectorCm(const Skeleton& skeleton, const Pose& pose, Effector e);
 
 // World axis of joint j's rotation DOF `axis` (unit vector), given its current angles.
-Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose,
-                             int joint, int axis);
+Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const Pose& pose, int joint, int axis);
 
 // d(effector position)/d(y) for the P pose-vector DOFs, 3×P, cm/deg. Columns of DOFs that are not
 // ancestors of the effector (or absent from the skeleton) are exactly 0.
-void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                      const Pose& pose, Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
+void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                      Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
 
 // λ · ∂²(effector position)/∂y² for the P pose-vector DOFs (P×P, cm/deg², symmetric): the
 // second-order term a Newton step on ‖FK − c‖² or on a pinned effector's multiplier needs. For
 // DOFs a (upstream, or the same DOF) and b on the effector's chain, with world axes ω and b's
 // pivot q_b: ∂²p/∂θ_a∂θ_b = (π/180)² ω_a × (ω_b × (p − q_b)). Other entries are exactly 0.
-void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                               const Pose& pose, Effector e, const Eigen::Vector3d& lambda,
-                               Eigen::Ref<Eigen::MatrixXd> out);
+void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                               Effector e, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out);
 
 }  // namespace mgp

@@ -6,41 +6,33 @@ namespace mgp {
 
 const std::array<AsfPoseDof, kAsfPoseDofs>& asfPoseDofTable() {
     static const std::array<AsfPoseDof, kAsfPoseDofs> table = {{
-        {"root", kAxisX},      {"root", kAxisY},      {"root", kAxisZ},
-        {"lfemur", kAxisX},    {"lfemur", kAxisY},    {"lfemur", kAxisZ},
-        {"ltibia", kAxisX},    {"lfoot", kAxisX},     {"lfoot", kAxisZ},
-        {"rfemur", kAxisX},    {"rfemur", kAxisY},    {"rfemur", kAxisZ},
-        {"rtibia", kAxisX},    {"rfoot", kAxisX},     {"rfoot", kAxisZ},
-        {"lowerback", kAxisX}, {"lowerback", kAxisY}, {"lowerback", kAxisZ},
-        {"upperback", kAxisX}, {"upperback", kAxisY}, {"upperback", kAxisZ},
-        {"thorax", kAxisX},    {"thorax", kAxisY},    {"thorax", kAxisZ},
-        {"lowerneck", kAxisX}, {"lowerneck", kAxisY}, {"lowerneck", kAxisZ},
-        {"upperneck", kAxisX}, {"upperneck", kAxisY}, {"upperneck", kAxisZ},
-        {"head", kAxisX},      {"head", kAxisY},      {"head", kAxisZ},
-        {"lclavicle", kAxisY}, {"lclavicle", kAxisZ},
-        {"lhumerus", kAxisX},  {"lhumerus", kAxisY},  {"lhumerus", kAxisZ},
-        {"lradius", kAxisX},   {"lwrist", kAxisY},
-        {"rclavicle", kAxisY}, {"rclavicle", kAxisZ},
-        {"rhumerus", kAxisX},  {"rhumerus", kAxisY},  {"rhumerus", kAxisZ},
-        {"rradius", kAxisX},   {"rwrist", kAxisY},
+        {"root", kAxisX},      {"root", kAxisY},      {"root", kAxisZ},      {"lfemur", kAxisX},
+        {"lfemur", kAxisY},    {"lfemur", kAxisZ},    {"ltibia", kAxisX},    {"lfoot", kAxisX},
+        {"lfoot", kAxisZ},     {"rfemur", kAxisX},    {"rfemur", kAxisY},    {"rfemur", kAxisZ},
+        {"rtibia", kAxisX},    {"rfoot", kAxisX},     {"rfoot", kAxisZ},     {"lowerback", kAxisX},
+        {"lowerback", kAxisY}, {"lowerback", kAxisZ}, {"upperback", kAxisX}, {"upperback", kAxisY},
+        {"upperback", kAxisZ}, {"thorax", kAxisX},    {"thorax", kAxisY},    {"thorax", kAxisZ},
+        {"lowerneck", kAxisX}, {"lowerneck", kAxisY}, {"lowerneck", kAxisZ}, {"upperneck", kAxisX},
+        {"upperneck", kAxisY}, {"upperneck", kAxisZ}, {"head", kAxisX},      {"head", kAxisY},
+        {"head", kAxisZ},      {"lclavicle", kAxisY}, {"lclavicle", kAxisZ}, {"lhumerus", kAxisX},
+        {"lhumerus", kAxisY},  {"lhumerus", kAxisZ},  {"lradius", kAxisX},   {"lwrist", kAxisY},
+        {"rclavicle", kAxisY}, {"rclavicle", kAxisZ}, {"rhumerus", kAxisX},  {"rhumerus", kAxisY},
+        {"rhumerus", kAxisZ},  {"rradius", kAxisX},   {"rwrist", kAxisY},
     }};
     return table;
 }
 
 const std::array<const char*, kModelBones>& modelBoneNames() {
     static const std::array<const char*, kModelBones> names = {
-        "lhipjoint", "lfemur",    "ltibia",    "lfoot",    "rhipjoint", "rfemur",
-        "rtibia",    "rfoot",     "lowerback", "upperback", "thorax",   "lowerneck",
-        "upperneck", "head",      "lclavicle", "lhumerus", "lradius",   "lwrist",
-        "rclavicle", "rhumerus",  "rradius",   "rwrist"};
+        "lhipjoint", "lfemur",    "ltibia",    "lfoot",     "rhipjoint", "rfemur", "rtibia",    "rfoot",
+        "lowerback", "upperback", "thorax",    "lowerneck", "upperneck", "head",   "lclavicle", "lhumerus",
+        "lradius",   "lwrist",    "rclavicle", "rhumerus",  "rradius",   "rwrist"};
     return names;
 }
 
 bool isDroppedAsfBone(const std::string& bone) {
-    static const char* dropped[] = {"lhand", "rhand", "lfingers", "rfingers", "lthumb",
-                                    "rthumb", "ltoes", "rtoes"};
-    return std::any_of(std::begin(dropped), std::end(dropped),
-                       [&](const char* d) { return bone == d; });
+    static const char* dropped[] = {"lhand", "rhand", "lfingers", "rfingers", "lthumb", "rthumb", "ltoes", "rtoes"};
+    return std::any_of(std::begin(dropped), std::end(dropped), [&](const char* d) { return bone == d; });
 }
 
 std::vector<std::string> missingModelBones(const Skeleton& skeleton) {

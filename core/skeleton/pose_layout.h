@@ -26,8 +26,8 @@
 
 namespace mgp {
 
-constexpr int kAsfPoseDofs = 47;    // rotational DOFs in the ASF model's y
-constexpr int kModelBones = 22;     // bones of the simplified skeleton (root not counted)
+constexpr int kAsfPoseDofs = 47;  // rotational DOFs in the ASF model's y
+constexpr int kModelBones = 22;   // bones of the simplified skeleton (root not counted)
 
 struct AsfPoseDof {
     const char* bone;
@@ -61,9 +61,9 @@ public:
     // the layout was made for.
     std::string dofName(const Skeleton& skeleton, int dof) const;
 
-    void extract(const Pose& pose, double* y) const;    // writes size() values
+    void extract(const Pose& pose, double* y) const;  // writes size() values
     Eigen::VectorXd extract(const Pose& pose) const;
-    void apply(const double* y, Pose& pose) const;      // overwrites the size() mapped angles
+    void apply(const double* y, Pose& pose) const;  // overwrites the size() mapped angles
 
 private:
     PoseVectorKind kind_ = PoseVectorKind::kAsfModel;

@@ -18,10 +18,12 @@ struct Affix {
     bool prefix;
 };
 constexpr Affix kAffixes[] = {{"Left", "Right", true}, {"left", "right", true}, {"l", "r", true},
-                              {"L_", "R_", true},      {"L", "R", true},      {"_l", "_r", false},     {"_L", "_R", false},
-                              {".L", ".R", false},     {"Left", "Right", false}};
+                              {"L_", "R_", true},      {"L", "R", true},        {"_l", "_r", false},
+                              {"_L", "_R", false},     {".L", ".R", false},     {"Left", "Right", false}};
 
-bool startsWith(const std::string& s, const std::string& p) { return s.size() > p.size() && s.compare(0, p.size(), p) == 0; }
+bool startsWith(const std::string& s, const std::string& p) {
+    return s.size() > p.size() && s.compare(0, p.size(), p) == 0;
+}
 bool endsWith(const std::string& s, const std::string& p) {
     return s.size() > p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0;
 }
@@ -112,8 +114,10 @@ std::optional<PoseMirror> PoseMirror::make(const Skeleton& skeleton, std::string
     std::vector<std::pair<int, int>> pairs = pairsBy(skeleton, [](const Joint& j) { return j.name; });
     if (pairs.empty()) pairs = pairsBy(skeleton, [](const Joint& j) { return j.bone; });
     if (pairs.empty()) {
-        error = "mirror pose: expected left/right bone pairs (lfemur/rfemur, LeftUpLeg/RightUpLeg, ...), found none "
-                "among the skeleton's " + std::to_string(n) + " joints: it has no symmetry to mirror with";
+        error =
+            "mirror pose: expected left/right bone pairs (lfemur/rfemur, LeftUpLeg/RightUpLeg, ...), found none "
+            "among the skeleton's " +
+            std::to_string(n) + " joints: it has no symmetry to mirror with";
         return std::nullopt;
     }
     m.partner_.resize(n);
@@ -138,11 +142,13 @@ std::optional<PoseMirror> PoseMirror::make(const Skeleton& skeleton, std::string
     FkState fk;
     forwardKinematics(skeleton, rest, fk);
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (const auto& [l, r] : pairs) sum += (fk.jointCm[l] - fk.jointCm[r]) + (boneEndCm(skeleton, fk, l) - boneEndCm(skeleton, fk, r));
+    for (const auto& [l, r] : pairs)
+        sum += (fk.jointCm[l] - fk.jointCm[r]) + (boneEndCm(skeleton, fk, l) - boneEndCm(skeleton, fk, r));
     sum.y() = 0.0;
     if (sum.norm() < 1e-9) {
-        error = "mirror pose: expected the left bones to lie beside the right ones, found them on top of each other "
-                "(no horizontal left-right direction)";
+        error =
+            "mirror pose: expected the left bones to lie beside the right ones, found them on top of each other "
+            "(no horizontal left-right direction)";
         return std::nullopt;
     }
     m.lateral_ = sum.normalized();
@@ -150,7 +156,8 @@ std::optional<PoseMirror> PoseMirror::make(const Skeleton& skeleton, std::string
     // 0.6° off x). Snap to the nearest horizontal coordinate axis within 10°: a tilted plane would
     // make one-DOF joints (knees, elbows) unable to take their partner's mirrored rotation.
     for (const Eigen::Vector3d axis : {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ()})
-        if (std::abs(m.lateral_.dot(axis)) >= std::cos(10.0 * kDegToRad)) m.lateral_ = m.lateral_.dot(axis) > 0 ? axis : Eigen::Vector3d(-axis);
+        if (std::abs(m.lateral_.dot(axis)) >= std::cos(10.0 * kDegToRad))
+            m.lateral_ = m.lateral_.dot(axis) > 0 ? axis : Eigen::Vector3d(-axis);
     m.forward_ = m.lateral_.cross(Eigen::Vector3d::UnitY()).normalized();
     m.S_ = Eigen::Matrix3d::Identity() - 2.0 * m.lateral_ * m.lateral_.transpose();
     m.conj_.resize(n);

@@ -5,10 +5,10 @@
 // Symmetry. Left/right bone pairs come from the joints' names: a prefix l/r (ASF lhumerus,
 // rhumerus; Daz lShldr, rShldr), L/R or L_/R_ (LHipJoint), Left/Right (CMU BVH LeftUpLeg,
 // RightUpLeg), or a suffix _l/_r, _L/_R, .L/.R; failing those, the ASF bone roles the BVH
-// conventions gave the joints. Both names must exist. The sagittal plane's normal n (the character's left, in the rest frame) is the
-// mean of (left − right) rest joint positions over the pairs, made horizontal (Y is up) and snapped
-// to the nearest horizontal coordinate axis when within 10° (capture skeletons are axis-aligned),
-// and S = I − 2nnᵀ reflects across it.
+// conventions gave the joints. Both names must exist. The sagittal plane's normal n (the character's left, in the rest
+// frame) is the mean of (left − right) rest joint positions over the pairs, made horizontal (Y is up) and snapped to
+// the nearest horizontal coordinate axis when within 10° (capture skeletons are axis-aligned), and S = I − 2nnᵀ
+// reflects across it.
 //
 // Mirroring. With L_j = C_j E_j C_jᵀ a joint's local rotation in the common rest frame (C_j its
 // axis frame, E_j its Euler matrix), the mirror gives joint j its partner π(j)'s rotation
@@ -53,7 +53,7 @@ public:
     int partner(int joint) const { return partner_[joint]; }  // itself when unpaired
     int pairCount() const { return pairs_; }
     const Eigen::Vector3d& lateralAxis() const { return lateral_; }  // n, unit, horizontal
-    const Eigen::Matrix3d& reflection() const { return S_; }        // S
+    const Eigen::Matrix3d& reflection() const { return S_; }         // S
     const std::vector<DroppedAxis>& droppedAxes() const { return dropped_; }
     // World reflection M across the sagittal plane of a pose with root rotation `rootRotation`
     // (through the root position): x ↦ root + M (x − root).

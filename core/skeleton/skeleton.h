@@ -25,9 +25,9 @@ const char* effectorName(Effector e);
 bool parseEffector(const std::string& name, Effector& out);
 
 struct Joint {
-    std::string name;              // as in the source file
-    std::string bone;              // the ASF bone name it plays ("" if none): root, lfemur, ...
-    int parent = -1;               // -1 only for joint 0, the root
+    std::string name;  // as in the source file
+    std::string bone;  // the ASF bone name it plays ("" if none): root, lfemur, ...
+    int parent = -1;   // -1 only for joint 0, the root
     Eigen::Vector3d offsetCm = Eigen::Vector3d::Zero();
     Eigen::Vector3d tailCm = Eigen::Vector3d::Zero();
     Eigen::Matrix3d axis = Eigen::Matrix3d::Identity();  // C_j

@@ -83,7 +83,7 @@ Clip makeSyntheticWalk(int frames) {
         for (int side = 0; side < 2; ++side) {
             const double phase = ph + (side == 0 ? 0.0 : M_PI);  // legs in antiphase
             const bool left = side == 0;
-            const double hip = -25.0 * std::sin(phase);          // negative = leg forward (+z)
+            const double hip = -25.0 * std::sin(phase);  // negative = leg forward (+z)
             const double knee = 5.0 + 32.0 * std::max(0.0, std::sin(phase + 0.9));
             const double ankle = -6.0 + 10.0 * std::sin(phase + 1.8);
             set(left ? "lfemur" : "rfemur", hip, 0.0, left ? -2.0 : 2.0);
@@ -93,8 +93,8 @@ Clip makeSyntheticWalk(int frames) {
             const double swing = 18.0 * std::sin(phase);
             set(left ? "lclavicle" : "rclavicle", 0.0, 0.0, left ? -4.0 : 4.0);
             set(left ? "lhumerus" : "rhumerus", 0.0, left ? swing : -swing, left ? -78.0 : 78.0);
-            set(left ? "lradius" : "rradius", left ? -18.0 - 8.0 * std::max(0.0, -std::sin(phase))
-                                                   : 18.0 + 8.0 * std::max(0.0, -std::sin(phase)),
+            set(left ? "lradius" : "rradius",
+                left ? -18.0 - 8.0 * std::max(0.0, -std::sin(phase)) : 18.0 + 8.0 * std::max(0.0, -std::sin(phase)),
                 0.0, 0.0);
             set(left ? "lwrist" : "rwrist", 0.0, left ? 5.0 : -5.0, 0.0);
         }
@@ -106,8 +106,8 @@ Clip makeSyntheticWalk(int frames) {
         // Forward at 1.2 m/s with a small side sway; height chosen so the lower foot is 3 cm up.
         pose.rootCm = Eigen::Vector3d(2.0 * std::sin(ph), 0.0, 120.0 * t / clip.fps);
         forwardKinematics(sk, pose, fk);
-        const double lowest = std::min(effectorCm(sk, fk, Effector::kLFoot).y(),
-                                       effectorCm(sk, fk, Effector::kRFoot).y());
+        const double lowest =
+            std::min(effectorCm(sk, fk, Effector::kLFoot).y(), effectorCm(sk, fk, Effector::kRFoot).y());
         pose.rootCm.y() = 3.0 - lowest;
         clip.frames.push_back(std::move(pose));
     }

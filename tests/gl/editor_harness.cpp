@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <vector>
 
-#include "ui/input/script_player.h"
 #include "skip.h"
 #include "test_paths.h"
+#include "ui/input/script_player.h"
 
 namespace mgp::test {
 

@@ -8,9 +8,9 @@
 #include <memory>
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "render/gl_context.h"
 #include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
 
 namespace mgp::test {
 
@@ -46,7 +46,7 @@ void answerUnsaved(Harness& h, const std::string& button);
 // offscreen context can be made, or when llvmpipeOnly and the context is not llvmpipe.
 std::unique_ptr<Harness> makeHarness(bool llvmpipeOnly, bool withModel = true);
 
-const std::string& mocapDir();      // the shipped clips (assets/mocap)
-std::string fixtureModelPath();     // the committed walk model
+const std::string& mocapDir();   // the shipped clips (assets/mocap)
+std::string fixtureModelPath();  // the committed walk model
 
 }  // namespace mgp::test

@@ -92,8 +92,8 @@ TEST_CASE("camera: framing fits the sphere in the narrower field of view") {
         // The sphere's extreme points along the camera's right and up axes land in the image.
         const glm::mat4 v = c.view();
         const glm::vec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]);
-        for (const glm::vec3& p : {c.targetCm + 100.0f * right, c.targetCm - 100.0f * right,
-                                   c.targetCm + 100.0f * up, c.targetCm - 100.0f * up}) {
+        for (const glm::vec3& p : {c.targetCm + 100.0f * right, c.targetCm - 100.0f * right, c.targetCm + 100.0f * up,
+                                   c.targetCm - 100.0f * up}) {
             glm::vec3 px;
             REQUIRE(c.project(p, w, h, px));
             CHECK(px.x >= -1.0f);

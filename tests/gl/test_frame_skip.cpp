@@ -6,8 +6,8 @@
 #include <imgui.h>
 
 #include "editor_harness.h"
-#include "ui/shell/frame_signature.h"
 #include "render/png_capture.h"
+#include "ui/shell/frame_signature.h"
 
 using namespace mgp;
 
@@ -20,7 +20,8 @@ struct OneList {
     ImDrawData data;
 
     OneList() {
-        for (int i = 0; i < 4; ++i) list.VtxBuffer.push_back(ImDrawVert{ImVec2(float(i), 2.0f * float(i)), ImVec2(0.5f, 0.5f), 0xff336699u});
+        for (int i = 0; i < 4; ++i)
+            list.VtxBuffer.push_back(ImDrawVert{ImVec2(float(i), 2.0f * float(i)), ImVec2(0.5f, 0.5f), 0xff336699u});
         for (ImDrawIdx i : {0, 1, 2, 0, 2, 3}) list.IdxBuffer.push_back(i);
         ImDrawCmd cmd;
         cmd.ClipRect = ImVec4(0, 0, 100, 50);
@@ -38,7 +39,9 @@ struct OneList {
 
 }  // namespace
 
-TEST_CASE("frame signature: equal draw data match, and a vertex, an index, a clip rectangle, a texture or an image version differ") {
+TEST_CASE(
+    "frame signature: equal draw data match, and a vertex, an index, a clip rectangle, a texture or an image version "
+    "differ") {
     const OneList a, b;
     CHECK(a.signature() == b.signature());
     const std::uint64_t base = a.signature();

@@ -34,11 +34,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using test::kMocap;
 using test::kGoldenDir;
+using test::kMocap;
 using test::kOutDir;
-constexpr int kTolerance = 2;            // per channel, out of 255
-constexpr double kMinMatching = 0.999;   // fraction of pixels within kTolerance
+constexpr int kTolerance = 2;           // per channel, out of 255
+constexpr double kMinMatching = 0.999;  // fraction of pixels within kTolerance
 constexpr int kWidth = 400, kHeight = 300;
 
 bool updateMode() {
@@ -58,12 +58,11 @@ std::unique_ptr<OffscreenContext> referenceContext(int w, int h) {
     const GlInfo info = currentGlInfo();
     if (!info.isLlvmpipe()) {
         MGP_MARK_SKIPPED("goldens are made with Mesa llvmpipe; this context is '" << info.renderer << "' ("
-                                                                              << info.version << ")");
+                                                                                  << info.version << ")");
         return nullptr;
     }
     return ctx;
 }
-
 
 struct GoldenScene {
     Scene scene;
@@ -128,7 +127,8 @@ void compareWithGolden(const std::string& name, const Image& actual) {
     fs::create_directories(kOutDir);
     if (!golden) {
         writePng(actual, kOutDir + "/" + name + ".actual.png");
-        FAIL("missing golden " << goldenPath << " (regenerate: MOTIONGP_UPDATE_GOLDENS=1 ctest --test-dir build -L gl)");
+        FAIL("missing golden " << goldenPath
+                               << " (regenerate: MOTIONGP_UPDATE_GOLDENS=1 ctest --test-dir build -L gl)");
         return;
     }
     REQUIRE(w == actual.width);
@@ -209,8 +209,8 @@ TEST_CASE("golden: onion skins (2 before, 2 after, 10 frames apart) and motion t
     opt.trails = {TrailPart::kLFoot, TrailPart::kRFoot, TrailPart::kRHand, TrailPart::kRoot};
     opt.trailHalfSpan = 30;
     opt.handles = false;
-    runGolden("35_01_f100_onion_trails",
-              clipScene("35_01.amc", 100, CameraPreset::kThreeQuarter, opt, 1280, 720), 1280, 720);
+    runGolden("35_01_f100_onion_trails", clipScene("35_01.amc", 100, CameraPreset::kThreeQuarter, opt, 1280, 720), 1280,
+              720);
 }
 
 TEST_CASE("golden: the rotate gizmo on the right thigh (three rings over the figure), 1280x720") {
@@ -245,8 +245,8 @@ TEST_CASE("determinism: `motiongp render` twice writes identical PNGs, with no d
     if (!referenceContext(64, 64)) return;
     fs::create_directories(kOutDir);
     const std::string a = kOutDir + "/cli_a.png", b = kOutDir + "/cli_b.png";
-    const std::string base = std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + MOTIONGP_TEST_BINARY +
-                             "' render '" + kMocap + "/asf_amc/10_02.amc' --frame 362 --size 320x240 " +
+    const std::string base = std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + MOTIONGP_TEST_BINARY + "' render '" +
+                             kMocap + "/asf_amc/10_02.amc' --frame 362 --size 320x240 " +
                              "--camera three-quarter --ghost-captured --path rfoot --out ";
     REQUIRE(std::system((base + "'" + a + "' > /dev/null").c_str()) == 0);
     REQUIRE(std::system((base + "'" + b + "' > /dev/null").c_str()) == 0);
@@ -267,9 +267,11 @@ TEST_CASE("determinism: `motiongp render` twice writes identical PNGs, with no d
     CHECK(h == 240);
     // Bad arguments give one clear error and a non-zero exit.
     CHECK(std::system((std::string("'") + MOTIONGP_TEST_BINARY + "' render '" + kMocap +
-                       "/asf_amc/35_01.amc' --frame 0 --out /dev/null 2> /dev/null").c_str()) != 0);
-    CHECK(std::system((std::string("'") + MOTIONGP_TEST_BINARY + "' render no-such.model --frame 1 --out x.png 2> /dev/null")
+                       "/asf_amc/35_01.amc' --frame 0 --out /dev/null 2> /dev/null")
                           .c_str()) != 0);
+    CHECK(std::system(
+              (std::string("'") + MOTIONGP_TEST_BINARY + "' render no-such.model --frame 1 --out x.png 2> /dev/null")
+                  .c_str()) != 0);
 }
 
 TEST_CASE("offscreen context: 3.3 core or newer, resize keeps the context") {

@@ -7,10 +7,10 @@
 #include <set>
 #include <sstream>
 
-#include "ui/actions/editor_actions.h"
 #include "editor_harness.h"
 #include "io/parse_error.h"
 #include "test_paths.h"
+#include "ui/actions/editor_actions.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -36,7 +36,8 @@ TEST_CASE("gui actions: the guide's action table is the one the editor runs") {
         std::filesystem::create_directories(MOTIONGP_GL_OUT_DIR);
         const std::string out = std::string(MOTIONGP_GL_OUT_DIR) + "/guide_action_table.md";
         std::ofstream(out) << expected;
-        FAIL("docs/guide.md's action table differs from ui/actions/editor_actions.cpp; the generated table is in " << out);
+        FAIL("docs/guide.md's action table differs from ui/actions/editor_actions.cpp; the generated table is in "
+             << out);
     }
 }
 
@@ -55,8 +56,8 @@ TEST_CASE("gui actions: names are unique, every action has a summary, chords hav
 
 TEST_CASE("gui actions: scripts parse action names from the table and refuse missing arguments") {
     CHECK_NOTHROW(ui::GuiScript::parse("1 action regenerate\n2 action demo-clip\n3 action frame 4\n"));
-    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("1 action frame\n", "s.txt"), "s.txt:1: expected an argument after 'frame', found none",
-                         ParseError);
+    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("1 action frame\n", "s.txt"),
+                         "s.txt:1: expected an argument after 'frame', found none", ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 action explode\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1.5 move 1 2\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 move 12abc 5\n"), ParseError);
@@ -81,7 +82,8 @@ TEST_CASE("gui actions: numeric arguments are parsed strictly, with a clear mess
     CHECK(h->app->runAction({"train", "gp"}) == "expected fas or sgplvm, found 'gp'");
     CHECK(!h->app->state().training.running());
     CHECK(h->app->runAction({"regenerate", "1e3"}) == "expected the iteration count (an integer), found '1e3'");
-    CHECK(h->app->runAction({"path-offset", "1", "2", "x", "4"}) == "expected an offset in cm (a finite number), found 'x'");
+    CHECK(h->app->runAction({"path-offset", "1", "2", "x", "4"}) ==
+          "expected an offset in cm (a finite number), found 'x'");
     CHECK(h->app->runAction({"compare", "ghost"}) == "expected none, plain or model, found 'ghost'");
     CHECK(h->app->runAction({"compare", "plain"}) == "");
     CHECK(doc.compareMode() == CompareMode::kPlainIk);

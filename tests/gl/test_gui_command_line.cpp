@@ -16,8 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/gl_context.h"
 #include "gl_test_paths.h"
+#include "render/gl_context.h"
 #include "skip.h"
 
 namespace fs = std::filesystem;
@@ -174,8 +174,8 @@ TEST_CASE("cli: render and gui take --json and print one JSON object") {
     CHECK(fs::is_regular_file(png));
 
     fs::remove(shot);
-    r = run(q(kBinary) + " gui " + q(kMocap + "/asf_amc/35_01.amc") + " --offscreen --size 320x240 --frames 2 --screenshot " +
-            q(shot) + " --json");
+    r = run(q(kBinary) + " gui " + q(kMocap + "/asf_amc/35_01.amc") +
+            " --offscreen --size 320x240 --frames 2 --screenshot " + q(shot) + " --json");
     INFO(r.err);
     REQUIRE(r.code == 0);
     j = nlohmann::json::parse(r.out, nullptr, false);

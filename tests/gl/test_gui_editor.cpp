@@ -19,14 +19,14 @@
 #include <iterator>
 #include <random>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "render/gl_context.h"
 #include "gl_test_paths.h"
-#include "ui/input/gui_script.h"
 #include "io/parse_error.h"
+#include "render/gl_context.h"
 #include "render/png_capture.h"
 #include "skeleton/forward_kinematics.h"
+#include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
 
 #include "skip.h"
 #include "stb_image_include.h"
@@ -95,25 +95,29 @@ void compareGolden(const std::string& name, const render::Image& actual) {
     }
     stbi_image_free(golden);
     const double fraction = double(matching) / (double(w) * h);
-    INFO(name << ": " << fraction * 100 << " % of pixels within " << kTolerance << "/255 (need " << kMinMatching * 100 << " %)");
-    if (fraction < kMinMatching) render::writePng(actual, kOutDir + "/" + name + ".actual.png");
-    else fs::remove(kOutDir + "/" + name + ".actual.png");
+    INFO(name << ": " << fraction * 100 << " % of pixels within " << kTolerance << "/255 (need " << kMinMatching * 100
+              << " %)");
+    if (fraction < kMinMatching)
+        render::writePng(actual, kOutDir + "/" + name + ".actual.png");
+    else
+        fs::remove(kOutDir + "/" + name + ".actual.png");
     CHECK(fraction >= kMinMatching);
 }
 
 }  // namespace
 
 TEST_CASE("gui: script parser accepts the documented verbs and reports file:line on errors") {
-    const auto s = ui::GuiScript::parse("# drag\n5 hover rfoot\n7 down left  # press\n9 moveby 0 -20\n"
-                                        "11 up left\n12 key SPACE\n13 keydown shift\n14 wheel -1\n"
-                                        "15 action frame 10\n16 action screenshot a.png\n");
+    const auto s = ui::GuiScript::parse(
+        "# drag\n5 hover rfoot\n7 down left  # press\n9 moveby 0 -20\n"
+        "11 up left\n12 key SPACE\n13 keydown shift\n14 wheel -1\n"
+        "15 action frame 10\n16 action screenshot a.png\n");
     CHECK(s.events().size() == 9);
     CHECK(s.lastFrame() == 16);
     CHECK(s.events()[1].verb == "down");
-    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("1 move 10\n", "s.txt"), "s.txt:1: expected two pixel coordinates, found 1 arguments",
-                         ParseError);
-    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("\nx move 1 2\n", "s.txt"), "s.txt:2: expected a frame number ≥ 0 first, found 'x'",
-                         ParseError);
+    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("1 move 10\n", "s.txt"),
+                         "s.txt:1: expected two pixel coordinates, found 1 arguments", ParseError);
+    CHECK_THROWS_WITH_AS(ui::GuiScript::parse("\nx move 1 2\n", "s.txt"),
+                         "s.txt:2: expected a frame number ≥ 0 first, found 'x'", ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 key NOPE\n"), ParseError);
     CHECK_THROWS_AS(ui::GuiScript::parse("1 action explode\n"), ParseError);
 }
@@ -229,8 +233,8 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
     if (!h) return;
     std::mt19937 rng(1234);
     std::uniform_real_distribution<float> ux(0.0f, float(kW)), uy(0.0f, float(kH)), step(-40.0f, 40.0f);
-    const int keys[] = {ui::key::kSpace, ui::key::kLeft, ui::key::kRight, 'F', 'P', ui::key::kHome, ui::key::kEnd,
-                        ui::key::kEscape, ui::key::kLeftShift};
+    const int keys[] = {ui::key::kSpace, ui::key::kLeft,   ui::key::kRight,    'F', 'P', ui::key::kHome,
+                        ui::key::kEnd,   ui::key::kEscape, ui::key::kLeftShift};
     EditorDocument& doc = h->app->state().doc;
     int dragFrames = 0;
     for (int i = 0; i < 600; ++i) {
@@ -278,7 +282,7 @@ TEST_CASE("gui: several hundred random input events on a real clip stay finite a
         CHECK(finite(e.pose));
     }
     MESSAGE("random events: " << dragFrames << " frames inside an effector drag, " << doc.edits().size()
-                                << " edited frames");
+                              << " edited frames");
     CHECK(dragFrames > 0);  // the events did exercise the learned IK, not only the camera
     h->app->state().playing = false;
     doc.waitIdle();
@@ -292,11 +296,12 @@ TEST_CASE("gui verb: --offscreen --script runs the frames, writes the screenshot
     {
         std::ofstream s(dir + "/script.txt");
         s << "# scrub, play, pause, pin, shot\n2 key RIGHT\n4 key SPACE\n10 key SPACE\n12 action pin lfoot\n"
-             "14 action screenshot " << dir << "/mid.png\n";
+             "14 action screenshot "
+          << dir << "/mid.png\n";
     }
     const std::string cmd = std::string("DISPLAY= ") + MOTIONGP_TEST_BINARY + " gui '" + test::mocapDir() +
-                            "/asf_amc/35_01.amc' --offscreen --size 640x400 --script '" + dir + "/script.txt' --screenshot '" +
-                            dir + "/end.png' > '" + dir + "/log.txt' 2>&1";
+                            "/asf_amc/35_01.amc' --offscreen --size 640x400 --script '" + dir +
+                            "/script.txt' --screenshot '" + dir + "/end.png' > '" + dir + "/log.txt' 2>&1";
     const int rc = std::system(cmd.c_str());
     if (rc != 0) {
         std::ifstream log(dir + "/log.txt");

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "ui/input/input_state.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -52,8 +52,10 @@ TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the 
     int changed = 0;
     for (int t = 0; t < doc.frameCount(); ++t) {
         const bool inner = t > 100 && t < 160;
-        if (!inner) CHECK(samePose(doc.poseAt(t), clip.frames[t]));
-        else changed += doc.isEdited(t) ? 1 : 0;
+        if (!inner)
+            CHECK(samePose(doc.poseAt(t), clip.frames[t]));
+        else
+            changed += doc.isEdited(t) ? 1 : 0;
     }
     CHECK(changed == 59);
     CHECK(doc.undoLabel() == "fill frames 102-160");
@@ -104,11 +106,14 @@ TEST_CASE("gui fill between keys: a Shift+drag range on the timeline fills every
     REQUIRE(s.controls.count("timeline track"));
     const ui::EditorState::ControlRect track = s.controls.at("timeline track");
     const float y = 0.5f * (track.y0 + track.y1);
-    auto xOf = [&](int f) { return track.x0 + 8.0f + (track.x1 - track.x0 - 16.0f) * float(f) / float(doc.frameCount() - 1); };
+    auto xOf = [&](int f) {
+        return track.x0 + 8.0f + (track.x1 - track.x0 - 16.0f) * float(f) / float(doc.frameCount() - 1);
+    };
     const int frameBefore = doc.frame();
-    const std::vector<std::string> errors = h->play(ui::GuiScript::parse(
-        "0 keydown SHIFT\n1 move " + std::to_string(int(xOf(30))) + " " + std::to_string(int(y)) + "\n3 down left\n5 move " +
-        std::to_string(int(xOf(200))) + " " + std::to_string(int(y)) + "\n7 up left\n9 keyup SHIFT\n"));
+    const std::vector<std::string> errors =
+        h->play(ui::GuiScript::parse("0 keydown SHIFT\n1 move " + std::to_string(int(xOf(30))) + " " +
+                                     std::to_string(int(y)) + "\n3 down left\n5 move " + std::to_string(int(xOf(200))) +
+                                     " " + std::to_string(int(y)) + "\n7 up left\n9 keyup SHIFT\n"));
     REQUIRE(errors.empty());
     REQUIRE(s.timelineRange);
     CHECK(doc.frame() == frameBefore);  // selecting does not scrub

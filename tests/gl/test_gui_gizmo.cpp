@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/windows/joint_rotation_window.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/rotation.h"
 #include "ui/panels/viewport_panel.h"
+#include "ui/shell/editor_app.h"
+#include "ui/windows/joint_rotation_window.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -124,7 +124,7 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
     h->frame(3);
     REQUIRE(s.gizmoJoint == femur);
     const render::RotateGizmo g = ui::viewportGizmo(s);
-    REQUIRE(g.rings.size() == 3);  // rfemur animates rx ry rz
+    REQUIRE(g.rings.size() == 3);                             // rfemur animates rx ry rz
     CHECK(h->app->viewport().lastScene().paths.size() == 4);  // the highlighted bone and three rings
 
     int kneeChecks = 0;  // rings whose turn moves the knee visibly on screen

@@ -7,11 +7,11 @@
 
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/input/gui_script.h"
 #include "skeleton/forward_kinematics.h"
 #include "test_support.h"
+#include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -35,7 +35,8 @@ Eigen::Vector3d heldGuiEffector(EditorDocument& doc, int frame, Effector e) {
 
 }  // namespace
 
-TEST_CASE("gui held: a foot drag then a hand drag keeps the foot on the neighbouring frames, and Alt+click releases it") {
+TEST_CASE(
+    "gui held: a foot drag then a hand drag keeps the foot on the neighbouring frames, and Alt+click releases it") {
     auto h = makeHarness(false);
     if (!h) return;
     EditorDocument& doc = h->app->state().doc;
@@ -48,7 +49,8 @@ TEST_CASE("gui held: a foot drag then a hand drag keeps the foot on the neighbou
     const Eigen::Vector3d capturedFoot = heldGuiEffector(doc, t, Effector::kRFoot);
     heldGuiDrag(*h, "rfoot", 6, 0, -6);
     REQUIRE(doc.isEdited(t));
-    const Eigen::Vector3d foot[3] = {heldGuiEffector(doc, t - 1, Effector::kRFoot), heldGuiEffector(doc, t, Effector::kRFoot),
+    const Eigen::Vector3d foot[3] = {heldGuiEffector(doc, t - 1, Effector::kRFoot),
+                                     heldGuiEffector(doc, t, Effector::kRFoot),
                                      heldGuiEffector(doc, t + 1, Effector::kRFoot)};
     MESSAGE("the mouse raised the foot " << (foot[1] - capturedFoot).y() << " cm on frame " << t + 1);
     REQUIRE((foot[1] - capturedFoot).y() > 5.0);
@@ -68,7 +70,8 @@ TEST_CASE("gui held: a foot drag then a hand drag keeps the foot on the neighbou
     // Alt+click on the foot's handle lets go of it on this frame and its neighbours (one step).
     const int steps = doc.history().undoCount();
     const Pose poseBefore = doc.poseAt(t);
-    REQUIRE(h->play(ui::GuiScript::parse("0 keydown ALT\n1 hover rfoot\n3 down left\n5 up left\n7 keyup ALT\n")).empty());
+    REQUIRE(
+        h->play(ui::GuiScript::parse("0 keydown ALT\n1 hover rfoot\n3 down left\n5 up left\n7 keyup ALT\n")).empty());
     h->frame(2);
     CHECK_FALSE(doc.held(Effector::kRFoot));
     CHECK(doc.held(Effector::kRHand));
@@ -76,7 +79,8 @@ TEST_CASE("gui held: a foot drag then a hand drag keeps the foot on the neighbou
     CHECK(doc.undoLabel().rfind("release rfoot on frames", 0) == 0);
     const Pose poseAfter = doc.poseAt(t);  // a release moves nothing
     CHECK(poseAfter.rootCm == poseBefore.rootCm);
-    for (std::size_t j = 0; j < poseAfter.anglesDeg.size(); ++j) CHECK(poseAfter.anglesDeg[j] == poseBefore.anglesDeg[j]);
+    for (std::size_t j = 0; j < poseAfter.anglesDeg.size(); ++j)
+        CHECK(poseAfter.anglesDeg[j] == poseBefore.anglesDeg[j]);
     CHECK(h->app->viewport().lastScene().heldMarks.size() == 1);
     REQUIRE(doc.undo().empty());
     CHECK(doc.held(Effector::kRFoot));
@@ -98,10 +102,13 @@ TEST_CASE("gui held: a hand pinned with P after a head drag does not jump during
     REQUIRE(doc.pinned(Effector::kLHand));
     heldGuiDrag(*h, "rhand", 6, 0, -6);
     const Clip& clip = doc.clip();
-    const double edited = test::positionSecondDifferenceCm([&](int s) { return heldGuiEffector(doc, s, Effector::kLHand); }, t);
+    const double edited =
+        test::positionSecondDifferenceCm([&](int s) { return heldGuiEffector(doc, s, Effector::kLHand); }, t);
     const double captured = test::positionSecondDifferenceCm(
-        [&](int s) { return effectorCm(clip.skeleton, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); }, t);
-    MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured << " cm)");
+        [&](int s) { return effectorCm(clip.skeleton, clip.frames[static_cast<std::size_t>(s)], Effector::kLHand); },
+        t);
+    MESSAGE("the pinned hand's second difference at the dragged frame: " << edited << " cm (capture " << captured
+                                                                         << " cm)");
     CHECK(edited <= captured + 0.5);
     CHECK(doc.isEdited(t + 5));  // the hand drag did spread
     CHECK((heldGuiEffector(doc, t, Effector::kHead) - head).norm() < 0.01);

@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <initializer_list>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
+#include "skip.h"
 #include "ui/input/gui_script.h"
 #include "ui/input/input_state.h"
-#include "skip.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -62,7 +62,8 @@ TEST_CASE("gui input: a click shorter than one frame opens a menu, and Esc close
     CHECK_FALSE(h->app->popupOpen());
 }
 
-TEST_CASE("gui input: a key tap shorter than one frame steps the timeline, and Ctrl+O tapped at once opens the dialog") {
+TEST_CASE(
+    "gui input: a key tap shorter than one frame steps the timeline, and Ctrl+O tapped at once opens the dialog") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     EditorDocument& doc = h->app->state().doc;
@@ -112,7 +113,9 @@ TEST_CASE("gui input: shortcuts match their modifiers exactly") {
     CHECK(h->app->fileDialog().isOpen());
 }
 
-TEST_CASE("gui input: Save session as opens with a default name in a focused field, a modal keeps P from pinning, P pins only the handle under the mouse") {
+TEST_CASE(
+    "gui input: Save session as opens with a default name in a focused field, a modal keeps P from pinning, P pins "
+    "only the handle under the mouse") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
@@ -167,7 +170,7 @@ TEST_CASE("gui input: status messages follow the state they describe and stay in
 
     // "accepted … (adaptive update running)" becomes "… done" once the update has finished.
     REQUIRE(doc.undo() == "");
-    doc.setDragFalloff(0);  // this frame only: no spread job posts its own message
+    doc.setDragFalloff(0);          // this frame only: no spread job posts its own message
     doc.holdAdaptiveUpdates(true);  // the update stays pending until released below
     const auto errors = h->play(ui::GuiScript::parse("2 hover rhand\n4 down left\n6 moveby 0 -2\n10 up left\n"));
     REQUIRE(errors.empty());
@@ -229,15 +232,17 @@ TEST_CASE("gui input: copy a pose, paste it on another frame (root kept), one un
     CHECK_FALSE(doc.isEdited(60));
 }
 
-TEST_CASE("gui input: X or Y during a handle drag holds the target on that world axis, and the readout shows the offset in cm") {
+TEST_CASE(
+    "gui input: X or Y during a handle drag holds the target on that world axis, and the readout shows the offset in "
+    "cm") {
     auto h = test::makeHarness(false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
     for (const char axis : {'X', 'Y'}) {
         const int a = axis == 'X' ? 0 : 1;
-        auto errors = h->play(ui::GuiScript::parse(std::string("2 hover rhand\n4 down left\n6 moveby 0 -6\n8 key ") + axis +
-                                                   "\n10 moveby 25 -30\n12 moveby 10 -10\n"));
+        auto errors = h->play(ui::GuiScript::parse(std::string("2 hover rhand\n4 down left\n6 moveby 0 -6\n8 key ") +
+                                                   axis + "\n10 moveby 25 -30\n12 moveby 10 -10\n"));
         REQUIRE(errors.empty());
         REQUIRE(doc.dragging());
         CHECK(s.dragAxis == a);

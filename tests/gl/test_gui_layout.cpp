@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <utility>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
-#include "ui/panels/viewport_panel.h"
 #include "test_paths.h"
+#include "ui/panels/viewport_panel.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/input/input_state.h"
 #include "test_paths.h"
+#include "ui/input/input_state.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::tapKey;

@@ -6,19 +6,19 @@
 // (after the unsaved-changes question when there are edits).
 #include <doctest/doctest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "gp/model_file.h"
 #include "gp/trainer.h"
 #include "io/clip_loader.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -113,7 +113,8 @@ int loneDotOf1002(test::Harness& h, float& x, float& y) {
         for (const char* clip : {"10_02", "10_03"})
             for (int g = 0; g < 60; g += 3) {
                 float gx = 0, gy = 0;
-                if ((clip == std::string("10_02") && g == f) || !h.app->latentDotScreenPosition(clip, g, gx, gy)) continue;
+                if ((clip == std::string("10_02") && g == f) || !h.app->latentDotScreenPosition(clip, g, gx, gy))
+                    continue;
                 nearest = std::min(nearest, (gx - fx) * (gx - fx) + (gy - fy) * (gy - fy));
             }
         if (nearest > bestD2) bestD2 = nearest, best = f, x = fx, y = fy;
@@ -233,7 +234,8 @@ TEST_CASE("gui: with unsaved edits, clicking another clip's dot asks first and C
     std::filesystem::remove_all(std::filesystem::path(model).parent_path());
 }
 
-TEST_CASE("gui: a model trained here and never saved is asked about on every path that drops it, even after a clip switch") {
+TEST_CASE(
+    "gui: a model trained here and never saved is asked about on every path that drops it, even after a clip switch") {
     // The user's sequence: a model trained in the editor (here: the opened model replaced by a copy,
     // as a finished training installs one), click the other clip's dot, answer "Don't save"; the
     // model stays, still unsaved, so opening a BVH clip, quitting or opening the demo clip asks
@@ -262,8 +264,8 @@ TEST_CASE("gui: a model trained here and never saved is asked about on every pat
     // model file of the open clip would replace this one; a script's `open PATH`; a new training,
     // whose model would replace it), and Cancel keeps it.
     const std::string bvh = test::mocapDir() + "/bvh/02_03.bvh";
-    const std::vector<std::vector<std::string>> drops = {{"open"}, {"open", bvh}, {"open-model"}, {"open-model", model},
-                                                         {"demo-clip"}, {"train"}, {"quit"}};
+    const std::vector<std::vector<std::string>> drops = {
+        {"open"}, {"open", bvh}, {"open-model"}, {"open-model", model}, {"demo-clip"}, {"train"}, {"quit"}};
     for (const std::vector<std::string>& action : drops) {
         INFO(action.front());
         REQUIRE(h->app->runAction(action) == "");

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
 #include "gl_test_paths.h"
-#include "ui/input/gui_script.h"
 #include "render/png_capture.h"
+#include "skeleton/forward_kinematics.h"
+#include "ui/input/gui_script.h"
 #include "ui/input/script_player.h"
 #include "ui/panels/viewport_panel.h"
-#include "skeleton/forward_kinematics.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 

@@ -5,11 +5,11 @@
 
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/shell/editor_session.h"
-#include "ui/input/gui_script.h"
 #include "skeleton/forward_kinematics.h"
+#include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
+#include "ui/shell/editor_session.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -73,7 +73,8 @@ TEST_CASE("gui overlays: onion skins show the frames around the current one, tra
         CHECK(edited.currentPoint == 20);
         CHECK(edited.tickRadiusCm > 0.0f);
         for (int i = 0; i < 41; ++i) {
-            const glm::vec3 captured = render::toGlm(effectorCm(doc.clip().skeleton, doc.clip().frames[40 + i], Effector::kRHand));
+            const glm::vec3 captured =
+                render::toGlm(effectorCm(doc.clip().skeleton, doc.clip().frames[40 + i], Effector::kRHand));
             CHECK(overlayDistanceCm(edited.pointsCm[static_cast<std::size_t>(i)], captured) < 1e-3);
         }
     }
@@ -93,16 +94,19 @@ TEST_CASE("gui overlays: onion skins show the frames around the current one, tra
     const render::Path& capturedPart = after.paths[0];
     const render::Path& edited = after.paths[1];
     REQUIRE(edited.pointsCm.size() == 41);
-    auto capturedHand = [&](int f) { return render::toGlm(effectorCm(doc.clip().skeleton, doc.clip().frames[f], Effector::kRHand)); };
+    auto capturedHand = [&](int f) {
+        return render::toGlm(effectorCm(doc.clip().skeleton, doc.clip().frames[f], Effector::kRHand));
+    };
     bool holdsFrame60 = false;
-    for (const glm::vec3& p : capturedPart.pointsCm) holdsFrame60 = holdsFrame60 || overlayDistanceCm(p, capturedHand(60)) < 1e-3;
+    for (const glm::vec3& p : capturedPart.pointsCm)
+        holdsFrame60 = holdsFrame60 || overlayDistanceCm(p, capturedHand(60)) < 1e-3;
     CHECK(holdsFrame60);
     CHECK(capturedPart.pointsCm.size() < 41);  // frames 40.. outside the falloff agree and are left out
     const double moved = overlayDistanceCm(edited.pointsCm[20], capturedHand(60));
     INFO("the hand moved " << moved << " cm on frame 60");
     CHECK(moved > 5.0);
     CHECK(overlayDistanceCm(edited.pointsCm[25], capturedHand(65)) > 0.5);  // the spread, 5 frames on
-    CHECK(overlayDistanceCm(edited.pointsCm[0], capturedHand(40)) < 1e-3);   // outside the falloff
+    CHECK(overlayDistanceCm(edited.pointsCm[0], capturedHand(40)) < 1e-3);  // outside the falloff
 
     // Without the captured reference only the edited trail is drawn.
     s.showCapturedTrails = false;
@@ -134,7 +138,8 @@ TEST_CASE("gui overlays: a session keeps the onion skin and trail settings") {
     CHECK(s.onionSkin.spacing == 7);
     for (int i = 0; i < render::kTrailPartCount; ++i) {
         CAPTURE(i);
-        CHECK(s.trails[i] == (i == static_cast<int>(render::TrailPart::kLFoot) || i == static_cast<int>(render::TrailPart::kRoot)));
+        CHECK(s.trails[i] ==
+              (i == static_cast<int>(render::TrailPart::kLFoot) || i == static_cast<int>(render::TrailPart::kRoot)));
     }
     CHECK(s.trailHalfSpan == 45);
     CHECK_FALSE(s.showCapturedTrails);

@@ -7,11 +7,11 @@
 #include <initializer_list>
 
 #include "edit/joint_rotation.h"
-#include "skeleton/forward_kinematics.h"
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
+#include "skeleton/forward_kinematics.h"
 #include "ui/input/gui_script.h"
 #include "ui/input/input_state.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -46,10 +46,12 @@ TEST_CASE("gui pose tools: Ctrl+Shift+M mirrors the pose as one undo step, and t
     CHECK(doc.undoLabel() == "mirror pose on frame 31");
     const auto errors = h->play(ui::GuiScript::parse("1 action mirror-pose\n"));
     REQUIRE(errors.empty());
-    for (int j = 1; j < sk.jointCount(); ++j) CHECK((doc.currentPose().anglesDeg[j] - before.anglesDeg[j]).cwiseAbs().maxCoeff() < 1e-9);
+    for (int j = 1; j < sk.jointCount(); ++j)
+        CHECK((doc.currentPose().anglesDeg[j] - before.anglesDeg[j]).cwiseAbs().maxCoeff() < 1e-9);
 }
 
-TEST_CASE("gui pose tools: dragging a Rotate joint slider previews, then changes only that joint's DOFs as one undo step") {
+TEST_CASE(
+    "gui pose tools: dragging a Rotate joint slider previews, then changes only that joint's DOFs as one undo step") {
     auto h = test::makeHarness(false, false);
     if (!h) return;
     ui::EditorState& s = h->app->state();
@@ -100,8 +102,9 @@ TEST_CASE("gui pose tools: rotate-joint with the learned prior holds the joint's
     if (!h) return;
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
-    const auto errors = h->play(ui::GuiScript::parse("1 action frame 61\n2 action pin lfoot\n3 action pin rfoot\n"
-                                                     "4 action follow-prior on\n5 action rotate-joint lowerback 20 0 5\n"));
+    const auto errors =
+        h->play(ui::GuiScript::parse("1 action frame 61\n2 action pin lfoot\n3 action pin rfoot\n"
+                                     "4 action follow-prior on\n5 action rotate-joint lowerback 20 0 5\n"));
     REQUIRE(errors.empty());
     const Skeleton& sk = doc.clip().skeleton;
     const int j = sk.findBone("lowerback");
@@ -135,7 +138,8 @@ TEST_CASE("gui pose tools: with the Rotate joint window shown, clicking a bone i
         forwardKinematics(sk, s.doc.currentPose(), fk);
         const Eigen::Vector3d mid = 0.5 * (fk.jointCm[j] + boneEndCm(sk, fk, j));
         glm::vec3 p;
-        REQUIRE(s.camera.project(glm::vec3(float(mid.x()), float(mid.y()), float(mid.z())), s.viewportWidth, s.viewportHeight, p));
+        REQUIRE(s.camera.project(glm::vec3(float(mid.x()), float(mid.y()), float(mid.z())), s.viewportWidth,
+                                 s.viewportHeight, p));
         h->input.mouseX = s.viewportX + p.x;
         h->input.mouseY = s.viewportY + p.y;
         h->frame(2);

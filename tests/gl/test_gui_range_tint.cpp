@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/input/gui_script.h"
 #include "render/range_tint.h"
+#include "ui/input/gui_script.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::makeHarness;
@@ -99,8 +99,8 @@ TEST_CASE("gui range tint: a small drag stays in range and would be admitted") {
     REQUIRE(doc.dragging());
     const std::optional<AdmissionVerdict> v = doc.currentPoseVerdict();
     REQUIRE(v);
-    INFO("reason '" << v->reason << "'  nearest captured frame " << v->capture.nearestCm << " cm (median " << v->nearestMedianCm << ", limit "
-                                   << v->nearestLimitCm << ")  legend: " << s.rangeLegend);
+    INFO("reason '" << v->reason << "'  nearest captured frame " << v->capture.nearestCm << " cm (median "
+                    << v->nearestMedianCm << ", limit " << v->nearestLimitCm << ")  legend: " << s.rangeLegend);
     CHECK(v->admitted);
     const render::RangeTint expected = render::rangeTint(*v);
     CHECK(expected.band != render::RangeBand::kOutOfRange);

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 

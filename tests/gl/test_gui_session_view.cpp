@@ -5,10 +5,10 @@
 
 #include <filesystem>
 
-#include "ui/shell/editor_app.h"
 #include "editor_harness.h"
-#include "ui/panels/viewport_panel.h"
 #include "test_paths.h"
+#include "ui/panels/viewport_panel.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 namespace fs = std::filesystem;

@@ -14,9 +14,9 @@
 #include <sstream>
 #include <thread>
 
+#include "document_helpers.h"
 #include "edit/autosave.h"
 #include "edit/session_file.h"
-#include "document_helpers.h"
 #include "editor_harness.h"
 #include "gl_test_paths.h"
 #include "gp/model_file.h"
@@ -60,8 +60,10 @@ std::vector<std::string> bvhFrames(const std::string& path) {
     std::vector<std::string> out;
     bool motion = false;
     for (std::string line; std::getline(in, line);) {
-        if (motion) out.push_back(line);
-        else if (line.rfind("Frame Time:", 0) == 0) motion = true;
+        if (motion)
+            out.push_back(line);
+        else if (line.rfind("Frame Time:", 0) == 0)
+            motion = true;
     }
     return out;
 }
@@ -88,7 +90,8 @@ pid_t spawnEditor(const std::vector<std::string>& args, const std::vector<std::p
 
 // Waits up to `seconds` for a file in `dir` whose name contains `part` (ends with it if
 // `suffix`); "" if none appeared or the editor ended first.
-std::string waitForFile(const std::string& dir, const std::string& part, double seconds, pid_t child, bool suffix = false) {
+std::string waitForFile(const std::string& dir, const std::string& part, double seconds, pid_t child,
+                        bool suffix = false) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     while (std::chrono::steady_clock::now() < end) {
         for (const auto& e : fs::directory_iterator(dir)) {
@@ -111,7 +114,8 @@ void killAndReap(pid_t pid) {
 
 }  // namespace
 
-TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, other frames bit-identical, undo/redo exact") {
+TEST_CASE(
+    "gui: set path keys, move one with the mouse, regenerate, keys met, other frames bit-identical, undo/redo exact") {
     auto h = test::makeHarness(false);
     if (!h) return;
     EditorDocument& doc = h->app->state().doc;
@@ -124,7 +128,7 @@ TEST_CASE("gui: set path keys, move one with the mouse, regenerate, keys met, ot
     s.add(2, "action", {"path", "lfoot"});  // the left foot swings over 89–131 (the right one is planted)
     s.add(3, "action", {"path-keys", "89", "103", "117", "131"});
     s.add(4, "action", {"path-offset", "2", "0", "10", "4"});  // a numeric nudge of key 2
-    s.add(6, "hover", {"key:3"});                               // key 3 dragged up with the mouse
+    s.add(6, "hover", {"key:3"});                              // key 3 dragged up with the mouse
     s.add(8, "down", {"left"});
     for (int k = 0; k < 5; ++k) s.add(10 + 2 * k, "moveby", {"0", "-8"});
     s.add(22, "up", {"left"});

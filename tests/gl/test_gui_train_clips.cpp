@@ -3,17 +3,18 @@
 // tiny model (two kicks of subject 10, frames 1..60 every 3rd of each: N = 40, M = 15, T = 1) off
 // the UI thread, and the model is installed with the open clip primary and both clips on the
 // latent map's legend. Esc closes the modal without changes; an open BVH clip offers its own
-// hierarchy only and trains a BVH model; the script action names what is wrong, and Add file ticks a clip from elsewhere.
+// hierarchy only and trains a BVH model; the script action names what is wrong, and Add file ticks a clip from
+// elsewhere.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
-#include "ui/shell/editor_app.h"
-#include "gp/pca_init.h"
 #include "editor_harness.h"
+#include "gp/pca_init.h"
+#include "ui/shell/editor_app.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -116,7 +117,8 @@ TEST_CASE("gui: Train on clips on a BVH clip refuses other hierarchies and train
     REQUIRE(w.candidates().size() == 3u);
     CHECK(w.candidates()[0].usable);
     for (std::size_t i = 1; i < 3; ++i) CHECK(w.candidates()[i].reason.rfind("another skeleton (", 0) == 0);
-    CHECK(h->app->runAction({"train-clips", "02_03"}).rfind("02_03 cannot train with 49_04: another skeleton (", 0) == 0);
+    CHECK(h->app->runAction({"train-clips", "02_03"}).rfind("02_03 cannot train with 49_04: another skeleton (", 0) ==
+          0);
     // The open clip alone, a tiny run: a BVH model (its own channels, d by eq. 4) is installed.
     h->app->trainClipsWindow().selection() = {2, 200, 4};
     tinyTraining(*h, 20);
@@ -141,12 +143,15 @@ TEST_CASE("gui: the train-clips action names what is wrong and trains nothing") 
     ui::EditorApp& app = *h->app;
     CHECK(app.runAction({"train-clips", "10_09"}) ==
           "no clip '10_09' beside the open clip (offered: 10_02; give a path to add another file)");
-    CHECK(app.runAction({"train-clips", "16_01"}).rfind("16_01 cannot train with 10_03: another skeleton (16.asf): joint ", 0) == 0);
+    CHECK(app.runAction({"train-clips", "16_01"})
+              .rfind("16_01 cannot train with 10_03: another skeleton (16.asf): joint ", 0) == 0);
     CHECK(app.runAction({"train-clips", "10_02", "5"}) == "expected a frame range A:B or all, found '5'");
-    CHECK(app.runAction({"train-clips", "10_02", "1:1"}) == "expected at least 3 training frames after --frames/--step, found 2");
+    CHECK(app.runAction({"train-clips", "10_02", "1:1"}) ==
+          "expected at least 3 training frames after --frames/--step, found 2");
     CHECK(app.runAction({"train-clips", "10_02", "1:400"}) ==
           "expected --frames A:B with 1 ≤ A ≤ B ≤ 362 (10_03's frames counted from 1), found '1:400'");
-    CHECK(app.runAction({"train-clips", test::mocapDir() + "/asf_amc/10_99.amc"}) == "10_99 cannot train with 10_03: no such file");
+    CHECK(app.runAction({"train-clips", test::mocapDir() + "/asf_amc/10_99.amc"}) ==
+          "10_99 cannot train with 10_03: no such file");
     // Add file: a kick of subject 10 from another folder is ticked; a second file named like a
     // listed clip is refused (a model names its clips by file stem).
     namespace fs = std::filesystem;
@@ -160,7 +165,8 @@ TEST_CASE("gui: the train-clips action names what is wrong and trains nothing") 
     CHECK(w.addFile((dir / "10_05.amc").string()) == "");
     CHECK(w.candidates().back().name == "10_05");
     CHECK(w.checked(w.candidates().size() - 1));
-    CHECK(w.addFile((dir / "10_02.amc").string()) == "expected clips with distinct names (file stems), found 10_02 twice");
+    CHECK(w.addFile((dir / "10_02.amc").string()) ==
+          "expected clips with distinct names (file stems), found 10_02 twice");
     fs::remove_all(dir);
     CHECK_FALSE(app.state().training.running());
     CHECK_FALSE(app.state().doc.hasModel());

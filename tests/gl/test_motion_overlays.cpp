@@ -79,7 +79,7 @@ TEST_CASE("onion skin: ghosts fade with distance, green before and blue after, a
     CHECK(nearBefore.ghostAlpha == doctest::Approx(0.45));
     CHECK(midBefore.ghostAlpha == doctest::Approx(0.325));
     CHECK(farBefore.ghostAlpha == doctest::Approx(0.20));
-    CHECK(after.ghostAlpha == doctest::Approx(0.45));  // one ghost after: the nearest one
+    CHECK(after.ghostAlpha == doctest::Approx(0.45));        // one ghost after: the nearest one
     CHECK(nearBefore.ghostTint.g > nearBefore.ghostTint.r);  // green before
     CHECK(after.ghostTint.b > after.ghostTint.g);            // blue after
     // The ghost is the frame's pose, slim: the figure's bones at half their thickness, no joint balls.
@@ -113,8 +113,8 @@ TEST_CASE("motion trail: the point's FK position on every frame of the window, a
     forwardKinematics(clip.skeleton, clip.frames[3], fk);
     CHECK(trailPointIs(root.pointsCm[3], fk.jointCm[0]));
     // Clamped to the clip; the captured reference is thinner, unticked and has no current point.
-    const Path captured = motionTrail(clip.skeleton, poseAt, clip.frameCount(), TrailPart::kLFoot, -30,
-                                      clip.frameCount() + 30, 0, true);
+    const Path captured =
+        motionTrail(clip.skeleton, poseAt, clip.frameCount(), TrailPart::kLFoot, -30, clip.frameCount() + 30, 0, true);
     CHECK(captured.pointsCm.size() == static_cast<std::size_t>(clip.frameCount()));
     CHECK(captured.radiusCm < hand.radiusCm);
     CHECK(captured.tickRadiusCm == 0.0f);
@@ -140,8 +140,9 @@ TEST_CASE("render --onion and --trail draw onion skins and trails, and bad value
                             test::kMocap + "/asf_amc/35_01.amc' --frame 100 --size 240x160 ";
     std::string out;
     REQUIRE(runOverlayCli(bin + "--out '" + dir + "/plain.png'", out) == 0);
-    REQUIRE(runOverlayCli(bin + "--onion 2:2:5 --trail rfoot --trail root --trail-frames 20 --out '" + dir + "/overlays.png'",
-                          out) == 0);
+    REQUIRE(runOverlayCli(
+                bin + "--onion 2:2:5 --trail rfoot --trail root --trail-frames 20 --out '" + dir + "/overlays.png'",
+                out) == 0);
     auto bytes = [](const std::string& p) {
         std::ifstream f(p, std::ios::binary);
         return std::vector<char>(std::istreambuf_iterator<char>(f), {});

@@ -19,8 +19,8 @@
 #include <filesystem>
 
 #include "gui_harness.h"
-#include "ui/panels/path_panel.h"
 #include "render/png_capture.h"
+#include "ui/panels/path_panel.h"
 #include "ui/panels/viewport_panel.h"
 
 using namespace mgp;
@@ -64,15 +64,17 @@ long countViewport(const render::Image& img, Pred pred) {
     return n;
 }
 // Lit colours are shaded, so each element is recognised by its hue rather than an exact value.
-bool violet(int r, int g, int b) { return b > g + 25 && r > g + 15; }             // before ghost
-bool blue(int r, int g, int b) { return b > r + 90 && b > g + 40; }               // edited path
+bool violet(int r, int g, int b) { return b > g + 25 && r > g + 15; }                   // before ghost
+bool blue(int r, int g, int b) { return b > r + 90 && b > g + 40; }                     // edited path
 bool red(int r, int g, int b) { return r > 220 && g < 120 && b < 100 && r > g + 130; }  // selected key
 long differing(const render::Image& a, const render::Image& b) {
     long n = 0;
     for (int y = 45; y < a.height - 110; ++y)
         for (int x = 0; x < a.width - 380; ++x) {
             const std::size_t i = (std::size_t(y) * a.width + x) * 4;
-            n += std::abs(a.rgba[i] - b.rgba[i]) + std::abs(a.rgba[i + 1] - b.rgba[i + 1]) + std::abs(a.rgba[i + 2] - b.rgba[i + 2]) > 30;
+            n += std::abs(a.rgba[i] - b.rgba[i]) + std::abs(a.rgba[i + 1] - b.rgba[i + 1]) +
+                     std::abs(a.rgba[i + 2] - b.rgba[i + 2]) >
+                 30;
         }
     return n;
 }
@@ -186,9 +188,9 @@ TEST_CASE("gui path: the viewport shows the edited path, its keys, the captured 
     const long path = countViewport(img, blue), pathOff = countViewport(noPath, blue);
     const long key = countViewport(img, red), keyOff = countViewport(noSelection, red);
     const long captured = differing(img, noCaptured);
-    MESSAGE("pixels on / off: before ghost " << ghost << " / " << ghostOff << ", edited path " << path << " / " << pathOff
-                                             << ", selected key " << key << " / " << keyOff << "; captured path changes "
-                                             << captured);
+    MESSAGE("pixels on / off: before ghost " << ghost << " / " << ghostOff << ", edited path " << path << " / "
+                                             << pathOff << ", selected key " << key << " / " << keyOff
+                                             << "; captured path changes " << captured);
     CHECK(ghost > 1000);
     CHECK(ghostOff < ghost / 10);
     CHECK(path - pathOff > 150);
@@ -217,7 +219,8 @@ struct PanelDriver {
         ImGui::NewFrame();
         ImGui::SetNextWindowPos(ImVec2(0, 0));
         ImGui::SetNextWindowSize(ImVec2(kPanelW, kPanelH));
-        ImGui::Begin("Path", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+        ImGui::Begin("Path", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
         ui::drawPathPanel(h.app->state());
         ImGui::End();
         ImGui::Render();
@@ -315,7 +318,8 @@ TEST_CASE("gui path: key handles stay at least 12 px across when the camera move
         for (std::size_t k = 0; k < edited.keysCm.size(); ++k) {
             glm::vec3 c, e;
             REQUIRE(s.camera.project(edited.keysCm[k], s.viewportWidth, s.viewportHeight, c));
-            REQUIRE(s.camera.project(edited.keysCm[k] + right * edited.keyRadiusCm(), s.viewportWidth, s.viewportHeight, e));
+            REQUIRE(s.camera.project(edited.keysCm[k] + right * edited.keyRadiusCm(), s.viewportWidth, s.viewportHeight,
+                                     e));
             CHECK(glm::length(glm::vec2(e - c)) >= 5.9f);  // 6 px in radius (perspective rounds a little)
         }
         // The mouse 4 px off a key's centre still hovers it.

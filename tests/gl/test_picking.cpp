@@ -45,13 +45,14 @@ TEST_CASE("picking: ray to segment distance, and the nearest bone under the ray 
     CHECK(t == doctest::Approx(10.0f).epsilon(1e-6));
     // Clamped to the segment's end, and to the ray's start (behind the origin does not count).
     CHECK(raySegmentDistance(ray, glm::vec3(3, 4, 0), glm::vec3(3, 10, 0)) == doctest::Approx(5.0f).epsilon(1e-6));
-    CHECK(raySegmentDistance(ray, glm::vec3(-5, 0, 20), glm::vec3(5, 0, 20), &t) == doctest::Approx(10.0f).epsilon(1e-6));
+    CHECK(raySegmentDistance(ray, glm::vec3(-5, 0, 20), glm::vec3(5, 0, 20), &t) ==
+          doctest::Approx(10.0f).epsilon(1e-6));
     CHECK(t == 0.0f);
     // Parallel to the ray.
     CHECK(raySegmentDistance(ray, glm::vec3(1, 0, 0), glm::vec3(1, 0, -5)) == doctest::Approx(1.0f).epsilon(1e-6));
-    const std::vector<Segment> bones{{glm::vec3(1, -5, -20), glm::vec3(1, 5, -20)},   // behind the next one
-                                             {glm::vec3(-1, -5, 0), glm::vec3(-1, 5, 0)},
-                                             {glm::vec3(8, -5, 5), glm::vec3(8, 5, 5)}};     // too far to the side
+    const std::vector<Segment> bones{{glm::vec3(1, -5, -20), glm::vec3(1, 5, -20)},  // behind the next one
+                                     {glm::vec3(-1, -5, 0), glm::vec3(-1, 5, 0)},
+                                     {glm::vec3(8, -5, 5), glm::vec3(8, 5, 5)}};  // too far to the side
     CHECK(pickSegment(bones, ray, 3.0f) == 1);
     CHECK(pickSegment(bones, ray, 0.5f) == -1);
     // A segment's own radius replaces the call's: a thin front bone is missed, the thick one behind it is hit.

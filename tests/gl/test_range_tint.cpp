@@ -46,8 +46,8 @@ TEST_CASE("range tint: an unusual pose is amber, weighted by how far it is along
 }
 
 TEST_CASE("range tint: every refusal is red at full weight") {
-    for (PoseJudgement j :
-         {PoseJudgement::kUnlikeCapture, PoseJudgement::kOutOfReach, PoseJudgement::kThroughFloor, PoseJudgement::kOffBalance}) {
+    for (PoseJudgement j : {PoseJudgement::kUnlikeCapture, PoseJudgement::kOutOfReach, PoseJudgement::kThroughFloor,
+                            PoseJudgement::kOffBalance}) {
         CAPTURE(judgementWords(j));
         const RangeTint t = rangeTint(verdict(j));
         CHECK(t.band == RangeBand::kOutOfRange);

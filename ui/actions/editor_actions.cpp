@@ -3,8 +3,8 @@
 #include <imgui.h>
 
 #include "ui/actions/action_args.h"
-#include "ui/shell/editor_app.h"
 #include "ui/input/input_state.h"
+#include "ui/shell/editor_app.h"
 
 namespace mgp::ui {
 
@@ -40,7 +40,8 @@ std::string reportRelease(EditorApp& app, std::string err) {
 }
 
 // A PATH argument runs `withPath`; none asks for the file with the dialog of `kind`.
-Run pathOrDialog(std::function<std::string(EditorApp&, const std::string&)> withPath, std::function<void(EditorApp&)> ask) {
+Run pathOrDialog(std::function<std::string(EditorApp&, const std::string&)> withPath,
+                 std::function<void(EditorApp&)> ask) {
     return [withPath = std::move(withPath), ask = std::move(ask)](EditorApp& app, const ActionArgs& a) {
         if (!a.empty()) return withPath(app, a[0]);
         ask(app);
@@ -97,129 +98,319 @@ std::vector<EditorAction> makeActions() {
     std::vector<EditorAction> t;
     auto add = [&t](EditorAction a) { t.push_back(std::move(a)); };
     // ---- File
-    add({"open", "[PATH]", "Ctrl+O", {{'O', kCtrl}}, "open an ASF/AMC or BVH clip; no PATH: the Open dialog (session, clip or model)",
-         always, false, pathOrDialog([](EditorApp& app, const std::string& p) {
-                                         // A PATH replaces the document as the dialog's choice does: after asking.
-                                         return app.runAfterAsking(app.dirty(), [&app, p] { return app.openClip(p); }, "opening a clip");
-                                     },
-                                     [](EditorApp& app) { app.askForFile(FileKind::kOpenAny, "opening another file"); })});
-    add({"save-session", "[PATH]", "Ctrl+S", {{'S', kCtrl}}, "save the session (no PATH: to its file, or ask for one)", hasClip, true,
+    add({"open",
+         "[PATH]",
+         "Ctrl+O",
+         {{'O', kCtrl}},
+         "open an ASF/AMC or BVH clip; no PATH: the Open dialog (session, clip or model)",
+         always,
+         false,
+         pathOrDialog(
+             [](EditorApp& app, const std::string& p) {
+                 // A PATH replaces the document as the dialog's choice does: after asking.
+                 return app.runAfterAsking(
+                     app.dirty(), [&app, p] { return app.openClip(p); }, "opening a clip");
+             },
+             [](EditorApp& app) { app.askForFile(FileKind::kOpenAny, "opening another file"); })});
+    add({"save-session",
+         "[PATH]",
+         "Ctrl+S",
+         {{'S', kCtrl}},
+         "save the session (no PATH: to its file, or ask for one)",
+         hasClip,
+         true,
          pathOrDialog([](EditorApp& app, const std::string& p) { return app.saveSession(p); },
                       [](EditorApp& app) { app.saveSessionOrAsk(); })});
-    add({"save-session-as", "", "Ctrl+Shift+S", {{'S', kCtrl | kShift}}, "save the session under a new name (the Save dialog)", hasClip, true,
+    add({"save-session-as",
+         "",
+         "Ctrl+Shift+S",
+         {{'S', kCtrl | kShift}},
+         "save the session under a new name (the Save dialog)",
+         hasClip,
+         true,
          plain([](EditorApp& app) { app.askForFile(FileKind::kSaveSession); })});
-    add({"open-session", "PATH", "", {}, "open a session", always, false,
-         [](EditorApp& app, const ActionArgs& a) {
+    add({"open-session", "PATH", "", {}, "open a session", always, false, [](EditorApp& app, const ActionArgs& a) {
              if (a.empty()) return std::string("expected open-session PATH");
-             return app.runAfterAsking(app.dirty(), [&app, p = a[0]] { return app.openSession(p); }, "opening a session");
+             return app.runAfterAsking(
+                 app.dirty(), [&app, p = a[0]] { return app.openSession(p); }, "opening a session");
          }});
-    add({"open-model", "[PATH]", "Ctrl+M", {{'M', kCtrl}}, "open a saved model with its clip (asks first if that is not the open clip); no PATH: the Open dialog",
-         always, false, pathOrDialog([](EditorApp& app, const std::string& p) { return app.openModel(p); },
-                                     [](EditorApp& app) { app.askForFile(FileKind::kModel, "opening a model"); })});
-    add({"model-clip", "NAME [N]", "", {}, "make the model's training clip NAME the open clip at frame N (default 1), the model staying; asks about unsaved changes",
-         hasModel, false, [](EditorApp& app, const ActionArgs& a) {
+    add({"open-model",
+         "[PATH]",
+         "Ctrl+M",
+         {{'M', kCtrl}},
+         "open a saved model with its clip (asks first if that is not the open clip); no PATH: the Open dialog",
+         always,
+         false,
+         pathOrDialog([](EditorApp& app, const std::string& p) { return app.openModel(p); },
+                      [](EditorApp& app) { app.askForFile(FileKind::kModel, "opening a model"); })});
+    add({"model-clip",
+         "NAME [N]",
+         "",
+         {},
+         "make the model's training clip NAME the open clip at frame N (default 1), the model staying; asks about "
+         "unsaved changes",
+         hasModel,
+         false,
+         [](EditorApp& app, const ActionArgs& a) {
              if (a.empty()) return std::string("expected model-clip NAME [N]");
              int n = 1;
              if (a.size() > 1)
                  if (std::string err = parseIntArg(a[1], "a frame number N", n); !err.empty()) return err;
              return app.openModelClip(a[0], n - 1);
          }});
-    add({"save-model", "[PATH]", "", {}, "save the current model; no PATH: the Save dialog", hasModel, false,
+    add({"save-model",
+         "[PATH]",
+         "",
+         {},
+         "save the current model; no PATH: the Save dialog",
+         hasModel,
+         false,
          pathOrDialog([](EditorApp& app, const std::string& p) { return app.saveModel(p); },
                       [](EditorApp& app) { app.askForFile(FileKind::kSaveModel); })});
-    add({"export-bvh", "[PATH]", "Ctrl+E", {{'E', kCtrl}}, "the edited motion as BVH; no PATH: the Save dialog", hasClip, true,
+    add({"export-bvh",
+         "[PATH]",
+         "Ctrl+E",
+         {{'E', kCtrl}},
+         "the edited motion as BVH; no PATH: the Save dialog",
+         hasClip,
+         true,
          pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".bvh"); },
                       [](EditorApp& app) { app.askForFile(FileKind::kExportBvh); })});
-    add({"export-gltf", "[PATH]", "", {}, "the edited motion as glTF 2.0 (.glb; .gltf for text); no PATH: the Save dialog", hasClip,
-         true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".glb"); },
-                            [](EditorApp& app) { app.askForFile(FileKind::kExportGltf); })});
-    add({"export-fbx", "[PATH]", "", {}, "the edited motion as FBX, converted by Blender in the background; no PATH: the Save dialog",
-         hasClip, true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".fbx"); },
-                                     [](EditorApp& app) { app.askForFile(FileKind::kExportFbx); })});
-    add({"export-png", "[PATH]", "Ctrl+Shift+E", {{'E', kCtrl | kShift}}, "the 3-D viewport as PNG; no PATH: the Save dialog", hasClip,
-         true, pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportPng(p); },
-                            [](EditorApp& app) { app.askForFile(FileKind::kExportPng); })});
-    add({"demo-clip", "", "", {}, "open the synthetic demo clip (asks about unsaved changes)", always, false,
-         plain([](EditorApp& app) { app.guardUnsaved([&app] { app.openSyntheticClip(""); }, "opening the demo clip"); })});
-    add({"autosave", "", "", {}, "write this editor's autosave file now", always, false,
+    add({"export-gltf",
+         "[PATH]",
+         "",
+         {},
+         "the edited motion as glTF 2.0 (.glb; .gltf for text); no PATH: the Save dialog",
+         hasClip,
+         true,
+         pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".glb"); },
+                      [](EditorApp& app) { app.askForFile(FileKind::kExportGltf); })});
+    add({"export-fbx",
+         "[PATH]",
+         "",
+         {},
+         "the edited motion as FBX, converted by Blender in the background; no PATH: the Save dialog",
+         hasClip,
+         true,
+         pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportMotion(p, ".fbx"); },
+                      [](EditorApp& app) { app.askForFile(FileKind::kExportFbx); })});
+    add({"export-png",
+         "[PATH]",
+         "Ctrl+Shift+E",
+         {{'E', kCtrl | kShift}},
+         "the 3-D viewport as PNG; no PATH: the Save dialog",
+         hasClip,
+         true,
+         pathOrDialog([](EditorApp& app, const std::string& p) { return app.exportPng(p); },
+                      [](EditorApp& app) { app.askForFile(FileKind::kExportPng); })});
+    add({"demo-clip",
+         "",
+         "",
+         {},
+         "open the synthetic demo clip (asks about unsaved changes)",
+         always,
+         false,
+         plain([](EditorApp& app) {
+             app.guardUnsaved([&app] { app.openSyntheticClip(""); }, "opening the demo clip");
+         })});
+    add({"autosave",
+         "",
+         "",
+         {},
+         "write this editor's autosave file now",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs&) { return app.autosaveNow(); }});
-    add({"restore-autosave", "[PATH]", "", {}, "restore an autosave (default: the newest a dead editor left)", always, false,
+    add({"restore-autosave",
+         "[PATH]",
+         "",
+         {},
+         "restore an autosave (default: the newest a dead editor left)",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs& a) { return app.restoreAutosave(a.empty() ? "" : a[0]); }});
-    add({"quit", "", "Ctrl+Q", {{'Q', kCtrl}}, "quit (asks about unsaved changes)", always, false,
+    add({"quit",
+         "",
+         "Ctrl+Q",
+         {{'Q', kCtrl}},
+         "quit (asks about unsaved changes)",
+         always,
+         false,
          plain([](EditorApp& app) { app.requestQuit(); })});
-    add({"discard-and-quit", "", "", {}, "quit without asking", always, false, plain([](EditorApp& app) { app.confirmQuit(); })});
+    add({"discard-and-quit", "", "", {}, "quit without asking", always, false, plain([](EditorApp& app) {
+             app.confirmQuit();
+         })});
     // ---- Edit
     const Enabled idle = [](const EditorApp& app) { return !docOf(app).regenerating(); };
-    add({"undo", "", "Ctrl+Z", {{'Z', kCtrl, true}}, "undo one step (a drag or a regeneration is one step; so is the model version it changed)",
-         [](const EditorApp& app) { return docOf(app).canUndo() && !docOf(app).regenerating(); }, true,
+    add({"undo",
+         "",
+         "Ctrl+Z",
+         {{'Z', kCtrl, true}},
+         "undo one step (a drag or a regeneration is one step; so is the model version it changed)",
+         [](const EditorApp& app) { return docOf(app).canUndo() && !docOf(app).regenerating(); },
+         true,
          [](EditorApp& app, const ActionArgs&) { return app.state().doc.undo(); }});
-    add({"redo", "", "Ctrl+Shift+Z", {{'Z', kCtrl | kShift, true}, {'Y', kCtrl, true}}, "redo one step (also Ctrl+Y)",
-         [](const EditorApp& app) { return docOf(app).canRedo() && !docOf(app).regenerating(); }, true,
+    add({"redo",
+         "",
+         "Ctrl+Shift+Z",
+         {{'Z', kCtrl | kShift, true}, {'Y', kCtrl, true}},
+         "redo one step (also Ctrl+Y)",
+         [](const EditorApp& app) { return docOf(app).canRedo() && !docOf(app).regenerating(); },
+         true,
          [](EditorApp& app, const ActionArgs&) { return app.state().doc.redo(); }});
-    add({"revert-frame", "", "", {}, "revert the current frame to the capture",
-         [](const EditorApp& app) { return docOf(app).isEdited(docOf(app).frame()); }, false,
+    add({"revert-frame",
+         "",
+         "",
+         {},
+         "revert the current frame to the capture",
+         [](const EditorApp& app) { return docOf(app).isEdited(docOf(app).frame()); },
+         false,
          plain([](EditorApp& app) { app.state().doc.clearEdit(app.state().doc.frame()); })});
-    add({"copy-pose", "", "Ctrl+C", {{'C', kCtrl}}, "copy the current frame's pose", hasClip, true,
+    add({"copy-pose",
+         "",
+         "Ctrl+C",
+         {{'C', kCtrl}},
+         "copy the current frame's pose",
+         hasClip,
+         true,
          plain([](EditorApp& app) { app.copyPose(); })});
-    add({"paste-pose", "", "Ctrl+V", {{'V', kCtrl}}, "paste the copied pose onto the current frame (root kept), one undo step",
-         [](const EditorApp& app) { return app.hasCopiedPose() && !docOf(app).regenerating(); }, true,
+    add({"paste-pose",
+         "",
+         "Ctrl+V",
+         {{'V', kCtrl}},
+         "paste the copied pose onto the current frame (root kept), one undo step",
+         [](const EditorApp& app) { return app.hasCopiedPose() && !docOf(app).regenerating(); },
+         true,
          [](EditorApp& app, const ActionArgs&) { return app.pastePose(); }});
     const Enabled canPose = [](const EditorApp& app) { return docOf(app).hasClip() && !docOf(app).regenerating(); };
-    add({"mirror-pose", "", "Ctrl+Shift+M", {{'M', kCtrl | kShift}},
-         "mirror the current frame's pose left/right (root position and heading kept), one undo step", canPose, true,
+    add({"mirror-pose",
+         "",
+         "Ctrl+Shift+M",
+         {{'M', kCtrl | kShift}},
+         "mirror the current frame's pose left/right (root position and heading kept), one undo step",
+         canPose,
+         true,
          [](EditorApp& app, const ActionArgs&) { return app.mirrorPose(); }});
-    add({"rotate-joint", "[JOINT ANGLE...]", "", {},
-         "set a joint's DOFs in degrees (one per axis it animates, x y z order), one undo step; no arguments: the Rotate joint window",
-         canPose, false, [](EditorApp& app, const ActionArgs& a) { return app.rotateJoint(a); }});
-    add({"follow-prior", "on|off", "", {}, "rotate joint: the rest of the pose follows the learned prior (pins and feet in contact held)",
-         always, false, [](EditorApp& app, const ActionArgs& a) {
-             if (a.empty() || (a[0] != "on" && a[0] != "off")) return "expected on or off, found '" + (a.empty() ? std::string() : a[0]) + "'";
+    add({"rotate-joint",
+         "[JOINT ANGLE...]",
+         "",
+         {},
+         "set a joint's DOFs in degrees (one per axis it animates, x y z order), one undo step; no arguments: the "
+         "Rotate joint window",
+         canPose,
+         false,
+         [](EditorApp& app, const ActionArgs& a) { return app.rotateJoint(a); }});
+    add({"follow-prior",
+         "on|off",
+         "",
+         {},
+         "rotate joint: the rest of the pose follows the learned prior (pins and feet in contact held)",
+         always,
+         false,
+         [](EditorApp& app, const ActionArgs& a) {
+             if (a.empty() || (a[0] != "on" && a[0] != "off"))
+                 return "expected on or off, found '" + (a.empty() ? std::string() : a[0]) + "'";
              app.jointWindow().setFollowPrior(a[0] == "on");
              return std::string();
          }});
-    add({"pin", "EFFECTOR", "P on handle", {}, "pin or unpin an effector (lhand rhand lfoot rfoot head)", hasClip, false,
+    add({"pin",
+         "EFFECTOR",
+         "P on handle",
+         {},
+         "pin or unpin an effector (lhand rhand lfoot rfoot head)",
+         hasClip,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;
              if (std::string err = effectorArg(a, e); !err.empty()) return err;
              app.state().doc.togglePin(e);
              return std::string();
          }});
-    add({"release", "EFFECTOR", "Alt+click on handle", {},
+    add({"release",
+         "EFFECTOR",
+         "Alt+click on handle",
+         {},
          "release a held effector on the current frame and the neighbouring frames that hold it, one undo step",
-         [](const EditorApp& app) { return !docOf(app).heldEffectors().empty(); }, false,
+         [](const EditorApp& app) { return !docOf(app).heldEffectors().empty(); },
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;
              if (std::string err = effectorArg(a, e); !err.empty()) return err;
              return reportRelease(app, app.state().doc.releaseHeld(e));
          }});
-    add({"release-all", "", "", {}, "release every held effector on every frame, one undo step",
-         [](const EditorApp& app) { return docOf(app).anythingHeld(); }, true,
+    add({"release-all",
+         "",
+         "",
+         {},
+         "release every held effector on every frame, one undo step",
+         [](const EditorApp& app) { return docOf(app).anythingHeld(); },
+         true,
          [](EditorApp& app, const ActionArgs&) { return reportRelease(app, app.state().doc.releaseAllHeld()); }});
-    add({"path", "EFFECTOR", "", {}, "edit that effector's path (default keys around the current frame)", hasClip, false,
+    add({"path",
+         "EFFECTOR",
+         "",
+         {},
+         "edit that effector's path (default keys around the current frame)",
+         hasClip,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              Effector e;
              if (std::string err = effectorArg(a, e); !err.empty()) return err;
              return app.state().doc.beginPathEdit(e);
          }});
     add({"path-keys", "F1 F2 ...", "", {}, "the path's key frames (1-based, increasing)", always, false, pathKeys});
-    add({"path-offset", "K DX DY DZ", "", {}, "key K's (1-based) offset from the captured path, cm", always, false, pathOffset});
-    add({"path-mode", "direct|displacement", "", {}, "how the path's keys move the effector", always, false,
+    add({"path-offset",
+         "K DX DY DZ",
+         "",
+         {},
+         "key K's (1-based) offset from the captured path, cm",
+         always,
+         false,
+         pathOffset});
+    add({"path-mode",
+         "direct|displacement",
+         "",
+         {},
+         "how the path's keys move the effector",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              if (a.empty() || (a[0] != "direct" && a[0] != "displacement"))
                  return "expected direct or displacement, found '" + (a.empty() ? std::string() : a[0]) + "'";
              app.state().doc.setPathMode(a[0] == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
              return std::string();
          }});
-    add({"regenerate", "[ITERS]", "Ctrl+R", {{'R', kCtrl}}, "solve the path span between the first and last key (background)",
-         [](const EditorApp& app) { return docOf(app).pathEdit() && !docOf(app).regenerating(); }, false,
+    add({"regenerate",
+         "[ITERS]",
+         "Ctrl+R",
+         {{'R', kCtrl}},
+         "solve the path span between the first and last key (background)",
+         [](const EditorApp& app) { return docOf(app).pathEdit() && !docOf(app).regenerating(); },
+         false,
          regenerate});
-    add({"cancel-regenerate", "", "", {}, "cancel the running regeneration",
-         [](const EditorApp& app) { return docOf(app).regenerating(); }, false,
+    add({"cancel-regenerate",
+         "",
+         "",
+         {},
+         "cancel the running regeneration",
+         [](const EditorApp& app) { return docOf(app).regenerating(); },
+         false,
          plain([](EditorApp& app) { app.state().doc.cancelRegenerate(); })});
-    add({"key", "", "K", {{'K', 0}}, "mark or unmark the current frame as a key", hasClip, false,
+    add({"key",
+         "",
+         "K",
+         {{'K', 0}},
+         "mark or unmark the current frame as a key",
+         hasClip,
+         false,
          plain([](EditorApp& app) { app.state().doc.toggleKey(app.state().doc.frame()); })});
-    add({"timeline-range", "FIRST LAST|off", "Shift+drag on the timeline", {},
-         "select frames FIRST..LAST (1-based) for Fill between keys, or drop the selection", hasClip, false,
+    add({"timeline-range",
+         "FIRST LAST|off",
+         "Shift+drag on the timeline",
+         {},
+         "select frames FIRST..LAST (1-based) for Fill between keys, or drop the selection",
+         hasClip,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              if (a.size() == 1 && a[0] == "off") {
                  app.state().timelineRange.reset();
@@ -235,52 +426,116 @@ std::vector<EditorAction> makeActions() {
              app.state().timelineRange = std::make_pair(first - 1, last - 1);
              return std::string();
          }});
-    add({"fill-between-keys", "[prior|interpolate]", "Ctrl+I", {{'I', kCtrl}},
-         "regenerate the frames between keys from the keys and the training clips (background), one undo step: every gap inside "
+    add({"fill-between-keys",
+         "[prior|interpolate]",
+         "Ctrl+I",
+         {{'I', kCtrl}},
+         "regenerate the frames between keys from the keys and the training clips (background), one undo step: every "
+         "gap inside "
          "the timeline's Shift+drag range, else the gap around the playhead",
          [](const EditorApp& app) {
              const EditorDocument& d = docOf(app);
              const auto& range = app.state().timelineRange;
-             const bool gaps = range ? !d.keyGapsIn(range->first, range->second).empty() : d.keyGapAt(d.frame()).has_value();
+             const bool gaps =
+                 range ? !d.keyGapsIn(range->first, range->second).empty() : d.keyGapAt(d.frame()).has_value();
              return d.hasModel() && gaps && !d.regenerating();
          },
-         true, [](EditorApp& app, const ActionArgs& a) {
+         true,
+         [](EditorApp& app, const ActionArgs& a) {
              InbetweenMethod method = InbetweenMethod::kPrior;
              if (!a.empty()) {
-                 if (a[0] == "interpolate") method = InbetweenMethod::kInterpolate;
-                 else if (a[0] != "prior") return "expected prior or interpolate, found '" + a[0] + "'";
+                 if (a[0] == "interpolate")
+                     method = InbetweenMethod::kInterpolate;
+                 else if (a[0] != "prior")
+                     return "expected prior or interpolate, found '" + a[0] + "'";
              }
              const std::string err = app.state().doc.startFill(method, app.state().timelineRange);
              if (err.empty()) app.state().setStatus("filling between keys...");
              return err;
          }});
-    add({"end-path", "", "", {}, "stop editing the path", [](const EditorApp& app) { return docOf(app).pathEdit().has_value(); },
-         false, plain([](EditorApp& app) { app.state().doc.endPathEdit(); })});
+    add({"end-path",
+         "",
+         "",
+         {},
+         "stop editing the path",
+         [](const EditorApp& app) { return docOf(app).pathEdit().has_value(); },
+         false,
+         plain([](EditorApp& app) { app.state().doc.endPathEdit(); })});
     // ---- Model
-    const Enabled canTrain = [](const EditorApp& app) { return docOf(app).trainable() && !app.state().training.running(); };
-    add({"train", "[fas|sgplvm] [M] [T]", "Ctrl+T", {{'T', kCtrl}}, "train on the open clip (defaults from the Model panel)",
-         canTrain, false, train});
-    add({"train-clips", "[CLIPS [A:B|all] [K] [M] [T]]", "", {},
-         "train on the open clip and others of its skeleton (CLIPS: comma-separated names or paths; frames A:B and step K "
+    const Enabled canTrain = [](const EditorApp& app) {
+        return docOf(app).trainable() && !app.state().training.running();
+    };
+    add({"train",
+         "[fas|sgplvm] [M] [T]",
+         "Ctrl+T",
+         {{'T', kCtrl}},
+         "train on the open clip (defaults from the Model panel)",
+         canTrain,
+         false,
+         train});
+    add({"train-clips",
+         "[CLIPS [A:B|all] [K] [M] [T]]",
+         "",
+         {},
+         "train on the open clip and others of its skeleton (CLIPS: comma-separated names or paths; frames A:B and "
+         "step K "
          "of each clip; M, T as for train); no arguments: the Train on clips dialog",
-         [](const EditorApp& app) { return docOf(app).hasClip() && !app.state().training.running(); }, false,
+         [](const EditorApp& app) { return docOf(app).hasClip() && !app.state().training.running(); },
+         false,
          [](EditorApp& app, const ActionArgs& a) { return app.trainOnClips(a); }});
-    add({"cancel-train", "", "", {}, "cancel the training run", [](const EditorApp& app) { return app.state().training.running(); },
-         false, plain([](EditorApp& app) { app.state().training.cancel(); })});
-    add({"train-compare", "", "", {}, "train the compare model (the other kernel) for `compare model`", always, false,
+    add({"cancel-train",
+         "",
+         "",
+         {},
+         "cancel the training run",
+         [](const EditorApp& app) { return app.state().training.running(); },
+         false,
+         plain([](EditorApp& app) { app.state().training.cancel(); })});
+    add({"train-compare",
+         "",
+         "",
+         {},
+         "train the compare model (the other kernel) for `compare model`",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs&) { return app.startCompareTraining(); }});
-    add({"adaptive", "on|off", "", {}, "the adaptive active set (accepted poses join the model)", always, false,
+    add({"adaptive",
+         "on|off",
+         "",
+         {},
+         "the adaptive active set (accepted poses join the model)",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
-             if (a.empty() || (a[0] != "on" && a[0] != "off")) return "expected on or off, found '" + (a.empty() ? std::string() : a[0]) + "'";
+             if (a.empty() || (a[0] != "on" && a[0] != "off"))
+                 return "expected on or off, found '" + (a.empty() ? std::string() : a[0]) + "'";
              app.state().doc.setAdaptiveEnabled(a[0] == "on");
              return std::string();
          }});
-    add({"wait", "", "", {}, "block until training, exports, adaptive updates and the latent map are done", always, false,
+    add({"wait",
+         "",
+         "",
+         {},
+         "block until training, exports, adaptive updates and the latent map are done",
+         always,
+         false,
          plain([](EditorApp& app) { app.waitIdle(); })});
     // ---- View
-    add({"frame-camera", "", "F", {}, "frame the character (F over the viewport)", always, false,
+    add({"frame-camera",
+         "",
+         "F",
+         {},
+         "frame the character (F over the viewport)",
+         always,
+         false,
          plain([](EditorApp& app) { app.state().requestFrameCamera = true; })});
-    add({"compare", "none|plain|model", "", {}, "the compare ghost: off, plain IK or the second model", always, false,
+    add({"compare",
+         "none|plain|model",
+         "",
+         {},
+         "the compare ghost: off, plain IK or the second model",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              CompareMode m;
              if (a.empty() || !parseCompareMode(a[0], m))
@@ -288,22 +543,41 @@ std::vector<EditorAction> makeActions() {
              app.state().doc.setCompareMode(m);
              return std::string();
          }});
-    add({"reset-layout", "", "", {}, "the panels' default sizes", [](const EditorApp& app) { return app.layoutCustomized(); },
-         false, plain([](EditorApp& app) { app.resetLayout(); })});
+    add({"reset-layout",
+         "",
+         "",
+         {},
+         "the panels' default sizes",
+         [](const EditorApp& app) { return app.layoutCustomized(); },
+         false,
+         plain([](EditorApp& app) { app.resetLayout(); })});
     // ---- Playback
-    add({"play-pause", "", "Space", {{key::kSpace}}, "start or stop playback", always, false,
-         plain([](EditorApp& app) { app.state().playing = !app.state().playing; })});
-    add({"play", "", "", {}, "start playback", always, false, plain([](EditorApp& app) { app.state().playing = true; })});
-    add({"pause", "", "", {}, "stop playback", always, false, plain([](EditorApp& app) { app.state().playing = false; })});
+    add({"play-pause", "", "Space", {{key::kSpace}}, "start or stop playback", always, false, plain([](EditorApp& app) {
+             app.state().playing = !app.state().playing;
+         })});
+    add({"play", "", "", {}, "start playback", always, false, plain([](EditorApp& app) {
+             app.state().playing = true;
+         })});
+    add({"pause", "", "", {}, "stop playback", always, false, plain([](EditorApp& app) {
+             app.state().playing = false;
+         })});
     add({"next-frame", "", "Right", {{key::kRight, kNoMods, true}}, "the next frame", always, false, step(1)});
     add({"previous-frame", "", "Left", {{key::kLeft, kNoMods, true}}, "the previous frame", always, false, step(-1)});
     add({"forward-10", "", "Shift+Right", {{key::kRight, kShift, true}}, "10 frames forward", always, false, step(10)});
     add({"back-10", "", "Shift+Left", {{key::kLeft, kShift, true}}, "10 frames back", always, false, step(-10)});
-    add({"first-frame", "", "Home", {{key::kHome}}, "the first frame", always, false,
-         plain([](EditorApp& app) { app.state().doc.setFrame(0); })});
-    add({"last-frame", "", "End", {{key::kEnd}}, "the last frame", always, false,
-         plain([](EditorApp& app) { app.state().doc.setFrame(app.state().doc.frameCount() - 1); })});
-    add({"frame", "N", "", {}, "go to frame N (1-based, as the timeline shows it)", always, false,
+    add({"first-frame", "", "Home", {{key::kHome}}, "the first frame", always, false, plain([](EditorApp& app) {
+             app.state().doc.setFrame(0);
+         })});
+    add({"last-frame", "", "End", {{key::kEnd}}, "the last frame", always, false, plain([](EditorApp& app) {
+             app.state().doc.setFrame(app.state().doc.frameCount() - 1);
+         })});
+    add({"frame",
+         "N",
+         "",
+         {},
+         "go to frame N (1-based, as the timeline shows it)",
+         always,
+         false,
          [](EditorApp& app, const ActionArgs& a) {
              int n = 0;
              if (std::string err = parseIntArg(a.empty() ? "" : a[0], "a frame number N", n); !err.empty()) return err;
@@ -311,9 +585,19 @@ std::vector<EditorAction> makeActions() {
              return std::string();
          }});
     // ---- Help
-    add({"help", "", "F1", {{key::kF1}}, "show or hide the controls window", always, false, plain([](EditorApp& app) { app.toggleHelp(); })});
-    add({"screenshot", "PATH", "", {}, "save a PNG of the whole window after this frame (scripts only)", always, false,
-         [](EditorApp&, const ActionArgs&) { return std::string("screenshot: only a script can take one (after its frame is drawn)"); }});
+    add({"help", "", "F1", {{key::kF1}}, "show or hide the controls window", always, false, plain([](EditorApp& app) {
+             app.toggleHelp();
+         })});
+    add({"screenshot",
+         "PATH",
+         "",
+         {},
+         "save a PNG of the whole window after this frame (scripts only)",
+         always,
+         false,
+         [](EditorApp&, const ActionArgs&) {
+             return std::string("screenshot: only a script can take one (after its frame is drawn)");
+         }});
     return t;
 }
 }  // namespace

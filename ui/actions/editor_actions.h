@@ -23,11 +23,11 @@ struct KeyChord {
 };
 
 struct EditorAction {
-    std::string name;      // the script verb
-    std::string args;      // argument synopsis ("PATH", "[ITERS]"), "" none
-    std::string shortcut;  // as menus and F1 show it ("Ctrl+Shift+Z"), "" none
+    std::string name;              // the script verb
+    std::string args;              // argument synopsis ("PATH", "[ITERS]"), "" none
+    std::string shortcut;          // as menus and F1 show it ("Ctrl+Shift+Z"), "" none
     std::vector<KeyChord> chords;  // the keys that run it (may be fewer than `shortcut` names)
-    std::string summary;   // what it does, one line (F1 and docs/guide.md)
+    std::string summary;           // what it does, one line (F1 and docs/guide.md)
     // Whether the menu item is enabled and the shortcut fires; null = always.
     std::function<bool(const EditorApp&)> enabled;
     // The shortcut also fires when disabled, so the user hears why ("nothing to undo").

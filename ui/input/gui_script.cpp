@@ -6,10 +6,10 @@
 #include <set>
 #include <sstream>
 
-#include "ui/actions/editor_actions.h"
 #include "io/parse_error.h"
 #include "io/text_reader.h"
 #include "skeleton/skeleton.h"
+#include "ui/actions/editor_actions.h"
 
 namespace mgp::ui {
 
@@ -20,11 +20,11 @@ int keyFromName(const std::string& nameIn) {
     if (long long k = 0; n.size() >= 2 && n.size() <= 3 && n[0] == 'F' && parseInt(n.substr(1), k) && k >= 1 && k <= 12)
         return key::kF1 + static_cast<int>(k) - 1;
     static const std::pair<const char*, int> named[] = {
-        {"SPACE", key::kSpace},   {"LEFT", key::kLeft},         {"RIGHT", key::kRight},   {"UP", key::kUp},
-        {"DOWN", key::kDown},     {"ESCAPE", key::kEscape},     {"ESC", key::kEscape},    {"ENTER", key::kEnter},
-        {"TAB", key::kTab},       {"DELETE", key::kDelete},     {"BACKSPACE", key::kBackspace},
-        {"HOME", key::kHome},     {"END", key::kEnd},           {"PAGEUP", key::kPageUp}, {"PAGEDOWN", key::kPageDown},
-        {"SHIFT", key::kLeftShift}, {"CTRL", key::kLeftCtrl},   {"ALT", key::kLeftAlt}};
+        {"SPACE", key::kSpace},   {"LEFT", key::kLeft},     {"RIGHT", key::kRight},         {"UP", key::kUp},
+        {"DOWN", key::kDown},     {"ESCAPE", key::kEscape}, {"ESC", key::kEscape},          {"ENTER", key::kEnter},
+        {"TAB", key::kTab},       {"DELETE", key::kDelete}, {"BACKSPACE", key::kBackspace}, {"HOME", key::kHome},
+        {"END", key::kEnd},       {"PAGEUP", key::kPageUp}, {"PAGEDOWN", key::kPageDown},   {"SHIFT", key::kLeftShift},
+        {"CTRL", key::kLeftCtrl}, {"ALT", key::kLeftAlt}};
     for (const auto& [s, k] : named)
         if (n == s) return k;
     return -1;
@@ -43,8 +43,8 @@ bool isCount(const std::string& s, int minimum) {
 }  // namespace
 
 GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
-    static const std::set<std::string> verbs = {"move", "moveby", "hover", "down", "up", "wheel",
-                                                "key", "keydown", "keyup", "action"};
+    static const std::set<std::string> verbs = {"move",  "moveby", "hover",   "down",  "up",
+                                                "wheel", "key",    "keydown", "keyup", "action"};
     GuiScript script;
     std::istringstream in(text);
     std::string line;
@@ -56,8 +56,7 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
         std::vector<std::string> tok;
         for (std::string t; ls >> t;) tok.push_back(t);
         if (tok.empty()) continue;
-        if (!isCount(tok[0], 0))
-            throwParseError(file, lineNo, "a frame number ≥ 0 first", "'" + tok[0] + "'");
+        if (!isCount(tok[0], 0)) throwParseError(file, lineNo, "a frame number ≥ 0 first", "'" + tok[0] + "'");
         if (tok.size() < 2) throwParseError(file, lineNo, "a verb after the frame number", "end of line");
         const std::string& verb = tok[1];
         if (!verbs.count(verb))
@@ -78,7 +77,8 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             const std::size_t colon = args[0].rfind(':');
             const bool dot = args[0].rfind("dot:", 0) == 0 && colon > 4 && isCount(args[0].substr(colon + 1), 1);
             if (!key && !dot && !parseEffector(args[0], e))
-                throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head, key:N or dot:CLIP:N", "'" + args[0] + "'");
+                throwParseError(file, lineNo, "lhand, rhand, lfoot, rfoot, head, key:N or dot:CLIP:N",
+                                "'" + args[0] + "'");
         } else if (verb == "down" || verb == "up") {
             need(1, "a button (left, right, middle)");
             if (args[0] != "left" && args[0] != "right" && args[0] != "middle")
@@ -88,7 +88,8 @@ GuiScript GuiScript::parse(const std::string& text, const std::string& file) {
             if (!isNumber(args[0])) throwParseError(file, lineNo, "a number", "'" + args[0] + "'");
         } else if (verb == "key" || verb == "keydown" || verb == "keyup") {
             need(1, "a key name");
-            if (keyFromName(args[0]) < 0) throwParseError(file, lineNo, "a key name (A-Z, 0-9, SPACE, LEFT, ...)", "'" + args[0] + "'");
+            if (keyFromName(args[0]) < 0)
+                throwParseError(file, lineNo, "a key name (A-Z, 0-9, SPACE, LEFT, ...)", "'" + args[0] + "'");
         } else if (verb == "action") {
             need(1, "an action name");
             const ActionTable& table = ActionTable::editor();

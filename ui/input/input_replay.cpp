@@ -21,8 +21,10 @@ void InputReplay::next(InputState& in) {
         if (pressed && modifier) break;
         pressed = pressed || (e.down && !modifier);
         touched.push_back(id);
-        if (e.isKey) keys_[e.code] = e.down;
-        else buttons_[e.code] = e.down;
+        if (e.isKey)
+            keys_[e.code] = e.down;
+        else
+            buttons_[e.code] = e.down;
         queue_.pop_front();
     }
     if (queue_.empty()) {

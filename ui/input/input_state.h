@@ -12,14 +12,13 @@ namespace key {
 constexpr int kSpace = 32, kEscape = 256, kEnter = 257, kTab = 258, kBackspace = 259, kDelete = 261;
 constexpr int kRight = 262, kLeft = 263, kDown = 264, kUp = 265, kPageUp = 266, kPageDown = 267;
 constexpr int kHome = 268, kEnd = 269, kF1 = 290;
-constexpr int kLeftShift = 340, kLeftCtrl = 341, kLeftAlt = 342, kRightShift = 344, kRightCtrl = 345,
-              kRightAlt = 346;
+constexpr int kLeftShift = 340, kLeftCtrl = 341, kLeftAlt = 342, kRightShift = 344, kRightCtrl = 345, kRightAlt = 346;
 constexpr int kCount = 512;
 }  // namespace key
 
 inline bool isModifierKey(int k) {
-    return k == key::kLeftShift || k == key::kRightShift || k == key::kLeftCtrl || k == key::kRightCtrl || k == key::kLeftAlt ||
-           k == key::kRightAlt;
+    return k == key::kLeftShift || k == key::kRightShift || k == key::kLeftCtrl || k == key::kRightCtrl ||
+           k == key::kLeftAlt || k == key::kRightAlt;
 }
 
 // One press or release, in the order it happened (InputState::events).
@@ -34,7 +33,7 @@ struct InputState {
     std::array<bool, 3> mouseDown{};       // left, right, middle
     float wheel = 0.0f;                    // accumulated since the last frame (+ = away from the user)
     std::array<bool, key::kCount> keys{};
-    std::u32string chars;                  // typed characters since the last frame
+    std::u32string chars;  // typed characters since the last frame
     // Every change of mouseDown and keys made through setButton/setKey since the last frame, so
     // that a tap shorter than a frame still reaches the editor (ui/input/input_replay.h).
     std::vector<InputEvent> events;

@@ -17,7 +17,8 @@ void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<
     }
 }
 
-std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorApp& app, std::vector<std::string>& screenshots) {
+std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorApp& app,
+                               std::vector<std::string>& screenshots) {
     const auto& a = e.args;
     // Scripts made with GuiScript::add skip parse()'s checks: arguments are checked here too.
     auto need = [&](std::size_t n) {
@@ -47,12 +48,14 @@ std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorApp& 
             const std::size_t colon = spec.rfind(':');
             int frame = 0;
             if (colon == std::string::npos) return "expected dot:CLIP:N, found '" + a[0] + "'";
-            if (std::string err = parseIntArg(spec.substr(colon + 1), "a frame number after 'dot:CLIP:'", frame); !err.empty())
+            if (std::string err = parseIntArg(spec.substr(colon + 1), "a frame number after 'dot:CLIP:'", frame);
+                !err.empty())
                 return err;
             onScreen = app.latentDotScreenPosition(spec.substr(0, colon), frame - 1, x, y);
         } else if (a[0].rfind("key:", 0) == 0) {
             int key = 0;
-            if (std::string err = parseIntArg(a[0].substr(4), "a path key number after 'key:'", key); !err.empty()) return err;
+            if (std::string err = parseIntArg(a[0].substr(4), "a path key number after 'key:'", key); !err.empty())
+                return err;
             onScreen = app.keyScreenPosition(key - 1, x, y);
         } else {
             Effector eff;

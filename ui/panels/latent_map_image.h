@@ -17,7 +17,7 @@ namespace mgp::ui {
 void colourMap(double t, std::uint8_t rgb[3]);
 
 struct LatentImage {
-    int size = 0;                 // size×size texels
+    int size = 0;                           // size×size texels
     double x0 = 0, y0 = 0, x1 = 1, y1 = 1;  // latent box: texel (0,0) is at (x0, y1) (top-left)
     double minLogVar = 0, maxLogVar = 0;    // the colour bar's range (natural log of σ²)
     std::vector<std::uint8_t> rgba;

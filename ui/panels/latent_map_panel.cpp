@@ -61,7 +61,8 @@ ImU32 clipColour(int colourIndex, double t, bool open) {
 }
 std::string hexColour(ImU32 c) {
     char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", unsigned(c & 0xFF), unsigned((c >> 8) & 0xFF), unsigned((c >> 16) & 0xFF));
+    std::snprintf(buf, sizeof buf, "#%02X%02X%02X", unsigned(c & 0xFF), unsigned((c >> 8) & 0xFF),
+                  unsigned((c >> 16) & 0xFF));
     return buf;
 }
 }  // namespace
@@ -77,7 +78,8 @@ bool LatentMapPanel::dotPosition(const EditorState& s, int row, float& x, float&
     if (!v || v->model.get() != drawn_.model || row < 0 || row >= v->model->N()) return false;
     const gp::GpModel& m = *v->model;
     x = float(drawn_.x0 + (m.X(row, 0) - drawn_.bx0) / (drawn_.bx1 - drawn_.bx0) * drawn_.side);
-    y = float(drawn_.y0 + (drawn_.by1 - (m.latentDim() > 1 ? m.X(row, 1) : 0.0)) / (drawn_.by1 - drawn_.by0) * drawn_.side);
+    y = float(drawn_.y0 +
+              (drawn_.by1 - (m.latentDim() > 1 ? m.X(row, 1) : 0.0)) / (drawn_.by1 - drawn_.by0) * drawn_.side);
     return true;
 }
 
@@ -141,7 +143,8 @@ void LatentMapPanel::draw(EditorState& s) {
         float x = 0.0f;
         legendRows = 1;
         for (int c = 0; c < clips; ++c) {
-            LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""), clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
+            LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""),
+                          clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
             e.width = lineH + 4.0f + ImGui::CalcTextSize(e.label.c_str()).x + 14.0f;
             if (x > 0.0f && x + e.width > avail.x) ++legendRows, x = 0.0f;
             x += e.width;
@@ -184,13 +187,15 @@ void LatentMapPanel::draw(EditorState& s) {
     auto dotColour = [&](int i) {
         if (clips == 1) return frameColour(double(frameOfRow(i)) / frames);
         const int c = rowsKnown ? model.rowClip(i) : 0;
-        return clipColour(colourIndex[std::size_t(c)], double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
+        return clipColour(colourIndex[std::size_t(c)],
+                          double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
     };
 
     // What changes only with the model, the σ² image or the map's size is drawn once into a
     // texture (the static layer); each frame adds the moving parts on top.
-    const StaticLayerKey key{v->model.get(), v->number, shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
-                             side, showTrajectory_, frames};
+    const StaticLayerKey key{
+        v->model.get(), v->number,       shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
+        side,           showTrajectory_, frames};
     if (!(key == layerKey_)) {
         const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
         layer_.render(p0, ImVec2(side, side), [&](ImDrawList& dl) {
@@ -210,10 +215,12 @@ void LatentMapPanel::draw(EditorState& s) {
             if (clips > 1)
                 for (int i = 0; i < model.N(); ++i)
                     if (rowsKnown && model.rowClip(i) != 0)
-                        dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 1.9f, dotColour(i));
+                        dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 1.9f,
+                                           dotColour(i));
             for (int i = 0; i < model.N(); ++i)
                 if (clips == 1 || !rowsKnown || model.rowClip(i) == 0)
-                    dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f, dotColour(i));
+                    dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f,
+                                       dotColour(i));
             for (int i : model.active) {
                 if (i < 0 || i >= model.N()) continue;
                 dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
@@ -289,12 +296,11 @@ void LatentMapPanel::draw(EditorState& s) {
         s.hoveredTrainingRow = nearest;
         const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
         const int c = model.rowClip(nearest);
-        ImGui::SetTooltip("Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: %s",
-                          model.clipName(c).c_str(), frame + 1,
-                          model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
-                          std::find(model.active.begin(), model.active.end(), nearest) != model.active.end()
-                              ? "  [active set]" : "",
-                          c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
+        ImGui::SetTooltip(
+            "Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: %s", model.clipName(c).c_str(),
+            frame + 1, model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
+            std::find(model.active.begin(), model.active.end(), nearest) != model.active.end() ? "  [active set]" : "",
+            c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
     } else if (hovered && dc2 <= 81.0f && !dragging_) {
         ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
     }
@@ -318,7 +324,8 @@ void LatentMapPanel::draw(EditorState& s) {
     // With d = 3 the map is a slice (latentMapBase): say which.
     char capText[128] = "predictive variance sigma^2(x), log scale";
     if (model.latentDim() > 2)
-        std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)", latentMapBase(model)[2]);
+        std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)",
+                      latentMapBase(model)[2]);
     const char* cap = capText;
     const float capW = ImGui::CalcTextSize(cap).x;
     // Centred under the bar, but never left of the panel's content edge (the caption is wider).
@@ -340,8 +347,10 @@ void LatentMapPanel::draw(EditorState& s) {
     ImGui::Checkbox("time path", &showTrajectory_);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
     ImGui::SameLine();
-    if (!upToDate(s)) ImGui::TextDisabled("updating variance image...");
-    else ImGui::TextDisabled("bright: confident  rings: active");
+    if (!upToDate(s))
+        ImGui::TextDisabled("updating variance image...");
+    else
+        ImGui::TextDisabled("bright: confident  rings: active");
 }
 
 }  // namespace mgp::ui

@@ -8,9 +8,9 @@
 // the nearest training frame and its clip; clicking one jumps the timeline there, or (another clip)
 // asks the app to make that clip the open one; dragging the current point poses the character
 // from the model mean f(x).
-#include "ui/widgets/draw_list_texture.h"
-#include "ui/shell/editor_state.h"
 #include "ui/panels/latent_map_image.h"
+#include "ui/shell/editor_state.h"
+#include "ui/widgets/draw_list_texture.h"
 
 namespace mgp::ui {
 
@@ -58,8 +58,9 @@ private:
         bool trajectory = false;
         int frames = 0;
         bool operator==(const StaticLayerKey& o) const {
-            return model == o.model && version == o.version && imageModel == o.imageModel && imageVersion == o.imageVersion &&
-                   hasImage == o.hasImage && side == o.side && trajectory == o.trajectory && frames == o.frames;
+            return model == o.model && version == o.version && imageModel == o.imageModel &&
+                   imageVersion == o.imageVersion && hasImage == o.hasImage && side == o.side &&
+                   trajectory == o.trajectory && frames == o.frames;
         }
     };
     StaticLayerKey layerKey_;

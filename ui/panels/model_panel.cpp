@@ -92,9 +92,10 @@ void drawParameters(const gp::GpModel& m) {
     const double sigma = 1.0 / std::sqrt(k.beta());
     ImGui::Text("noise sigma = 1/sqrt(beta) = %s deg", sig4(sigma).c_str());
     if (ImGui::IsItemHovered() && m.D() > 0)
-        ImGui::SetTooltip("Noise std of a DOF with w = 1 (the geometric mean of W).\n"
-                          "DOF k has sigma / w_k: %s .. %s deg here.",
-                          sig4(sigma / m.w.maxCoeff()).c_str(), sig4(sigma / m.w.minCoeff()).c_str());
+        ImGui::SetTooltip(
+            "Noise std of a DOF with w = 1 (the geometric mean of W).\n"
+            "DOF k has sigma / w_k: %s .. %s deg here.",
+            sig4(sigma / m.w.maxCoeff()).c_str(), sig4(sigma / m.w.minCoeff()).c_str());
 }
 
 // min/max of w, the 3 most and least weighted DOFs by name, and w per DOF as bars.
@@ -157,8 +158,10 @@ void drawConvergence(const gp::GpModel& m) {
     dl->AddText(ImVec2(origin.x, ImGui::GetItemRectMin().y), grey, top.c_str());
     dl->AddText(ImVec2(origin.x, ImGui::GetItemRectMax().y - ImGui::GetTextLineHeight()), grey, bottom.c_str());
     const int h = hoveredPlotIndex(n, true);
-    if (h == 0) ImGui::SetTooltip("L_init = %.6g (before training)", hist[0]);
-    else if (h > 0) ImGui::SetTooltip("iteration %d: L_GP = %.6g", h, hist[h]);
+    if (h == 0)
+        ImGui::SetTooltip("L_init = %.6g (before training)", hist[0]);
+    else if (h > 0)
+        ImGui::SetTooltip("iteration %d: L_GP = %.6g", h, hist[h]);
     ImGui::TextDisabled("x: iteration 0 (L_init) .. %d, L_GP after Step 6", n - 1);
 }
 
@@ -221,8 +224,10 @@ void drawAdaptiveHistory(const std::vector<AdaptiveHistoryEntry>& history) {
         ImGui::TableNextColumn();
         ImGui::Text("%d->%d", e.versionBefore, e.versionAfter);
         ImGui::TableNextColumn();
-        if (e.accepted) ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "ok");
-        else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "rejected");
+        if (e.accepted)
+            ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "ok");
+        else
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "rejected");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s\nN = %d, M = %d after the update\nL_GP %.6g -> %.6g", e.diagnostic.c_str(),
                               e.rowsAfter, e.activeSize, e.objectiveBefore, e.objectiveAfter);
@@ -239,7 +244,8 @@ void drawTrainOptions(gp::TrainOptions& o) {
     ImGui::RadioButton("SGPLVM", &kind, 1);
     o.kind = kind == 0 ? gp::KernelKind::kFas : gp::KernelKind::kSgplvm;
     // Four fields and their one-letter labels share the row, however narrow the panel.
-    const float labelW = ImGui::CalcTextSize("M").x + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+    const float labelW =
+        ImGui::CalcTextSize("M").x + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
     ImGui::PushItemWidth(std::clamp(ImGui::GetContentRegionAvail().x / 4.0f - labelW, 30.0f, 70.0f));
     ImGui::InputInt("M", &o.activeSize, 0);
     ImGui::SameLine();
@@ -250,9 +256,10 @@ void drawTrainOptions(gp::TrainOptions& o) {
     ImGui::InputDouble("C", &o.tolerance, 0, 0, "%.3g");
     ImGui::PopItemWidth();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
-                          "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
-                          gp::latentPriorName(o.prior), o.resolvedPriorWeight());
+        ImGui::SetTooltip(
+            "M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
+            "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
+            gp::latentPriorName(o.prior), o.resolvedPriorWeight());
     o.activeSize = std::clamp(o.activeSize, 3, 5000);
     o.outerIterations = std::clamp(o.outerIterations, 1, 1000);
     o.scgIterations = std::clamp(o.scgIterations, 1, 10000);
@@ -266,7 +273,8 @@ void drawModelPanel(EditorState& s) {
         ImGui::Text("Clip  %s", c.name.c_str());
         ImGui::SameLine();
         ImGui::TextDisabled("%s, %d frames, %.0f fps", formatLabel(c), c.frameCount(), c.fps);
-        if (doc.synthetic()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "No mocap folder found: synthetic demo clip");
+        if (doc.synthetic())
+            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1), "No mocap folder found: synthetic demo clip");
     } else {
         ImGui::TextDisabled("No clip open (File > Open, Ctrl+O)");
     }
@@ -277,9 +285,10 @@ void drawModelPanel(EditorState& s) {
         progressRow(s.training, "main");
         if (doc.refining()) {
             const TrainingProgress p = s.training.progress();
-            ImGui::TextWrapped("refining... (model %d, from iteration %d, L_GP %s): drag now; %d accepted pose(s) wait for "
-                               "the final model",
-                               p.published, p.publishedIteration, sig4(p.publishedObjective).c_str(), doc.waitingPoses());
+            ImGui::TextWrapped(
+                "refining... (model %d, from iteration %d, L_GP %s): drag now; %d accepted pose(s) wait for "
+                "the final model",
+                p.published, p.publishedIteration, sig4(p.publishedObjective).c_str(), doc.waitingPoses());
         }
     } else {
         drawTrainOptions(s.trainOptions);
@@ -288,7 +297,8 @@ void drawModelPanel(EditorState& s) {
         s.recordControl("Train");
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)" : "Open a clip first (File > Open)");
+            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)"
+                                              : "Open a clip first (File > Open)");
         sameLineIfFits("Open model...");
         if (ImGui::Button("Open model...")) s.request("open-model");
         s.recordControl("Open model");
@@ -314,7 +324,8 @@ void drawModelPanel(EditorState& s) {
             for (int i = 0; i < m.N(); ++i) ++rows[static_cast<std::size_t>(m.rowClip(i))];
             for (int c = 0; c < m.clipCount(); ++c)
                 ImGui::TextDisabled("  %s %s: %d of %d frames%s", c == 0 ? "*" : " ", m.clipName(c).c_str(),
-                                    rows[static_cast<std::size_t>(c)], m.clipAt(c).frameCount(), c == 0 ? " (open)" : "");
+                                    rows[static_cast<std::size_t>(c)], m.clipAt(c).frameCount(),
+                                    c == 0 ? " (open)" : "");
         }
         bool adaptive = doc.adaptiveEnabled();
         if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
@@ -324,9 +335,12 @@ void drawModelPanel(EditorState& s) {
         // The last update's outcome only while it describes the model shown (undo and redo
         // install other versions).
         const bool describesThis = !history.empty() && history.back().versionAfter == v->number;
-        if (pending > 0) ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
-        else if (!st.empty() && describesThis) ImGui::TextDisabled("last %s", st.c_str());
-        else if (!history.empty()) ImGui::TextDisabled("version %d (restored by undo/redo)", v->number);
+        if (pending > 0)
+            ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
+        else if (!st.empty() && describesThis)
+            ImGui::TextDisabled("last %s", st.c_str());
+        else if (!history.empty())
+            ImGui::TextDisabled("version %d (restored by undo/redo)", v->number);
         if (ImGui::CollapsingHeader("Parameters")) drawParameters(m);
         if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
         if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
@@ -339,8 +353,6 @@ void drawModelPanel(EditorState& s) {
         ImGui::PopStyleColor();
     }
     ImGui::Separator();
-
-
 
     // Compare ghost.
     int mode = int(doc.compareMode());
@@ -356,8 +368,8 @@ void drawModelPanel(EditorState& s) {
         if (s.compareTraining.running()) {
             progressRow(s.compareTraining, "cmp");
         } else if (const auto cm = doc.compareModel()) {
-            ImGui::TextDisabled("2nd model: %s, N = %d", cm->model->kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM",
-                                cm->model->N());
+            ImGui::TextDisabled("2nd model: %s, N = %d",
+                                cm->model->kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", cm->model->N());
         } else {
             ImGui::BeginDisabled(!doc.trainable());
             if (ImGui::Button("Train 2nd model (other kernel)")) s.request("train-compare");
@@ -374,8 +386,9 @@ void drawHeldEffectors(EditorState& s) {
     if (held.empty()) {
         ImGui::TextDisabled("held here: nothing");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("A hand, foot or head you drag stays where you put it: later drags and their falloff hold it "
-                              "until you release it (Alt+click its handle).");
+            ImGui::SetTooltip(
+                "A hand, foot or head you drag stays where you put it: later drags and their falloff hold it "
+                "until you release it (Alt+click its handle).");
         return;
     }
     ImGui::TextUnformatted("held here:");
@@ -384,13 +397,15 @@ void drawHeldEffectors(EditorState& s) {
         const std::string label = std::string(effectorName(e)) + " x##release";
         if (ImGui::SmallButton(label.c_str())) s.request("release", {effectorName(e)});
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s was placed by an edit and is held by later drags and falloffs here. Click to release it "
-                              "on this frame and the neighbouring frames that hold it (one undo step).",
-                              effectorName(e));
+            ImGui::SetTooltip(
+                "%s was placed by an edit and is held by later drags and falloffs here. Click to release it "
+                "on this frame and the neighbouring frames that hold it (one undo step).",
+                effectorName(e));
     }
     ImGui::SameLine();
     if (ImGui::SmallButton("release all")) s.request("release-all");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Release every held hand, foot and head on every frame (one undo step).");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Release every held hand, foot and head on every frame (one undo step).");
 }
 }  // namespace
 
@@ -401,8 +416,9 @@ void drawIkReadout(EditorState& s) {
     if (ImGui::SliderInt("drag falloff (frames)", &radius, 0, 120)) s.doc.setDragFalloff(radius);
     s.recordControl("drag falloff");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
-                          "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");
+        ImGui::SetTooltip(
+            "A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
+            "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");
     // Locality (core/ik/locality.h) as a multiple of the default.
     float stiffness = static_cast<float>(s.doc.bodyStiffness());
     ImGui::SetNextItemWidth(120.0f);
@@ -411,9 +427,10 @@ void drawIkReadout(EditorState& s) {
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted("How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves "
-                               "the dragged limb, and the body only as much as the target needs; 0 lets the learned model "
-                               "move the whole body. Drags, their falloff and Regenerate use it.");
+        ImGui::TextUnformatted(
+            "How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves "
+            "the dragged limb, and the body only as much as the target needs; 0 lets the learned model "
+            "move the whole body. Drags, their falloff and Regenerate use it.");
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
@@ -425,10 +442,13 @@ void drawIkReadout(EditorState& s) {
         ImGui::PopStyleColor();
         return;
     }
-    ImGui::Text("%s%s", r.learned ? "Learned IK" : "Plain IK (no model)", s.doc.dragging() ? "  (live)" : "  (last drag)");
+    ImGui::Text("%s%s", r.learned ? "Learned IK" : "Plain IK (no model)",
+                s.doc.dragging() ? "  (live)" : "  (last drag)");
     ImGui::SameLine();
-    if (r.reached) ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
-    else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "not reached");
+    if (r.reached)
+        ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
+    else
+        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "not reached");
     if (ImGui::BeginTable("targets", 3, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("target");
         ImGui::TableSetupColumn("residual cm");
@@ -438,31 +458,38 @@ void drawIkReadout(EditorState& s) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             // An exact constraint is the user's pin, a placement an earlier edit holds, or a planted foot.
-            const char* kind = !c.pin ? "" : s.doc.pinned(c.effector) ? " (pin)" : s.doc.held(c.effector) ? " (held)" : " (planted)";
+            const char* kind = !c.pin                     ? ""
+                               : s.doc.pinned(c.effector) ? " (pin)"
+                               : s.doc.held(c.effector)   ? " (held)"
+                                                          : " (planted)";
             ImGui::Text("%s%s", effectorName(c.effector), kind);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", c.residualCm);
             ImGui::TableNextColumn();
-            if (c.reached) ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
-            else ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), c.belowFloor ? "on the floor" : "missed");
+            if (c.reached)
+                ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
+            else
+                ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), c.belowFloor ? "on the floor" : "missed");
         }
         ImGui::EndTable();
     }
-    // The current frame's pose judged as the viewport legend judges it (one verdict, one sigma^2 per frame); the numbers
-    // behind it in the tooltip.
+    // The current frame's pose judged as the viewport legend judges it (one verdict, one sigma^2 per frame); the
+    // numbers behind it in the tooltip.
     if (const std::optional<AdmissionVerdict> v = r.learned ? s.doc.currentPoseVerdict() : std::nullopt) {
         ImGui::Text("this pose is %s, %s", judgementWords(v->judgement),
                     v->admitted ? "the model learns from it" : "kept as an edit only");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(), r.iterations);
+            ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(),
+                              r.iterations);
     } else if (r.learned) {
         ImGui::Text("%d iterations", r.iterations);
     }
     if (r.comShiftCm) {
         ImGui::Text("centre of mass moved %.1f cm", *r.comShiftCm);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("How far the whole body's centre of mass moved sideways (over the ground) since the drag "
-                              "began, from de Leva's segment masses. A few cm on a standing frame can tip the character.");
+            ImGui::SetTooltip(
+                "How far the whole body's centre of mass moved sideways (over the ground) since the drag "
+                "began, from de Leva's segment masses. A few cm on a standing frame can tip the character.");
     }
     if (r.nearest.row >= 0) {
         ImGui::Checkbox("##nearestghost", &s.showNearestGhost);
@@ -471,8 +498,9 @@ void drawIkReadout(EditorState& s) {
         ImGui::SameLine();
         ImGui::Text("nearest: %s frame %d, %.1f deg RMS", r.nearestClip.c_str(), r.nearest.row + 1, r.nearest.rmsDeg);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("The captured frame of the model's clip closest to this pose in joint angles "
-                              "(RMS over the non-root DOFs): where the pose is in the data. Tick to see it as a ghost.");
+            ImGui::SetTooltip(
+                "The captured frame of the model's clip closest to this pose in joint angles "
+                "(RMS over the non-root DOFs): where the pose is in the data. Tick to see it as a ghost.");
     }
     ImGui::TextDisabled("%s", r.diagnostic.c_str());
 }

@@ -1,8 +1,8 @@
 #pragma once
 // The Model panel (clip facts, model facts, training with progress/ETA/Cancel, open/save, the
 // adaptive update switch, the compare ghost; collapsed sections for α, γ, η, β and the noise σ,
-// the W summary, the training convergence plot and the history of adaptive updates) and the IK readout (per-target residual in cm,
-// reached or not, σ²(x), L_IK).
+// the W summary, the training convergence plot and the history of adaptive updates) and the IK readout (per-target
+// residual in cm, reached or not, σ²(x), L_IK).
 #include "ui/shell/editor_state.h"
 
 namespace mgp::ui {

@@ -33,7 +33,10 @@ void keyTable(EditorState& s) {
     const int keys = static_cast<int>(doc.pathEdit()->keyFrames.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("keys", 5, flags, ImVec2(0, std::max(ImGui::GetContentRegionAvail().y, 4.0f * ImGui::GetFrameHeightWithSpacing())))) return;
+    if (!ImGui::BeginTable(
+            "keys", 5, flags,
+            ImVec2(0, std::max(ImGui::GetContentRegionAvail().y, 4.0f * ImGui::GetFrameHeightWithSpacing()))))
+        return;
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("#");
     ImGui::TableSetupColumn("Frame", ImGuiTableColumnFlags_WidthFixed, 78.0f);
@@ -60,14 +63,16 @@ void keyTable(EditorState& s) {
         if (missed) {
             ImGui::PopStyleColor();
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("The last regeneration missed this key by %.1f cm (out of reach with the feet and pins held?)",
-                                  missed->errorCm);
+                ImGui::SetTooltip(
+                    "The last regeneration missed this key by %.1f cm (out of reach with the feet and pins held?)",
+                    missed->errorCm);
         }
         ImGui::TableNextColumn();
         int frame = path.keyFrames[k] + 1;
         ImGui::SetNextItemWidth(-1);
         // Applied on Enter or the +/- buttons, so a half-typed number is not validated.
-        if (ImGui::InputInt("##frame", &frame, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && frame - 1 != path.keyFrames[k])
+        if (ImGui::InputInt("##frame", &frame, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) &&
+            frame - 1 != path.keyFrames[k])
             retimeKey(s, k, frame - 1);
         ImGui::TableNextColumn();
         const Eigen::Vector3d& o = doc.pathEdit()->keyOffsetsCm[k];
@@ -75,7 +80,8 @@ void keyTable(EditorState& s) {
         ImGui::SetNextItemWidth(-1);
         if (ImGui::DragFloat3("##offset", v, 0.1f, -500.0f, 500.0f, "%.1f"))
             reportError(s, doc.setPathKeyOffset(k, Eigen::Vector3d(v[0], v[1], v[2])));
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("x, y (up), z offset from the captured path, cm (drag or Ctrl+click to type)");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("x, y (up), z offset from the captured path, cm (drag or Ctrl+click to type)");
         ImGui::TableNextColumn();
         if (ImGui::SmallButton("Go")) {
             doc.setFrame(doc.pathEdit()->keyFrames[k]);
@@ -145,14 +151,17 @@ void regenerateRow(EditorState& s) {
     s.recordControl("Regenerate");
     if (clickedRegenerate) {
         const std::string err = doc.startRegenerate();
-        if (err.empty()) s.setStatus("regenerating the edited span...");
-        else reportError(s, err);
+        if (err.empty())
+            s.setStatus("regenerating the edited span...");
+        else
+            reportError(s, err);
     }
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(doc.hasModel() ? "Solve every frame between the first and last key as one problem: learned IK, "
-                                           "smoothness, planted feet and pins held (one undo step)"
-                                         : "Regeneration needs a model: train one or open one first");
+        ImGui::SetTooltip(doc.hasModel()
+                              ? "Solve every frame between the first and last key as one problem: learned IK, "
+                                "smoothness, planted feet and pins held (one undo step)"
+                              : "Regeneration needs a model: train one or open one first");
     regenerateReport(doc);
 }
 
@@ -188,7 +197,8 @@ void drawPathPanel(EditorState& s) {
             const std::string err = doc.beginPathEdit(current);
             if (err.empty()) {
                 s.selected = current;
-                s.setStatus(std::string("editing the ") + effectorName(current) + " path: drag its keys in the viewport");
+                s.setStatus(std::string("editing the ") + effectorName(current) +
+                            " path: drag its keys in the viewport");
             } else {
                 reportError(s, err);
             }
@@ -212,12 +222,15 @@ void drawPathPanel(EditorState& s) {
     int mode = static_cast<int>(doc.pathEdit()->mode);
     if (ImGui::RadioButton("Direct", &mode, static_cast<int>(PathMode::kDirect))) doc.setPathMode(PathMode::kDirect);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The paper's: a Hermite curve through the keys' positions\n(smooth, but loses the captured detail between keys)");
+        ImGui::SetTooltip(
+            "The paper's: a Hermite curve through the keys' positions\n(smooth, but loses the captured detail between "
+            "keys)");
     ImGui::SameLine();
     if (ImGui::RadioButton("Displacement", &mode, static_cast<int>(PathMode::kDisplacement)))
         doc.setPathMode(PathMode::kDisplacement);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A Hermite curve through the keys' offsets, added to the captured path\n(keeps the captured detail)");
+        ImGui::SetTooltip(
+            "A Hermite curve through the keys' offsets, added to the captured path\n(keeps the captured detail)");
     sameLineIfFits("Captured path", ImGui::GetFrameHeight());
     ImGui::Checkbox("Captured path", &s.showCapturedPath);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the captured path (grey) beside the edited one (blue)");

@@ -56,7 +56,8 @@ void TimelinePanel::draw(EditorState& s) {
     // (a small window): never drawn over the frame text.
     char edited[48];
     std::snprintf(edited, sizeof edited, "%zu edited frame%s", doc.edits().size(), doc.edits().size() == 1 ? "" : "s");
-    const float editedX = ImGui::GetWindowContentRegionMax().x - std::max(170.0f, ImGui::CalcTextSize(edited).x + 65.0f);
+    const float editedX =
+        ImGui::GetWindowContentRegionMax().x - std::max(170.0f, ImGui::CalcTextSize(edited).x + 65.0f);
     if (editedX - ImGui::GetStyle().ItemSpacing.x >= ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x) {
         ImGui::SameLine(editedX);
         ImGui::TextDisabled("%s", edited);
@@ -89,22 +90,26 @@ void TimelinePanel::draw(EditorState& s) {
     }
     const auto& path = doc.pathEdit();
     if (path)  // the edited span, tinted under the edited-frame marks
-        dl->AddRectFilled(ImVec2(xOf(path->keyFrames.front()), t0.y + h * 0.4f), ImVec2(xOf(path->keyFrames.back()), t1.y - 2.0f),
-                          IM_COL32(51, 140, 242, 60));
+        dl->AddRectFilled(ImVec2(xOf(path->keyFrames.front()), t0.y + h * 0.4f),
+                          ImVec2(xOf(path->keyFrames.back()), t1.y - 2.0f), IM_COL32(51, 140, 242, 60));
     for (const auto& [f, rec] : doc.edits()) {
         (void)rec;
         const float x = xOf(f);
-        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f), IM_COL32(255, 140, 40, 255));
+        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f),
+                          IM_COL32(255, 140, 40, 255));
     }
     {
         // The animator's keys: a yellow diamond each at the top of the track; what a fill would
         // regenerate, tinted: the gaps inside the Shift+drag range, else the gap at the playhead.
         auto tintGap = [&](const InbetweenGap& g) {
-            dl->AddRectFilled(ImVec2(xOf(g.a), t0.y + h * 0.2f), ImVec2(xOf(g.b), t0.y + h * 0.32f), IM_COL32(240, 200, 60, 70));
+            dl->AddRectFilled(ImVec2(xOf(g.a), t0.y + h * 0.2f), ImVec2(xOf(g.b), t0.y + h * 0.32f),
+                              IM_COL32(240, 200, 60, 70));
         };
         if (s.timelineRange) {
-            const int r0 = std::clamp(s.timelineRange->first, 0, n - 1), r1 = std::clamp(s.timelineRange->second, 0, n - 1);
-            dl->AddRectFilled(ImVec2(xOf(r0) - 1.0f, t0.y + 1.0f), ImVec2(xOf(r1) + 1.0f, t1.y - 1.0f), IM_COL32(120, 170, 255, 45));
+            const int r0 = std::clamp(s.timelineRange->first, 0, n - 1),
+                      r1 = std::clamp(s.timelineRange->second, 0, n - 1);
+            dl->AddRectFilled(ImVec2(xOf(r0) - 1.0f, t0.y + 1.0f), ImVec2(xOf(r1) + 1.0f, t1.y - 1.0f),
+                              IM_COL32(120, 170, 255, 45));
             for (const InbetweenGap& g : doc.keyGapsIn(r0, r1)) tintGap(g);
         } else if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame())) {
             tintGap(*gap);
@@ -112,7 +117,8 @@ void TimelinePanel::draw(EditorState& s) {
         const float yc = t0.y + h * 0.26f, r = 5.0f;
         for (int k : doc.keys()) {
             const float x = xOf(k);
-            dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), IM_COL32(240, 200, 60, 255));
+            dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc),
+                              IM_COL32(240, 200, 60, 255));
         }
     }
     if (path) {
@@ -136,8 +142,10 @@ void TimelinePanel::draw(EditorState& s) {
     for (std::size_t i = 0; i < contacts.contacts.size(); ++i) {
         const FootContact& c = contacts.contacts[i];
         const float y = laneY(c.foot), x0 = xOf(c.first), x1 = std::max(xOf(c.last), x0 + 2.0f);
-        dl->AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH), c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
-        if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + laneH + 2.0f) hoveredContact = static_cast<int>(i);
+        dl->AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH),
+                          c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
+        if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + laneH + 2.0f)
+            hoveredContact = static_cast<int>(i);
     }
     if (hoveredContact >= 0 && ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
         const FootContact& c = contacts.contacts[hoveredContact];
@@ -145,14 +153,15 @@ void TimelinePanel::draw(EditorState& s) {
     }
     const float xc = xOf(doc.frame());
     dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);
-    dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8), IM_COL32(90, 170, 255, 255));
+    dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8),
+                          IM_COL32(90, 170, 255, 255));
     if (ImGui::IsItemHovered() && !active) {
         const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
         const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
         if (hoveredContact >= 0) {
             const FootContact& c = contacts.contacts[hoveredContact];
-            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1, c.last + 1,
-                              c.enabled ? "held when regenerating" : "off");
+            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1,
+                              c.last + 1, c.enabled ? "held when regenerating" : "off");
         } else {
             ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
         }
@@ -165,8 +174,10 @@ void TimelinePanel::draw(EditorState& s) {
             rangeAnchor_ = f;
             s.timelineRange.reset();
         }
-        if (selecting_) s.timelineRange = std::make_pair(std::min(rangeAnchor_, f), std::max(rangeAnchor_, f));
-        else if (f != doc.frame()) doc.setFrame(f);
+        if (selecting_)
+            s.timelineRange = std::make_pair(std::min(rangeAnchor_, f), std::max(rangeAnchor_, f));
+        else if (f != doc.frame())
+            doc.setFrame(f);
         scrubbing_ = !selecting_;
     } else {
         scrubbing_ = false;

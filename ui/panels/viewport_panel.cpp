@@ -11,14 +11,14 @@
 #include <utility>
 
 #include "edit/joint_rotation.h"
-#include "ui/windows/joint_rotation_window.h"
+#include "motion/support_polygon.h"
 #include "render/picking.h"
 #include "render/range_tint.h"
 #include "render/scene_builder.h"
-#include "ui/actions/shortcuts.h"
-#include "motion/support_polygon.h"
 #include "skeleton/centre_of_mass.h"
 #include "skeleton/forward_kinematics.h"
+#include "ui/actions/shortcuts.h"
+#include "ui/windows/joint_rotation_window.h"
 
 namespace mgp::ui {
 
@@ -251,12 +251,16 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
         case Mode::kOrbit:
             if (!io.MouseDown[0]) {
                 mode_ = Mode::kNone;
-                if (jointPicking_ && std::abs(mx - pressX_) + std::abs(my - pressY_) < 4.0f) pickedJoint_ = pickJoint(s, mx, my);
-            } else if (movedThisFrame_) s.camera.orbit(-dx * 0.4f, dy * 0.4f);
+                if (jointPicking_ && std::abs(mx - pressX_) + std::abs(my - pressY_) < 4.0f)
+                    pickedJoint_ = pickJoint(s, mx, my);
+            } else if (movedThisFrame_)
+                s.camera.orbit(-dx * 0.4f, dy * 0.4f);
             break;
         case Mode::kPan:
-            if (!io.MouseDown[0] && !io.MouseDown[2]) mode_ = Mode::kNone;
-            else if (movedThisFrame_) s.camera.pan(dx, dy, height_);
+            if (!io.MouseDown[0] && !io.MouseDown[2])
+                mode_ = Mode::kNone;
+            else if (movedThisFrame_)
+                s.camera.pan(dx, dy, height_);
             break;
         case Mode::kDragHandle:
             if (!doc.dragging()) {
@@ -266,14 +270,16 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 mode_ = Mode::kNone;
                 const std::string accepted = "accepted pose for frame " + std::to_string(doc.frame() + 1);
                 if (doc.adaptivePending() > 0)
-                    s.setStatusWhile(accepted + " (adaptive update running)",
-                                     [d = &doc] { return d->adaptivePending() > 0; }, accepted + " (adaptive update done)");
+                    s.setStatusWhile(
+                        accepted + " (adaptive update running)", [d = &doc] { return d->adaptivePending() > 0; },
+                        accepted + " (adaptive update done)");
                 else
                     s.setStatus(accepted);
             } else if (movedThisFrame_) {
                 Eigen::Vector3d hit;
-                const bool ok = s.dragAxis >= 0 ? dragAxisPoint(s.camera, mx, my, width_, height_, s.dragStartCm, s.dragAxis, hit)
-                                                : dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit);
+                const bool ok = s.dragAxis >= 0
+                                    ? dragAxisPoint(s.camera, mx, my, width_, height_, s.dragStartCm, s.dragAxis, hit)
+                                    : dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit);
                 const PhaseTimer timer(s.profile, s.profile.solveSeconds);
                 if (ok) doc.dragTo(hit, 50);
             } else {
@@ -289,7 +295,8 @@ void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
                 mode_ = Mode::kNone;
                 const Eigen::Vector3d o = doc.pathEdit()->keyOffsetsCm[dragKey_];
                 char buf[96];
-                std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(), o.y(), o.z());
+                std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(),
+                              o.y(), o.z());
                 s.setStatus(buf);
             } else if (movedThisFrame_) {
                 Eigen::Vector3d hit;
@@ -333,13 +340,16 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     rot.followPrior = s.gizmoFollowPrior && doc.hasModel();
     const Joint& jt = doc.clip().skeleton.joints[joint];
     char text[96];
-    std::snprintf(text, sizeof text, "%s r%c %+.1f deg%s", jt.name.c_str(), "xyz"[ringAxis_], delta, snap ? " (5 deg steps)" : "");
+    std::snprintf(text, sizeof text, "%s r%c %+.1f deg%s", jt.name.c_str(), "xyz"[ringAxis_], delta,
+                  snap ? " (5 deg steps)" : "");
     s.dragReadout = text;
     if (!released) {
         // Live preview: a short solve per move (the action solves fully on release).
         const JointRotationResult r = solveJointRotation(doc, rot, 30);
-        if (r.error.empty()) s.posePreview = r.pose;
-        else s.setStatus(r.error, true);
+        if (r.error.empty())
+            s.posePreview = r.pose;
+        else
+            s.setStatus(r.error, true);
         return;
     }
     s.posePreview.reset();
@@ -385,9 +395,9 @@ void ViewportPanel::draw(EditorState& s) {
         frameCharacter(s);
         s.requestFrameCamera = false;
     }
-    ImGui::InvisibleButton("##viewport", ImVec2(float(w), float(h)),
-                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                               ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::InvisibleButton(
+        "##viewport", ImVec2(float(w), float(h)),
+        ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     // Follow: the camera keeps the character's root (projected on the ground) where it was, so a
@@ -452,8 +462,9 @@ void ViewportPanel::draw(EditorState& s) {
         const float scale = moving ? kMovingScale : 1.0f;
         rw_ = std::max(16, int(w * scale));
         rh_ = std::max(16, int(h * scale));
-        std::vector<float> sig = {float(rw_), float(rh_), s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z,
-                                  s.camera.yawDeg, s.camera.pitchDeg, s.camera.distanceCm, s.camera.fovYDeg};
+        std::vector<float> sig = {float(rw_),          float(rh_),          s.camera.targetCm.x,
+                                  s.camera.targetCm.y, s.camera.targetCm.z, s.camera.yawDeg,
+                                  s.camera.pitchDeg,   s.camera.distanceCm, s.camera.fovYDeg};
         auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
         for (const render::Figure& f : scene.figures) {
             sig.insert(sig.end(), {f.ghost ? 1.0f : 0.0f, f.ghostAlpha});
@@ -465,13 +476,15 @@ void ViewportPanel::draw(EditorState& s) {
         for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
         for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
         // Counts first: a pin, a held ring and a footprint at the same point are different pictures.
-        sig.insert(sig.end(), {float(scene.pins.size()), float(scene.heldMarks.size()), float(scene.footprints.size())});
+        sig.insert(sig.end(),
+                   {float(scene.pins.size()), float(scene.heldMarks.size()), float(scene.footprints.size())});
         for (const render::Pin& p : scene.pins) addVec(p.positionCm);
         for (const render::HeldMark& m : scene.heldMarks) addVec(m.positionCm);
         for (const render::Footprint& f : scene.footprints) addVec(f.positionCm);
         for (const render::Path& p : scene.paths) {
-            sig.insert(sig.end(), {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
-                                   p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
+            sig.insert(sig.end(),
+                       {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
+                        p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
             addVec(p.colour);
             for (const glm::vec3& v : p.pointsCm) addVec(v);
             for (const glm::vec3& v : p.keysCm) addVec(v);
@@ -487,21 +500,24 @@ void ViewportPanel::draw(EditorState& s) {
         }
     }
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    presentX_ = int(origin.x), presentY_ = int(origin.y), presentW_ = w, presentH_ = h;  // presentTo() copies the scene there
+    presentX_ = int(origin.x), presentY_ = int(origin.y), presentW_ = w,
+    presentH_ = h;  // presentTo() copies the scene there
     // Overlay: what the mouse does.
-    const char* hint = mode_ == Mode::kDragHandle ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
-                       : mode_ == Mode::kDragKey  ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
-                       : mode_ == Mode::kRotateRing ? "Rotating the joint: release to apply  |  Ctrl: 5 deg steps  |  Esc: cancel"
-                       : s.doc.pathEdit()
-                           ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
-                           : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
+    const char* hint =
+        mode_ == Mode::kDragHandle
+            ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
+        : mode_ == Mode::kDragKey    ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
+        : mode_ == Mode::kRotateRing ? "Rotating the joint: release to apply  |  Ctrl: 5 deg steps  |  Esc: cancel"
+        : s.doc.pathEdit()
+            ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
+            : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
     dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(230, 232, 236, 200), hint);
     if (mode_ == Mode::kDragHandle && s.doc.dragging()) {
         // The offset from where the handle was picked up, in cm, and the axis it is held to.
         const Eigen::Vector3d d = s.doc.dragTarget() - s.dragStartCm;
         char buf[160];
-        std::snprintf(buf, sizeof buf, "%s  dX %+.1f  dY %+.1f  dZ %+.1f cm  |d| %.1f cm", dragAxisLabel(s.dragAxis), d.x(),
-                      d.y(), d.z(), d.norm());
+        std::snprintf(buf, sizeof buf, "%s  dX %+.1f  dY %+.1f  dZ %+.1f cm  |d| %.1f cm", dragAxisLabel(s.dragAxis),
+                      d.x(), d.y(), d.z(), d.norm());
         s.dragReadout = buf;
         const float lh = ImGui::GetTextLineHeightWithSpacing();
         dl->AddText(ImVec2(origin.x + 8, origin.y + 6 + lh), IM_COL32(255, 214, 120, 255), buf);
@@ -513,27 +529,29 @@ void ViewportPanel::draw(EditorState& s) {
     }
     drawBalance(s, origin.x, origin.y + h);
     drawRangeLegend(s, origin.y, origin.x + w, origin.y + h);
-    if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 && s.gizmoJoint < s.doc.clip().skeleton.jointCount())
+    if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 &&
+        s.gizmoJoint < s.doc.clip().skeleton.jointCount())
         ImGui::SetTooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
                           s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         const bool held = s.doc.held(e);
-        ImGui::SetTooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
-                          held ? " (held: placed by an edit)" : "", s.doc.pinned(e) ? "unpin" : "pin",
+        ImGui::SetTooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e),
+                          s.doc.pinned(e) ? " (pinned)" : "", held ? " (held: placed by an edit)" : "",
+                          s.doc.pinned(e) ? "unpin" : "pin",
                           held ? "\nAlt+click to release it (here and on the neighbouring frames that hold it)" : "");
     }
     const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
     if (key >= 0 && s.doc.pathEdit() && key < static_cast<int>(s.doc.pathEdit()->keyFrames.size())) {
         const Eigen::Vector3d& o = s.doc.pathEdit()->keyOffsetsCm[key];
-        ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1, s.doc.pathEdit()->keyFrames[key] + 1,
-                          o.x(), o.y(), o.z());
+        ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1,
+                          s.doc.pathEdit()->keyFrames[key] + 1, o.x(), o.y(), o.z());
     }
 }
 
-// The balance overlay: the planted feet's support polygon on the ground (yellow), the centre of mass with a line down to
-// its ground point (green over the support, red when more than the tolerance outside, grey with no foot planted), and a
-// caption above the bottom-left corner (x0, y1).
+// The balance overlay: the planted feet's support polygon on the ground (yellow), the centre of mass with a line down
+// to its ground point (green over the support, red when more than the tolerance outside, grey with no foot planted),
+// and a caption above the bottom-left corner (x0, y1).
 void ViewportPanel::drawBalance(EditorState& s, float x0, float y1) {
     s.balanceCaption.clear();
     if (!s.showBalance || !s.doc.hasClip()) return;
@@ -547,7 +565,8 @@ void ViewportPanel::drawBalance(EditorState& s, float x0, float y1) {
         const double groundY = lastScene_.groundHeightCm;
         const std::optional<SupportPolygon> support = supportPolygon(skeleton, fk, s.doc.contacts(), s.doc.frame());
         const double outside = support ? support->outsideCm({com->x(), com->z()}) : 0.0;
-        const ImU32 green = IM_COL32(90, 220, 120, 255), red = IM_COL32(255, 90, 80, 255), grey = IM_COL32(190, 190, 190, 255);
+        const ImU32 green = IM_COL32(90, 220, 120, 255), red = IM_COL32(255, 90, 80, 255),
+                    grey = IM_COL32(190, 190, 190, 255);
         const ImU32 comCol = !support ? grey : outside > kBalanceToleranceCm ? red : green;
         ImDrawList* dl = ImGui::GetWindowDrawList();
         if (support) {
@@ -577,7 +596,8 @@ void ViewportPanel::drawBalance(EditorState& s, float x0, float y1) {
     const float lh = ImGui::GetTextLineHeightWithSpacing();
     const ImVec2 at(x0 + 8, y1 - 8 - 2 * lh), size = ImGui::CalcTextSize(s.balanceCaption.c_str());
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2), IM_COL32(20, 22, 26, 190), 3.0f);
+    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
+                      IM_COL32(20, 22, 26, 190), 3.0f);
     dl->AddText(at, IM_COL32(230, 232, 236, 255), s.balanceCaption.c_str());
 }
 
@@ -642,9 +662,9 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
     const float h1 = heightOf(l1), h2 = heightOf(l2);
     const float boxW = barW + 2 * pad, boxH = pad + lh * 0.6f + 6.0f + lh + h1 + h2 + pad;
     const ImVec2 a(x1 - boxW - 8.0f, y1 - boxH - 8.0f);
-    const ImU32 stateCol = !v ? IM_COL32(200, 200, 200, 255)
+    const ImU32 stateCol = !v                                            ? IM_COL32(200, 200, 200, 255)
                            : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
-                           : tint.band == render::RangeBand::kNearLimit ? IM_COL32(255, 190, 90, 255)
+                           : tint.band == render::RangeBand::kNearLimit  ? IM_COL32(255, 190, 90, 255)
                                                                          : IM_COL32(150, 230, 150, 255);
     const auto tooltip = [&](const ImVec2& p0, const ImVec2& p1) {
         if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(p0, p1))
@@ -669,14 +689,15 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
     const float bx = a.x + pad, by = a.y + pad, third = barW / 3.0f, bh = lh * 0.6f;
     const glm::vec3 neutral{0.90f, 0.87f, 0.80f};
     dl->AddRectFilled(ImVec2(bx, by), ImVec2(bx + third, by + bh), col(neutral));
-    dl->AddRectFilledMultiColor(ImVec2(bx + third, by), ImVec2(bx + 2 * third, by + bh), col(neutral), col(render::kRangeAmber),
-                                col(render::kRangeAmber), col(neutral));
+    dl->AddRectFilledMultiColor(ImVec2(bx + third, by), ImVec2(bx + 2 * third, by + bh), col(neutral),
+                                col(render::kRangeAmber), col(render::kRangeAmber), col(neutral));
     dl->AddRectFilled(ImVec2(bx + 2 * third, by), ImVec2(bx + barW, by + bh), col(render::kRangeRed));
     if (v) {
         // Where this pose sits on the bar: its nearest-frame distance against the capture's median, then the ramp.
         const float at = tint.band == render::RangeBand::kOutOfRange ? 2.5f
-                         : tint.band == render::RangeBand::kNearLimit ? 1.0f + tint.weight
-                         : std::clamp(float(v->capture.nearestCm / std::max(v->nearestMedianCm, 1e-9)), 0.0f, 1.0f);
+                         : tint.band == render::RangeBand::kNearLimit
+                             ? 1.0f + tint.weight
+                             : std::clamp(float(v->capture.nearestCm / std::max(v->nearestMedianCm, 1e-9)), 0.0f, 1.0f);
         const float px = bx + at * third;
         dl->AddTriangleFilled(ImVec2(px, by + bh + 1), ImVec2(px - 5, by + bh + 7), ImVec2(px + 5, by + bh + 7),
                               IM_COL32(255, 255, 255, 255));

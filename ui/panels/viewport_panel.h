@@ -1,10 +1,10 @@
 #pragma once
 // The 3-D viewport: draws the scene into an offscreen texture, copied into the window under the
-// ImGui overlays (presentTo), and maps the mouse to the camera (orbit: left drag on empty space; pan: middle drag or Shift+left;
-// zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left
-// drag moves it on a camera-facing plane, Shift on a horizontal plane; right-click or P pins).
-// While an effector path is edited it also shows the edited path, its keys (dragged like handles;
-// handles win where they overlap), the captured path and the before ghost (EditorState flags).
+// ImGui overlays (presentTo), and maps the mouse to the camera (orbit: left drag on empty space; pan: middle drag or
+// Shift+left; zoom: wheel; F frames the character) and to effector drags (hover highlights a handle; left drag moves it
+// on a camera-facing plane, Shift on a horizontal plane; right-click or P pins). While an effector path is edited it
+// also shows the edited path, its keys (dragged like handles; handles win where they overlap), the captured path and
+// the before ghost (EditorState flags).
 #include <Eigen/Core>
 #include <memory>
 #include <optional>
@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "ui/shell/editor_state.h"
 #include "render/png_capture.h"
 #include "render/scene_builder.h"
 #include "render/skeleton_renderer.h"
+#include "ui/shell/editor_state.h"
 
 namespace mgp::ui {
 
@@ -44,7 +44,7 @@ public:
     // lists, which then lay the overlays on top: on llvmpipe a blit costs a fraction of a
     // blended, textured ImGui quad the size of the viewport (docs/architecture.md §3).
     void presentTo(int windowHeight) const;
-    long sceneDraws() const { return sceneDraws_; }  // how often the 3-D scene was redrawn
+    long sceneDraws() const { return sceneDraws_; }                // how often the 3-D scene was redrawn
     const render::Scene& lastScene() const { return lastScene_; }  // as last built by draw()
 
 private:
@@ -71,7 +71,7 @@ private:
     double ringSweepDeg_ = 0.0;
     int ringFrame_ = -1, ringUndoCount_ = 0;  // the frame and history the drag started on
     void rotateRing(EditorState& state, float mx, float my, bool snap, bool released);
-    int dragKey_ = -1;                                        // the key of a kDragKey drag
+    int dragKey_ = -1;                                              // the key of a kDragKey drag
     Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
     float lastX_ = 0, lastY_ = 0;
     float pressX_ = 0, pressY_ = 0;  // where the left button went down (a click picks a bone)
@@ -87,7 +87,7 @@ private:
     // Bottom-right corner at (x1, y1), or one line at the top-right (the viewport's top at y0)
     // where the box would cover the character.
     void drawRangeLegend(EditorState& state, float y0, float x1, float y1);
-    void drawBalance(EditorState& state, float x0, float y1);      // bottom-left corner at (x0, y1)
+    void drawBalance(EditorState& state, float x0, float y1);  // bottom-left corner at (x0, y1)
     mutable std::string groundClip_;
     mutable float groundHeight_ = 0.0f;
 };

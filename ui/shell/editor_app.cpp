@@ -1,8 +1,8 @@
 #include "ui/shell/editor_app.h"
 
 #include <GL/gl.h>
-#include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -10,18 +10,18 @@
 #include <cmath>
 #include <filesystem>
 
-#include "ui/actions/action_args.h"
 #include "edit/mirror_edit.h"
+#include "render/gl_context.h"
+#include "skeleton/clip_match.h"
+#include "ui/actions/action_args.h"
 #include "ui/actions/editor_actions.h"
+#include "ui/actions/shortcuts.h"
 #include "ui/shell/editor_session.h"
 #include "ui/shell/frame_signature.h"
-#include "render/gl_context.h"
-#include "ui/windows/help_window.h"
 #include "ui/shell/imgui_setup.h"
+#include "ui/windows/help_window.h"
 #include "ui/windows/menu_bar.h"
 #include "ui/windows/messages_window.h"
-#include "ui/actions/shortcuts.h"
-#include "skeleton/clip_match.h"
 
 namespace mgp::ui {
 
@@ -44,9 +44,10 @@ EditorApp::EditorApp(EditorOptions options)
     if (!libraryProblem.empty() || !ImGui_ImplOpenGL3_Init("#version 330 core")) {
         // No destructor runs for a constructor that throws: the context goes here.
         ImGui::DestroyContext();
-        throw render::RenderError(!libraryProblem.empty() ? libraryProblem
-                                                          : "expected an OpenGL 3.3 context for the editor's Dear ImGui "
-                                                            "renderer, found an older one (or none current)");
+        throw render::RenderError(!libraryProblem.empty()
+                                      ? libraryProblem
+                                      : "expected an OpenGL 3.3 context for the editor's Dear ImGui "
+                                        "renderer, found an older one (or none current)");
     }
     viewport_ = std::make_unique<ViewportPanel>();
     if (options_.recentFiles) {
@@ -79,17 +80,23 @@ std::string EditorApp::startTraining() {
     if (!state_.doc.hasClip()) return "no clip";
     // The new model replaces this one when it is ready: a model no file holds is asked about first
     // (Save keeps it in the session file), as when a file replaces it.
-    return runAfterAsking(modelUnsaved(), [this] {
-        return reportTrainingStart(
-            state_.training.start(state_.doc.clip(), state_.trainOptions, fileNameOf(state_.doc.clip().sourcePath)));
-    }, "training a new model");
+    return runAfterAsking(
+        modelUnsaved(),
+        [this] {
+            return reportTrainingStart(state_.training.start(state_.doc.clip(), state_.trainOptions,
+                                                             fileNameOf(state_.doc.clip().sourcePath)));
+        },
+        "training a new model");
 }
 
 std::string EditorApp::startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) {
     if (!state_.doc.hasClip()) return "no clip";
-    return runAfterAsking(modelUnsaved(), [this, clips = std::move(clips), selection]() mutable {
-        return reportTrainingStart(state_.training.start(std::move(clips), selection, state_.trainOptions));
-    }, "training a new model");
+    return runAfterAsking(
+        modelUnsaved(),
+        [this, clips = std::move(clips), selection]() mutable {
+            return reportTrainingStart(state_.training.start(std::move(clips), selection, state_.trainOptions));
+        },
+        "training a new model");
 }
 
 std::string EditorApp::reportTrainingStart(const std::string& err) {
@@ -142,12 +149,16 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
 void EditorApp::pollJobs() {
     std::string regenerateError;
     const std::string regenerated = state_.doc.pollRegenerate(&regenerateError);
-    if (!regenerateError.empty()) state_.setStatus(regenerateError, true);
-    else if (!regenerated.empty()) state_.setStatus(regenerated);
+    if (!regenerateError.empty())
+        state_.setStatus(regenerateError, true);
+    else if (!regenerated.empty())
+        state_.setStatus(regenerated);
     std::string fillError;
     const std::string filled = state_.doc.pollFill(&fillError);
-    if (!fillError.empty()) state_.setStatus(fillError, true);
-    else if (!filled.empty()) state_.setStatus(filled);
+    if (!fillError.empty())
+        state_.setStatus(fillError, true);
+    else if (!filled.empty())
+        state_.setStatus(filled);
     pollTraining();
     pollExport();
     if (gp::ModelVersionPtr v = state_.compareTraining.take()) {
@@ -161,7 +172,9 @@ void EditorApp::pollTraining() {
     // Models change between gestures only: a drag, a latent drag or a regeneration keeps the
     // version it started on, and the training's results wait (the worker keeps them until taken).
     if (doc.dragging() || doc.latentDragging() || doc.regenerating()) return;
-    const auto sameClip = [&](const gp::ModelVersionPtr& v) { return doc.hasClip() && sameCapture(doc.clip(), v->model->clip); };
+    const auto sameClip = [&](const gp::ModelVersionPtr& v) {
+        return doc.hasClip() && sameCapture(doc.clip(), v->model->clip);
+    };
     if (gp::ModelVersionPtr v = state_.training.takeRefinement()) {
         const bool first = !doc.refining();
         doc.installRefinement(v, !sameClip(v));
@@ -231,17 +244,20 @@ void EditorApp::waitIdle() {
 
 bool EditorApp::animating() const {
     const EditorDocument& d = state_.doc;
-    return replay_.pending() || state_.playing || d.dragging() || d.latentDragging() || d.regenerating() || state_.training.running() ||
-           state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
+    return replay_.pending() || state_.playing || d.dragging() || d.latentDragging() || d.regenerating() ||
+           state_.training.running() || state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
            (d.hasModel() && !latent_.upToDate(state_));
 }
 
 std::string EditorApp::title() const {
     std::string t = std::string(dirty() ? "* " : "") + "MotionGP - ";
     if (!sessionPath_.empty()) t += fileNameOf(sessionPath_) + " - ";
-    if (!state_.doc.hasClip()) t += "no clip";
-    else if (state_.doc.synthetic()) t += "synthetic demo clip (no mocap data found)";
-    else t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH, view-only)" : "");
+    if (!state_.doc.hasClip())
+        t += "no clip";
+    else if (state_.doc.synthetic())
+        t += "synthetic demo clip (no mocap data found)";
+    else
+        t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH, view-only)" : "");
     if (!state_.modelLabel.empty()) t += " - model: " + state_.modelLabel;
     return t;
 }
@@ -265,7 +281,9 @@ bool EditorApp::keyScreenPosition(int key, float& x, float& y) const {
     return viewport_->keyScreenPosition(state_, key, x, y);
 }
 
-std::string EditorApp::runAction(const std::vector<std::string>& args) { return ActionTable::editor().run(*this, args); }
+std::string EditorApp::runAction(const std::vector<std::string>& args) {
+    return ActionTable::editor().run(*this, args);
+}
 
 void EditorApp::shortcuts() {
     ImGuiIO& io = ImGui::GetIO();
@@ -298,7 +316,8 @@ std::string EditorApp::pastePose() {
 
 std::string EditorApp::mirrorPose() {
     const std::string err = mirrorCurrentPose(state_.doc);
-    if (err.empty()) state_.setStatus("mirrored the pose of frame " + std::to_string(state_.doc.frame() + 1) + " left/right");
+    if (err.empty())
+        state_.setStatus("mirrored the pose of frame " + std::to_string(state_.doc.frame() + 1) + " left/right");
     return err;
 }
 
@@ -327,8 +346,10 @@ std::string EditorApp::trainOnClips(const std::vector<std::string>& a) {
     if (a.size() > 1 && a[1] != "all") {
         const std::size_t colon = a[1].find(':');
         if (colon == std::string::npos) return "expected a frame range A:B or all, found '" + a[1] + "'";
-        if (std::string err = parseIntArg(a[1].substr(0, colon), "the first frame A", sel.first); !err.empty()) return err;
-        if (std::string err = parseIntArg(a[1].substr(colon + 1), "the last frame B", sel.last); !err.empty()) return err;
+        if (std::string err = parseIntArg(a[1].substr(0, colon), "the first frame A", sel.first); !err.empty())
+            return err;
+        if (std::string err = parseIntArg(a[1].substr(colon + 1), "the last frame B", sel.last); !err.empty())
+            return err;
         if (sel.first < 1 || sel.last < sel.first) return "expected frames A:B with 1 <= A <= B, found '" + a[1] + "'";
     }
     if (a.size() > 2)
@@ -339,7 +360,8 @@ std::string EditorApp::trainOnClips(const std::vector<std::string>& a) {
         if (std::string err = parseIntArg(a[3], "the active set size M", o.activeSize); !err.empty()) return err;
     if (a.size() > 4)
         if (std::string err = parseIntArg(a[4], "the iteration count T", o.outerIterations); !err.empty()) return err;
-    if (a.size() > 5) return "expected train-clips CLIPS [A:B|all] [K] [M] [T], found " + std::to_string(a.size()) + " arguments";
+    if (a.size() > 5)
+        return "expected train-clips CLIPS [A:B|all] [K] [M] [T], found " + std::to_string(a.size()) + " arguments";
     state_.trainOptions = o;
     return trainClips_.train(*this);
 }
@@ -367,8 +389,10 @@ void EditorApp::dialogs() {
 }
 
 void EditorApp::askForFile(FileKind kind, const std::string& what) {
-    if (what.empty()) openDialog(kind);
-    else guardUnsaved([this, kind] { openDialog(kind); }, what);
+    if (what.empty())
+        openDialog(kind);
+    else
+        guardUnsaved([this, kind] { openDialog(kind); }, what);
 }
 
 void EditorApp::openDialog(FileKind purpose) {
@@ -389,7 +413,8 @@ void EditorApp::guardUnsaved(std::function<void()> action, std::string what) {
 
 std::string EditorApp::runAfterAsking(bool unsaved, std::function<std::string()> run, std::string what) {
     if (!unsaved) return run();
-    prompts_.guard(true, [run = std::move(run)] { run(); }, std::move(what));
+    prompts_.guard(
+        true, [run = std::move(run)] { run(); }, std::move(what));
     return "";
 }
 

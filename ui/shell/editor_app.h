@@ -17,26 +17,26 @@
 
 #include "edit/autosave_policy.h"
 #include "edit/recent_files.h"
+#include "render/png_capture.h"
+#include "ui/input/input_replay.h"
+#include "ui/input/input_state.h"
+#include "ui/input/script_player.h"
+#include "ui/panels/latent_map_panel.h"
+#include "ui/panels/timeline_panel.h"
+#include "ui/panels/viewport_panel.h"
 #include "ui/shell/editor_layout.h"
 #include "ui/shell/editor_prompts.h"
 #include "ui/shell/editor_state.h"
-#include "ui/windows/file_dialog.h"
 #include "ui/shell/file_requests.h"
-#include "ui/input/input_replay.h"
-#include "ui/input/input_state.h"
+#include "ui/windows/file_dialog.h"
 #include "ui/windows/joint_rotation_window.h"
-#include "ui/panels/latent_map_panel.h"
-#include "render/png_capture.h"
-#include "ui/input/script_player.h"
-#include "ui/panels/timeline_panel.h"
 #include "ui/windows/train_clips_window.h"
-#include "ui/panels/viewport_panel.h"
 
 namespace mgp::ui {
 
 struct EditorOptions {
-    bool builtinFont = false;   // ImGui's built-in bitmap font (goldens) instead of DejaVu Sans
-    std::string mocapDir;       // where File > Open starts ("" = current directory)
+    bool builtinFont = false;  // ImGui's built-in bitmap font (goldens) instead of DejaVu Sans
+    std::string mocapDir;      // where File > Open starts ("" = current directory)
     // After a crash: offer the autosave a dead editor left behind (the interactive editor).
     bool offerAutosaveRestore = false;
     double autosaveSeconds = 120.0;  // autosave interval while there are unsaved changes
@@ -68,7 +68,7 @@ public:
     std::string openModelClip(const std::string& name, int frame);
     // Trainings replace the model when they finish: with a model no file holds, they start after
     // asking about it (and return "" while the question is up).
-    std::string startTraining();         // on the open clip with state().trainOptions
+    std::string startTraining();  // on the open clip with state().trainOptions
     // On clips checked by gp::prepareTrainingClips (the open clip first) with state().trainOptions:
     // Model > Train on clips... (train_clips_window.h).
     std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection);
@@ -76,8 +76,8 @@ public:
     // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
     std::string openSession(const std::string& path, bool addToRecent = true);
     std::string saveSession(const std::string& path);  // becomes the current session file
-    void saveSessionOrAsk();  // to the current session file, or the Save dialog when there is none
-    std::string autosaveNow();                         // to this editor's autosave file
+    void saveSessionOrAsk();    // to the current session file, or the Save dialog when there is none
+    std::string autosaveNow();  // to this editor's autosave file
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
     std::string restoreAutosave(const std::string& path = "");
     // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
@@ -109,7 +109,7 @@ public:
     const JointRotationWindow& jointWindow() const { return jointWindow_; }
     void toggleHelp() { showHelp_ = !showHelp_; }
     const RecentFiles* recentFiles() const { return recent_.get(); }  // null when turned off
-    void openRecent(const std::string& path);  // after asking about unsaved changes
+    void openRecent(const std::string& path);                         // after asking about unsaved changes
     bool layoutCustomized() const { return layout_.customized(); }
     void resetLayout() { layout_.reset(); }
 
@@ -119,7 +119,7 @@ public:
     bool dirty() const { return state_.doc.revision() != savedRevision_ || modelUnsaved(); }
     bool modelUnsaved() const;
     bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
-    bool askingAboutModelClip() const { return prompts_.askingModelClip(); }  // the modal is up
+    bool askingAboutModelClip() const { return prompts_.askingModelClip(); }     // the modal is up
     const FileDialog& fileDialog() const { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
     float uiScale() const { return scale_; }
@@ -147,7 +147,7 @@ public:
     bool animating() const;
     // True once the user confirmed quitting (after the unsaved-changes prompt if needed).
     bool quitRequested() const { return quitConfirmed_; }
-    void requestQuit() { quitAsked_ = true; }  // asks about unsaved changes first
+    void requestQuit() { quitAsked_ = true; }      // asks about unsaved changes first
     void confirmQuit() { quitConfirmed_ = true; }  // quits without asking
     EditorState& state() { return state_; }
     const EditorState& state() const { return state_; }
@@ -196,7 +196,7 @@ private:
     FileDialog dialog_;
     FileKind purpose_ = FileKind::kNone;  // what the open file dialog is for
     std::string lastDialogFolder_;        // the folder of the last file a dialog gave ("" = none yet)
-    float scale_ = 1.0f;  // EditorOptions::uiScale, clamped to 0.5..4
+    float scale_ = 1.0f;                  // EditorOptions::uiScale, clamped to 0.5..4
     EditorLayout layout_;
     EditorPrompts prompts_;
     bool showHelp_ = false;
@@ -208,10 +208,10 @@ private:
     JointRotationWindow jointWindow_;
     TrainClipsWindow trainClips_;
 
-    std::string sessionPath_;  // "" until saved or opened
-    long savedRevision_ = 0;   // doc.revision() when last saved or opened
+    std::string sessionPath_;                      // "" until saved or opened
+    long savedRevision_ = 0;                       // doc.revision() when last saved or opened
     std::weak_ptr<const gp::GpModel> savedModel_;  // the model a file or session holds (weak: never a reused address)
-    std::unique_ptr<RecentFiles> recent_;  // null when the options turn the list off
+    std::unique_ptr<RecentFiles> recent_;          // null when the options turn the list off
     AutosavePolicy autosave_;
     bool quitAsked_ = false;  // Quit was chosen: the unsaved-changes question comes first
     bool quitConfirmed_ = false;

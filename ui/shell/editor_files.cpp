@@ -6,15 +6,15 @@
 #include <filesystem>
 
 #include "edit/session_mapping.h"
-#include "ui/shell/editor_session.h"
 #include "gp/model_file.h"
 #include "io/clip_export.h"
-#include "io/fbx_export.h"
-#include "io/text_reader.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
+#include "io/fbx_export.h"
+#include "io/text_reader.h"
 #include "skeleton/clip_match.h"
 #include "skeleton/synthetic_clip.h"
+#include "ui/shell/editor_session.h"
 
 namespace mgp::ui {
 
@@ -76,19 +76,21 @@ std::string EditorApp::openModel(const std::string& path, bool askedAboutUnsaved
         const std::string trainedOn =
             v->model->clipCount() > 1 ? std::to_string(v->model->clipCount()) + " clips (" + v->model->clipNames() + ")"
                                       : modelClip + " (" + std::to_string(v->model->clip.frameCount()) + " frames)";
-        prompts_.askModelClip(
-            {fileNameOf(path) + " was trained on " + trainedOn + ".",
-             "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
-                 " frames): " + difference + ".",
-             "Opening the model replaces the open clip with " + modelClip + "."},
-            [this, v, path, askedAboutUnsaved] {
-                prompts_.guard(!askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); }, "opening the model's clip");
-            });
+        prompts_.askModelClip({fileNameOf(path) + " was trained on " + trainedOn + ".",
+                               "The open clip is " + state_.clipLabel + " (" + std::to_string(state_.doc.frameCount()) +
+                                   " frames): " + difference + ".",
+                               "Opening the model replaces the open clip with " + modelClip + "."},
+                              [this, v, path, askedAboutUnsaved] {
+                                  prompts_.guard(
+                                      !askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); },
+                                      "opening the model's clip");
+                              });
         state_.setStatus("the model was trained on " + modelClip + ", not on the open clip: asking first");
         return "";
     }
     // Installing a model restarts the document on its clip: the edits and the old model go.
-    prompts_.guard(!askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); }, "opening a model");
+    prompts_.guard(
+        !askedAboutUnsaved && dirty(), [this, v, path] { installModel(v, path); }, "opening a model");
     return "";
 }
 
@@ -110,7 +112,8 @@ std::string EditorApp::openModelClip(const std::string& name, int frame) {
     if (index < 0) return "the model has no clip '" + name + "'; its clips: " + v->model->clipNames();
     const int frames = v->model->clipAt(index).frameCount();
     if (frame < 0 || frame >= frames)
-        return "expected a frame in 1.." + std::to_string(frames) + " of " + name + ", found " + std::to_string(frame + 1);
+        return "expected a frame in 1.." + std::to_string(frames) + " of " + name + ", found " +
+               std::to_string(frame + 1);
     const std::string where = name + " frame " + std::to_string(frame + 1);
     if (index == 0) {
         state_.doc.setFrame(frame);
@@ -127,10 +130,11 @@ std::string EditorApp::openModelClip(const std::string& name, int frame) {
                 state_.setStatus("the model no longer has clip " + name, true);
                 return;
             }
-            const gp::ModelVersionPtr relabelled = i == 0 ? now : gp::ModelVersion::make(gp::withPrimaryClip(*now->model, i));
+            const gp::ModelVersionPtr relabelled =
+                i == 0 ? now : gp::ModelVersion::make(gp::withPrimaryClip(*now->model, i));
             const std::string before = state_.clipLabel;
             const bool modelSaved = !modelUnsaved();  // relabelled, it is the same model: saved or not
-            state_.training.cancel();  // a training of the old clip must not land on this one
+            state_.training.cancel();                 // a training of the old clip must not land on this one
             state_.compareTraining.cancel();
             state_.doc.setModel(relabelled, true);
             state_.doc.setFrame(frame);
@@ -169,8 +173,10 @@ bool EditorApp::modelUnsaved() const {
 void EditorApp::markSaved(bool modelSaved) {
     savedRevision_ = state_.doc.revision();
     if (modelSaved) {
-        if (const gp::ModelVersionPtr v = state_.doc.model()) savedModel_ = v->model;
-        else savedModel_.reset();
+        if (const gp::ModelVersionPtr v = state_.doc.model())
+            savedModel_ = v->model;
+        else
+            savedModel_.reset();
     }
     state_.selectedKey = state_.hoveredKey = -1;
 }
@@ -192,8 +198,10 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
         mgp::saveSession(path, editorSession(state_));
         sessionPath_ = absolutePath(path);
         markSaved(false);
-        if (written) savedModel_ = written->model;
-        else savedModel_.reset();
+        if (written)
+            savedModel_ = written->model;
+        else
+            savedModel_.reset();
         forgetAutosave();  // the saved file is newer: never offer the older autosave after a crash
         remember(path, RecentKind::kSession);
         state_.setStatus("saved session " + path);
@@ -201,8 +209,10 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
 }
 
 void EditorApp::saveSessionOrAsk() {
-    if (sessionPath_.empty()) openDialog(FileKind::kSaveSession);
-    else saveSession(sessionPath_);
+    if (sessionPath_.empty())
+        openDialog(FileKind::kSaveSession);
+    else
+        saveSession(sessionPath_);
 }
 
 std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
@@ -243,8 +253,10 @@ std::string EditorApp::exportMotion(const std::string& pathIn, const std::string
         for (const auto& [frame, record] : state_.doc.edits()) edited.frames[frame] = record.pose;
         if (fileExtension(path) == "fbx") {
             // Through Blender, seconds: on the export worker; pollExport reports its stages and end.
-            if (const std::string problem = fbxExportUnavailable(path); !problem.empty()) throw std::runtime_error(problem);
-            if (const std::string busy = state_.exporting.start(std::move(edited), path); !busy.empty()) throw std::runtime_error(busy);
+            if (const std::string problem = fbxExportUnavailable(path); !problem.empty())
+                throw std::runtime_error(problem);
+            if (const std::string busy = state_.exporting.start(std::move(edited), path); !busy.empty())
+                throw std::runtime_error(busy);
             exportSeen_ = true;
             state_.setStatus("exporting " + fileNameOf(path) + " through Blender...");
             return;

@@ -18,8 +18,8 @@ void EditorLayout::reset() {
     if (!layoutFile_.empty()) saveLayoutPrefs(layoutFile_, prefs_);
 }
 
-void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
-                        int h) {
+void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline,
+                        int w, int h) {
     const float menuH = ImGui::GetFrameHeight();
     // Sizes in pixels at scale 1; a HiDPI monitor's content scale multiplies them (and the fonts).
     const float k = scale_;
@@ -36,15 +36,16 @@ void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPa
         latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
     }
     // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
-    if (prefs_.rightWidth > 0.0f) rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
+    if (prefs_.rightWidth > 0.0f)
+        rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
     float timelineFinal = timelineH;
     if (prefs_.timelineHeight > 0.0f)
         timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(70.0f * k, float(h) * 0.2f), float(h) * 0.5f);
     panels(state, viewport, latent, timeline, w, h, menuH, rightW, timelineFinal, modelH, latentH);
 }
 
-void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
-                          int h, float menuH, float rightW, float timelineH, float modelH, float latentH) {
+void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline,
+                          int w, int h, float menuH, float rightW, float timelineH, float modelH, float latentH) {
     const float leftW = float(w) - rightW;
     leftW_ = leftW;
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -56,8 +57,9 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
 
     place(0, menuH, leftW, float(h) - menuH - timelineH);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBackground |
-                                          ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::Begin("Viewport", nullptr,
+                 fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBackground |
+                     ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     viewport.draw(state);
     ImGui::End();
@@ -71,8 +73,10 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
         timeline.draw(state);
         ImGui::EndChild();
         if (const StatusMessage* m = state.messages.current()) {
-            if (m->error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", m->text.c_str());
-            else ImGui::TextDisabled("%s", m->text.c_str());
+            if (m->error)
+                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", m->text.c_str());
+            else
+                ImGui::TextDisabled("%s", m->text.c_str());
         }
     }
     ImGui::End();
@@ -110,7 +114,8 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
     const float dx = splitter("##split-right", leftW - 3.0f, menuH, 6.0f, float(h) - menuH, true, released);
     if (dx != 0.0f) prefs_.rightWidth = std::max(1.0f, (rightW - dx) / scale_);
     bool releasedTimeline = false;
-    const float dy = splitter("##split-timeline", 0.0f, float(h) - timelineH - 3.0f, leftW - 3.0f, 6.0f, false, releasedTimeline);
+    const float dy =
+        splitter("##split-timeline", 0.0f, float(h) - timelineH - 3.0f, leftW - 3.0f, 6.0f, false, releasedTimeline);
     if (dy != 0.0f) prefs_.timelineHeight = std::max(1.0f, (timelineH - dy) / scale_);
     if ((released || releasedTimeline) && !layoutFile_.empty()) {
         const std::string err = saveLayoutPrefs(layoutFile_, prefs_);
@@ -134,7 +139,8 @@ float EditorLayout::splitter(const char* id, float x, float y, float w, float h,
     float delta = 0.0f;
     if (active || ImGui::IsItemHovered()) {
         ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
-        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(90, 140, 220, active ? 200 : 120));
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h),
+                                                  IM_COL32(90, 140, 220, active ? 200 : 120));
         if (active) delta = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
     }
     ImGui::End();

@@ -5,11 +5,11 @@
 // scale 1 times the monitor's content scale.
 #include <string>
 
-#include "ui/shell/editor_state.h"
 #include "ui/panels/latent_map_panel.h"
-#include "ui/shell/layout_store.h"
 #include "ui/panels/timeline_panel.h"
 #include "ui/panels/viewport_panel.h"
+#include "ui/shell/editor_state.h"
+#include "ui/shell/layout_store.h"
 
 namespace mgp::ui {
 
@@ -26,8 +26,8 @@ public:
     void reset();  // back to the automatic layout (and remembered so)
 
 private:
-    void panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w, int h,
-                float menuH, float rightW, float timelineH, float modelH, float latentH);
+    void panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
+                int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
     // A draggable strip between panels; returns the mouse's move along it this frame.
     float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
 

@@ -59,7 +59,8 @@ void EditorPrompts::unsavedChanges(bool dialogOpen, const Hooks& hooks) {
     asking_ = ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     if (!asking_) return;
     const std::string file = std::filesystem::path(hooks.sessionPath).filename().string();
-    ImGui::Text("This session has changes that are not saved%s.", hooks.sessionPath.empty() ? "" : (" to " + file).c_str());
+    ImGui::Text("This session has changes that are not saved%s.",
+                hooks.sessionPath.empty() ? "" : (" to " + file).c_str());
     ImGui::Text("Save them before %s?", pendingWhat_.c_str());
     const bool save = ImGui::Button("Save", ImVec2(110, 0));
     if (hooks.recordControl) hooks.recordControl("unsaved: Save");

@@ -4,8 +4,8 @@
 // one, and restoring an autosave a crashed editor left behind.
 // One modal at a time: a question waits while another popup or the file dialog is open.
 #include <functional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edit/autosave.h"
@@ -16,10 +16,10 @@ class EditorPrompts {
 public:
     // What the questions need from the editor.
     struct Hooks {
-        std::string sessionPath;                        // "" until the session has a file
-        std::function<bool(const std::string&)> save;   // saves the session there; true on success
-        std::function<void()> askForSessionFile;        // opens the Save session dialog
-        std::function<void(const std::string&)> restore;  // restores that autosave
+        std::string sessionPath;                                // "" until the session has a file
+        std::function<bool(const std::string&)> save;           // saves the session there; true on success
+        std::function<void()> askForSessionFile;                // opens the Save session dialog
+        std::function<void(const std::string&)> restore;        // restores that autosave
         std::function<void(const std::string&)> recordControl;  // the last item's rectangle, by name (tests)
     };
 

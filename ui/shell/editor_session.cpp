@@ -38,8 +38,8 @@ void applyOverlays(EditorState& s, const nlohmann::json& ui) {
             if (name.is_string() && render::parseTrailPart(name.get<std::string>(), part))
                 s.trails[static_cast<int>(part)] = true;
         }
-    s.trailHalfSpan = clampedInt(*trails, "frames_each_side", EditorState::kDefaultTrailHalfSpan, 1,
-                                 EditorState::kMaxTrailHalfSpan);
+    s.trailHalfSpan =
+        clampedInt(*trails, "frames_each_side", EditorState::kDefaultTrailHalfSpan, 1, EditorState::kMaxTrailHalfSpan);
     const auto captured = trails->find("captured");
     s.showCapturedTrails = captured == trails->end() || !captured->is_boolean() || captured->get<bool>();
 }
@@ -55,15 +55,20 @@ SessionData editorSession(const EditorState& s) {
     d.camera.fovYDeg = s.camera.fovYDeg;
     d.camera.targetCm = {s.camera.targetCm.x, s.camera.targetCm.y, s.camera.targetCm.z};
     d.camera.followCharacter = s.followCharacter;
-    d.ui = {{"show_captured_path", s.showCapturedPath}, {"show_before_ghost", s.showBeforeGhost},
-            {"show_nearest_ghost", s.showNearestGhost}, {"show_interpolation_ghost", s.showInterpolationGhost},
-            {"show_balance", s.showBalance}, {"clip_label", s.clipLabel},
+    d.ui = {{"show_captured_path", s.showCapturedPath},
+            {"show_before_ghost", s.showBeforeGhost},
+            {"show_nearest_ghost", s.showNearestGhost},
+            {"show_interpolation_ghost", s.showInterpolationGhost},
+            {"show_balance", s.showBalance},
+            {"clip_label", s.clipLabel},
             {"model_label", s.modelLabel}};
     nlohmann::json trails = nlohmann::json::array();
     for (int i = 0; i < render::kTrailPartCount; ++i)
         if (s.trails[i]) trails.push_back(render::trailPartName(static_cast<render::TrailPart>(i)));
-    d.ui["onion_skin"] = {{"show", s.showOnionSkin}, {"before", s.onionSkin.before},
-                          {"after", s.onionSkin.after}, {"spacing", s.onionSkin.spacing}};
+    d.ui["onion_skin"] = {{"show", s.showOnionSkin},
+                          {"before", s.onionSkin.before},
+                          {"after", s.onionSkin.after},
+                          {"spacing", s.onionSkin.spacing}};
     d.ui["trails"] = {{"parts", trails}, {"frames_each_side", s.trailHalfSpan}, {"captured", s.showCapturedTrails}};
     return d;
 }
@@ -78,7 +83,8 @@ void applyEditorSession(EditorState& s, const SessionData& d) {
         return it != d.ui.end() && it->is_boolean() ? it->get<bool>() : fallback;
     };
     s.selected.reset();
-    if (d.selectedEffector >= 0 && d.selectedEffector < kEffectorCount) s.selected = static_cast<Effector>(d.selectedEffector);
+    if (d.selectedEffector >= 0 && d.selectedEffector < kEffectorCount)
+        s.selected = static_cast<Effector>(d.selectedEffector);
     s.camera.yawDeg = float(d.camera.yawDeg);
     s.camera.pitchDeg = float(d.camera.pitchDeg);
     s.camera.distanceCm = float(d.camera.distanceCm);

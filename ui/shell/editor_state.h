@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "ui/shell/frame_profile.h"
-#include "render/camera.h"
-#include "render/motion_overlays.h"
 #include "edit/editor_document.h"
 #include "edit/export_job.h"
 #include "edit/training_job.h"
 #include "gp/trainer.h"
+#include "render/camera.h"
+#include "render/motion_overlays.h"
+#include "ui/shell/frame_profile.h"
 #include "ui/shell/message_log.h"
 
 namespace mgp::ui {
@@ -55,14 +55,14 @@ struct EditorState {
     FrameProfile profile;  // where the last frame's time went (bench --only ui)
 
     // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
-    int hoveredKey = -1;            // path key under the mouse in the viewport, -1 none
-    int selectedKey = -1;           // path key last dragged or picked, -1 none
+    int hoveredKey = -1;   // path key under the mouse in the viewport, -1 none
+    int selectedKey = -1;  // path key last dragged or picked, -1 none
     // Frames selected on the timeline by Shift+drag (0-based, first ≤ last): Fill between keys
     // fills every gap between keys inside it. A plain click on the timeline clears it.
     std::optional<std::pair<int, int>> timelineRange;
-    bool showCapturedPath = true;   // the captured path beside the edited one
-    bool showBeforeGhost = false;   // the current frame's pose before the last undoable step
-    bool showNearestGhost = false;  // the captured frame nearest to the last learned solve
+    bool showCapturedPath = true;         // the captured path beside the edited one
+    bool showBeforeGhost = false;         // the current frame's pose before the last undoable step
+    bool showNearestGhost = false;        // the captured frame nearest to the last learned solve
     bool showInterpolationGhost = false;  // between two keys: the keys' plain interpolation
     // View > Pose range: tint the figure by σ²(x) against the model's training range, with a legend
     // (render/range_tint.h). Only a solved pose is tinted (a drag, an edited frame) and only with a model.

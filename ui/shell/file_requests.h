@@ -10,7 +10,17 @@
 
 namespace mgp::ui {
 
-enum class FileKind { kNone, kOpenAny, kModel, kSaveModel, kSaveSession, kExportBvh, kExportGltf, kExportFbx, kExportPng };
+enum class FileKind {
+    kNone,
+    kOpenAny,
+    kModel,
+    kSaveModel,
+    kSaveSession,
+    kExportBvh,
+    kExportGltf,
+    kExportFbx,
+    kExportPng
+};
 
 struct FileRequest {
     std::string title;
@@ -25,6 +35,7 @@ struct FileRequest {
 // The file name of `path` without its folders, as the title bar and labels show it.
 std::string fileNameOf(const std::string& path);
 
-FileRequest fileRequest(FileKind kind, const EditorDocument& doc, const std::string& sessionPath, const std::string& mocapDir);
+FileRequest fileRequest(FileKind kind, const EditorDocument& doc, const std::string& sessionPath,
+                        const std::string& mocapDir);
 
 }  // namespace mgp::ui

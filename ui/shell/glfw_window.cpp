@@ -12,7 +12,8 @@ InputState& inputOf(GLFWwindow* w) { return windowOf(w).input(); }
 }  // namespace
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title) : title_(title) {
-    if (!glfwInit()) throw render::RenderError("GLFW could not start (no display? run under xvfb-run or use --offscreen)");
+    if (!glfwInit())
+        throw render::RenderError("GLFW could not start (no display? run under xvfb-run or use --offscreen)");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -35,8 +36,10 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) : title_
         if (!entered) inputOf(w).mouseX = inputOf(w).mouseY = -1.0f;
     });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
-        const int b = button == GLFW_MOUSE_BUTTON_LEFT ? 0 : button == GLFW_MOUSE_BUTTON_RIGHT ? 1
-                      : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2 : -1;
+        const int b = button == GLFW_MOUSE_BUTTON_LEFT     ? 0
+                      : button == GLFW_MOUSE_BUTTON_RIGHT  ? 1
+                      : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2
+                                                           : -1;
         inputOf(w).setButton(b, action == GLFW_PRESS);
     });
     glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) { inputOf(w).wheel += float(dy); });

@@ -21,9 +21,9 @@ public:
     GlfwWindow& operator=(const GlfwWindow&) = delete;
 
     void makeCurrent() override;
-    int width() const override;   // framebuffer pixels
+    int width() const override;  // framebuffer pixels
     int height() const override;
-    void present() override;      // swap buffers
+    void present() override;  // swap buffers
 
     void pollEvents();
     void waitEvents(double timeoutSeconds);  // sleeps until input or the timeout

@@ -68,8 +68,8 @@ void createImGuiContext(float scale, bool builtinFont) {
     std::error_code ec;
     // Latin-1 plus what messages and panels print: Greek (α β γ η σ), dashes and ellipsis,
     // arrows, and maths (≥ ≤ √ ²); DejaVu Sans has them all.
-    static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
-                                      0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+    static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070,
+                                      0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
     if (!builtinFont && std::filesystem::exists(kFontPath, ec))
         io.Fonts->AddFontFromFileTTF(kFontPath, std::round(15.0f * scale), nullptr, kGlyphs);
     else
@@ -86,8 +86,9 @@ std::string imguiOpenGlLibraryProblem() {
         return "";
     }
     const char* why = dlerror();
-    return std::string("expected libGL.so.1, the OpenGL library the editor's Dear ImGui renderer loads "
-                       "(Debian: apt-get install libgl1), found none: ") +
+    return std::string(
+               "expected libGL.so.1, the OpenGL library the editor's Dear ImGui renderer loads "
+               "(Debian: apt-get install libgl1), found none: ") +
            (why ? why : "dlopen failed");
 }
 

@@ -32,7 +32,7 @@ public:
     // The message the status line shows, or nullptr when the latest one has expired.
     const StatusMessage* current() const;
     const std::deque<StatusMessage>& history() const { return history_; }  // oldest first
-    const std::string& latestText() const;  // the newest message, expired or not ("" if none)
+    const std::string& latestText() const;     // the newest message, expired or not ("" if none)
     long postCount() const { return posts_; }  // messages posted so far (the history drops old ones)
 
 private:

@@ -18,7 +18,8 @@ void FileDialog::open(std::string title, Mode mode, std::vector<std::string> ext
     mode_ = mode;
     extensions_ = std::move(extensions);
     std::error_code ec;
-    const std::string start = !startDir.empty() && fs::is_directory(startDir, ec) ? startDir : fs::current_path(ec).string();
+    const std::string start =
+        !startDir.empty() && fs::is_directory(startDir, ec) ? startDir : fs::current_path(ec).string();
     list(start);
     std::snprintf(path_, sizeof path_, "%s", defaultName.c_str());
     error_.clear();
@@ -97,9 +98,12 @@ std::optional<std::string> FileDialog::draw() {
             std::error_code ec;
             fs::path p(path_);
             if (p.is_relative()) p = fs::path(dir_) / p;
-            if (fs::is_directory(p, ec)) list(p.string());
-            else if (mode_ == Mode::kOpen && !fs::exists(p, ec)) error_ = "no such file: " + p.string();
-            else chosen = p.string();
+            if (fs::is_directory(p, ec))
+                list(p.string());
+            else if (mode_ == Mode::kOpen && !fs::exists(p, ec))
+                error_ = "no such file: " + p.string();
+            else
+                chosen = p.string();
         }
         if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
             open_ = false;

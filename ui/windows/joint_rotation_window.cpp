@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ui/actions/action_args.h"
 #include "edit/joint_rotation.h"
+#include "ui/actions/action_args.h"
 #include "ui/shell/editor_app.h"
 
 namespace mgp::ui {
@@ -44,8 +44,10 @@ void JointRotationWindow::draw(EditorApp& app) {
             if (animates(sk.joints[j])) joint_ = j;
     }
     ImGui::SetNextWindowSize(ImVec2(330 * app.uiScale(), 0), ImGuiCond_Appearing);
-    ImGui::SetNextWindowPos(ImVec2(s.viewportX + 12 * app.uiScale(), s.viewportY + 40 * app.uiScale()), ImGuiCond_Appearing);
-    if (!ImGui::Begin("Rotate joint", &open_, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize) || joint_ < 0) {
+    ImGui::SetNextWindowPos(ImVec2(s.viewportX + 12 * app.uiScale(), s.viewportY + 40 * app.uiScale()),
+                            ImGuiCond_Appearing);
+    if (!ImGui::Begin("Rotate joint", &open_, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize) ||
+        joint_ < 0) {
         ImGui::End();
         return;
     }
@@ -121,8 +123,8 @@ std::string JointRotationWindow::rotate(EditorState& state, const std::vector<st
     const std::size_t want = (jt.dof[0] ? 1 : 0) + (jt.dof[1] ? 1 : 0) + (jt.dof[2] ? 1 : 0);
     if (want == 0) return "rotate-joint: " + jt.name + " has no rotation DOFs";
     if (a.size() - 1 != want)
-        return "rotate-joint: expected " + std::to_string(want) + " angle" + (want > 1 ? "s" : "") + " for " + jt.name + " (" + axes +
-               "), found " + std::to_string(a.size() - 1);
+        return "rotate-joint: expected " + std::to_string(want) + " angle" + (want > 1 ? "s" : "") + " for " + jt.name +
+               " (" + axes + "), found " + std::to_string(a.size() - 1);
     JointRotation rot;
     rot.joint = joint;
     rot.anglesDeg = doc.currentPose().anglesDeg[joint];
@@ -130,7 +132,8 @@ std::string JointRotationWindow::rotate(EditorState& state, const std::vector<st
     std::size_t next = 1;
     for (int k = 0; k < 3; ++k)
         if (jt.dof[k])
-            if (std::string err = parseFloatArg(a[next++], "an angle in degrees", rot.anglesDeg[k]); !err.empty()) return err;
+            if (std::string err = parseFloatArg(a[next++], "an angle in degrees", rot.anglesDeg[k]); !err.empty())
+                return err;
     JointRotationResult result;
     const std::string err = applyJointRotation(doc, rot, &result);
     if (!err.empty()) return err;
@@ -140,8 +143,10 @@ std::string JointRotationWindow::rotate(EditorState& state, const std::vector<st
         double worst = 0.0;
         for (const IkConstraintResult& c : result.ik.constraints) worst = std::max(worst, c.residualCm);
         char buf[160];
-        std::snprintf(buf, sizeof buf, "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)", result.ik.lik,
-                      result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst, ikStopName(result.ik.stop));
+        std::snprintf(buf, sizeof buf,
+                      "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)",
+                      result.ik.lik, result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst,
+                      ikStopName(result.ik.stop));
         text += buf;
     }
     readout_ = text;

@@ -23,7 +23,8 @@ void fileMenu(EditorApp& app, const ActionTable& t, bool escape) {
     if (beginMenu("Open recent", escape, recent && !recent->entries().empty())) {
         const std::vector<RecentFile> entries = recent->entries();  // a copy: opening reorders the list
         for (const RecentFile& r : entries) {
-            const std::string label = std::filesystem::path(r.path).filename().string() + "  (" + recentKindName(r.kind) + ")";
+            const std::string label =
+                std::filesystem::path(r.path).filename().string() + "  (" + recentKindName(r.kind) + ")";
             if (ImGui::MenuItem(label.c_str())) app.openRecent(r.path);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.path.c_str());
         }
@@ -56,7 +57,8 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "mirror-pose", "Mirror pose");
     t.menuItem(app, "rotate-joint", "Rotate joint...");
     const bool follow = app.jointWindow().followPrior();
-    t.menuItem(app, "follow-prior", "Rotate joint follows learned prior", {follow ? "off" : "on"}, follow, doc.hasModel());
+    t.menuItem(app, "follow-prior", "Rotate joint follows learned prior", {follow ? "off" : "on"}, follow,
+               doc.hasModel());
     if (beginMenu("Pins", escape)) {
         for (int i = 0; i < kEffectorCount; ++i) {
             const auto e = static_cast<Effector>(i);
@@ -67,7 +69,8 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     if (beginMenu("Held", escape)) {  // what earlier edits placed on this frame (edit/held_effectors.h)
         for (int i = 0; i < kEffectorCount; ++i) {
             const auto e = static_cast<Effector>(i);
-            t.menuItem(app, "release", std::string("Release ") + effectorName(e), {effectorName(e)}, false, doc.held(e));
+            t.menuItem(app, "release", std::string("Release ") + effectorName(e), {effectorName(e)}, false,
+                       doc.held(e));
         }
         ImGui::Separator();
         t.menuItem(app, "release-all", "Release all held (whole clip)");
@@ -75,8 +78,8 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     }
     ImGui::Separator();
     const Effector pathEffector = app.state().selected.value_or(Effector::kRFoot);
-    t.menuItem(app, "path", std::string("Edit path of ") + effectorName(pathEffector), {effectorName(pathEffector)}, false,
-               doc.hasEffector(pathEffector));
+    t.menuItem(app, "path", std::string("Edit path of ") + effectorName(pathEffector), {effectorName(pathEffector)},
+               false, doc.hasEffector(pathEffector));
     t.menuItem(app, "regenerate", "Regenerate path span", {}, false, doc.hasModel());
     t.menuItem(app, "cancel-regenerate", "Cancel regeneration");
     t.menuItem(app, "end-path", "Stop editing the path");
@@ -105,11 +108,12 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
         ImGui::EndMenu();
     }
     if (beginMenu("Motion trails", escape)) {
-        static const char* const kLabels[render::kTrailPartCount] = {"Left hand", "Right hand", "Left foot",
-                                                                     "Right foot", "Head", "Root"};
+        static const char* const kLabels[render::kTrailPartCount] = {"Left hand",  "Right hand", "Left foot",
+                                                                     "Right foot", "Head",       "Root"};
         for (int i = 0; i < render::kTrailPartCount; ++i)
-            ImGui::MenuItem(kLabels[i], nullptr, &s.trails[i],
-                            s.doc.hasClip() && render::hasTrailPart(s.doc.clip().skeleton, static_cast<render::TrailPart>(i)));
+            ImGui::MenuItem(
+                kLabels[i], nullptr, &s.trails[i],
+                s.doc.hasClip() && render::hasTrailPart(s.doc.clip().skeleton, static_cast<render::TrailPart>(i)));
         ImGui::Separator();
         ImGui::SliderInt("Frames each side", &s.trailHalfSpan, 1, EditorState::kMaxTrailHalfSpan, "%d",
                          ImGuiSliderFlags_AlwaysClamp);
@@ -120,7 +124,8 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
         const CompareMode mode = s.doc.compareMode();
         t.menuItem(app, "compare", "Off", {compareModeName(CompareMode::kNone)}, mode == CompareMode::kNone);
         t.menuItem(app, "compare", "Plain IK", {compareModeName(CompareMode::kPlainIk)}, mode == CompareMode::kPlainIk);
-        t.menuItem(app, "compare", "Second model", {compareModeName(CompareMode::kSecondModel)}, mode == CompareMode::kSecondModel);
+        t.menuItem(app, "compare", "Second model", {compareModeName(CompareMode::kSecondModel)},
+                   mode == CompareMode::kSecondModel);
         ImGui::EndMenu();
     }
 }

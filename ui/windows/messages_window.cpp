@@ -15,8 +15,10 @@ void drawMessagesWindow(bool& open, const MessageLog& log, double now) {
         for (auto it = h.rbegin(); it != h.rend(); ++it) {
             ImGui::TextDisabled("%6.0f s ago", now - it->postedAt);
             ImGui::SameLine();
-            if (it->error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", it->text.c_str());
-            else ImGui::TextUnformatted(it->text.c_str());
+            if (it->error)
+                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", it->text.c_str());
+            else
+                ImGui::TextUnformatted(it->text.c_str());
         }
     }
     ImGui::End();

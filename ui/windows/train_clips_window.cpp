@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "ui/shell/editor_app.h"
-#include "ui/input/input_state.h"
 #include "io/clip_loader.h"
+#include "ui/input/input_state.h"
 #include "ui/panels/model_panel.h"
+#include "ui/shell/editor_app.h"
 
 namespace mgp::ui {
 
@@ -164,7 +164,8 @@ void TrainClipsWindow::draw(EditorApp& app) {
     if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
         ImGui::OpenPopup(kTitle);
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    popupUp_ = ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    popupUp_ =
+        ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
     if (!popupUp_) return;
     if (!open_) {  // closed by train() or an action
         ImGui::CloseCurrentPopup();
@@ -189,20 +190,27 @@ void TrainClipsWindow::draw(EditorApp& app) {
         std::string label = c.name;
         if (c.open) label += "  (open clip, primary)";
         if (ImGui::Checkbox(label.c_str(), &on)) {
-            if (std::string err = check(c.name, on); !err.empty()) error_ = err;
-            else error_.clear();
+            if (std::string err = check(c.name, on); !err.empty())
+                error_ = err;
+            else
+                error_.clear();
         }
         ImGui::EndDisabled();
         s.recordControl("train clips: " + c.name);
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            if (!c.usable) ImGui::SetTooltip("%s", c.reason.c_str());
-            else if (!c.path.empty()) ImGui::SetTooltip("%s", c.path.c_str());
+            if (!c.usable)
+                ImGui::SetTooltip("%s", c.reason.c_str());
+            else if (!c.path.empty())
+                ImGui::SetTooltip("%s", c.path.c_str());
         }
         const Clip* clip = clipOf(i, app);
         ImGui::SameLine(260.0f * scale);
-        if (!c.usable) ImGui::TextDisabled("%s", shortReason(c.reason));
-        else if (clip) ImGui::TextDisabled("%d frames", clip->frameCount());
-        else ImGui::TextDisabled("same skeleton");
+        if (!c.usable)
+            ImGui::TextDisabled("%s", shortReason(c.reason));
+        else if (clip)
+            ImGui::TextDisabled("%d frames", clip->frameCount());
+        else
+            ImGui::TextDisabled("same skeleton");
         ImGui::PopID();
     }
     ImGui::EndChild();

@@ -44,7 +44,7 @@ public:
 
 private:
     const Clip* clipOf(std::size_t i, const EditorApp& app) const;  // loaded (or the open clip), null if not
-    std::string load(std::size_t i);                                 // "" or the reader's error
+    std::string load(std::size_t i);                                // "" or the reader's error
 
     bool open_ = false;
     bool popupUp_ = false;  // the modal was drawn last frame
