@@ -14,7 +14,7 @@
 #include "eval/admission.h"
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
 #include "motion/captured_pose_request.h"

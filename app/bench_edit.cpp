@@ -4,7 +4,7 @@
 // (keys 14 frames apart); for each: the span report (motion/motion_quality.h) and the median
 // wall time of the regeneration over --repeats runs. Models: M = 200, T = 20 (quick: M = 100, T = 3).
 #include "bench_registry.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "motion/motion_edit.h"
 #include "motion_quality_json.h"

@@ -6,7 +6,7 @@
 // (motion/motion_quality.h) and the largest second difference at t−1..t+1 against the capture's,
 // and the median wall time. Models: M = 200, T = 20 (quick: M = 100, T = 3).
 #include "bench_registry.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
 #include "motion/captured_pose_request.h"

@@ -14,7 +14,7 @@
 #include "bench_registry.h"
 #include "edit/training_job.h"
 #include "eval/admission.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"
 #include "motion/captured_pose_request.h"

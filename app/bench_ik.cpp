@@ -21,8 +21,8 @@
 #include <cmath>
 
 #include "bench_registry.h"
-#include "gp/adaptive_update.h"
-#include "gp/trainer.h"
+#include "gp/train/adaptive_update.h"
+#include "gp/train/trainer.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "ik_cli.h"

@@ -9,7 +9,7 @@
 
 #include "bench_registry.h"
 #include "eval/inbetween_metrics.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "motion/inbetween.h"
 

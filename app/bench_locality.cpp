@@ -13,7 +13,7 @@
 #include "bench_clip_range.h"
 #include "bench_registry.h"
 #include "eval/nearest_pose.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "ik/constrained_ik.h"
 #include "ik/plain_ik.h"
 #include "motion/captured_pose_request.h"

@@ -7,8 +7,8 @@
 #include "bench_registry.h"
 #include "command_registry.h"
 #include "eval/layout_quality.h"
-#include "gp/pca_init.h"
-#include "gp/trainer.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
 

@@ -13,7 +13,7 @@
 #include "edit/editor_document.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {

@@ -22,8 +22,8 @@
 #include <thread>
 
 #include "bench_registry.h"
-#include "gp/trainer.h"
-#include "gp/training_clips.h"
+#include "gp/train/trainer.h"
+#include "gp/train/training_clips.h"
 #include "io/clip_loader.h"
 #include "skeleton/synthetic_clip.h"
 

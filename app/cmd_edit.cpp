@@ -11,8 +11,8 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
-#include "gp/adaptive_update.h"
 #include "gp/model_file.h"
+#include "gp/train/adaptive_update.h"
 #include "ik/locality.h"
 #include "ik_cli.h"
 #include "motion/motion_edit.h"

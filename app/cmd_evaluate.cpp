@@ -17,8 +17,8 @@
 #include "command_registry.h"
 #include "eval/layout_quality.h"
 #include "gp/model_file.h"
-#include "gp/pca_init.h"
-#include "gp/trainer.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/text_reader.h"
 #include "skeleton/pose_layout.h"
 

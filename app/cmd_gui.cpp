@@ -16,12 +16,12 @@
 
 #include "cli_common.h"
 #include "command_registry.h"
-#include "edit/recent_files.h"
 #include "gui_run.h"
 #include "io/data_paths.h"
 #include "io/parse_error.h"
 #include "render/gl_context.h"
 #include "render/png_capture.h"
+#include "session/recent_files.h"
 #include "ui/input/gui_script.h"
 #include "ui/shell/editor_app.h"
 #include "ui/shell/glfw_window.h"

@@ -4,9 +4,9 @@
 #include <future>
 
 #include "edit/adaptive_worker.h"
-#include "gp/adaptive_update.h"
-#include "gp/ivm.h"
 #include "gp/model_file.h"
+#include "gp/train/adaptive_update.h"
+#include "gp/train/ivm.h"
 #include "ik/learned_ik.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

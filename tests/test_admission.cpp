@@ -8,7 +8,7 @@
 #include "eval/admission.h"
 #include "eval/naturalness.h"
 #include "eval/table2_protocol.h"
-#include "gp/adaptive_update.h"
+#include "gp/train/adaptive_update.h"
 #include "ik/constrained_ik.h"
 #include "motion/captured_pose_request.h"
 #include "skeleton/forward_kinematics.h"

@@ -1,9 +1,9 @@
-// The editor's autosave policy (core/edit/autosave_policy.h), on a scratch file, without GL.
+// The editor's autosave policy (core/session/autosave_policy.h), on a scratch file, without GL.
 #include <doctest/doctest.h>
 
 #include <filesystem>
 
-#include "edit/autosave_policy.h"
+#include "session/autosave_policy.h"
 #include "test_support.h"
 
 using namespace mgp;

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "central_difference.h"
-#include "gp/back_constraints.h"
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/back_constraints.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_support.h"
 

@@ -1,4 +1,4 @@
-// Training on BVH clips (skeleton/pose_layout.h, gp/training_clips.h): a BVH trains on its own
+// Training on BVH clips (skeleton/pose_layout.h, gp/train/training_clips.h): a BVH trains on its own
 // rotation channels, the latent dimension follows eq. 4 on the channels that move, the rest frame
 // is never a row, learned IK reaches targets on such a model, and an edit exported to BVH keeps
 // the source hierarchy and comes back through our reader at the same joint positions. Small
@@ -10,9 +10,9 @@
 
 #include "central_difference.h"
 #include "gp/model_file.h"
-#include "gp/pca_init.h"
-#include "gp/trainer.h"
-#include "gp/training_clips.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
+#include "gp/train/training_clips.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "io/bvh_reader.h"

@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "eval/admission.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "gp/training_range.h"
 #include "ik/constrained_ik.h"
 #include "io/clip_loader.h"

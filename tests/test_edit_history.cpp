@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "document_helpers.h"
+#include "edit/edit_history.h"
 #include "edit/editor_document.h"
 #include "gp/model_file.h"
 #include "skeleton/forward_kinematics.h"
@@ -79,6 +80,26 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
         CHECK(doc.model() == v1);
         CHECK_FALSE(doc.isEdited(200));
     }
+}
+
+TEST_CASE("undo steps carry ids: two steps with the same label are told apart, and a restored history gets new ones") {
+    EditHistory h;
+    EditStep a, b;
+    a.label = b.label = "drag rfoot on frame 101";
+    const long ida = h.push(a);
+    CHECK(h.topUndoWithId(ida) != nullptr);
+    const long idb = h.push(b);
+    CHECK(idb != ida);
+    CHECK(h.topUndoWithId(ida) == nullptr);  // superseded by a step with the same label
+    REQUIRE(h.topUndoWithId(idb) != nullptr);
+    CHECK(h.topUndoWithId(idb)->id == idb);
+    h.moveUndoToRedo();
+    CHECK(h.topUndoWithId(idb) == nullptr);  // undone
+    CHECK(h.topUndoWithId(ida) != nullptr);
+    h.restore({a, b}, {});
+    CHECK(h.undoSteps()[0].id > idb);
+    CHECK(h.undoSteps()[1].id == h.undoSteps()[0].id + 1);
+    CHECK(h.push(EditStep{}) == h.undoSteps()[1].id + 1);
 }
 
 TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps the poses' history") {

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "edit/session_file.h"
 #include "gp/model_file.h"
 #include "io/amc_reader.h"
 #include "io/asf_reader.h"
 #include "io/bvh_reader.h"
 #include "io/parse_error.h"
+#include "session/session_file.h"
 #include "skip.h"
 #include "test_support.h"
 

@@ -3,11 +3,11 @@
 
 #include <cmath>
 
-#include "gp/active_step.h"
 #include "gp/gp_objective.h"
-#include "gp/pca_init.h"
 #include "gp/scg.h"
-#include "gp/trainer.h"
+#include "gp/train/active_step.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_paths.h"
 

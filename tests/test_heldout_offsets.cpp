@@ -10,7 +10,7 @@
 #include <set>
 
 #include "eval/layout_quality.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

@@ -17,10 +17,10 @@
 #include <set>
 #include <vector>
 
-#include "edit/session_file.h"
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/parse_error.h"
+#include "session/session_file.h"
 #include "skeleton/synthetic_clip.h"
 #include "skip.h"
 #include "test_support.h"

@@ -3,9 +3,9 @@
 
 #include <Eigen/Cholesky>
 
-#include "gp/ivm.h"
-#include "gp/pca_init.h"
-#include "gp/trainer.h"
+#include "gp/train/ivm.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_paths.h"
 

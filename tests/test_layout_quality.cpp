@@ -9,7 +9,7 @@
 
 #include "eval/layout_quality.h"
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

@@ -13,7 +13,7 @@
 
 #include "gp/model_file.h"
 #include "gp/sha256.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
 

@@ -12,7 +12,7 @@
 #include "gp/model_file.h"
 #include "gp/sha256.h"
 #include "gp/temporal_prior.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "gp/training_range.h"
 #include "io/clip_loader.h"
 #include "skeleton/clip_match.h"

@@ -14,7 +14,7 @@
 #include "edit/editor_document.h"
 #include "gp/model_file.h"
 #include "gp/model_version.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "ik/learned_ik.h"
 #include "io/parse_error.h"
 #include "skeleton/forward_kinematics.h"

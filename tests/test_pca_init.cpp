@@ -1,8 +1,8 @@
 // docs/maths.md §5: constant columns (via the training preprocessing) and whitened PCA.
 #include <doctest/doctest.h>
 
-#include "gp/pca_init.h"
-#include "gp/trainer.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_paths.h"
 

@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "gp/gp_objective.h"
-#include "gp/pca_init.h"
 #include "gp/point_objective.h"
-#include "gp/trainer.h"
+#include "gp/train/pca_init.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_paths.h"
 

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "edit/autosave.h"
-#include "edit/recent_files.h"
+#include "session/autosave.h"
+#include "session/recent_files.h"
 #include "test_support.h"
 
 using namespace mgp;

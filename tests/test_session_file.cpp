@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "edit/session_file.h"
 #include "gp/model_file.h"
 #include "gp/sha256.h"
 #include "io/clip_loader.h"
 #include "io/parse_error.h"
+#include "session/session_file.h"
 #include "skeleton/synthetic_clip.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

@@ -1,9 +1,9 @@
-// The document's half of a session (core/edit/session_mapping.h), both ways, without GL.
+// The document's half of a session (core/session/session_mapping.h), both ways, without GL.
 #include <doctest/doctest.h>
 
 #include "document_helpers.h"
-#include "edit/session_mapping.h"
 #include "io/parse_error.h"
+#include "session/session_mapping.h"
 #include "skeleton/synthetic_clip.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"

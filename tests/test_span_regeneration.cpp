@@ -2,7 +2,7 @@
 // capture's, planted feet and pins held. Small quick models (M = 100, T = 3).
 #include <mutex>
 
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "motion/motion_edit.h"
 #include "test_support.h"

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "gp/active_step.h"
 #include "gp/temporal_prior.h"
+#include "gp/train/active_step.h"
 
 using namespace mgp::gp;
 

@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 
 using namespace mgp::gp;

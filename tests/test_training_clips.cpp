@@ -1,4 +1,4 @@
-// The one multi-clip training path (core/gp/training_clips.h) that `motiongp train` and the
+// The one multi-clip training path (core/gp/train/training_clips.h) that `motiongp train` and the
 // editor's TrainingJob share: frame selection per clip, the refusals (BVH, two skeletons, a range
 // outside a clip, too few rows), and the job's model equal to gp::train on the same clips with
 // every clip attached. Tiny models only (CI budget).
@@ -6,7 +6,7 @@
 
 #include "edit/training_job.h"
 #include "gp/sha256.h"
-#include "gp/training_clips.h"
+#include "gp/train/training_clips.h"
 #include "io/clip_loader.h"
 #include "test_support.h"
 

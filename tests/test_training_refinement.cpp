@@ -6,7 +6,7 @@
 #include "document_helpers.h"
 #include "edit/editor_document.h"
 #include "edit/training_job.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "test_paths.h"
 #include "trained_model_fixture.h"

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <variant>
 
-#include "gp/adaptive_update.h"
+#include "gp/train/adaptive_update.h"
 #include "util/background_worker.h"
 
 namespace mgp {

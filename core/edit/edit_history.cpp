@@ -4,10 +4,17 @@
 
 namespace mgp {
 
-void EditHistory::push(EditStep step) {
+long EditHistory::push(EditStep step) {
+    step.id = ++lastId_;
     undo_.push_back(std::move(step));
     redo_.clear();
     if (undo_.size() > kMaxSteps) undo_.erase(undo_.begin());
+    return lastId_;
+}
+
+EditStep* EditHistory::topUndoWithId(long id) {
+    EditStep* top = topUndo();
+    return top && top->id == id ? top : nullptr;
 }
 
 long EditHistory::oldestUnresolvedSample() const {
@@ -36,6 +43,8 @@ void EditHistory::clear() {
 void EditHistory::restore(std::vector<EditStep> undo, std::vector<EditStep> redo) {
     undo_ = std::move(undo);
     redo_ = std::move(redo);
+    for (auto* stack : {&undo_, &redo_})
+        for (EditStep& s : *stack) s.id = ++lastId_;
     forgetModels();
 }
 

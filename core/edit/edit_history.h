@@ -17,6 +17,9 @@
 namespace mgp {
 
 struct EditStep {
+    // Given by EditHistory::push (or restore), unique within one history: how a later change to
+    // the step (a drag's falloff merged into the drag's step) finds it; labels may repeat.
+    long id = 0;
     std::string label;          // "drag rfoot on frame 101", shown as "Undo drag rfoot on frame 101"
     FrameEdits before, after;   // per touched frame (0-based)
     std::vector<long> samples;  // adaptive sample sequence numbers
@@ -30,11 +33,14 @@ class EditHistory {
 public:
     // Each step keeps model versions alive (~1 MB each at N ≈ 350): the oldest steps go first.
     static constexpr std::size_t kMaxSteps = 100;
-    void push(EditStep step);  // drops the redo branch (and the oldest step beyond kMaxSteps)
+    // Drops the redo branch (and the oldest step beyond kMaxSteps); returns the step's id.
+    long push(EditStep step);
     bool canUndo() const { return !undo_.empty(); }
     bool canRedo() const { return !redo_.empty(); }
     EditStep* topUndo() { return undo_.empty() ? nullptr : &undo_.back(); }
     EditStep* topRedo() { return redo_.empty() ? nullptr : &redo_.back(); }
+    // The step on top of the undo stack when it is the one with `id`, else null (undone or superseded).
+    EditStep* topUndoWithId(long id);
     const EditStep* topUndo() const { return undo_.empty() ? nullptr : &undo_.back(); }
     const EditStep* topRedo() const { return redo_.empty() ? nullptr : &redo_.back(); }
     void moveUndoToRedo();
@@ -55,6 +61,7 @@ public:
 
 private:
     std::vector<EditStep> undo_, redo_;
+    long lastId_ = 0;
 };
 
 // Which model version was current after each adaptive sample (by sequence number).

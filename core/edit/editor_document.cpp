@@ -1,25 +1,18 @@
 #include "edit/editor_document.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <utility>
 
-#include "edit/held_effectors.h"
 #include "edit/latent_refit.h"
-#include "edit/regeneration_step.h"
 #include "ik/learned_ik.h"
 #include "ik/locality.h"
 #include "motion/drag_falloff.h"
-#include "motion/pose_layer.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
 namespace mgp {
 
 namespace {
-bool samePose(const Pose& a, const Pose& b) { return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg; }
-
 // The latent point of the model's training row that holds pose y (kept columns) for clip frame
 // `frame` of the primary (open) clip, if an update added one; the last such row when there are several.
 std::optional<Eigen::VectorXd> taughtLatent(const gp::GpModel& m, int frame, const Eigen::VectorXd& y) {
@@ -76,7 +69,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     store_.reset(std::move(clip), synthetic);
     editLineage_.clear();
-    falloffStepLabel_.clear();
+    falloffStep_ = {};
     lastRegenerateQuality_.reset();
     lastRegenerateKeys_.clear();
     contactReleased_.fill(false);
@@ -175,8 +168,8 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
     step.before[frame_] = change.before;
     step.after[frame_] = change.after;
     applyFrames(step.after);
-    pushStep(std::move(step));
-    startDragFalloff(change, stepLabel, true, keptHolds, followLayer);
+    const long stepId = pushStep(std::move(step));
+    startDragFalloff(change, stepId, stepLabel, true, keptHolds, followLayer);
     return "";
 }
 
@@ -224,7 +217,8 @@ int EditorDocument::finishRefinement(gp::ModelVersionPtr version, bool adoptClip
     if (!v) return 0;
     int posted = 0;
     for (const DeferredPose& p : waiting) {
-        if (p.frame >= frameCount() || !samePose(store_.pose(p.frame), p.edited)) continue;  // undone or edited since
+        if (p.frame >= frameCount() || !posesIdentical(store_.pose(p.frame), p.edited))
+            continue;  // undone or edited since
         const std::optional<DeferredTeaching> t = teachingOnModel(*v, p);
         if (!t) continue;
         if (!t->verdict.admitted) {
@@ -302,7 +296,8 @@ const Eigen::VectorXd& EditorDocument::frameLatent(const gp::ModelVersion& v) co
     const auto lineage = editLineage_.find(frame_);
     const bool current = edit && lineage != editLineage_.end() && lineage->second == lineage_;
     if (cacheFrame_ == frame_ && cacheVersion_ == v.number && cacheModel_ == v.model.get() &&
-        cacheEdited_ == (edit != nullptr) && cacheCurrent_ == current && (!edit || samePose(cachePose_, edit->pose)))
+        cacheEdited_ == (edit != nullptr) && cacheCurrent_ == current &&
+        (!edit || posesIdentical(cachePose_, edit->pose)))
         return cacheX_;
     cacheX_ = latentStartForFrame(v, frame_);
     if (edit && v.model->clip.skeleton.jointCount() == clip().skeleton.jointCount()) {
@@ -323,280 +318,13 @@ const Eigen::VectorXd& EditorDocument::frameLatent(const gp::ModelVersion& v) co
     return cacheX_;
 }
 
-// ---- pins ----------------------------------------------------------------------------------
-
-void EditorDocument::togglePin(Effector e) { setPinned(e, !pinned(e)); }
-
-void EditorDocument::setPinned(Effector e, bool on) {
-    if (!hasEffector(e)) return;
-    if (pins_[static_cast<int>(e)] != on) ++revision_;
-    pins_[static_cast<int>(e)] = on;
-    if (on) pinPositions_[static_cast<int>(e)] = effectorPosition(e);
-    if (drag_.active()) drag_.setPins(holdConstraints());
-}
-
-std::vector<IkConstraint> EditorDocument::pinConstraints() const {
-    std::vector<IkConstraint> out;
-    for (int i = 0; i < kEffectorCount; ++i)
-        if (pins_[i]) out.push_back({static_cast<Effector>(i), pinPositions_[i], true});
-    return out;
-}
-
-std::vector<Effector> EditorDocument::heldEffectors() const {
-    return hasClip() ? heldOn(store_, frame_) : std::vector<Effector>{};
-}
-
-bool EditorDocument::held(Effector e) const { return hasClip() && isHeld(store_, frame_, e); }
-
-bool EditorDocument::anythingHeld() const { return anyHeld(store_); }
-
-std::vector<IkConstraint> EditorDocument::holdConstraints() const {
-    std::vector<IkConstraint> out = pinConstraints();
-    for (Effector e : heldEffectors())
-        if (hasEffector(e) && !pinned(e)) out.push_back({e, effectorPosition(e), true});  // a pin wins: held once
-    return out;
-}
-
-std::string EditorDocument::releaseBlocked() {
-    if (!hasClip()) return "no clip is open";
-    if (drag_.active()) return "finish the drag before releasing";  // its record is written on release
-    finishRunningFalloff();
-    if (regenerating()) return "wait for the regeneration to finish before releasing";
-    return "";
-}
-
-std::string EditorDocument::applyRelease(const FrameEdits& change, std::string label) {
-    EditStep step;
-    step.label = std::move(label);
-    step.before = store_.current(change);
-    step.after = change;
-    applyFrames(step.after);
-    pushStep(std::move(step));
-    return "";
-}
-
-std::string EditorDocument::releaseHeld(Effector e) {
-    if (std::string blocked = releaseBlocked(); !blocked.empty()) return blocked;
-    const FrameEdits change = releaseRun(store_, frame_, e);
-    if (change.empty()) return std::string(effectorName(e)) + " is not held on frame " + std::to_string(frame_ + 1);
-    const int first = change.begin()->first + 1, last = change.rbegin()->first + 1;
-    const std::string frames = first == last ? "frame " + std::to_string(first)
-                                             : "frames " + std::to_string(first) + "-" + std::to_string(last);
-    return applyRelease(change, std::string("release ") + effectorName(e) + " on " + frames);
-}
-
-std::string EditorDocument::releaseAllHeld() {
-    if (std::string blocked = releaseBlocked(); !blocked.empty()) return blocked;
-    const FrameEdits change = releaseEverywhere(store_);
-    if (change.empty()) return "nothing is held";
-    return applyRelease(change, "release everything held (" + std::to_string(change.size()) + " frames)");
-}
-
-std::vector<Effector> EditorDocument::pinnedEffectors() const {
-    std::vector<Effector> out;
-    for (int i = 0; i < kEffectorCount; ++i)
-        if (pins_[i]) out.push_back(static_cast<Effector>(i));
-    return out;
-}
-
-void EditorDocument::updatePinPositions() {
-    if (!hasClip()) return;
-    FkState fk;
-    forwardKinematics(clip().skeleton, currentPose(), fk);
-    for (int i = 0; i < kEffectorCount; ++i)
-        if (pins_[i]) pinPositions_[i] = effectorCm(clip().skeleton, fk, static_cast<Effector>(i));
-    if (drag_.active()) drag_.setPins(holdConstraints());
-}
-
-// ---- drag ----------------------------------------------------------------------------------
-
-std::vector<IkConstraint> EditorDocument::contactHolds() const {
-    std::vector<IkConstraint> out;
-    for (Effector f : {Effector::kLFoot, Effector::kRFoot})
-        if (hasEffector(f) && !contactReleased(f) && inContact(f)) out.push_back({f, effectorPosition(f), true});
-    return out;
-}
-
-bool EditorDocument::inContact(Effector foot) const {
-    if (!hasClip() || (foot != Effector::kLFoot && foot != Effector::kRFoot)) return false;
-    // A contact the user switched off on the timeline is not held by a drag either.
-    return store_.contacts().at(foot, frame_) != nullptr;
-}
-
-void EditorDocument::setContactReleased(Effector foot, bool released) {
-    if (contactReleased_[static_cast<int>(foot)] != released) ++revision_;
-    contactReleased_[static_cast<int>(foot)] = released;
-}
-
-std::string EditorDocument::beginDrag(Effector e) {
-    finishRunningFalloff();
-    if (!hasClip()) return "no clip is open";
-    if (filling()) return "a fill between keys is running: wait for it or cancel it";
-    if (!hasEffector(e)) return std::string("this skeleton has no ") + effectorName(e);
-    if (drag_.active()) endDrag();
-    if (drag_.latentActive()) endLatentDrag();
-    dragBefore_ = store_.editAt(frame_);
-    const gp::ModelVersionPtr v = model();
-    dragVersionBefore_ = v ? v->number : 0;
-    const Pose start = currentPose();
-    updatePinPositions();
-    drag_.setCompare(compare_, compareModel_, frame_);
-    drag_.setFloor(store_.contacts().floorCm);
-    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holdConstraints(),
-                contactHolds());
-    return "";
-}
-
-void EditorDocument::dragTo(const Eigen::Vector3d& targetCm, int maxIterations) {
-    drag_.dragTo(targetCm, maxIterations);
-}
-
-bool EditorDocument::refine(int maxIterations) { return drag_.refine(maxIterations); }
-
-std::optional<DragRecord> EditorDocument::endDrag() {
-    if (!drag_.active()) return std::nullopt;
-    drag_.settle();
-    DragRecord rec;
-    rec.frame = frame_;
-    rec.effector = drag_.effector();
-    rec.before = dragBefore_;
-    rec.after.pose = drag_.pose();
-    rec.after.x = drag_.x();
-    // The frame keeps what earlier gestures placed on it (held through this drag) and now this effector.
-    rec.after.moved = withHeld(rec.before ? rec.before->moved : std::vector<Effector>{}, {rec.effector});
-    rec.modelVersionBefore = dragVersionBefore_;
-    drag_.finish();
-    EditStep step;
-    step.label = std::string("drag ") + effectorName(rec.effector) + " on frame " + std::to_string(frame_ + 1);
-    step.before[frame_] = rec.before;
-    step.after[frame_] = rec.after;
-    const SolveReadout& r = drag_.readout();
-    const gp::ModelVersionPtr& solvedOn = drag_.model();
-    const bool learnedPose = models_.hasModel() && drag_.learned() && r.valid && r.learned &&
-                             drag_.keptPose().allFinite() && drag_.x().allFinite();
-    const AdmissionVerdict verdict =
-        learnedPose ? admitPose(*solvedOn, rec.after.pose, rec.after.moved, r.reached, anyBelowFloor(r.constraints),
-                                r.sigma2, r.lik, balanceOf(frame_, rec.after.pose))
-                    : AdmissionVerdict{};
-    if (learnedPose && models_.updating() && !verdict.admitted)
-        models_.noteRefused(frame_, *solvedOn, verdict.reason);  // kept as an edit, not taught to the model
-    lastDrag_.frame = frame_;
-    lastDrag_.pose = rec.after.pose;
-    lastDrag_.reached = r.valid ? r.reached : true;
-    lastDrag_.belowFloor = r.valid && anyBelowFloor(r.constraints);
-    if (learnedPose && verdict.admitted) {
-        AdaptiveSample s;
-        s.x = drag_.x();
-        s.yKept = drag_.keptPose();
-        s.clipFrame = frame_;
-        if (const long seq = teach(std::move(s), rec.after.pose, rec.after.moved); seq > 0) step.samples.push_back(seq);
-    }
-    applyFrames(step.after);
-    const std::string label = step.label;
-    pushStep(std::move(step));
-    startDragFalloff(rec, label);
-    return rec;
-}
-
-void EditorDocument::setContactEnabled(std::size_t index, bool on) {
-    if (store_.setContactEnabled(index, on)) ++revision_;
-}
-
-void EditorDocument::setBodyStiffness(double scale) {
-    bodyStiffness_ = std::isfinite(scale) ? std::max(0.0, scale) : 1.0;
-    drag_.setLocality(kDefaultLocality * bodyStiffness_);
-}
-
-void EditorDocument::startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose,
-                                      bool holdInPlace, const std::vector<Effector>& followLayer) {
-    const gp::ModelVersionPtr v = model();
-    if (falloffRadius_ < 1 || !v || regenerate_.running()) return;
-    const Clip& mc = v->model->clip;
-    if (mc.frameCount() != frameCount() || mc.skeleton.jointCount() != clip().skeleton.jointCount()) return;
-    // The spread fades into the motion as it was before this drag, so what earlier gestures put on
-    // the neighbouring frames stays there (the dragged frame as it was before the drag: the
-    // displacement is measured from it).
-    auto base = std::make_shared<EditBase>();
-    base->frames.reserve(static_cast<std::size_t>(frameCount()));
-    base->x.assign(static_cast<std::size_t>(frameCount()), Eigen::VectorXd());
-    for (int t = 0; t < frameCount(); ++t) base->frames.push_back(store_.pose(t));
-    for (const auto& [t, record] : store_.edits())
-        if (record.x.size() == v->model->latentDim()) base->x[static_cast<std::size_t>(t)] = record.x;
-    const auto dragged = static_cast<std::size_t>(rec.frame);
-    base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
-    base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
-    if (wholePose) {
-        // Where the frame kept its pins, placements and planted feet, the neighbours keep them
-        // where they were before the layer moved them.
-        if (holdInPlace) {
-            base->holdFrames = base->frames;
-            base->followLayer = followLayer;
-        }
-        // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
-        // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
-        addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);
-        const int first = std::max(0, rec.frame - falloffRadius_),
-                  last = std::min(frameCount() - 1, rec.frame + falloffRadius_);
-        for (int t = first; t <= last; ++t)
-            base->x[static_cast<std::size_t>(t)] = Eigen::VectorXd();  // their poses moved
-        base->frames[dragged] = rec.after.pose;
-        base->x[dragged] = rec.after.x;
-    }
-    std::string problem;
-    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_,
-                                       pinnedEffectors(), &problem, std::move(base));
-    if (!problem.empty()) {  // the change stays a one-frame edit: say so
-        falloffSkipped_ =
-            stepLabel + ": kept on frame " + std::to_string(rec.frame + 1) + " alone, not spread (" + problem + ")";
-        return;
-    }
-    job.contacts = std::make_shared<const ContactSet>(store_.contacts());
-    // What earlier gestures placed on the spread's frames stays where the edited motion has it
-    // (after a whole-pose change: where its layer moved it, so that the span stays smooth).
-    // A whole-pose change keeps every placement on its records, the displaced effector's too (the
-    // solve does not hold that one: it follows its displaced path).
-    job.heldPlaced =
-        heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
-    job.placesEffector = !wholePose;
-    job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    if (regenerate_.start(std::move(job)).empty()) falloffStepLabel_ = stepLabel;
-}
-
-void EditorDocument::cancelDrag() {
-    if (drag_.active()) drag_.finish();  // a latent drag is ended by endLatentDrag only
-}
-
-bool EditorDocument::beginLatentDrag() {
-    if (!hasModel() || !hasClip() || filling()) return false;
-    if (drag_.active()) endDrag();
-    latentBefore_ = store_.editAt(frame_);
-    drag_.beginLatent(clip().skeleton, model(), currentLatent(), currentPose());
-    return true;
-}
-
-void EditorDocument::latentDragTo(const Eigen::VectorXd& x) {
-    if (!drag_.latentTo(x, clip().frames[frame_])) return;
-    store_.set(frame_, EditRecord{drag_.pose(), x, {}});
-    editLineage_[frame_] = lineage_;
-}
-
-void EditorDocument::endLatentDrag() {
-    if (!drag_.latentActive()) return;
-    drag_.finish();
-    EditStep step;
-    step.label = "latent pose on frame " + std::to_string(frame_ + 1);
-    step.before[frame_] = latentBefore_;
-    step.after[frame_] = store_.editAt(frame_);
-    if (step.after[frame_] && drag_.latentPath().size() > 1) pushStep(std::move(step));
-    updatePinPositions();
-}
-
 // ---- undo / redo ---------------------------------------------------------------------------
 
-void EditorDocument::pushStep(EditStep step) {
-    history_.push(std::move(step));
+long EditorDocument::pushStep(EditStep step) {
+    const long id = history_.push(std::move(step));
     ++revision_;
     models_.pruneVersions(history_.oldestUnresolvedSample());  // versions no remaining step can ask for
+    return id;
 }
 
 void EditorDocument::applyFrames(const FrameEdits& frames) {
@@ -629,7 +357,7 @@ void EditorDocument::finishRunningFalloff() {
     // falloff (tens of milliseconds) and applies it first, so the earlier drag is never left as a
     // one-frame spike. A spread that has finished but not been collected yet is applied too:
     // otherwise the new step would sit on top of the drag's and the spread would be dropped.
-    if (falloffStepLabel_.empty()) return;
+    if (falloffStep_.stepId == 0) return;
     regenerate_.join();
     pollRegenerate();
 }
@@ -638,10 +366,10 @@ void EditorDocument::dropRunningFalloff() {
     // Undo or redo right after a drag does not wait for the drag's falloff: the spread is dropped
     // (the drag's own frame stays in its step) and the undo goes on. A path regeneration is the
     // user's explicit request and still has to be waited for or cancelled.
-    if (falloffStepLabel_.empty() || !regenerate_.running()) return;
+    if (falloffStep_.stepId == 0 || !regenerate_.running()) return;
     stopRegeneration();
     regenerate_.takeMessage();
-    falloffStepLabel_.clear();
+    falloffStep_ = {};
 }
 
 std::string EditorDocument::undoOrRedo(bool undo) {
@@ -676,224 +404,10 @@ std::optional<Pose> EditorDocument::beforeGhost() const {
     return it->second ? it->second->pose : clip().frames[frame_];
 }
 
-// ---- path editing --------------------------------------------------------------------------
-
-std::string EditorDocument::beginPathEdit(Effector e) { return paths_.begin(e, frame_); }
-
-std::string EditorDocument::startRegenerate(int maxIterations) {
-    const std::optional<PathEdit>& path = paths_.edit();
-    if (!path) return "no path is being edited";
-    const gp::ModelVersionPtr v = model();
-    if (!v) return "regeneration needs a model: train one or open one first";
-    const Clip& mc = v->model->clip;
-    if (mc.frameCount() != frameCount() || mc.skeleton.jointCount() != clip().skeleton.jointCount())
-        return "expected a model trained on this clip, found one trained on " + mc.name;
-    finishRunningFalloff();
-    pollRegenerate();  // never drop a finished result nobody took yet
-    cancelDrag();
-    MotionEditJob job;
-    job.version = v;
-    job.effector = path->effector;
-    job.keyFrames = path->keyFrames;
-    job.keyOffsetsCm = path->keyOffsetsCm;
-    job.mode = path->mode;
-    job.maxIterations = maxIterations;
-    job.pins = pinnedEffectors();  // a pin holds its effector at the captured position on every frame of the span
-    job.contacts = std::make_shared<const ContactSet>(store_.contacts());  // the user may have switched some off
-    job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    // The path is re-solved from the capture, but what earlier gestures placed on its inner frames
-    // (held effectors, edit/held_effectors.h) stays where the edited motion has it
-    // (EditBase::placedFrames); pins and planted feet are held as before.
-    job.heldPlaced = heldRuns(store_, path->keyFrames.front() + 1, path->keyFrames.back() - 1, path->effector);
-    if (!job.heldPlaced.empty()) {
-        auto base = std::make_shared<EditBase>();
-        base->frames = mc.frames;
-        base->placedFrames.reserve(static_cast<std::size_t>(frameCount()));
-        for (int t = 0; t < frameCount(); ++t) base->placedFrames.push_back(store_.pose(t));
-        job.base = std::move(base);
-    }
-    return regenerate_.start(std::move(job));
-}
-
-std::string EditorDocument::pollRegenerate(std::string* error) {
-    if (regenerate_.running()) return "";
-    std::optional<MotionEditJob> job = regenerate_.take();
-    if (!job) {
-        if (error) *error = regenerate_.takeMessage();
-        return std::exchange(falloffSkipped_, std::string());
-    }
-    // A drag's falloff joins the drag's own undo step when that step is still the latest.
-    if (const std::string dragLabel = std::exchange(falloffStepLabel_, std::string()); !dragLabel.empty()) {
-        EditStep* top = history_.topUndo();
-        if (!top || top->label != dragLabel) return "";  // undone or superseded: drop the falloff
-        mergeFalloff(*job, store_, *top);
-        applyFrames(top->after);
-        ++revision_;
-        return falloffSummary(*job, falloffRadius_, dragLabel);
-    }
-    lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
-    lastRegenerateKeys_ = job->keys;
-    EditStep step = regenerationStep(*job, store_);
-    if (models_.hasModel())
-        for (AdaptiveSample& sample : movedKeySamples(*job)) {
-            const auto it = step.after.find(sample.clipFrame);
-            if (it == step.after.end() || !it->second) continue;  // a moved key is always a regenerated frame
-            if (const long seq = teach(std::move(sample), it->second->pose, it->second->moved); seq > 0)
-                step.samples.push_back(seq);
-        }
-    applyFrames(step.after);
-    pushStep(std::move(step));
-    return regenerationSummary(*job, models_.updating());
-}
-
-// ---- keys and in-betweening ----------------------------------------------------------------
-
-void EditorDocument::toggleKey(int frame) {
-    if (!hasClip() || frame < 0 || frame >= frameCount()) return;
-    if (!keys_.erase(frame)) keys_.insert(frame);
-    ++revision_;
-}
-
-std::string EditorDocument::restoreKeys(std::set<int> keys) {
-    for (int k : keys)
-        if (k < 0 || k >= frameCount())
-            return "expected key frames in 1.." + std::to_string(frameCount()) + ", found " + std::to_string(k + 1);
-    keys_ = std::move(keys);
-    ++revision_;
-    return "";
-}
-
-std::optional<InbetweenGap> EditorDocument::keyGapAt(int frame) const {
-    auto after = keys_.upper_bound(frame);
-    if (after == keys_.begin() || after == keys_.end()) return std::nullopt;
-    const int a = *std::prev(after), b = *after;
-    if (a + 1 >= b) return std::nullopt;
-    return InbetweenGap{a, b};
-}
-
-std::vector<InbetweenGap> EditorDocument::keyGapsIn(int first, int last) const {
-    std::vector<InbetweenGap> gaps;
-    for (auto k = keys_.lower_bound(first); k != keys_.end() && std::next(k) != keys_.end() && *std::next(k) <= last;
-         ++k)
-        if (*k + 1 < *std::next(k)) gaps.push_back({*k, *std::next(k)});
-    return gaps;
-}
-
-std::string EditorDocument::startFill(InbetweenMethod method, std::optional<std::pair<int, int>> range) {
-    const gp::ModelVersionPtr v = model();
-    if (!v) return "fill between keys needs a model: train one or open one first";
-    std::vector<InbetweenGap> gaps;
-    if (range) {
-        gaps = keyGapsIn(range->first, range->second);
-        if (gaps.empty())
-            return "expected two keys with frames between inside frames " + std::to_string(range->first + 1) + "-" +
-                   std::to_string(range->second + 1) + " (K marks a key)";
-    } else if (const std::optional<InbetweenGap> gap = keyGapAt(frame_)) {
-        gaps = {*gap};
-    } else {
-        return "expected a key before the playhead and one after it with frames between (K marks a key)";
-    }
-    finishRunningFalloff();  // a drag's spread finishes first (it is part of the drag)
-    pollRegenerate();        // never drop a finished result nobody took yet
-    if (regenerating()) return "a regeneration is running: wait for it or cancel it";
-    cancelDrag();
-    InbetweenJob job;
-    job.version = v;
-    job.clip = clip();
-    // The capture the clip is a take of, judged on the unedited clip (edited frames would hide it):
-    // its frames in the gap are never read, whatever was edited.
-    job.sameCapture = gp::findCapture(*v->model, clip());
-    for (int t = 0; t < frameCount(); ++t)
-        job.clip.frames[static_cast<std::size_t>(t)] = poseAt(t);  // the edited motion
-    job.gaps = std::move(gaps);
-    job.method = method;
-    if (const std::string problem = job.validate(); !problem.empty()) return problem;
-    if (!fill_.startIfIdle(std::move(job))) return "a fill is already running";
-    return "";
-}
-
-std::string EditorDocument::pollFill(std::string* error) {
-    if (fill_.busy()) return "";
-    std::optional<InbetweenJob> job = fill_.take();
-    if (!job) {
-        if (error) *error = fill_.takeMessage();
-        return "";
-    }
-    const int first = job->gaps.front().a, last = job->gaps.back().b;
-    // The keys or the frames between changed while it ran (nothing should, drags wait): the result
-    // belongs to another motion, so it is dropped rather than pasted over the change.
-    for (int t = first; t <= last; ++t)
-        if (!samePose(poseAt(t), job->clip.frames[static_cast<std::size_t>(t)])) {
-            if (error) *error = "the motion between the keys changed while filling: fill again";
-            return "";
-        }
-    EditStep step;
-    step.label = "fill frames " + std::to_string(first + 2) + "-" + std::to_string(last);
-    double seconds = 0.0, held = 0.0;
-    for (std::size_t g = 0; g < job->gaps.size(); ++g) {
-        for (int t = job->gaps[g].a + 1; t < job->gaps[g].b; ++t) {
-            const std::size_t i = static_cast<std::size_t>(t);
-            step.after[t] = EditRecord{job->frames[i], i < job->x.size() ? job->x[i] : Eigen::VectorXd(), {}};
-        }
-        seconds += job->reports[g].seconds;
-        held = std::max(held, job->reports[g].maxHeldResidualCm);
-    }
-    step.before = store_.current(step.after);
-    applyFrames(step.after);
-    pushStep(std::move(step));
-    const InbetweenJob::GapReport& r = job->reports.front();
-    const std::size_t n = job->gaps.size();
-    char summary[240];
-    if (r.sourceClip.empty())
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gap%s (%s)", first + 2, last, n,
-                      n == 1 ? "" : "s", inbetweenMethodName(job->method));
-    else if (n == 1)
-        std::snprintf(summary, sizeof summary,
-                      "filled frames %d-%d from %s frames %d-%d in %.2f s (feet held within %.2f cm)", first + 2, last,
-                      r.sourceClip.c_str(), r.sourceFirst + 1, r.sourceLast + 1, seconds, held);
-    else
-        std::snprintf(summary, sizeof summary, "filled frames %d-%d, %zu gaps, in %.2f s (feet held within %.2f cm)",
-                      first + 2, last, n, seconds, held);
-    return summary;
-}
-
 void EditorDocument::waitIdle() {
     fill_.waitIdle();
     regenerate_.join();
     models_.waitIdle();
-}
-
-Balance EditorDocument::balanceOf(int frame, const Pose& edited) const {
-    return judgeBalance(clip().skeleton, clip().frames[frame], edited, store_.contacts(), frame);
-}
-
-std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
-    const gp::ModelVersionPtr v = model();
-    if (!v || !hasClip()) return std::nullopt;
-    if (drag_.active()) {
-        const SolveReadout& r = drag_.readout();
-        if (!r.valid || !r.learned) return std::nullopt;
-        return admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
-                         r.sigma2, r.lik, balanceOf(frame_, drag_.pose()));
-    }
-    const auto it = store_.edits().find(frame_);
-    if (it == store_.edits().end()) return std::nullopt;
-    const EditRecord& e = it->second;
-    if (e.x.size() != v->posterior->latentDim() || !e.x.allFinite()) return std::nullopt;
-    if (v->model->clip.skeleton.jointCount() != clip().skeleton.jointCount()) return std::nullopt;
-    const PoseLayout layout(clip().skeleton);
-    const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
-    // Judged at the pose's point on this model (frameLatent): a taught pose's training row, or its x
-    // fitted here when the edit was solved on another model (a retrain, a refinement).
-    const Eigen::VectorXd& x = frameLatent(*v);
-    const double lik = v->posterior->evaluate(x, y, nullptr, nullptr);
-    Eigen::VectorXd mean;
-    double sigma2 = 0.0;
-    v->posterior->predict(x, mean, sigma2);
-    // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
-    const bool lastDragged = lastDrag_.frame == frame_ && samePose(lastDrag_.pose, e.pose);
-    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor,
-                     sigma2, lik, balanceOf(frame_, e.pose));
 }
 
 }  // namespace mgp

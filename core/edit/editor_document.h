@@ -11,6 +11,10 @@
 // and owns what ties them together: the current frame, the pins, the regeneration job, the
 // undo history (undo also restores the model version a step changed) and the revision counter.
 //
+// Its definitions are in three files, by section of this header: editor_document.cpp (clip,
+// model, undo / redo), editor_document_drag.cpp (pins, held effectors, drag) and
+// editor_document_spans.cpp (path editing, keys and in-betweening).
+//
 // Units: cm, world Y up (docs/maths.md, conventions). One drag, one latent drag, one regeneration or one
 // cleared edit = one undo step.
 #include <algorithm>
@@ -323,14 +327,14 @@ public:
 
 private:
     void updatePinPositions();
-    void pushStep(EditStep step);
+    long pushStep(EditStep step);  // the step's id
     std::string releaseBlocked();  // "" when a release can run now (a finished spread applied first)
     std::string applyRelease(const FrameEdits& change, std::string label);
     // Spreads a changed frame over the falloff span; `wholePose` (paste, mirror, rotate) layers the
     // whole change over the span first (motion/pose_layer.h); `holdInPlace`: what is held on the
     // neighbours is held where it was before the layer (EditBase::holdFrames), except
     // `followLayer` (EditBase::followLayer).
-    void startDragFalloff(const DragRecord& rec, const std::string& stepLabel, bool wholePose = false,
+    void startDragFalloff(const DragRecord& rec, long stepId, const std::string& stepLabel, bool wholePose = false,
                           bool holdInPlace = false, const std::vector<Effector>& followLayer = {});
     void finishRunningFalloff();
     void dropRunningFalloff();
@@ -371,8 +375,12 @@ private:
     std::vector<MotionEditJob::KeyResult> lastRegenerateKeys_;
     int falloffRadius_ = 0;  // set by setClip
     double bodyStiffness_ = 1.0;
-    std::string falloffStepLabel_;  // the drag step a running falloff job merges into ("" = none)
-    std::string falloffSkipped_;    // why the last change was not spread, until pollRegenerate says it
+    // The undo step a running falloff job merges into (its id; 0 = no falloff running) and its label.
+    struct PendingFalloff {
+        long stepId = 0;
+        std::string stepLabel;
+    } falloffStep_;
+    std::string falloffSkipped_;  // why the last change was not spread, until pollRegenerate says it
 
     std::set<int> keys_;
     // In-betweening jobs, one at a time. A job works on its own copy of the motion and the model

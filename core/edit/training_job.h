@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gp/model_version.h"
-#include "gp/trainer.h"
-#include "gp/training_clips.h"
+#include "gp/train/trainer.h"
+#include "gp/train/training_clips.h"
 #include "skeleton/clip.h"
 #include "util/background_worker.h"
 

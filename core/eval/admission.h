@@ -1,5 +1,5 @@
 #pragma once
-// Whether an edited pose may teach the model (the adaptive update, gp/adaptive_update.h), and how
+// Whether an edited pose may teach the model (the adaptive update, gp/train/adaptive_update.h), and how
 // the editor words it. A pose is admitted when
 //   - every target and pin of its solve was reached (ik/ik_types.h),
 //   - no target was below the floor (its effector was held on the floor instead),

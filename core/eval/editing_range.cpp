@@ -4,7 +4,7 @@
 #include <memory>
 #include <optional>
 
-#include "gp/adaptive_update.h"
+#include "gp/train/adaptive_update.h"
 #include "ik/constrained_ik.h"
 #include "ik/learned_ik.h"
 #include "motion/foot_contacts.h"

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "gp/model.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 
 namespace mgp::eval {
 

@@ -15,7 +15,7 @@
 
 #include "eval/clip_segments.h"
 #include "eval/protocol_runs.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 
 namespace mgp {
 

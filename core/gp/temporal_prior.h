@@ -12,7 +12,7 @@
 // ranges are never tied together. With several source clips (core/gp/model.h) rows are ordered
 // by (clip, frame) and a segment also breaks wherever the clip changes: rows of different clips
 // are never joined, whatever their frame numbers. The prior only adds to the objectives of Steps 6 and 8
-// (core/gp/trainer.h); with LatentPrior::kNone nothing changes (the paper's model).
+// (core/gp/train/trainer.h); with LatentPrior::kNone nothing changes (the paper's model).
 //
 // kPaced (docs/maths.md §19) keeps the same segments but measures the gaps h₁, h₂ in pose distance
 // ‖y_t − y_{t−1}‖ (in units of the median step, clamped to [kMinPaceGap, kMaxPaceGap]) instead of

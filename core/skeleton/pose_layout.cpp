@@ -81,6 +81,8 @@ void PoseLayout::apply(const double* y, Pose& pose) const {
         if (joint_[i] >= 0) pose.anglesDeg[joint_[i]][axis_[i]] = y[i];
 }
 
+bool posesIdentical(const Pose& a, const Pose& b) { return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg; }
+
 bool allFinite(const Pose& pose) {
     if (!pose.rootCm.allFinite()) return false;
     for (const auto& a : pose.anglesDeg)

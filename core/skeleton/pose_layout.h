@@ -49,6 +49,8 @@ struct Pose {
 };
 // Whether the root translation and every angle are finite (a solve that produced NaN is dropped).
 bool allFinite(const Pose& pose);
+// The same root translation and the same angles, bit for bit (the same pose, not a similar one).
+bool posesIdentical(const Pose& a, const Pose& b);
 
 // The pose vector of one skeleton (its kind decides which), bound to its joints.
 class PoseLayout {

@@ -1,8 +1,8 @@
-// libFuzzer target: the session loader (edit/session_file.h: sessionFromJsonText, in memory),
+// libFuzzer target: the session loader (session/session_file.h: sessionFromJsonText, in memory),
 // then, for a session on the built-in synthetic walk, loadSessionClip as the editor does when
 // it opens one (sessions that reference clip files are not followed: no file access).
-#include "edit/session_file.h"
 #include "fuzz_common.h"
+#include "session/session_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     mgp::fuzz::expectCleanFailure([&] {

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <iostream>
 
-#include "edit/session_file.h"
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/amc_reader.h"
 #include "io/asf_reader.h"
+#include "session/session_file.h"
 #include "skeleton/synthetic_clip.h"
 
 namespace {

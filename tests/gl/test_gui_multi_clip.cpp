@@ -16,7 +16,7 @@
 
 #include "editor_harness.h"
 #include "gp/model_file.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "io/clip_loader.h"
 #include "ui/shell/editor_app.h"
 

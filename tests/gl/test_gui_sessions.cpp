@@ -15,14 +15,14 @@
 #include <thread>
 
 #include "document_helpers.h"
-#include "edit/autosave.h"
-#include "edit/session_file.h"
 #include "editor_harness.h"
 #include "gl_test_paths.h"
 #include "gp/model_file.h"
 #include "io/clip_loader.h"
 #include "io/fbx_export.h"
 #include "render/png_capture.h"
+#include "session/autosave.h"
+#include "session/session_file.h"
 #include "skeleton/forward_kinematics.h"
 
 using namespace mgp;

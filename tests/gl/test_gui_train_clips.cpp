@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "editor_harness.h"
-#include "gp/pca_init.h"
+#include "gp/train/pca_init.h"
 #include "ui/shell/editor_app.h"
 
 using namespace mgp;

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "edit/autosave_policy.h"
-#include "edit/recent_files.h"
 #include "render/png_capture.h"
+#include "session/autosave_policy.h"
+#include "session/recent_files.h"
 #include "ui/input/input_replay.h"
 #include "ui/input/input_state.h"
 #include "ui/input/script_player.h"
@@ -73,7 +73,7 @@ public:
     // Model > Train on clips... (train_clips_window.h).
     std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection);
     std::string startCompareTraining();  // the compare model: the other kernel, same options
-    // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
+    // Sessions (core/session/session_file.h): clip reference, model, edits, camera, UI state.
     std::string openSession(const std::string& path, bool addToRecent = true);
     std::string saveSession(const std::string& path);  // becomes the current session file
     void saveSessionOrAsk();    // to the current session file, or the Save dialog when there is none

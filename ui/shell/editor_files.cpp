@@ -5,13 +5,13 @@
 
 #include <filesystem>
 
-#include "edit/session_mapping.h"
 #include "gp/model_file.h"
 #include "io/clip_export.h"
 #include "io/clip_loader.h"
 #include "io/data_paths.h"
 #include "io/fbx_export.h"
 #include "io/text_reader.h"
+#include "session/session_mapping.h"
 #include "skeleton/clip_match.h"
 #include "skeleton/synthetic_clip.h"
 #include "ui/shell/editor_session.h"

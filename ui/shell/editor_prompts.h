@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "edit/autosave.h"
+#include "session/autosave.h"
 
 namespace mgp::ui {
 

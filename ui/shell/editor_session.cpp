@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "edit/session_mapping.h"
+#include "session/session_mapping.h"
 
 namespace mgp::ui {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The editor's half of a session file: camera, selected effector, title labels and overlay
-// switches, around the document's half (edit/session_mapping.h).
-#include "edit/session_file.h"
+// switches, around the document's half (session/session_mapping.h).
+#include "session/session_file.h"
 #include "ui/shell/editor_state.h"
 
 namespace mgp::ui {

@@ -10,7 +10,7 @@
 #include "edit/editor_document.h"
 #include "edit/export_job.h"
 #include "edit/training_job.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "render/camera.h"
 #include "render/motion_overlays.h"
 #include "ui/shell/frame_profile.h"

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "edit/training_candidates.h"
-#include "gp/training_clips.h"
+#include "gp/train/training_clips.h"
 
 namespace mgp::ui {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "edit/editor_document.h"
-#include "edit/session_file.h"
+#include "session/session_file.h"
 
 namespace mgp {
 

@@ -1,4 +1,4 @@
-#include "edit/autosave_policy.h"
+#include "session/autosave_policy.h"
 
 namespace mgp {
 

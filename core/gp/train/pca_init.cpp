@@ -1,4 +1,4 @@
-#include "gp/pca_init.h"
+#include "gp/train/pca_init.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

@@ -4,8 +4,8 @@
 // forget it after a save or an open (it is stale then), remove it on a normal quit.
 #include <string>
 
-#include "edit/autosave.h"
-#include "edit/session_file.h"
+#include "session/autosave.h"
+#include "session/session_file.h"
 
 namespace mgp {
 

@@ -1,4 +1,4 @@
-#include "edit/autosave.h"
+#include "session/autosave.h"
 
 #include <signal.h>
 #include <sys/stat.h>
@@ -9,8 +9,8 @@
 #include <chrono>
 #include <filesystem>
 
-#include "edit/recent_files.h"
-#include "edit/session_file.h"
+#include "session/recent_files.h"
+#include "session/session_file.h"
 
 namespace mgp {
 

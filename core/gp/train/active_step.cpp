@@ -1,4 +1,4 @@
-#include "gp/active_step.h"
+#include "gp/train/active_step.h"
 
 #include <algorithm>
 #include <cmath>

@@ -21,11 +21,11 @@
 #include <optional>
 #include <vector>
 
-#include "gp/back_constraints.h"
 #include "gp/gp_objective.h"
 #include "gp/kernel.h"
 #include "gp/model.h"
 #include "gp/temporal_prior.h"
+#include "gp/train/back_constraints.h"
 
 namespace mgp::gp {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gp/model.h"
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 #include "skeleton/clip.h"
 
 namespace mgp::gp {

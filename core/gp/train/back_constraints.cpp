@@ -1,4 +1,4 @@
-#include "gp/back_constraints.h"
+#include "gp/train/back_constraints.h"
 
 #include <Eigen/Cholesky>
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// Autosave: the editor writes its session (edit/session_file.h) every couple of minutes while
+// Autosave: the editor writes its session (session/session_file.h) every couple of minutes while
 // there are unsaved changes, to stateDir()/autosave-<pid>.mgsession — one file per running
 // editor, so two editors never overwrite each other. A clean exit discards the file; after a
 // crash it is left behind, and the next editor offers to restore it (findOrphanedAutosaves).

@@ -1,4 +1,4 @@
-#include "edit/session_mapping.h"
+#include "session/session_mapping.h"
 
 #include <filesystem>
 

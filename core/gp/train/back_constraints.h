@@ -12,9 +12,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "gp/active_step.h"
 #include "gp/scg.h"
 #include "gp/temporal_prior.h"
+#include "gp/train/active_step.h"
 
 namespace mgp::gp {
 

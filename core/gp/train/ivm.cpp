@@ -1,4 +1,4 @@
-#include "gp/ivm.h"
+#include "gp/train/ivm.h"
 
 #include <cmath>
 

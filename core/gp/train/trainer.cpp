@@ -1,4 +1,4 @@
-#include "gp/trainer.h"
+#include "gp/train/trainer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,12 +6,12 @@
 #include <random>
 #include <stdexcept>
 
-#include "gp/active_step.h"
 #include "gp/gp_objective.h"
-#include "gp/ivm.h"
-#include "gp/pca_init.h"
 #include "gp/point_objective.h"
 #include "gp/scg.h"
+#include "gp/train/active_step.h"
+#include "gp/train/ivm.h"
+#include "gp/train/pca_init.h"
 #include "skeleton/clip.h"
 #include "skeleton/pose_layout.h"
 

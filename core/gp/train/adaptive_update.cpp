@@ -1,10 +1,10 @@
-#include "gp/adaptive_update.h"
+#include "gp/train/adaptive_update.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "gp/active_step.h"
-#include "gp/ivm.h"
+#include "gp/train/active_step.h"
+#include "gp/train/ivm.h"
 
 namespace mgp::gp {
 

@@ -1,4 +1,4 @@
-#include "gp/training_clips.h"
+#include "gp/train/training_clips.h"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "edit/recent_files.h"
+#include "session/recent_files.h"
 
 #include <algorithm>
 #include <cstdlib>
