@@ -250,9 +250,6 @@ double ConstrainedIkSolver::correctionResidual(const Eigen::VectorXd& z, Eigen::
 }
 
 double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives) {
-    const gp::GpModel& m = *version_->model;
-    const Skeleton& sk = m.clip.skeleton;
-    const ConstrainedIkRequest& r = *request_;
     x_ = z.head(d_);
     y_ = z.tail(D_);
     if (!(valued_ && z == zValued_)) {
@@ -264,33 +261,46 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     }
     if (derivatives) version_->posterior->gradients(x_, ws_, &gx_, &gy_);
     double F = lik_;
-    const double s2 = sigma2_;
-    if (derivatives) {
-        g_.head(d_) = gx_;
-        g_.tail(D_) = gy_;
-        H_.setZero();
-        C_.setZero();
-        // y–y: ∂²/∂y² of ‖W(y − f)‖²/(2σ²) = W²/σ².
-        for (int k = 0; k < D_; ++k) H_(d_ + k, d_ + k) = m.w[k] * m.w[k] / s2;
-        // x–y: ∂(W r/σ²)/∂x = −W² J_f/σ² − (W r) (∂σ²/∂x)ᵀ/σ⁴.
-        version_->posterior->meanVarianceJacobians(x_, ws_, Jf_, dS2_);
-        for (int k = 0; k < D_; ++k) {
-            const double wk2 = m.w[k] * m.w[k];
-            const double wr = m.w[k] * ws_.r[k];
-            for (int i = 0; i < d_; ++i) {
-                const double h = -wk2 * Jf_(k, i) / s2 - wr * dS2_[i] / (s2 * s2);
-                H_(d_ + k, i) = h;
-                H_(i, d_ + k) = h;
-            }
-        }
-        // x–x: exact, from the kernel's second derivatives (y fixed).
-        version_->posterior->latentHessian(x_, ws_, Jf_, dS2_, Hxx_);
-        H_.topLeftCorner(d_, d_) = Hxx_;
-    }
+    if (derivatives) priorDerivatives();
     setPose(y_);
-    // Targets (penalties) and pins (constraints).
+    // F's terms are added in this order (targets, root, locality, floor): the sum is bit-exact.
+    addTargetTerms(F, derivatives);
+    addRootAndLocalityTerms(F, derivatives);
+    addFloorTerms(F, derivatives);
+    if (derivatives) pinDerivatives();
+    return F;
+}
+
+void ConstrainedIkSolver::priorDerivatives() {
+    const gp::GpModel& m = *version_->model;
+    const double s2 = sigma2_;
+    g_.head(d_) = gx_;
+    g_.tail(D_) = gy_;
+    H_.setZero();
+    C_.setZero();
+    // y–y: ∂²/∂y² of ‖W(y − f)‖²/(2σ²) = W²/σ².
+    for (int k = 0; k < D_; ++k) H_(d_ + k, d_ + k) = m.w[k] * m.w[k] / s2;
+    // x–y: ∂(W r/σ²)/∂x = −W² J_f/σ² − (W r) (∂σ²/∂x)ᵀ/σ⁴.
+    version_->posterior->meanVarianceJacobians(x_, ws_, Jf_, dS2_);
+    for (int k = 0; k < D_; ++k) {
+        const double wk2 = m.w[k] * m.w[k];
+        const double wr = m.w[k] * ws_.r[k];
+        for (int i = 0; i < d_; ++i) {
+            const double h = -wk2 * Jf_(k, i) / s2 - wr * dS2_[i] / (s2 * s2);
+            H_(d_ + k, i) = h;
+            H_(i, d_ + k) = h;
+        }
+    }
+    // x–x: exact, from the kernel's second derivatives (y fixed).
+    version_->posterior->latentHessian(x_, ws_, Jf_, dS2_, Hxx_);
+    H_.topLeftCorner(d_, d_) = Hxx_;
+}
+
+void ConstrainedIkSolver::addTargetTerms(double& F, bool derivatives) {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    // Targets (penalties).
     for (std::size_t k = 0; k < targets_.size(); ++k) {
-        const IkConstraint& c = r.constraints[targets_[k]];
+        const IkConstraint& c = request_->constraints[targets_[k]];
         const double kappa = targetWeight(c.strength);
         const Eigen::Vector3d e = effectorCm(sk, fk_, c.effector) - c.targetCm;
         F += 0.5 * kappa * e.squaredNorm();
@@ -314,6 +324,10 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             }
         }
     }
+}
+
+void ConstrainedIkSolver::addRootAndLocalityTerms(double& F, bool derivatives) {
+    const ConstrainedIkRequest& r = *request_;
     for (int a = 0; a < 3; ++a) {
         const int k = rootY_[a];
         if (k < 0) continue;
@@ -334,10 +348,14 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             H_(d_ + k, d_ + k) += localityW_[k];
         }
     }
+}
+
+void ConstrainedIkSolver::addFloorTerms(double& F, bool derivatives) {
+    const Skeleton& sk = version_->model->clip.skeleton;
     // Floor: ½ κ_exact min(0, p_y − floor)² on each free hand and foot (Gauss–Newton on the
     // Jacobian's vertical row). Its gradient is continuous at the floor; its curvature steps there.
     for (Effector e : floorGuarded_) {
-        const double below = effectorCm(sk, fk_, e).y() - *r.floorCm;
+        const double below = effectorCm(sk, fk_, e).y() - *request_->floorCm;
         if (below >= 0.0) continue;
         F += 0.5 * kExactTargetWeight * below * below;
         if (!derivatives) continue;
@@ -355,30 +373,32 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
             }
         }
     }
-    if (derivatives) {
-        for (std::size_t i = 0; i < pins_.size(); ++i) {
-            const IkConstraint& pc = r.constraints[pins_[i]];
-            const auto row = 3 * static_cast<Eigen::Index>(i);
-            c_.segment<3>(row) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
-            effectorJacobian(sk, layout_, fk_, pose_, pc.effector, jac_);
-            scatterJacobian(A_, row);
-        }
-        freezeHeld(false);
-        Aall_.topRows(A_.rows()) = A_;
-        eAt_.head(c_.size()).setZero();  // pins are corrected back onto c = 0
-        if (curvature_ && !pins_.empty()) {
-            // Least-squares multipliers at z, ν = −(A Aᵀ)⁻¹ A g: the pins' share of the curvature.
-            S_.noalias() = A_ * A_.transpose();
-            S_.diagonal().array() += 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
-            sLdlt_.compute(S_);
-            nu_ = -sLdlt_.solve(A_ * g_);
-            for (std::size_t i = 0; i < pins_.size(); ++i)
-                addConstraintCurvature(r.constraints[pins_[i]].effector,
-                                       nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
-        }
-        if (curvature_) freezeHeld(true);
+}
+
+void ConstrainedIkSolver::pinDerivatives() {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    const ConstrainedIkRequest& r = *request_;
+    // Pins (constraints).
+    for (std::size_t i = 0; i < pins_.size(); ++i) {
+        const IkConstraint& pc = r.constraints[pins_[i]];
+        const auto row = 3 * static_cast<Eigen::Index>(i);
+        c_.segment<3>(row) = effectorCm(sk, fk_, pc.effector) - pc.targetCm;
+        effectorJacobian(sk, layout_, fk_, pose_, pc.effector, jac_);
+        scatterJacobian(A_, row);
     }
-    return F;
+    freezeHeld(false);
+    Aall_.topRows(A_.rows()) = A_;
+    eAt_.head(c_.size()).setZero();  // pins are corrected back onto c = 0
+    if (curvature_ && !pins_.empty()) {
+        // Least-squares multipliers at z, ν = −(A Aᵀ)⁻¹ A g: the pins' share of the curvature.
+        S_.noalias() = A_ * A_.transpose();
+        S_.diagonal().array() += 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
+        sLdlt_.compute(S_);
+        nu_ = -sLdlt_.solve(A_ * g_);
+        for (std::size_t i = 0; i < pins_.size(); ++i)
+            addConstraintCurvature(r.constraints[pins_[i]].effector, nu_.segment<3>(3 * static_cast<Eigen::Index>(i)));
+    }
+    if (curvature_) freezeHeld(true);
 }
 
 ConstrainedIkSolver::ExactTargetReach ConstrainedIkSolver::exactTargetReach(double reachedToleranceCm) const {
@@ -524,320 +544,364 @@ void ConstrainedIkSolver::solveOnFloor(const ConstrainedIkRequest& request, Cons
     result.decrement = std::numeric_limits<double>::quiet_NaN();
     evaluations_ = 0;
     if (const std::string problem = validate(request); !problem.empty()) {
-        result.stop = IkStop::kInvalidRequest;
-        result.diagnostic = problem;
-        result.pose = request.start;
-        result.x = request.startX;
-        result.y.resize(0);
-        result.constraints.clear();
-        result.reached = false;
-        result.objective = result.lik = result.sigma2 = std::numeric_limits<double>::quiet_NaN();
+        rejectRequest(request, problem, result);
         return;
     }
     z_ = startPoint(request);
     curvature_ = false;
-    double F = evaluate(z_, true);
-    if (!std::isfinite(F) || !allFinite(g_) || !allFinite(H_)) {
+    Iteration s;
+    s.F = evaluate(z_, true);
+    if (!std::isfinite(s.F) || !allFinite(g_) || !allFinite(H_)) {
         result.stop = IkStop::kNonFinite;
         result.diagnostic = "expected a finite objective at the start, found NaN or Inf";
         fillResult(request, result);
         result.evaluations = evaluations_;
         return;
     }
-    const int p = static_cast<int>(c_.size());
-    double mu = 1e-6, nuLm = 2.0, meritNu = 0.0;
-    IkStop stop = IkStop::kIterationCap;
-    int it = 0;
-    bool lastAccepted = false;
-    double latentRadius = latentStepBound_;  // grows only once the solve is crawling
-    double angleRadius = kMaxStepDeg;        // shrinks only once the solve is crawling
-    bool largeResidual = false;              // Newton model after every accepted step (see above)
-    bool straightLimbNewton = false;         // Gauss–Newton failed at a straight limb (see above)
-    bool rejectedSinceAccepted = false;
-    bool gaussNewtonOverpredicted = false;  // the last Gauss–Newton trial's gain ratio was below kGoodGain
-    // Step caps for the retry of a trial rejected only because it left the pins (see below).
-    double retryAngleCap = std::numeric_limits<double>::infinity(), retryLatentCap = retryAngleCap;
+    s.latentRadius = latentStepBound_;
+    s.angleRadius = kMaxStepDeg;
     while (true) {
-        const bool crawling = it >= kCrawlIterations;
-        const bool shortenedRetry = std::isfinite(retryAngleCap);
-        // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
-        // Lagrangian Hessian) once the iteration is in its Newton regime; see the header.
-        const bool newton = lastAccepted && curvature_;
-        Hm_ = H_;
-        if (newton) Hm_ += C_;
-        // Damped model (a Newton model that cannot be factorised falls back to Gauss–Newton or
-        // takes a shift; see below).
-        Hd_ = Hm_;
-        // ρAᵀA leaves the KKT step unchanged (it only shifts ν by −ρc) but makes the factorised
-        // matrix positive definite wherever the Hessian is on the pins' tangent space, which is
-        // all a constrained minimum has (docs/maths-ik.md §3).
-        if (p > 0) Hd_.noalias() += kExactTargetWeight * A_.transpose() * A_;
-        const double floor = 1e-9 * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
-        for (int i = 0; i < n_; ++i) Hd_(i, i) += mu * std::max(std::abs(H_(i, i)), floor);
-        llt_.compute(Hd_);
-        // An indefinite Newton model falls back to Gauss–Newton for this step, except in the
-        // large-residual regime, where Gauss–Newton is what crawls, and in a crawling solve whose
-        // last Gauss–Newton trial had a gain ratio below 0.75 (it promised more decrease than it
-        // gave: the curvature that model omits is what limits the steps): both take the shift below.
-        const bool keepIndefiniteNewton = newton && !largeResidual && crawling && gaussNewtonOverpredicted;
-        if (llt_.info() != Eigen::Success && newton && !largeResidual && !keepIndefiniteNewton) {
-            lastAccepted = false;
+        Step step;
+        step.crawling = s.it >= kCrawlIterations;
+        step.shortenedRetry = std::isfinite(s.retryAngleCap);
+        if (!buildModel(s, step)) {
+            s.lastAccepted = false;  // the Newton model is indefinite: this step is Gauss–Newton's
             continue;
         }
-        // An indefinite model (the prior's x–x block is not convex everywhere) gets a shift τI
-        // for this step only; raising μ instead would slow every later step (docs/maths-ik.md §3).
-        // A crawling solve shifts only the latent block: the indefiniteness is the prior's x–x
-        // block, the y block (W²/σ² + κJᵀJ + ρAᵀA) is positive definite without the constraints'
-        // curvature, so τ on x alone always factorises a Gauss–Newton model, and it no longer
-        // throttles the y DOFs whose prior curvature W²/σ² is far below τ; the latent
-        // refinement moves x after y. A model it cannot factorise gets τI (docs/maths-ik.md §3).
-        // A Newton model kept because Gauss–Newton overpredicted is indefinite through the
-        // constraints' curvature on y: its shift is τI from the start (docs/maths-ik.md §3 step 6).
-        double shift = 0.0;
-        bool latentOnly = crawling && !keepIndefiniteNewton;
-        auto addShift = [&](double amount) {
-            if (latentOnly)
-                Hd_.diagonal().head(d_).array() += amount;
-            else
-                Hd_.diagonal().array() += amount;
-        };
-        while (llt_.info() != Eigen::Success) {
-            const double next =
-                shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
-            addShift(next - shift);
-            shift = next;
-            llt_.compute(Hd_);
-            if (shift > kMaxDamping) {
-                if (!latentOnly) break;
-                addShift(-shift);
-                latentOnly = false;
-                shift = 0.0;
-            }
-        }
-        // τ grows tenfold per try, so it can end up to 10× larger than needed; τ on every unknown
-        // then freezes x and the free DOFs for many steps. A crawling solve brackets the smallest
-        // factorising τ (between the last failure and the success) and takes four times that
-        // (closer to it, the barely positive model's steps were often rejected).
-        const double firstShift = kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
-        if (crawling && llt_.info() == Eigen::Success && shift > firstShift) {
-            const double succeeded = shift;
-            double lo = shift / 10.0, hi = shift;  // lo failed, hi factorises
-            for (int b = 0; b < kShiftBisections; ++b) {
-                const double mid = std::sqrt(lo * hi);
-                addShift(mid - shift);
-                shift = mid;
-                llt_.compute(Hd_);
-                (llt_.info() == Eigen::Success ? hi : lo) = mid;
-            }
-            const double use = std::min(kShiftMargin * hi, succeeded);
-            addShift(use - shift);
-            shift = use;
-            llt_.compute(Hd_);
-        }
-        if (llt_.info() != Eigen::Success) {
-            stop = IkStop::kStalled;
+        if (!shiftIndefiniteModel(step)) {
+            s.stop = IkStop::kStalled;
             break;
         }
-        // KKT step: δ = −Hd⁻¹(g + Aᵀν), (A Hd⁻¹ Aᵀ) ν = c − A Hd⁻¹ g.
-        tmp_ = llt_.solve(g_);
-        if (p > 0) {
-            HinvAt_ = llt_.solve(A_.transpose());
-            S_.noalias() = A_ * HinvAt_;
-            const double reg = 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
-            S_.diagonal().array() += reg;  // rank-deficient pins (a straight leg) stay solvable
-            sLdlt_.compute(S_);
-            nu_ = sLdlt_.solve(c_ - A_ * tmp_);
-            delta_ = -tmp_ - HinvAt_ * nu_;
-        } else {
-            delta_ = -tmp_;
-        }
-        const double pinWorst = p > 0 ? c_.cwiseAbs().maxCoeff() : 0.0;
-        // Model decrease of F along δ (the pins' linearisation is met by δ).
-        const double modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
-        // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδₜ − ½δₜᵀHdδₜ
-        // with Aδₜ = 0 (δ itself also restores the pins, which near a solution can cost more F
-        // than is left to gain, so its decrement can be negative at a stationary point).
-        double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
-        if (p > 0) {
-            nuT_ = sLdlt_.solve(-(A_ * tmp_));
-            deltaT_ = -tmp_ - HinvAt_ * nuT_;
-            decrement = -(g_.dot(deltaT_) + 0.5 * deltaT_.dot(Hd_ * deltaT_));
-        }
-        result.decrement = decrement;
-        if (pinWorst <= request.pinToleranceCm && mu <= kConvergedDamping && shift == 0.0 &&
-            std::abs(decrement) <= request.stationarityAbsolute + request.stationarityRelative * std::abs(F)) {
-            stop = IkStop::kConverged;
+        kktStep(step);
+        result.decrement = step.decrement;
+        if (stationary(s, step)) {
+            s.stop = IkStop::kConverged;
             break;
         }
-        if (it >= request.maxIterations) break;
-        ++it;
-        // Step bound: the linearisation of FK and of the prior does not reach further than about
-        // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
-        // (same direction) rather than left to the damping, which would also slow every later step.
-        // A crawling solve uses trust radii instead of the fixed bounds (latent and angle), and a
-        // shortened retry (below) its caps.
-        const double latentBound = std::min(crawling ? latentRadius : latentStepBound_, retryLatentCap);
-        const double latentScale = latentBound / std::max(1e-300, delta_.head(d_).norm());
-        const double angleBound = std::min(crawling ? angleRadius : kMaxStepDeg, retryAngleCap);
-        const double angleScale = angleBound / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff());
-        const double scale = std::min({1.0, latentScale, angleScale});
-        const bool latentCut = latentScale < 1.0 && latentScale <= scale;  // the latent bound set the length
-        const bool angleCut = angleScale < 1.0 && angleScale <= scale;
-        double stepDecrease = modelDecrease;
-        if (scale < 1.0) {
-            delta_ *= scale;
-            stepDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
-        }
-        if (p > 0) meritNu = std::max(meritNu, 2.0 * nu_.cwiseAbs().maxCoeff());
-        const double c1 = p > 0 ? c_.lpNorm<1>() : 0.0;
-        const double pred = stepDecrease + meritNu * scale * c1;
-        // Trial point with second-order corrections.
-        zTrial_ = z_ + delta_;
-        double trialPinNorm = 0.0;
-        const Eigen::Index q = Aall_.rows();
-        if (q > 0) {
-            // Second-order correction: back onto the pins, and onto the exact targets' linearised
-            // prediction (a penalty of weight κ would otherwise charge the manifold's curvature
-            // to every step along it: linear convergence; docs/maths-ik.md §3).
-            eHat_ = eAt_;
-            eHat_.tail(q - p).noalias() += Aall_.bottomRows(q - p) * delta_;
-            HinvAll_ = llt_.solve(Aall_.transpose());
-            Sall_.noalias() = Aall_ * HinvAll_;
-            Sall_.diagonal().array() += 1e-12 * std::max(1.0, Sall_.diagonal().maxCoeff());
-            sAllLdlt_.compute(Sall_);
-            double lastWorst = std::numeric_limits<double>::infinity();
-            for (int k = 0; k <= kProjections; ++k) {
-                const double pinWorstTrial = correctionResidual(zTrial_, rAll_);
-                const double worst = rAll_.cwiseAbs().maxCoeff();
-                if (!(worst <= lastWorst)) {
-                    // Diverging (B H⁻¹Bᵀ nearly singular, e.g. a straight arm): keep the last point
-                    // that was closer; the gain ratio judges it.
-                    zTrial_ = zSoc_;
-                    break;
-                }
-                const double targetWorst = q > p ? rAll_.tail(q - p).cwiseAbs().maxCoeff() : 0.0;
-                if (k == kProjections ||
-                    (pinWorstTrial <= 0.01 * request.pinToleranceCm && targetWorst <= 0.01 * request.pinToleranceCm))
-                    break;
-                lastWorst = worst;
-                zSoc_ = zTrial_;
-                zTrial_.noalias() -= HinvAll_ * sAllLdlt_.solve(rAll_);
-            }
-            correctionResidual(zTrial_, rAll_);
-            cTrial_ = rAll_.head(p);
-            trialPinNorm = cTrial_.lpNorm<1>();
-        }
-        // From the sixth trial on: a drag event converges within five (its p99), so drags keep
-        // their cost and their steps; a long solve gets x re-fitted to each trial pose
-        // (docs/maths-ik.md §3).
-        if (it > kDirectTrials) refineLatent(zTrial_);
-        const double Ft = evaluate(zTrial_, false);
-        // Both points on the pins (to a tenth of the tolerance): compare F itself, so round-off in
-        // c times a large ν cannot mask progress. Otherwise the ℓ1 merit.
-        const bool feasible = p == 0 || (pinWorst <= 0.1 * request.pinToleranceCm &&
-                                         cTrial_.cwiseAbs().maxCoeff() <= 0.1 * request.pinToleranceCm);
-        const double actual = feasible ? F - Ft : (F + meritNu * c1) - (Ft + meritNu * trialPinNorm);
-        const double predicted = feasible ? stepDecrease : pred;
-        const double gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
-        // Pins never get visibly worse: a trial that leaves them by more than kPinSlackCm, the
-        // tolerance or where they are (a projection that could not return, e.g. at a straight leg)
-        // is rejected.
-        const double pinAllowance = std::max({kPinSlackCm, request.pinToleranceCm, pinWorst});
-        const bool pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= pinAllowance;
-        const bool accepted = std::isfinite(Ft) && pinsHeld && gain > 1e-4;
-        const bool predictedWell = std::abs(gain - 1.0) <= kAccurateGain;  // the model predicted F's change
-        if (!newton && std::isfinite(Ft)) gaussNewtonOverpredicted = gain < kGoodGain;
-        // A Gauss–Newton trial whose F the model predicted (gain within 1 ± 0.1) but which left the
-        // pins was too long for the pins' curvature, not for the model. Its retry is shortened so
-        // that the pins' error, second order in the step, fits the allowance (to at most half and
-        // at least a tenth of the step); raising μ alone shortened it only after up to seven
-        // trials at μ far below the model's curvature (docs/maths-ik.md §3 step 5).
-        retryAngleCap = retryLatentCap = std::numeric_limits<double>::infinity();
-        if (std::isfinite(Ft) && !pinsHeld && !newton && predictedWell) {
-            const double shorten = std::clamp(std::sqrt(pinAllowance / cTrial_.cwiseAbs().maxCoeff()),
-                                              kMinRetryShortening, kMaxRetryShortening);
-            retryAngleCap = shorten * delta_.tail(D_).cwiseAbs().maxCoeff();
-            retryLatentCap = shorten * delta_.head(d_).norm();
-        }
-        if (crawling) {
-            // Trust radius: doubled after a good step that the latent bound cut (the model
-            // predicted it well, so the bound, not the model, limited it), halved on rejection:
-            // down to the fixed bound, or below it when it cut the rejected step (a cut step that
-            // fails otherwise fails again until Nielsen's ladder has raised μ), except in the
-            // large-residual regime, where short latent steps ended farther from out-of-reach
-            // targets; a radius already below the bound keeps its value after other rejections
-            // (docs/maths-ik.md §3 step 6).
-            if (accepted && gain > kGoodGain && latentCut)
-                latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * latentRadius);
-            else if (!accepted)
-                latentRadius = std::max(latentCut && !largeResidual ? kMinLatentRadius * latentStepBound_
-                                                                    : std::min(latentRadius, latentStepBound_),
-                                        0.5 * latentRadius);
-            // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
-            // fails keeps failing while μ is still too small to shorten it), doubled back up to
-            // kMaxStepDeg after a good step it cut. A full-length step rejected on its merit (finite
-            // F, the pins held; not a shortened retry) sets it to half that step's largest angle
-            // change (at least kMinAngleRadiusDeg): at μ ≈ 1e-12 the retry is otherwise about the
-            // same step until Nielsen's ladder has raised μ to the model's curvature, up to seven
-            // trials later (docs/maths-ik.md §3 step 6).
-            if (angleCut) {
-                if (!accepted)
-                    angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * angleRadius);
-                else if (gain > kGoodGain)
-                    angleRadius = std::min(kMaxStepDeg, 2.0 * angleRadius);
-            } else if (!accepted && scale >= 1.0 && !shortenedRetry && std::isfinite(Ft) && pinsHeld) {
-                angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * delta_.tail(D_).cwiseAbs().maxCoeff());
-            }
-        }
-        if (accepted) {
-            z_ = zTrial_;
-            // Nielsen's update lowers μ by at most 3× per step; a crawling solve whose model
-            // predicted the step (gain within 1 ± 0.1) lowers it 10×, so it regains the Newton
-            // regime in a third of the steps after a run of rejections (docs/maths-ik.md §3).
-            // A shortened retry that succeeds keeps the μ its rejection raised: it shows that the
-            // short step holds the pins, not that the next full-length one will.
-            if (!shortenedRetry)
-                mu *= crawling && predictedWell ? kAccurateDamping
-                                                : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3));
-            mu = std::max(mu, 1e-12);
-            // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
-            // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.
-            const ExactTargetReach reach =
-                it > kCrawlIterations ? exactTargetReach(request.reachedToleranceCm) : ExactTargetReach{};
-            straightLimbNewton = straightLimbNewton || (rejectedSinceAccepted && reach.outsideAtStraightLimb);
-            largeResidual = (it >= kLargeResidualIterations && reach.outside) ||
-                            (straightLimbNewton && reach.outsideAtStraightLimb);
-            rejectedSinceAccepted = false;
-            curvature_ = mu <= kNewtonDamping || largeResidual;  // the next model is a Newton one: it needs C
-            F = evaluate(z_, true);
-            if (!std::isfinite(F) || !allFinite(g_) || !allFinite(H_)) {
-                stop = IkStop::kNonFinite;  // cannot happen for finite z; kept as a guard
-                break;
-            }
-            nuLm = 2.0;
-            lastAccepted = true;
-        } else if (crawling && latentBound > latentStepBound_ && latentCut) {
-            // The grown radius, not the damping, made the step too long: the halved radius above
-            // shortens the retry, and μ stays where the gain ratio put it.
-            lastAccepted = false;
-            rejectedSinceAccepted = true;
-        } else {
-            lastAccepted = false;
-            rejectedSinceAccepted = true;
-            mu *= nuLm;
-            nuLm *= 2.0;
-            if (mu > kMaxDamping) {
-                stop = IkStop::kStalled;
-                break;
-            }
-        }
+        if (s.it >= request.maxIterations) break;
+        ++s.it;
+        boundStep(s, step);
+        const double trialPinNorm = correctTrial();
+        const Trial trial = scoreTrial(s, step, trialPinNorm);
+        if (!step.newton && std::isfinite(trial.Ft)) s.gaussNewtonOverpredicted = trial.gain < kGoodGain;
+        planRetry(s, step, trial);
+        if (step.crawling) updateTrustRadii(s, step, trial);
+        if (trial.accepted ? !acceptTrial(s, step, trial) : !rejectTrial(s, step)) break;
     }
-    result.stop = stop;
-    result.converged = stop == IkStop::kConverged;
-    result.iterations = it;
+    result.stop = s.stop;
+    result.converged = s.stop == IkStop::kConverged;
+    result.iterations = s.it;
     fillResult(request, result);
     result.evaluations = evaluations_;
-    result.diagnostic = ikStopName(stop);
+    result.diagnostic = ikStopName(s.stop);
+}
+
+void ConstrainedIkSolver::rejectRequest(const ConstrainedIkRequest& request, const std::string& problem,
+                                        ConstrainedIkResult& result) const {
+    result.stop = IkStop::kInvalidRequest;
+    result.diagnostic = problem;
+    result.pose = request.start;
+    result.x = request.startX;
+    result.y.resize(0);
+    result.constraints.clear();
+    result.reached = false;
+    result.objective = result.lik = result.sigma2 = std::numeric_limits<double>::quiet_NaN();
+}
+
+bool ConstrainedIkSolver::buildModel(const Iteration& s, Step& step) {
+    // Hessian model: Gauss–Newton for the constraints, plus their curvature (the full
+    // Lagrangian Hessian) once the iteration is in its Newton regime; see the header.
+    step.newton = s.lastAccepted && curvature_;
+    Hm_ = H_;
+    if (step.newton) Hm_ += C_;
+    // Damped model (a Newton model that cannot be factorised falls back to Gauss–Newton or
+    // takes a shift; see below).
+    Hd_ = Hm_;
+    // ρAᵀA leaves the KKT step unchanged (it only shifts ν by −ρc) but makes the factorised
+    // matrix positive definite wherever the Hessian is on the pins' tangent space, which is
+    // all a constrained minimum has (docs/maths-ik.md §3).
+    if (c_.size() > 0) Hd_.noalias() += kExactTargetWeight * A_.transpose() * A_;
+    const double floor = 1e-9 * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+    for (int i = 0; i < n_; ++i) Hd_(i, i) += s.mu * std::max(std::abs(H_(i, i)), floor);
+    llt_.compute(Hd_);
+    // An indefinite Newton model falls back to Gauss–Newton for this step, except in the
+    // large-residual regime, where Gauss–Newton is what crawls, and in a crawling solve whose
+    // last Gauss–Newton trial had a gain ratio below 0.75 (it promised more decrease than it
+    // gave: the curvature that model omits is what limits the steps): both take the shift below.
+    step.keepIndefiniteNewton = step.newton && !s.largeResidual && step.crawling && s.gaussNewtonOverpredicted;
+    return !(llt_.info() != Eigen::Success && step.newton && !s.largeResidual && !step.keepIndefiniteNewton);
+}
+
+bool ConstrainedIkSolver::shiftIndefiniteModel(Step& step) {
+    // An indefinite model (the prior's x–x block is not convex everywhere) gets a shift τI
+    // for this step only; raising μ instead would slow every later step (docs/maths-ik.md §3).
+    // A crawling solve shifts only the latent block: the indefiniteness is the prior's x–x
+    // block, the y block (W²/σ² + κJᵀJ + ρAᵀA) is positive definite without the constraints'
+    // curvature, so τ on x alone always factorises a Gauss–Newton model, and it no longer
+    // throttles the y DOFs whose prior curvature W²/σ² is far below τ; the latent
+    // refinement moves x after y. A model it cannot factorise gets τI (docs/maths-ik.md §3).
+    // A Newton model kept because Gauss–Newton overpredicted is indefinite through the
+    // constraints' curvature on y: its shift is τI from the start (docs/maths-ik.md §3 step 6).
+    double shift = 0.0;
+    bool latentOnly = step.crawling && !step.keepIndefiniteNewton;
+    while (llt_.info() != Eigen::Success) {
+        const double next =
+            shift > 0.0 ? 10.0 * shift : kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+        addShift(next - shift, latentOnly);
+        shift = next;
+        llt_.compute(Hd_);
+        if (shift > kMaxDamping) {
+            if (!latentOnly) break;
+            addShift(-shift, latentOnly);
+            latentOnly = false;
+            shift = 0.0;
+        }
+    }
+    // τ grows tenfold per try, so it can end up to 10× larger than needed; τ on every unknown
+    // then freezes x and the free DOFs for many steps. A crawling solve brackets the smallest
+    // factorising τ (between the last failure and the success) and takes four times that
+    // (closer to it, the barely positive model's steps were often rejected).
+    const double firstShift = kFirstShift * std::max(1.0, H_.diagonal().cwiseAbs().maxCoeff());
+    if (step.crawling && llt_.info() == Eigen::Success && shift > firstShift) shift = bracketShift(shift, latentOnly);
+    step.shift = shift;
+    return llt_.info() == Eigen::Success;
+}
+
+double ConstrainedIkSolver::bracketShift(double shift, bool latentOnly) {
+    const double succeeded = shift;
+    double lo = shift / 10.0, hi = shift;  // lo failed, hi factorises
+    for (int b = 0; b < kShiftBisections; ++b) {
+        const double mid = std::sqrt(lo * hi);
+        addShift(mid - shift, latentOnly);
+        shift = mid;
+        llt_.compute(Hd_);
+        (llt_.info() == Eigen::Success ? hi : lo) = mid;
+    }
+    const double use = std::min(kShiftMargin * hi, succeeded);
+    addShift(use - shift, latentOnly);
+    llt_.compute(Hd_);
+    return use;
+}
+
+void ConstrainedIkSolver::addShift(double amount, bool latentOnly) {
+    if (latentOnly)
+        Hd_.diagonal().head(d_).array() += amount;
+    else
+        Hd_.diagonal().array() += amount;
+}
+
+void ConstrainedIkSolver::kktStep(Step& step) {
+    const Eigen::Index p = c_.size();
+    // KKT step: δ = −Hd⁻¹(g + Aᵀν), (A Hd⁻¹ Aᵀ) ν = c − A Hd⁻¹ g.
+    tmp_ = llt_.solve(g_);
+    if (p > 0) {
+        HinvAt_ = llt_.solve(A_.transpose());
+        S_.noalias() = A_ * HinvAt_;
+        const double reg = 1e-12 * std::max(1.0, S_.diagonal().maxCoeff());
+        S_.diagonal().array() += reg;  // rank-deficient pins (a straight leg) stay solvable
+        sLdlt_.compute(S_);
+        nu_ = sLdlt_.solve(c_ - A_ * tmp_);
+        delta_ = -tmp_ - HinvAt_ * nu_;
+    } else {
+        delta_ = -tmp_;
+    }
+    step.pinWorst = p > 0 ? c_.cwiseAbs().maxCoeff() : 0.0;
+    // Model decrease of F along δ (the pins' linearisation is met by δ).
+    step.modelDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
+    // Stationarity: the damped Newton decrement on the pins' tangent space, −gᵀδₜ − ½δₜᵀHdδₜ
+    // with Aδₜ = 0 (δ itself also restores the pins, which near a solution can cost more F
+    // than is left to gain, so its decrement can be negative at a stationary point).
+    double decrement = -(g_.dot(delta_) + 0.5 * delta_.dot(Hd_ * delta_));
+    if (p > 0) {
+        nuT_ = sLdlt_.solve(-(A_ * tmp_));
+        deltaT_ = -tmp_ - HinvAt_ * nuT_;
+        decrement = -(g_.dot(deltaT_) + 0.5 * deltaT_.dot(Hd_ * deltaT_));
+    }
+    step.decrement = decrement;
+}
+
+bool ConstrainedIkSolver::stationary(const Iteration& s, const Step& step) const {
+    const ConstrainedIkRequest& r = *request_;
+    return step.pinWorst <= r.pinToleranceCm && s.mu <= kConvergedDamping && step.shift == 0.0 &&
+           std::abs(step.decrement) <= r.stationarityAbsolute + r.stationarityRelative * std::abs(s.F);
+}
+
+void ConstrainedIkSolver::boundStep(Iteration& s, Step& step) {
+    const Eigen::Index p = c_.size();
+    // Step bound: the linearisation of FK and of the prior does not reach further than about
+    // half a kernel length scale in x or kMaxStepDeg in any angle; a longer step is shortened
+    // (same direction) rather than left to the damping, which would also slow every later step.
+    // A crawling solve uses trust radii instead of the fixed bounds (latent and angle), and a
+    // shortened retry (below) its caps.
+    step.latentBound = std::min(step.crawling ? s.latentRadius : latentStepBound_, s.retryLatentCap);
+    const double latentScale = step.latentBound / std::max(1e-300, delta_.head(d_).norm());
+    const double angleBound = std::min(step.crawling ? s.angleRadius : kMaxStepDeg, s.retryAngleCap);
+    const double angleScale = angleBound / std::max(1e-300, delta_.tail(D_).cwiseAbs().maxCoeff());
+    step.scale = std::min({1.0, latentScale, angleScale});
+    step.latentCut = latentScale < 1.0 && latentScale <= step.scale;  // the latent bound set the length
+    step.angleCut = angleScale < 1.0 && angleScale <= step.scale;
+    step.stepDecrease = step.modelDecrease;
+    if (step.scale < 1.0) {
+        delta_ *= step.scale;
+        step.stepDecrease = -(g_.dot(delta_) + 0.5 * delta_.dot(Hm_ * delta_));
+    }
+    if (p > 0) s.meritNu = std::max(s.meritNu, 2.0 * nu_.cwiseAbs().maxCoeff());
+    step.c1 = p > 0 ? c_.lpNorm<1>() : 0.0;
+    step.pred = step.stepDecrease + s.meritNu * step.scale * step.c1;
+}
+
+double ConstrainedIkSolver::correctTrial() {
+    // Trial point with second-order corrections.
+    zTrial_ = z_ + delta_;
+    const Eigen::Index p = c_.size();
+    const Eigen::Index q = Aall_.rows();
+    if (q == 0) return 0.0;
+    // Second-order correction: back onto the pins, and onto the exact targets' linearised
+    // prediction (a penalty of weight κ would otherwise charge the manifold's curvature
+    // to every step along it: linear convergence; docs/maths-ik.md §3).
+    eHat_ = eAt_;
+    eHat_.tail(q - p).noalias() += Aall_.bottomRows(q - p) * delta_;
+    HinvAll_ = llt_.solve(Aall_.transpose());
+    Sall_.noalias() = Aall_ * HinvAll_;
+    Sall_.diagonal().array() += 1e-12 * std::max(1.0, Sall_.diagonal().maxCoeff());
+    sAllLdlt_.compute(Sall_);
+    const double tolerance = 0.01 * request_->pinToleranceCm;
+    double lastWorst = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= kProjections; ++k) {
+        const double pinWorstTrial = correctionResidual(zTrial_, rAll_);
+        const double worst = rAll_.cwiseAbs().maxCoeff();
+        if (!(worst <= lastWorst)) {
+            // Diverging (B H⁻¹Bᵀ nearly singular, e.g. a straight arm): keep the last point
+            // that was closer; the gain ratio judges it.
+            zTrial_ = zSoc_;
+            break;
+        }
+        const double targetWorst = q > p ? rAll_.tail(q - p).cwiseAbs().maxCoeff() : 0.0;
+        if (k == kProjections || (pinWorstTrial <= tolerance && targetWorst <= tolerance)) break;
+        lastWorst = worst;
+        zSoc_ = zTrial_;
+        zTrial_.noalias() -= HinvAll_ * sAllLdlt_.solve(rAll_);
+    }
+    correctionResidual(zTrial_, rAll_);
+    cTrial_ = rAll_.head(p);
+    return cTrial_.lpNorm<1>();
+}
+
+ConstrainedIkSolver::Trial ConstrainedIkSolver::scoreTrial(const Iteration& s, const Step& step, double trialPinNorm) {
+    const ConstrainedIkRequest& r = *request_;
+    const Eigen::Index p = c_.size();
+    Trial t;
+    // From the sixth trial on: a drag event converges within five (its p99), so drags keep
+    // their cost and their steps; a long solve gets x re-fitted to each trial pose
+    // (docs/maths-ik.md §3).
+    if (s.it > kDirectTrials) refineLatent(zTrial_);
+    t.Ft = evaluate(zTrial_, false);
+    // Both points on the pins (to a tenth of the tolerance): compare F itself, so round-off in
+    // c times a large ν cannot mask progress. Otherwise the ℓ1 merit.
+    const bool feasible =
+        p == 0 || (step.pinWorst <= 0.1 * r.pinToleranceCm && cTrial_.cwiseAbs().maxCoeff() <= 0.1 * r.pinToleranceCm);
+    const double actual = feasible ? s.F - t.Ft : (s.F + s.meritNu * step.c1) - (t.Ft + s.meritNu * trialPinNorm);
+    const double predicted = feasible ? step.stepDecrease : step.pred;
+    t.gain = predicted > 0.0 ? actual / predicted : (actual > 0.0 ? 1.0 : -1.0);
+    // Pins never get visibly worse: a trial that leaves them by more than kPinSlackCm, the
+    // tolerance or where they are (a projection that could not return, e.g. at a straight leg)
+    // is rejected.
+    t.pinAllowance = std::max({kPinSlackCm, r.pinToleranceCm, step.pinWorst});
+    t.pinsHeld = p == 0 || cTrial_.cwiseAbs().maxCoeff() <= t.pinAllowance;
+    t.accepted = std::isfinite(t.Ft) && t.pinsHeld && t.gain > 1e-4;
+    t.predictedWell = std::abs(t.gain - 1.0) <= kAccurateGain;  // the model predicted F's change
+    return t;
+}
+
+void ConstrainedIkSolver::planRetry(Iteration& s, const Step& step, const Trial& t) {
+    // A Gauss–Newton trial whose F the model predicted (gain within 1 ± 0.1) but which left the
+    // pins was too long for the pins' curvature, not for the model. Its retry is shortened so
+    // that the pins' error, second order in the step, fits the allowance (to at most half and
+    // at least a tenth of the step); raising μ alone shortened it only after up to seven
+    // trials at μ far below the model's curvature (docs/maths-ik.md §3 step 5).
+    s.retryAngleCap = s.retryLatentCap = std::numeric_limits<double>::infinity();
+    if (std::isfinite(t.Ft) && !t.pinsHeld && !step.newton && t.predictedWell) {
+        const double shorten = std::clamp(std::sqrt(t.pinAllowance / cTrial_.cwiseAbs().maxCoeff()),
+                                          kMinRetryShortening, kMaxRetryShortening);
+        s.retryAngleCap = shorten * delta_.tail(D_).cwiseAbs().maxCoeff();
+        s.retryLatentCap = shorten * delta_.head(d_).norm();
+    }
+}
+
+void ConstrainedIkSolver::updateTrustRadii(Iteration& s, const Step& step, const Trial& t) {
+    // Trust radius: doubled after a good step that the latent bound cut (the model
+    // predicted it well, so the bound, not the model, limited it), halved on rejection:
+    // down to the fixed bound, or below it when it cut the rejected step (a cut step that
+    // fails otherwise fails again until Nielsen's ladder has raised μ), except in the
+    // large-residual regime, where short latent steps ended farther from out-of-reach
+    // targets; a radius already below the bound keeps its value after other rejections
+    // (docs/maths-ik.md §3 step 6).
+    if (t.accepted && t.gain > kGoodGain && step.latentCut)
+        s.latentRadius = std::min(kMaxLatentRadius * latentStepBound_, 2.0 * s.latentRadius);
+    else if (!t.accepted)
+        s.latentRadius = std::max(step.latentCut && !s.largeResidual ? kMinLatentRadius * latentStepBound_
+                                                                     : std::min(s.latentRadius, latentStepBound_),
+                                  0.5 * s.latentRadius);
+    // Angle trust radius: halved when a step it cut is rejected (a long bounded step that
+    // fails keeps failing while μ is still too small to shorten it), doubled back up to
+    // kMaxStepDeg after a good step it cut. A full-length step rejected on its merit (finite
+    // F, the pins held; not a shortened retry) sets it to half that step's largest angle
+    // change (at least kMinAngleRadiusDeg): at μ ≈ 1e-12 the retry is otherwise about the
+    // same step until Nielsen's ladder has raised μ to the model's curvature, up to seven
+    // trials later (docs/maths-ik.md §3 step 6).
+    if (step.angleCut) {
+        if (!t.accepted)
+            s.angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * s.angleRadius);
+        else if (t.gain > kGoodGain)
+            s.angleRadius = std::min(kMaxStepDeg, 2.0 * s.angleRadius);
+    } else if (!t.accepted && step.scale >= 1.0 && !step.shortenedRetry && std::isfinite(t.Ft) && t.pinsHeld) {
+        s.angleRadius = std::max(kMinAngleRadiusDeg, 0.5 * delta_.tail(D_).cwiseAbs().maxCoeff());
+    }
+}
+
+bool ConstrainedIkSolver::acceptTrial(Iteration& s, const Step& step, const Trial& t) {
+    z_ = zTrial_;
+    // Nielsen's update lowers μ by at most 3× per step; a crawling solve whose model
+    // predicted the step (gain within 1 ± 0.1) lowers it 10×, so it regains the Newton
+    // regime in a third of the steps after a run of rejections (docs/maths-ik.md §3).
+    // A shortened retry that succeeds keeps the μ its rejection raised: it shows that the
+    // short step holds the pins, not that the next full-length one will.
+    if (!step.shortenedRetry)
+        s.mu *= step.crawling && t.predictedWell ? kAccurateDamping
+                                                 : std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * t.gain - 1.0, 3));
+    s.mu = std::max(s.mu, 1e-12);
+    // fk_ is still the trial's (its evaluate() was the last), i.e. the new point's.
+    // Only a crawling solve looks (a drag event does no extra FK work); before, both flags are false.
+    const ExactTargetReach reach =
+        s.it > kCrawlIterations ? exactTargetReach(request_->reachedToleranceCm) : ExactTargetReach{};
+    s.straightLimbNewton = s.straightLimbNewton || (s.rejectedSinceAccepted && reach.outsideAtStraightLimb);
+    s.largeResidual =
+        (s.it >= kLargeResidualIterations && reach.outside) || (s.straightLimbNewton && reach.outsideAtStraightLimb);
+    s.rejectedSinceAccepted = false;
+    curvature_ = s.mu <= kNewtonDamping || s.largeResidual;  // the next model is a Newton one: it needs C
+    s.F = evaluate(z_, true);
+    if (!std::isfinite(s.F) || !allFinite(g_) || !allFinite(H_)) {
+        s.stop = IkStop::kNonFinite;  // cannot happen for finite z; kept as a guard
+        return false;
+    }
+    s.nuLm = 2.0;
+    s.lastAccepted = true;
+    return true;
+}
+
+bool ConstrainedIkSolver::rejectTrial(Iteration& s, const Step& step) {
+    s.lastAccepted = false;
+    s.rejectedSinceAccepted = true;
+    // The grown radius, not the damping, made the step too long: the halved radius above
+    // shortens the retry, and μ stays where the gain ratio put it.
+    if (step.crawling && step.latentBound > latentStepBound_ && step.latentCut) return true;
+    s.mu *= s.nuLm;
+    s.nuLm *= 2.0;
+    if (s.mu > kMaxDamping) {
+        s.stop = IkStop::kStalled;
+        return false;
+    }
+    return true;
 }
 
 ConstrainedIkResult ConstrainedIkSolver::solve(const ConstrainedIkRequest& request) {

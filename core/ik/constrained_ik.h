@@ -90,6 +90,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -183,8 +184,18 @@ public:
 
 private:
     void bind(const ConstrainedIkRequest& request);
-    // F, and with `derivatives` also g_, H_, A_, c_ (pins) at z.
+    // F, and with `derivatives` also g_, H_, A_, c_ (pins) at z. Its parts, in order:
     double evaluate(const Eigen::VectorXd& z, bool derivatives);
+    // g_ and H_ = L_IK's gradient and Hessian (y–y, x–y, x–x blocks); C_ = 0.
+    void priorDerivatives();
+    // F += ½κ‖FK_t − c_t‖² per target; Gauss–Newton terms, their curvature in C_, Aall_'s rows.
+    void addTargetTerms(double& F, bool derivatives);
+    // F += the root orientation's and the locality's quadratics (exact, diagonal).
+    void addRootAndLocalityTerms(double& F, bool derivatives);
+    // F += the one-sided floor penalty of the free hands and feet (Gauss–Newton on the vertical row).
+    void addFloorTerms(double& F, bool derivatives);
+    // c_, A_ and Aall_'s pin rows; held DOFs frozen; C_ += the pins' ν·∇²FK in the Newton regime.
+    void pinDerivatives();
     // FK at z and the second-order correction's residual r = [pins' c; exact targets' e − ê]
     // (cm); returns the pins' ‖c‖∞.
     double correctionResidual(const Eigen::VectorXd& z, Eigen::VectorXd& r);
@@ -192,8 +203,85 @@ private:
     void fillResult(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
     // Every constraint's residual and reached flag at the current FK, against `request`'s targets.
     void scoreConstraints(const ConstrainedIkRequest& request, ConstrainedIkResult& result) const;
-    // solve() once the targets below the floor have been raised onto it.
+    // solve() once the targets below the floor have been raised onto it: the start, then trial
+    // steps until the KKT test holds, μ passes kMaxDamping or maxIterations trials are taken.
     void solveOnFloor(const ConstrainedIkRequest& request, ConstrainedIkResult& result);
+    // The result of a request validate() refused (`problem`): the start pose, no numbers.
+    void rejectRequest(const ConstrainedIkRequest& request, const std::string& problem,
+                       ConstrainedIkResult& result) const;
+
+    // The iteration's state from one trial step to the next (see the header comment's Method).
+    struct Iteration {
+        double F = 0.0;        // F at z_
+        double mu = 1e-6;      // Marquardt damping μ
+        double nuLm = 2.0;     // Nielsen's factor: μ *= nuLm after a rejection, then nuLm doubles
+        double meritNu = 0.0;  // ν of the ℓ1 merit F + ν‖c‖₁ (never decreases)
+        int it = 0;            // trial steps taken
+        IkStop stop = IkStop::kIterationCap;
+        bool lastAccepted = false;              // the last trial was accepted (a Newton model may follow)
+        double latentRadius = 0.0;              // latent trust radius: grows only once the solve is crawling
+        double angleRadius = 0.0;               // angle trust radius (°): shrinks only once the solve is crawling
+        bool largeResidual = false;             // Newton model after every accepted step
+        bool straightLimbNewton = false;        // Gauss–Newton failed at a straight limb
+        bool rejectedSinceAccepted = false;     // a trial was rejected since the last accepted one
+        bool gaussNewtonOverpredicted = false;  // the last Gauss–Newton trial's gain ratio was below 0.75
+        // Step caps for the retry of a trial rejected only because it left the pins (planRetry).
+        double retryAngleCap = std::numeric_limits<double>::infinity();
+        double retryLatentCap = std::numeric_limits<double>::infinity();
+    };
+    // One step: its model, the KKT step at z_ and how it was bounded.
+    struct Step {
+        bool crawling = false;                     // past kCrawlIterations trials: the crawling rules apply
+        bool shortenedRetry = false;               // this step retries one that left the pins, shortened
+        bool newton = false;                       // Hm_ carries the constraints' curvature C_
+        bool keepIndefiniteNewton = false;         // an indefinite Newton model is shifted, not dropped
+        double shift = 0.0;                        // τ added to the model's diagonal (0: it factorised)
+        double pinWorst = 0.0;                     // ‖c‖∞ at z_
+        double modelDecrease = 0.0;                // the model's decrease of F along the full step
+        double decrement = 0.0;                    // the stationarity measure (the damped Newton decrement)
+        double latentBound = 0.0;                  // the latent step bound this step had
+        double scale = 1.0;                        // the step's shortening (1: full length)
+        bool latentCut = false, angleCut = false;  // the latent / angle bound set the length
+        double stepDecrease = 0.0;                 // the model's decrease of F along the bounded step
+        double c1 = 0.0;                           // ‖c‖₁ at z_
+        double pred = 0.0;                         // the merit's predicted decrease
+    };
+    // How a trial point scored.
+    struct Trial {
+        double Ft = 0.0;            // F at the trial point
+        double gain = 0.0;          // actual / predicted decrease
+        double pinAllowance = 0.0;  // how far the trial may leave the pins (cm)
+        bool pinsHeld = false, accepted = false;
+        bool predictedWell = false;  // gain within 1 ± kAccurateGain
+    };
+    // One iteration of solveOnFloor, phase by phase:
+    // 1. The model Hm_ (Gauss–Newton, or Newton with C_), damped and factorised as Hd_; false: an
+    //    indefinite Newton model falls back to Gauss–Newton (the step is built again).
+    bool buildModel(const Iteration& s, Step& step);
+    // 2. A model that did not factorise is shifted by τ until it does; false: none does (stalled).
+    bool shiftIndefiniteModel(Step& step);
+    //    A crawling solve's τ: 4× the smallest that factorises, bracketed below `shift`.
+    double bracketShift(double shift, bool latentOnly);
+    //    Hd_'s diagonal += amount (the latent block only, or every unknown).
+    void addShift(double amount, bool latentOnly);
+    // 3. The KKT step delta_ (ν: nu_) of the pins' linearisation; its model decrease, the decrement.
+    void kktStep(Step& step);
+    // 4. The convergence test (pins met, decrement small, μ ≤ 1e-2, no shift).
+    bool stationary(const Iteration& s, const Step& step) const;
+    // 5. delta_ shortened to the step bounds (trust radii once crawling); the merit's prediction.
+    void boundStep(Iteration& s, Step& step);
+    // 6. zTrial_ = z_ + delta_, corrected onto the pins and the exact targets' prediction; ‖c‖₁ there.
+    double correctTrial();
+    // 7. The trial scored: x refitted to its pose (refineLatent, from trial 6), F, the gain ratio.
+    Trial scoreTrial(const Iteration& s, const Step& step, double trialPinNorm);
+    // 8. The caps of the shortened retry of a Gauss–Newton trial that left the pins.
+    void planRetry(Iteration& s, const Step& step, const Trial& t);
+    // 9. A crawling solve's latent and angle trust radii after the trial.
+    void updateTrustRadii(Iteration& s, const Step& step, const Trial& t);
+    // 10. Accepted: z_ = zTrial_, μ falls, the next model's regime, derivatives there; false: not finite.
+    bool acceptTrial(Iteration& s, const Step& step, const Trial& t);
+    //     Rejected: μ rises (Nielsen) unless a grown trust radius made the step too long; false: stalled.
+    bool rejectTrial(Iteration& s, const Step& step);
     // Rows row..row+2 of `into` = the effector Jacobian jac_ on the kept columns y (x columns 0).
     void scatterJacobian(Eigen::MatrixXd& into, Eigen::Index row) const;
     // C_ += λ·∂²FK_e/∂y² (y–y block) at the current FK.
