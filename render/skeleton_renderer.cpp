@@ -188,6 +188,12 @@ void main() { fragColour = uColour; }
 constexpr int kMaxBlobs = 64;
 constexpr int kShadowRes = 128;
 
+// Where the frame is seen from: the camera's matrices and the lights that follow it.
+struct FrameView {
+    glm::mat4 viewProj;
+    glm::vec3 eye, keyDir, fillDir;
+};
+
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -225,6 +231,13 @@ struct SceneRenderer::Impl {
         fboWidth = w;
         fboHeight = h;
     }
+    // The phases of SceneRenderer::draw that use the renderer's GL objects.
+    void beginFrame(const RenderStyle& s, int width, int height, unsigned targetFramebuffer);
+    void useLit(const FrameView& view);
+    void drawGround(const Scene& scene, const RenderStyle& s, const glm::mat4& viewProj, float viewportHeight);
+    void drawBackground(const RenderStyle& s, float viewportHeight);
+    void drawCaption(const std::string& caption, int width, int height);
+    void resolveFrame(int width, int height, unsigned targetFramebuffer);
     void releaseFramebuffer() {
         if (depthRb) glDeleteRenderbuffers(1, &depthRb);
         if (colourRb) glDeleteRenderbuffers(1, &colourRb);
@@ -428,26 +441,11 @@ glm::vec4 SceneRenderer::Impl::updateShadowTexture(const Scene& scene) {
     return glm::vec4(corner, 1.0f / size, 1.0f / size);
 }
 
-void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
-                         unsigned targetFramebuffer) {
-    Impl& r = *impl_;
-    const RenderStyle& s = style_;
-    // With MSAA the frame goes through the renderer's multisampled framebuffer; without it, straight
-    // into the target (which must then have a depth buffer, as the pbuffer and GLFW windows do).
-    const bool msaa = r.samples > 1;
-    if (msaa) r.ensureFramebuffer(width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? r.fbo : targetFramebuffer);
-    glViewport(0, 0, width, height);
-    glDisable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+namespace {
 
+// ---- The phases of SceneRenderer::draw ---------------------------------------------------------
+
+FrameView frameViewOf(const OrbitCamera& camera, int width, int height) {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const glm::mat4 viewProj = camera.viewProjection(aspect);
     const glm::vec3 eye = camera.eye();
@@ -458,144 +456,108 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     // Lights follow the camera (a studio setup): key from the upper left, fill from the right.
     const glm::vec3 keyDir = glm::normalize(-0.55f * camRight + 0.85f * camUp + 0.65f * camBack);
     const glm::vec3 fillDir = glm::normalize(0.8f * camRight - 0.1f * camUp + 0.5f * camBack);
+    return {viewProj, eye, keyDir, fillDir};
+}
 
-    // 2. Opaque solids: figures, paths, targets, pins.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDisable(GL_BLEND);
-    r.lit.use();
-    r.lit.set("uViewProj", viewProj);
-    r.lit.set("uEye", eye);
-    r.lit.set("uKeyDir", keyDir);
-    r.lit.set("uFillDir", fillDir);
-    Drawer d{r.lit, r.sphere, r.smallSphere,   r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {},
-             {},    {},       glm::vec4(1.0f), 0.0f};
+void addScenePath(Drawer& d, const Path& p, const RenderStyle& s) {
+    d.colour(p.colour);
+    for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
+        // Where two ticks overlap they already draw the line (llvmpipe pays per instance).
+        if (p.tickRadiusCm <= 0.0f || glm::length(p.pointsCm[i] - p.pointsCm[i - 1]) > 1.5f * p.tickRadiusCm)
+            d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
+    // Balls round the joins of a thick path; a ticked path's ticks cover them.
+    if (p.tickRadiusCm <= 0.0f)
+        for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
+    if (p.tickRadiusCm > 0.0f) {
+        d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.35f));
+        for (const glm::vec3& q : p.pointsCm) d.tinyBall(q, p.tickRadiusCm);
+    }
+    for (std::size_t k = 0; k < p.keysCm.size(); ++k) {
+        const int i = static_cast<int>(k);
+        if (i == p.selectedKey)
+            d.colour(s.handleSelected, 1.0f, 0.45f);
+        else if (i == p.hoveredKey)
+            d.colour(s.handleHover, 1.0f, 0.45f);
+        else
+            d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
+        d.ball(p.keysCm[k], p.keyRadiusCm() * (i == p.hoveredKey || i == p.selectedKey ? 1.3f : 1.0f));
+    }
+    if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
+        d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
+        d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);
+    }
+}
+
+void addTargetMarker(Drawer& d, const Target& t, const RenderStyle& s) {
+    const glm::vec3 c = t.reached ? s.targetReached : s.targetMissed;
+    d.colour(c, 1.0f, 0.15f);
+    const float arm = 5.0f;
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::vec3 e(0.0f);
+        e[axis] = arm;
+        d.segment(t.positionCm - e, t.positionCm + e, 0.7f, 0.7f);
+    }
+    d.ball(t.positionCm, 1.8f);
+    if (t.hasFrom) {
+        d.colour(glm::mix(c, glm::vec3(1.0f), 0.3f));
+        d.segment(t.fromCm, t.positionCm, 0.35f, 0.35f);
+    }
+}
+
+void addPinMarker(Drawer& d, const Pin& p, const RenderStyle& s) {
+    // A map pin standing on the pinned point, with a small cross at its tip.
+    d.colour(s.pin, 1.0f, 0.1f);
+    const glm::vec3 tip = p.positionCm;
+    d.segment(tip, tip + glm::vec3(0.0f, 12.0f, 0.0f), 0.25f, 1.2f);
+    d.ball(tip + glm::vec3(0.0f, 14.0f, 0.0f), 2.6f);
+    d.segment(tip + glm::vec3(-3.5f, 0.0f, 0.0f), tip + glm::vec3(3.5f, 0.0f, 0.0f), 0.5f, 0.5f);
+    d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
+}
+
+void addHeldRing(Drawer& d, const HeldMark& m) {
+    // Sixteen short segments around the point, outside the effector's handle ball (4–5 cm): a
+    // ring that reads as "held" from above and from the side.
+    d.colour(glm::vec3(1.0f, 0.66f, 0.18f), 1.0f, 0.2f);
+    constexpr int kSides = 16;
+    constexpr float kRadius = 7.5f;
+    for (int k = 0; k < kSides; ++k) {
+        const float a0 = 6.2831853f * static_cast<float>(k) / kSides,
+                    a1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
+        d.segment(m.positionCm + kRadius * glm::vec3(std::cos(a0), 0.0f, std::sin(a0)),
+                  m.positionCm + kRadius * glm::vec3(std::cos(a1), 0.0f, std::sin(a1)), 0.8f, 0.8f);
+    }
+}
+
+void addFootprintRosette(Drawer& d, const Footprint& f, float groundHeightCm) {
+    // A flat rosette just above the ground (the grid is drawn after the solids and loses the
+    // depth test there), in the timeline's contact-lane green: a low rim and eight spokes
+    // (segments have no end caps, so a rim alone would read as a thin ring).
+    d.colour(glm::vec3(0.30f, 0.78f, 0.42f), 1.0f, 0.25f);
+    const glm::vec3 base(f.positionCm.x, groundHeightCm + 0.6f, f.positionCm.z);
+    d.segment(base - glm::vec3(0.0f, 0.5f, 0.0f), base + glm::vec3(0.0f, 0.3f, 0.0f), 7.0f, 7.0f);
+    for (int k = 0; k < 8; ++k) {
+        const float a = 0.785398f * static_cast<float>(k);
+        d.segment(base, base + glm::vec3(6.5f * std::cos(a), 0.0f, 6.5f * std::sin(a)), 1.1f, 1.1f);
+    }
+}
+
+// The opaque solids, collected in draw order: figures, paths (not the on-top ones), targets,
+// pins, held rings and footprints.
+void addOpaqueSolids(Drawer& d, const Scene& scene, const RenderStyle& s) {
     for (const Figure& f : scene.figures)
         if (!f.ghost) d.figure(f, s, false);
-    auto drawPath = [&](const Path& p) {
-        d.colour(p.colour);
-        for (std::size_t i = 1; i < p.pointsCm.size(); ++i)
-            // Where two ticks overlap they already draw the line (llvmpipe pays per instance).
-            if (p.tickRadiusCm <= 0.0f || glm::length(p.pointsCm[i] - p.pointsCm[i - 1]) > 1.5f * p.tickRadiusCm)
-                d.segment(p.pointsCm[i - 1], p.pointsCm[i], p.radiusCm, p.radiusCm);
-        // Balls round the joins of a thick path; a ticked path's ticks cover them.
-        if (p.tickRadiusCm <= 0.0f)
-            for (std::size_t i = 1; i + 1 < p.pointsCm.size(); ++i) d.ball(p.pointsCm[i], p.radiusCm);
-        if (p.tickRadiusCm > 0.0f) {
-            d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.35f));
-            for (const glm::vec3& q : p.pointsCm) d.tinyBall(q, p.tickRadiusCm);
-        }
-        for (std::size_t k = 0; k < p.keysCm.size(); ++k) {
-            const int i = static_cast<int>(k);
-            if (i == p.selectedKey)
-                d.colour(s.handleSelected, 1.0f, 0.45f);
-            else if (i == p.hoveredKey)
-                d.colour(s.handleHover, 1.0f, 0.45f);
-            else
-                d.colour(glm::mix(p.colour, glm::vec3(1.0f), 0.55f));
-            d.ball(p.keysCm[k], p.keyRadiusCm() * (i == p.hoveredKey || i == p.selectedKey ? 1.3f : 1.0f));
-        }
-        if (p.currentPoint >= 0 && p.currentPoint < static_cast<int>(p.pointsCm.size())) {
-            d.colour(glm::vec3(1.0f, 0.95f, 0.6f), 1.0f, 0.35f);
-            d.ball(p.pointsCm[static_cast<std::size_t>(p.currentPoint)], p.radiusCm * 2.4f);
-        }
-    };
     for (const Path& p : scene.paths)
-        if (!p.onTop) drawPath(p);
-    for (const Target& t : scene.targets) {
-        const glm::vec3 c = t.reached ? s.targetReached : s.targetMissed;
-        d.colour(c, 1.0f, 0.15f);
-        const float arm = 5.0f;
-        for (int axis = 0; axis < 3; ++axis) {
-            glm::vec3 e(0.0f);
-            e[axis] = arm;
-            d.segment(t.positionCm - e, t.positionCm + e, 0.7f, 0.7f);
-        }
-        d.ball(t.positionCm, 1.8f);
-        if (t.hasFrom) {
-            d.colour(glm::mix(c, glm::vec3(1.0f), 0.3f));
-            d.segment(t.fromCm, t.positionCm, 0.35f, 0.35f);
-        }
-    }
-    for (const Pin& p : scene.pins) {
-        // A map pin standing on the pinned point, with a small cross at its tip.
-        d.colour(s.pin, 1.0f, 0.1f);
-        const glm::vec3 tip = p.positionCm;
-        d.segment(tip, tip + glm::vec3(0.0f, 12.0f, 0.0f), 0.25f, 1.2f);
-        d.ball(tip + glm::vec3(0.0f, 14.0f, 0.0f), 2.6f);
-        d.segment(tip + glm::vec3(-3.5f, 0.0f, 0.0f), tip + glm::vec3(3.5f, 0.0f, 0.0f), 0.5f, 0.5f);
-        d.segment(tip + glm::vec3(0.0f, 0.0f, -3.5f), tip + glm::vec3(0.0f, 0.0f, 3.5f), 0.5f, 0.5f);
-    }
-    for (const HeldMark& m : scene.heldMarks) {
-        // Sixteen short segments around the point, outside the effector's handle ball (4–5 cm): a
-        // ring that reads as "held" from above and from the side.
-        d.colour(glm::vec3(1.0f, 0.66f, 0.18f), 1.0f, 0.2f);
-        constexpr int kSides = 16;
-        constexpr float kRadius = 7.5f;
-        for (int k = 0; k < kSides; ++k) {
-            const float a0 = 6.2831853f * static_cast<float>(k) / kSides,
-                        a1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
-            d.segment(m.positionCm + kRadius * glm::vec3(std::cos(a0), 0.0f, std::sin(a0)),
-                      m.positionCm + kRadius * glm::vec3(std::cos(a1), 0.0f, std::sin(a1)), 0.8f, 0.8f);
-        }
-    }
+        if (!p.onTop) addScenePath(d, p, s);
+    for (const Target& t : scene.targets) addTargetMarker(d, t, s);
+    for (const Pin& p : scene.pins) addPinMarker(d, p, s);
+    for (const HeldMark& m : scene.heldMarks) addHeldRing(d, m);
+    for (const Footprint& f : scene.footprints) addFootprintRosette(d, f, scene.groundHeightCm);
+}
 
-    for (const Footprint& f : scene.footprints) {
-        // A flat rosette just above the ground (the grid is drawn after the solids and loses the
-        // depth test there), in the timeline's contact-lane green: a low rim and eight spokes
-        // (segments have no end caps, so a rim alone would read as a thin ring).
-        d.colour(glm::vec3(0.30f, 0.78f, 0.42f), 1.0f, 0.25f);
-        const glm::vec3 base(f.positionCm.x, scene.groundHeightCm + 0.6f, f.positionCm.z);
-        d.segment(base - glm::vec3(0.0f, 0.5f, 0.0f), base + glm::vec3(0.0f, 0.3f, 0.0f), 7.0f, 7.0f);
-        for (int k = 0; k < 8; ++k) {
-            const float a = 0.785398f * static_cast<float>(k);
-            d.segment(base, base + glm::vec3(6.5f * std::cos(a), 0.0f, 6.5f * std::sin(a)), 1.1f, 1.1f);
-        }
-    }
-
-    d.flush();
-
-    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
-    // It is opaque and fades into the background gradient by itself.
-    const float viewportHeight = static_cast<float>(height);
-    if (scene.showGround) {
-        const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
-        const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
-                               std::round(focus.z / 100.0f) * 100.0f);
-        const glm::vec4 rect = r.updateShadowTexture(scene);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
-        r.ground.use();
-        r.ground.set("uViewProj", viewProj);
-        r.ground.set("uCentre", centre);
-        r.ground.set("uHalfSize", s.groundHalfSizeCm);
-        r.ground.set("uGround", s.ground);
-        r.ground.set("uMinor", s.gridMinor);
-        r.ground.set("uMajor", s.gridMajor);
-        r.ground.set("uFocus", focus);
-        r.ground.set("uFadeRadius", s.groundHalfSizeCm);
-        r.ground.set("uShadow", 0);
-        r.ground.set("uShadowRect", rect);
-        r.ground.set("uTop", s.backgroundTop);
-        r.ground.set("uHorizon", s.backgroundHorizon);
-        r.ground.set("uViewportHeight", viewportHeight);
-        r.quad.draw();
-    }
-
-    // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
-    r.background.use();
-    r.background.set("uTop", s.backgroundTop);
-    r.background.set("uHorizon", s.backgroundHorizon);
-    r.background.set("uViewportHeight", viewportHeight);
-    glDepthMask(GL_FALSE);
-    glBindVertexArray(r.emptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
-    r.lit.use();
-
-    // 5. Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the
-    // ghost nearest to the eye there, once (onion skins draw several ghosts: two passes in all
-    // instead of two per ghost).
+// Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the ghost
+// nearest to the eye there, once (onion skins draw several ghosts: two passes in all instead of
+// two per ghost).
+void drawGhostFigures(Drawer& d, const Scene& scene, const RenderStyle& s) {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     bool anyGhost = false;
@@ -615,89 +577,200 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LEQUAL);
     }
+}
 
-    // 6. Handles: faint where hidden by the body (x-ray), solid where visible.
-    auto handleColour = [&](const Handle& h) {
-        switch (h.state) {
-            case HandleState::kHover: return s.handleHover;
-            case HandleState::kSelected: return s.handleSelected;
-            case HandleState::kIdle: break;
-        }
-        return s.handleIdle;
-    };
-    auto handleRadius = [](const Handle& h) {
-        return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm;
-    };
+glm::vec3 handleColourOf(const Handle& h, const RenderStyle& s) {
+    switch (h.state) {
+        case HandleState::kHover: return s.handleHover;
+        case HandleState::kSelected: return s.handleSelected;
+        case HandleState::kIdle: break;
+    }
+    return s.handleIdle;
+}
+
+float handleRadiusOf(const Handle& h) { return h.state == HandleState::kSelected ? h.radiusCm * 1.25f : h.radiusCm; }
+
+// Handles: faint where hidden by the body (x-ray), solid where visible.
+void drawEffectorHandles(Drawer& d, const Scene& scene, const RenderStyle& s) {
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_GREATER);
     for (const Handle& h : scene.handles) {
-        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.15f : 0.3f, 0.5f);
-        d.ball(h.positionCm, handleRadius(h));
+        d.colour(handleColourOf(h, s), h.state == HandleState::kIdle ? 0.15f : 0.3f, 0.5f);
+        d.ball(h.positionCm, handleRadiusOf(h));
     }
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_TRUE);
     for (const Handle& h : scene.handles) {
         const float emissive = h.state == HandleState::kIdle ? 0.15f : 0.55f;
-        d.colour(handleColour(h), h.state == HandleState::kIdle ? 0.75f : 0.95f, emissive);
-        d.ball(h.positionCm, handleRadius(h));
+        d.colour(handleColourOf(h, s), h.state == HandleState::kIdle ? 0.75f : 0.95f, emissive);
+        d.ball(h.positionCm, handleRadiusOf(h));
     }
     d.flush();
+}
 
-    // 6b. Paths drawn over everything (a gizmo): a fresh depth buffer, so that they hide only
-    // themselves.
+// Paths drawn over everything (a gizmo): a fresh depth buffer, so that they hide only themselves.
+void drawOnTopPaths(Drawer& d, const Scene& scene, const RenderStyle& s) {
     bool anyOnTop = false;
     for (const Path& p : scene.paths) anyOnTop = anyOnTop || p.onTop;
     if (anyOnTop) {
         glDisable(GL_BLEND);
         glClear(GL_DEPTH_BUFFER_BIT);
         for (const Path& p : scene.paths)
-            if (p.onTop) drawPath(p);
+            if (p.onTop) addScenePath(d, p, s);
         d.flush();
         glEnable(GL_BLEND);
     }
+}
 
-    // 7. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
-    if (!scene.caption.empty()) {
-        std::vector<char> buffer(64 * 1024);
-        std::string text = scene.caption;
-        const int quads =
-            stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
-        std::vector<float> tris;
-        tris.reserve(static_cast<std::size_t>(quads) * 18);
-        for (int q = 0; q < quads; ++q) {
-            const float* v = reinterpret_cast<const float*>(buffer.data() + q * 64);
-            const int order[6] = {0, 1, 2, 0, 2, 3};
-            for (int k : order) tris.insert(tris.end(), {v[k * 4 + 0], v[k * 4 + 1], 0.0f});
-        }
-        const float scale = height >= 400 ? 2.0f : 1.0f;
-        const float textHeight = 8.0f * scale;
-        glDisable(GL_DEPTH_TEST);
-        r.text.use();
-        r.text.set("uViewport", glm::vec2(static_cast<float>(width), static_cast<float>(height)));
-        r.text.set("uScale", scale);
-        glBindVertexArray(r.textVao);
-        glBindBuffer(GL_ARRAY_BUFFER, r.textVbo);
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(float)), tris.data(),
-                     GL_STREAM_DRAW);
-        const glm::vec2 origin(8.0f * scale, static_cast<float>(height) - textHeight - 6.0f * scale);
-        r.text.set("uOffset", origin + glm::vec2(scale, scale));
-        r.text.set("uColour", glm::vec4(0.0f, 0.0f, 0.0f, 0.6f));
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
-        r.text.set("uOffset", origin);
-        r.text.set("uColour", glm::vec4(0.95f, 0.95f, 0.95f, 1.0f));
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
-        glEnable(GL_DEPTH_TEST);
+// The caption's glyph quads (stb_easy_font) as triangles of (x, y, 0) in text pixels.
+std::vector<float> captionTriangles(const std::string& caption) {
+    std::vector<char> buffer(64 * 1024);
+    std::string text = caption;
+    const int quads =
+        stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
+    std::vector<float> tris;
+    tris.reserve(static_cast<std::size_t>(quads) * 18);
+    for (int q = 0; q < quads; ++q) {
+        const float* v = reinterpret_cast<const float*>(buffer.data() + q * 64);
+        const int order[6] = {0, 1, 2, 0, 2, 3};
+        for (int k : order) tris.insert(tris.end(), {v[k * 4 + 0], v[k * 4 + 1], 0.0f});
     }
-    glBindVertexArray(0);
-    glDisable(GL_BLEND);
+    return tris;
+}
 
-    // 8. Resolve the multisampled frame into the target framebuffer.
-    if (msaa) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+}  // namespace
+
+void SceneRenderer::Impl::beginFrame(const RenderStyle& s, int width, int height, unsigned targetFramebuffer) {
+    // With MSAA the frame goes through the renderer's multisampled framebuffer; without it, straight
+    // into the target (which must then have a depth buffer, as the pbuffer and GLFW windows do).
+    const bool msaa = samples > 1;
+    if (msaa) ensureFramebuffer(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa ? fbo : targetFramebuffer);
+    glViewport(0, 0, width, height);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void SceneRenderer::Impl::useLit(const FrameView& view) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_BLEND);
+    lit.use();
+    lit.set("uViewProj", view.viewProj);
+    lit.set("uEye", view.eye);
+    lit.set("uKeyDir", view.keyDir);
+    lit.set("uFillDir", view.fillDir);
+}
+
+void SceneRenderer::Impl::drawGround(const Scene& scene, const RenderStyle& s, const glm::mat4& viewProj,
+                                     float viewportHeight) {
+    const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
+    const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
+                           std::round(focus.z / 100.0f) * 100.0f);
+    const glm::vec4 rect = updateShadowTexture(scene);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    ground.use();
+    ground.set("uViewProj", viewProj);
+    ground.set("uCentre", centre);
+    ground.set("uHalfSize", s.groundHalfSizeCm);
+    ground.set("uGround", s.ground);
+    ground.set("uMinor", s.gridMinor);
+    ground.set("uMajor", s.gridMajor);
+    ground.set("uFocus", focus);
+    ground.set("uFadeRadius", s.groundHalfSizeCm);
+    ground.set("uShadow", 0);
+    ground.set("uShadowRect", rect);
+    ground.set("uTop", s.backgroundTop);
+    ground.set("uHorizon", s.backgroundHorizon);
+    ground.set("uViewportHeight", viewportHeight);
+    quad.draw();
+}
+
+void SceneRenderer::Impl::drawBackground(const RenderStyle& s, float viewportHeight) {
+    background.use();
+    background.set("uTop", s.backgroundTop);
+    background.set("uHorizon", s.backgroundHorizon);
+    background.set("uViewportHeight", viewportHeight);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+}
+
+void SceneRenderer::Impl::drawCaption(const std::string& caption, int width, int height) {
+    const std::vector<float> tris = captionTriangles(caption);
+    const float scale = height >= 400 ? 2.0f : 1.0f;
+    const float textHeight = 8.0f * scale;
+    glDisable(GL_DEPTH_TEST);
+    text.use();
+    text.set("uViewport", glm::vec2(static_cast<float>(width), static_cast<float>(height)));
+    text.set("uScale", scale);
+    glBindVertexArray(textVao);
+    glBindBuffer(GL_ARRAY_BUFFER, textVbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(float)), tris.data(), GL_STREAM_DRAW);
+    const glm::vec2 origin(8.0f * scale, static_cast<float>(height) - textHeight - 6.0f * scale);
+    text.set("uOffset", origin + glm::vec2(scale, scale));
+    text.set("uColour", glm::vec4(0.0f, 0.0f, 0.0f, 0.6f));
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+    text.set("uOffset", origin);
+    text.set("uColour", glm::vec4(0.95f, 0.95f, 0.95f, 1.0f));
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size() / 3));
+    glEnable(GL_DEPTH_TEST);
+}
+
+void SceneRenderer::Impl::resolveFrame(int width, int height, unsigned targetFramebuffer) {
+    if (samples > 1) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+}
+
+void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
+                         unsigned targetFramebuffer) {
+    Impl& r = *impl_;
+    const RenderStyle& s = style_;
+    // 1. The frame: target, state, clear.
+    r.beginFrame(s, width, height, targetFramebuffer);
+    const FrameView view = frameViewOf(camera, width, height);
+
+    // 2. Opaque solids: figures, paths, targets, pins.
+    r.useLit(view);
+    Drawer d{r.lit, r.sphere, r.smallSphere,   r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {},
+             {},    {},       glm::vec4(1.0f), 0.0f};
+    addOpaqueSolids(d, scene, s);
+    d.flush();
+
+    // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
+    // It is opaque and fades into the background gradient by itself.
+    const float viewportHeight = static_cast<float>(height);
+    if (scene.showGround) r.drawGround(scene, s, view.viewProj, viewportHeight);
+
+    // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
+    r.drawBackground(s, viewportHeight);
+    r.lit.use();  // the passes below draw solids again
+
+    // 5. Ghosts (blended), 6. handles, 6b. paths drawn on top.
+    drawGhostFigures(d, scene, s);
+    drawEffectorHandles(d, scene, s);
+    drawOnTopPaths(d, scene, s);
+
+    // 7. Caption (screen space, stb_easy_font, with a 1-pixel shadow).
+    if (!scene.caption.empty()) r.drawCaption(scene.caption, width, height);
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+
+    // 8. Resolve the multisampled frame into the target framebuffer.
+    r.resolveFrame(width, height, targetFramebuffer);
 }
 
 }  // namespace mgp::render

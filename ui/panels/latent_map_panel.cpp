@@ -98,179 +98,196 @@ void LatentMapPanel::prefetch(const EditorState& s) {
     }
 }
 
-void LatentMapPanel::draw(EditorState& s) {
-    EditorDocument& doc = s.doc;
-    const gp::ModelVersionPtr v = doc.model();
-    s.hoveredTrainingRow = -1;
-    if (!v) {
-        ImGui::TextWrapped("No model yet. Train one in the Model panel (Ctrl+T) or open a model file (Ctrl+M).");
-        return;
-    }
-    const gp::GpModel& model = *v->model;
-    prefetch(s);
-    LatentImage fresh;
-    if (worker_.take(fresh)) {
-        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
-        if (!texture_) glGenTextures(1, &texture_);
-        glBindTexture(GL_TEXTURE_2D, texture_);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, fresh.size, fresh.size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     fresh.rgba.data());
-        ++imageUploads_;
-        fresh.rgba.clear();
-        fresh.rgba.shrink_to_fit();
-        shown_ = std::move(fresh);
-    }
+// ---- The phases of LatentMapPanel::draw ----------------------------------------------------------
 
-    // A model of several clips: a legend (a swatch and the clip's name per clip, flowed into rows)
-    // goes under the colour bar; the map gives up the legend's height.
-    const int clips = model.clipCount();
-    const std::vector<int> colourIndex = clipColourIndices(model);
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float lineH = ImGui::GetTextLineHeight();
+// The map's place on screen: a square map, the colour bar below it (and, for a model of several
+// clips, the clip legend under that), and the latent box the square shows.
+struct LatentMapPanel::MapLayout {
     struct LegendEntry {
         std::string name, label;
         ImU32 colour;
         float width;
     };
-    std::vector<LegendEntry> legend;
+    std::vector<LegendEntry> legend;  // a swatch and the clip's name per clip, flowed into legendRows rows
     int legendRows = 0;
-    if (clips > 1) {
-        float x = 0.0f;
-        legendRows = 1;
-        for (int c = 0; c < clips; ++c) {
-            LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""),
-                          clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
-            e.width = lineH + 4.0f + ImGui::CalcTextSize(e.label.c_str()).x + 14.0f;
-            if (x > 0.0f && x + e.width > avail.x) ++legendRows, x = 0.0f;
-            x += e.width;
-            legend.push_back(std::move(e));
-        }
-    }
-    // Geometry: a square map, the colour bar below it (and the clip legend under that).
-    const float barBlock = 84.0f + float(legendRows) * (lineH + 4.0f);
-    // Whole pixels, so that the static layer's texels land on screen pixels one to one.
-    const float side = std::floor(std::max(64.0f, std::min(avail.x - 22.0f, avail.y - barBlock - 4.0f)));
-    const ImVec2 cur(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
-    const ImVec2 p0(cur.x + 16.0f, cur.y), p1(p0.x + side, p0.y + side);
-    double bx0, by0, bx1, by1;
-    if (shown_.size > 0) {
-        bx0 = shown_.x0, by0 = shown_.y0, bx1 = shown_.x1, by1 = shown_.y1;
-    } else {
-        latentBox(model, 0.15, bx0, by0, bx1, by1);
-    }
-    auto toScreen = [&](double lx, double ly) {
+    ImVec2 avail;
+    float lineH = 0.0f;
+    ImVec2 cur, p0, p1;  // the content's top-left corner; the map square's corners
+    float side = 0.0f;
+    double bx0 = 0, by0 = 0, bx1 = 1, by1 = 1;
+
+    ImVec2 toScreen(double lx, double ly) const {
         return ImVec2(float(p0.x + (lx - bx0) / (bx1 - bx0) * side), float(p0.y + (by1 - ly) / (by1 - by0) * side));
-    };
-    auto toLatent = [&](ImVec2 p) {
+    }
+    ImVec2 rowToScreen(const gp::GpModel& model, int i) const {
+        return toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
+    }
+    Eigen::VectorXd toLatent(const gp::GpModel& model, ImVec2 p) const {
         Eigen::VectorXd x = latentMapBase(model);
         x[0] = bx0 + (p.x - p0.x) / side * (bx1 - bx0);
         if (x.size() > 1) x[1] = by1 - (p.y - p0.y) / side * (by1 - by0);
         return x;
-    };
-
-    ImGui::SetCursorScreenPos(p0);
-    ImGui::InvisibleButton("##latentmap", ImVec2(side, side));
-    s.recordControl("latent map");
-    const bool hovered = ImGui::IsItemHovered();
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const int frames = std::max(1, doc.frameCount() - 1);
-    auto frameOfRow = [&](int i) { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; };
-    // A multi-clip model: rows of the open clip (the model's primary clip, clip 0) are frames of
-    // the open clip; every clip's dots take that clip's colour, its frame within the clip
-    // brightening it (clipColour).
-    const bool rowsKnown = model.trainingFrames.size() == static_cast<std::size_t>(model.N());
-    auto dotColour = [&](int i) {
-        if (clips == 1) return frameColour(double(frameOfRow(i)) / frames);
-        const int c = rowsKnown ? model.rowClip(i) : 0;
-        return clipColour(colourIndex[std::size_t(c)],
-                          double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
-    };
-
-    // What changes only with the model, the σ² image or the map's size is drawn once into a
-    // texture (the static layer); each frame adds the moving parts on top.
-    const StaticLayerKey key{
-        v->model.get(), v->number,       shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
-        side,           showTrajectory_, frames};
-    if (!(key == layerKey_)) {
-        const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
-        layer_.render(p0, ImVec2(side, side), [&](ImDrawList& dl) {
-            if (key.hasImage)
-                dl.AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), p0, p1);
-            else
-                dl.AddRectFilled(p0, p1, IM_COL32(40, 40, 48, 255));
-            // The training frames joined in time order (thin line under the dots): a continuous
-            // layout is one curve per motion, a fragmented one shows long jumps across the map.
-            if (showTrajectory_)
-                for (const auto& [a, b] : rowsKnown ? clipPairs(model) : std::vector<std::pair<int, int>>{})
-                    dl.AddLine(toScreen(model.X(a, 0), model.latentDim() > 1 ? model.X(a, 1) : 0.0),
-                               toScreen(model.X(b, 0), model.latentDim() > 1 ? model.X(b, 1) : 0.0),
-                               IM_COL32(235, 235, 240, 120), 1.0f);
-            // Training points coloured by frame (several clips: by clip), active set ringed. The
-            // other clips' dots go first and smaller, so the open clip's stay on top.
-            if (clips > 1)
-                for (int i = 0; i < model.N(); ++i)
-                    if (rowsKnown && model.rowClip(i) != 0)
-                        dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 1.9f,
-                                           dotColour(i));
-            for (int i = 0; i < model.N(); ++i)
-                if (clips == 1 || !rowsKnown || model.rowClip(i) == 0)
-                    dl.AddCircleFilled(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 2.3f,
-                                       dotColour(i));
-            for (int i : model.active) {
-                if (i < 0 || i >= model.N()) continue;
-                dl.AddCircle(toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0), 4.2f,
-                             IM_COL32(255, 255, 255, 170), 10, 1.0f);
-            }
-        });
-        layerKey_ = key;
-        ++layerRenders_;
     }
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    layer_.draw(*dl, p0, p1);
-    drawn_ = {v->model.get(), p0.x, p0.y, side, bx0, by0, bx1, by1};
-    dl->PushClipRect(p0, p1, true);
-
-    int nearest = -1;
-    float nearestD2 = 7.0f * 7.0f;
-    if (hovered)
+    // The training row whose dot is nearest the mouse within 7 pixels, -1 none.
+    int nearestRow(const gp::GpModel& model, ImVec2 mouse) const {
+        int nearest = -1;
+        float nearestD2 = 7.0f * 7.0f;
         for (int i = 0; i < model.N(); ++i) {
-            const ImVec2 p = toScreen(model.X(i, 0), model.latentDim() > 1 ? model.X(i, 1) : 0.0);
+            const ImVec2 p = rowToScreen(model, i);
             const float d2 = (p.x - mouse.x) * (p.x - mouse.x) + (p.y - mouse.y) * (p.y - mouse.y);
             if (d2 < nearestD2) {
                 nearestD2 = d2;
                 nearest = i;
             }
         }
+        return nearest;
+    }
+};
+
+// The mouse over the map this frame.
+struct LatentMapPanel::MapPointer {
+    bool hovered = false;
+    ImVec2 mouse;
+    int nearest = -1;              // the training row under the mouse
+    ImVec2 current{-1e6f, -1e6f};  // the current latent point on screen
+    float currentD2 = 0.0f;        // squared pixel distance from the mouse to it
+};
+
+namespace {
+// The training dots' colours. A multi-clip model: rows of the open clip (the model's primary
+// clip, clip 0) are frames of the open clip; every clip's dots take that clip's colour, its frame
+// within the clip brightening it (clipColour).
+struct LatentDotColours {
+    const gp::GpModel& model;
+    const std::vector<int>& colourIndex;
+    int clips;
+    int frames;
+    bool rowsKnown;
+
+    int frameOfRow(int i) const { return i < int(model.trainingFrames.size()) ? model.trainingFrames[i] : 0; }
+    ImU32 operator()(int i) const {
+        if (clips == 1) return frameColour(double(frameOfRow(i)) / frames);
+        const int c = rowsKnown ? model.rowClip(i) : 0;
+        return clipColour(colourIndex[std::size_t(c)],
+                          double(frameOfRow(i)) / std::max(1, model.clipAt(c).frameCount() - 1), c == 0);
+    }
+};
+}  // namespace
+
+void LatentMapPanel::uploadFreshImage(EditorState& s) {
+    LatentImage fresh;
+    if (!worker_.take(fresh)) return;
+    const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
+    if (!texture_) glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, fresh.size, fresh.size, 0, GL_RGBA, GL_UNSIGNED_BYTE, fresh.rgba.data());
+    ++imageUploads_;
+    fresh.rgba.clear();
+    fresh.rgba.shrink_to_fit();
+    shown_ = std::move(fresh);
+}
+
+LatentMapPanel::MapLayout LatentMapPanel::layoutMap(const gp::GpModel& model,
+                                                    const std::vector<int>& colourIndex) const {
+    MapLayout m;
+    // A model of several clips: a legend (a swatch and the clip's name per clip, flowed into rows)
+    // goes under the colour bar; the map gives up the legend's height.
+    const int clips = model.clipCount();
+    m.avail = ImGui::GetContentRegionAvail();
+    m.lineH = ImGui::GetTextLineHeight();
+    if (clips > 1) {
+        float x = 0.0f;
+        m.legendRows = 1;
+        for (int c = 0; c < clips; ++c) {
+            MapLayout::LegendEntry e{model.clipName(c), model.clipName(c) + (c == 0 ? " (open)" : ""),
+                                     clipColour(colourIndex[std::size_t(c)], 1.0, true), 0.0f};
+            e.width = m.lineH + 4.0f + ImGui::CalcTextSize(e.label.c_str()).x + 14.0f;
+            if (x > 0.0f && x + e.width > m.avail.x) ++m.legendRows, x = 0.0f;
+            x += e.width;
+            m.legend.push_back(std::move(e));
+        }
+    }
+    // Geometry: a square map, the colour bar below it (and the clip legend under that).
+    const float barBlock = 84.0f + float(m.legendRows) * (m.lineH + 4.0f);
+    // Whole pixels, so that the static layer's texels land on screen pixels one to one.
+    m.side = std::floor(std::max(64.0f, std::min(m.avail.x - 22.0f, m.avail.y - barBlock - 4.0f)));
+    m.cur = ImVec2(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
+    m.p0 = ImVec2(m.cur.x + 16.0f, m.cur.y);
+    m.p1 = ImVec2(m.p0.x + m.side, m.p0.y + m.side);
+    if (shown_.size > 0) {
+        m.bx0 = shown_.x0, m.by0 = shown_.y0, m.bx1 = shown_.x1, m.by1 = shown_.y1;
+    } else {
+        latentBox(model, 0.15, m.bx0, m.by0, m.bx1, m.by1);
+    }
+    return m;
+}
+
+void LatentMapPanel::renderStaticLayer(EditorState& s, const StaticLayerKey& key, const gp::GpModel& model,
+                                       const MapLayout& map, const std::vector<int>& colourIndex) {
+    const PhaseTimer timer(s.profile, s.profile.latentUploadSeconds);
+    layer_.render(map.p0, ImVec2(map.side, map.side),
+                  [&](ImDrawList& dl) { paintStaticLayer(dl, key, model, map, colourIndex); });
+    layerKey_ = key;
+    ++layerRenders_;
+}
+
+void LatentMapPanel::paintStaticLayer(ImDrawList& dl, const StaticLayerKey& key, const gp::GpModel& model,
+                                      const MapLayout& map, const std::vector<int>& colourIndex) const {
+    const int clips = model.clipCount();
+    const bool rowsKnown = model.trainingFrames.size() == static_cast<std::size_t>(model.N());
+    const LatentDotColours dotColour{model, colourIndex, clips, key.frames, rowsKnown};
+    if (key.hasImage)
+        dl.AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_)), map.p0, map.p1);
+    else
+        dl.AddRectFilled(map.p0, map.p1, IM_COL32(40, 40, 48, 255));
+    // The training frames joined in time order (thin line under the dots): a continuous
+    // layout is one curve per motion, a fragmented one shows long jumps across the map.
+    if (showTrajectory_)
+        for (const auto& [a, b] : rowsKnown ? clipPairs(model) : std::vector<std::pair<int, int>>{})
+            dl.AddLine(map.rowToScreen(model, a), map.rowToScreen(model, b), IM_COL32(235, 235, 240, 120), 1.0f);
+    // Training points coloured by frame (several clips: by clip), active set ringed. The
+    // other clips' dots go first and smaller, so the open clip's stay on top.
+    if (clips > 1)
+        for (int i = 0; i < model.N(); ++i)
+            if (rowsKnown && model.rowClip(i) != 0) dl.AddCircleFilled(map.rowToScreen(model, i), 1.9f, dotColour(i));
+    for (int i = 0; i < model.N(); ++i)
+        if (clips == 1 || !rowsKnown || model.rowClip(i) == 0)
+            dl.AddCircleFilled(map.rowToScreen(model, i), 2.3f, dotColour(i));
+    for (int i : model.active) {
+        if (i < 0 || i >= model.N()) continue;
+        dl.AddCircle(map.rowToScreen(model, i), 4.2f, IM_COL32(255, 255, 255, 170), 10, 1.0f);
+    }
+}
+
+ImVec2 LatentMapPanel::drawLatentMarks(ImDrawList& dl, EditorDocument& doc, const gp::GpModel& model,
+                                       const MapLayout& map, int nearest) {
     // Path of the current/last drag and the current latent point.
     const auto& path = doc.latentPath();
     for (std::size_t k = 1; k < path.size(); ++k)
-        dl->AddLine(toScreen(path[k - 1][0], path[k - 1].size() > 1 ? path[k - 1][1] : 0.0),
-                    toScreen(path[k][0], path[k].size() > 1 ? path[k][1] : 0.0), IM_COL32(255, 70, 70, 230), 2.0f);
+        dl.AddLine(map.toScreen(path[k - 1][0], path[k - 1].size() > 1 ? path[k - 1][1] : 0.0),
+                   map.toScreen(path[k][0], path[k].size() > 1 ? path[k][1] : 0.0), IM_COL32(255, 70, 70, 230), 2.0f);
     const Eigen::VectorXd xc = doc.currentLatent();
     ImVec2 pc(-1e6f, -1e6f);
     if (xc.size() > 0 && xc.allFinite()) {
-        pc = toScreen(xc[0], xc.size() > 1 ? xc[1] : 0.0);
-        dl->AddCircleFilled(pc, 6.0f, IM_COL32(255, 60, 60, 255));
-        dl->AddCircle(pc, 6.5f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
+        pc = map.toScreen(xc[0], xc.size() > 1 ? xc[1] : 0.0);
+        dl.AddCircleFilled(pc, 6.0f, IM_COL32(255, 60, 60, 255));
+        dl.AddCircle(pc, 6.5f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
     }
-    if (nearest >= 0) {
-        const ImVec2 p = toScreen(model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0);
-        dl->AddCircle(p, 6.0f, IM_COL32(255, 230, 60, 255), 16, 2.0f);
-    }
-    dl->PopClipRect();
-    dl->AddRect(p0, p1, IM_COL32(120, 124, 132, 255));
-    dl->AddText(ImVec2(p0.x + side * 0.5f - 8.0f, p1.y + 1.0f), IM_COL32(200, 200, 205, 255), "x1");
-    dl->AddText(ImVec2(cur.x, p0.y + side * 0.5f - 7.0f), IM_COL32(200, 200, 205, 255), "x2");
+    if (nearest >= 0) dl.AddCircle(map.rowToScreen(model, nearest), 6.0f, IM_COL32(255, 230, 60, 255), 16, 2.0f);
+    return pc;
+}
 
-    // Interaction: drag the current point (pose from the model mean), click a training point.
-    const float dc2 = (pc.x - mouse.x) * (pc.x - mouse.x) + (pc.y - mouse.y) * (pc.y - mouse.y);
-    if (hovered && ImGui::IsMouseClicked(0)) {
-        if (dc2 <= 9.0f * 9.0f && doc.beginLatentDrag()) {
+void LatentMapPanel::handleMouse(EditorState& s, const gp::GpModel& model, const MapLayout& map,
+                                 const MapPointer& pointer) {
+    EditorDocument& doc = s.doc;
+    const int nearest = pointer.nearest;
+    if (pointer.hovered && ImGui::IsMouseClicked(0)) {
+        if (pointer.currentD2 <= 9.0f * 9.0f && doc.beginLatentDrag()) {
             dragging_ = true;
             s.playing = false;
         } else if (nearest >= 0 && nearest < int(model.trainingFrames.size())) {
@@ -289,9 +306,13 @@ void LatentMapPanel::draw(EditorState& s) {
             dragging_ = false;
             s.setStatus("posed frame " + std::to_string(doc.frame() + 1) + " from the model mean");
         } else if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) {
-            doc.latentDragTo(toLatent(mouse));
+            doc.latentDragTo(map.toLatent(model, pointer.mouse));
         }
     }
+}
+
+void LatentMapPanel::showTooltip(EditorState& s, const gp::GpModel& model, const MapPointer& pointer) const {
+    const int nearest = pointer.nearest;
     if (nearest >= 0 && !dragging_) {
         s.hoveredTrainingRow = nearest;
         const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
@@ -301,26 +322,27 @@ void LatentMapPanel::draw(EditorState& s) {
             frame + 1, model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
             std::find(model.active.begin(), model.active.end(), nearest) != model.active.end() ? "  [active set]" : "",
             c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
-    } else if (hovered && dc2 <= 81.0f && !dragging_) {
+    } else if (pointer.hovered && pointer.currentD2 <= 81.0f && !dragging_) {
         ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
     }
+}
 
-    // Colour bar.
-    const ImVec2 b0(p0.x, p1.y + 18.0f), b1(p1.x, p1.y + 28.0f);
+float LatentMapPanel::drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, const MapLayout& map) const {
+    const ImVec2 b0(map.p0.x, map.p1.y + 18.0f), b1(map.p1.x, map.p1.y + 28.0f);
     const int segs = 48;
     for (int k = 0; k < segs; ++k) {
         const float xa = b0.x + (b1.x - b0.x) * k / segs, xb = b0.x + (b1.x - b0.x) * (k + 1) / segs;
-        dl->AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
-                                    mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
-                                    mapColour(1.0 - double(k) / segs));
+        dl.AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
+                                   mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
+                                   mapColour(1.0 - double(k) / segs));
     }
-    dl->AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
+    dl.AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
     char lo[48], hi[48];
     std::snprintf(lo, sizeof lo, "%.2g", shown_.size ? std::exp(shown_.minLogVar) : 0.0);
     std::snprintf(hi, sizeof hi, "%.2g", shown_.size ? std::exp(shown_.maxLogVar) : 0.0);
-    dl->AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
+    dl.AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
     const float hiW = ImGui::CalcTextSize(hi).x;
-    dl->AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
+    dl.AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
     // With d = 3 the map is a slice (latentMapBase): say which.
     char capText[128] = "predictive variance sigma^2(x), log scale";
     if (model.latentDim() > 2)
@@ -329,21 +351,78 @@ void LatentMapPanel::draw(EditorState& s) {
     const char* cap = capText;
     const float capW = ImGui::CalcTextSize(cap).x;
     // Centred under the bar, but never left of the panel's content edge (the caption is wider).
-    const float capX = std::max(cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
-    dl->AddText(ImVec2(capX, b1.y + 2.0f + lineH), IM_COL32(210, 210, 215, 255), cap);
+    const float capX = std::max(map.cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
+    dl.AddText(ImVec2(capX, b1.y + 2.0f + map.lineH), IM_COL32(210, 210, 215, 255), cap);
+    return b1.y;
+}
+
+float LatentMapPanel::drawClipLegend(ImDrawList& dl, EditorState& s, const MapLayout& map, float barBottom) {
     // The clip legend: a swatch in the clip's colour and its name, the open clip marked.
+    const float lineH = map.lineH;
+    const ImVec2 cur = map.cur;
     s.clipLegend.clear();
-    float lx = cur.x, ly = b1.y + 4.0f + 2.0f * lineH;
-    for (const LegendEntry& e : legend) {
-        if (lx > cur.x && lx + e.width > cur.x + avail.x) lx = cur.x, ly += lineH + 4.0f;
-        dl->AddRectFilled(ImVec2(lx, ly + 1.0f), ImVec2(lx + lineH, ly + 1.0f + lineH), e.colour);
-        dl->AddText(ImVec2(lx + lineH + 4.0f, ly + 1.0f), IM_COL32(210, 210, 215, 255), e.label.c_str());
+    float lx = cur.x, ly = barBottom + 4.0f + 2.0f * lineH;
+    for (const MapLayout::LegendEntry& e : map.legend) {
+        if (lx > cur.x && lx + e.width > cur.x + map.avail.x) lx = cur.x, ly += lineH + 4.0f;
+        dl.AddRectFilled(ImVec2(lx, ly + 1.0f), ImVec2(lx + lineH, ly + 1.0f + lineH), e.colour);
+        dl.AddText(ImVec2(lx + lineH + 4.0f, ly + 1.0f), IM_COL32(210, 210, 215, 255), e.label.c_str());
         s.controls["clip legend " + e.name] = {lx, ly + 1.0f, lx + lineH, ly + 1.0f + lineH, true};
         s.clipLegend += e.name + " " + hexColour(e.colour) + (e.label.size() > e.name.size() ? " (open)" : "") + "\n";
         lx += e.width;
     }
-    if (legendRows > 0) ly += lineH + 4.0f;
-    ImGui::SetCursorScreenPos(ImVec2(cur.x, ly));
+    if (map.legendRows > 0) ly += lineH + 4.0f;
+    return ly;
+}
+
+void LatentMapPanel::draw(EditorState& s) {
+    EditorDocument& doc = s.doc;
+    const gp::ModelVersionPtr v = doc.model();
+    s.hoveredTrainingRow = -1;
+    if (!v) {
+        ImGui::TextWrapped("No model yet. Train one in the Model panel (Ctrl+T) or open a model file (Ctrl+M).");
+        return;
+    }
+    const gp::GpModel& model = *v->model;
+    prefetch(s);
+    uploadFreshImage(s);
+    const std::vector<int> colourIndex = clipColourIndices(model);
+    const MapLayout map = layoutMap(model, colourIndex);
+
+    ImGui::SetCursorScreenPos(map.p0);
+    ImGui::InvisibleButton("##latentmap", ImVec2(map.side, map.side));
+    s.recordControl("latent map");
+    MapPointer pointer;
+    pointer.hovered = ImGui::IsItemHovered();
+    pointer.mouse = ImGui::GetIO().MousePos;
+    const int frames = std::max(1, doc.frameCount() - 1);
+
+    // What changes only with the model, the σ² image or the map's size is drawn once into a
+    // texture (the static layer); each frame adds the moving parts on top.
+    const StaticLayerKey key{
+        v->model.get(), v->number,       shown_.model, shown_.version, texture_ != 0 && shown_.size > 0,
+        map.side,       showTrajectory_, frames};
+    if (!(key == layerKey_)) renderStaticLayer(s, key, model, map, colourIndex);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    layer_.draw(*dl, map.p0, map.p1);
+    drawn_ = {v->model.get(), map.p0.x, map.p0.y, map.side, map.bx0, map.by0, map.bx1, map.by1};
+    dl->PushClipRect(map.p0, map.p1, true);
+    if (pointer.hovered) pointer.nearest = map.nearestRow(model, pointer.mouse);
+    pointer.current = drawLatentMarks(*dl, doc, model, map, pointer.nearest);
+    dl->PopClipRect();
+    dl->AddRect(map.p0, map.p1, IM_COL32(120, 124, 132, 255));
+    dl->AddText(ImVec2(map.p0.x + map.side * 0.5f - 8.0f, map.p1.y + 1.0f), IM_COL32(200, 200, 205, 255), "x1");
+    dl->AddText(ImVec2(map.cur.x, map.p0.y + map.side * 0.5f - 7.0f), IM_COL32(200, 200, 205, 255), "x2");
+
+    // Interaction: drag the current point (pose from the model mean), click a training point.
+    const ImVec2 pc = pointer.current, mouse = pointer.mouse;
+    pointer.currentD2 = (pc.x - mouse.x) * (pc.x - mouse.x) + (pc.y - mouse.y) * (pc.y - mouse.y);
+    handleMouse(s, model, map, pointer);
+    showTooltip(s, model, pointer);
+
+    // Colour bar, then the clip legend, then the time-path toggle.
+    const float barBottom = drawVarianceBar(*dl, model, map);
+    const float ly = drawClipLegend(*dl, s, map, barBottom);
+    ImGui::SetCursorScreenPos(ImVec2(map.cur.x, ly));
     ImGui::Checkbox("time path", &showTrajectory_);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
     ImGui::SameLine();

@@ -72,6 +72,26 @@ private:
     } drawn_;
     int layerRenders_ = 0;
     DrawListTexture layer_;
+
+    // The phases of draw().
+    struct MapLayout;
+    struct MapPointer;
+    void uploadFreshImage(EditorState& state);
+    MapLayout layoutMap(const gp::GpModel& model, const std::vector<int>& colourIndex) const;
+    void renderStaticLayer(EditorState& state, const StaticLayerKey& key, const gp::GpModel& model,
+                           const MapLayout& map, const std::vector<int>& colourIndex);
+    void paintStaticLayer(ImDrawList& dl, const StaticLayerKey& key, const gp::GpModel& model, const MapLayout& map,
+                          const std::vector<int>& colourIndex) const;
+    // Draws the drag path, the current latent point and the ring round the nearest dot; returns
+    // the current point's pixel (far off the map when there is none).
+    static ImVec2 drawLatentMarks(ImDrawList& dl, EditorDocument& doc, const gp::GpModel& model, const MapLayout& map,
+                                  int nearest);
+    void handleMouse(EditorState& state, const gp::GpModel& model, const MapLayout& map, const MapPointer& pointer);
+    void showTooltip(EditorState& state, const gp::GpModel& model, const MapPointer& pointer) const;
+    // The colour bar with its range and caption; returns the bar's bottom edge.
+    float drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, const MapLayout& map) const;
+    // Returns the top of the row below the legend.
+    static float drawClipLegend(ImDrawList& dl, EditorState& state, const MapLayout& map, float barBottom);
 };
 
 }  // namespace mgp::ui

@@ -18,15 +18,14 @@ void TimelinePanel::advance(EditorState& s, double dt) {
     s.doc.setFrame((s.doc.frame() + steps) % std::max(1, n));
 }
 
-void TimelinePanel::draw(EditorState& s) {
+namespace {
+
+// The transport row: first/previous/play/next/last, the frame and time, a running fill's cancel
+// button and the edit count.
+void drawTimelineTransport(EditorState& s) {
     EditorDocument& doc = s.doc;
-    if (!doc.hasClip()) {
-        ImGui::TextDisabled("No clip");
-        return;
-    }
     const int n = doc.frameCount();
     const double fps = doc.clip().fps;
-    // Transport.
     if (ImGui::Button("|<")) doc.setFrame(0);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("First frame (Home)");
     ImGui::SameLine();
@@ -62,113 +61,112 @@ void TimelinePanel::draw(EditorState& s) {
         ImGui::SameLine(editedX);
         ImGui::TextDisabled("%s", edited);
     }
+}
 
-    // Track.
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const ImVec2 t0 = ImGui::GetCursorScreenPos();
-    const float h = std::max(24.0f, avail.y - 2.0f);
-    ImGui::InvisibleButton("##track", ImVec2(avail.x, h));
-    s.recordControl("timeline track");
-    const bool active = ImGui::IsItemActive();
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 t1(t0.x + avail.x, t0.y + h);
-    const float pad = 8.0f;
-    auto xOf = [&](int f) { return t0.x + pad + (avail.x - 2 * pad) * (n > 1 ? float(f) / (n - 1) : 0.0f); };
-    dl->AddRectFilled(t0, t1, IM_COL32(34, 36, 42, 255), 4.0f);
+// The track's rectangle and the frame <-> pixel mapping along it.
+struct TimelineTrack {
+    ImVec2 t0, t1;  // top-left and bottom-right corners
+    float width = 0.0f, h = 0.0f;
+    float pad = 8.0f;
+    int n = 1;  // frames
+
+    float xOf(int f) const { return t0.x + pad + (width - 2 * pad) * (n > 1 ? float(f) / (n - 1) : 0.0f); }
+    int frameAt(float mouseX) const {
+        const float u = (mouseX - t0.x - pad) / std::max(1.0f, width - 2 * pad);
+        return std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
+    }
+};
+
+void drawTimelineTicks(ImDrawList& dl, const TimelineTrack& t, double fps) {
     // Ticks: every 10 frames small, every second labelled.
     const int major = std::max(1, int(std::lround(fps)));
     const int minor = std::max(1, major / 12);
-    for (int f = 0; f < n; f += minor) {
+    for (int f = 0; f < t.n; f += minor) {
         const bool isMajor = f % major == 0;
-        const float x = xOf(f);
-        dl->AddLine(ImVec2(x, t1.y - (isMajor ? 12.0f : 5.0f)), ImVec2(x, t1.y), IM_COL32(120, 124, 132, 255));
+        const float x = t.xOf(f);
+        dl.AddLine(ImVec2(x, t.t1.y - (isMajor ? 12.0f : 5.0f)), ImVec2(x, t.t1.y), IM_COL32(120, 124, 132, 255));
         if (isMajor) {
             char buf[16];
             std::snprintf(buf, sizeof buf, "%d", f + 1);
-            dl->AddText(ImVec2(x + 2, t0.y + 2), IM_COL32(150, 154, 162, 255), buf);
+            dl.AddText(ImVec2(x + 2, t.t0.y + 2), IM_COL32(150, 154, 162, 255), buf);
         }
     }
+}
+
+void drawEditedFrameMarks(ImDrawList& dl, const TimelineTrack& t, const EditorDocument& doc) {
     const auto& path = doc.pathEdit();
     if (path)  // the edited span, tinted under the edited-frame marks
-        dl->AddRectFilled(ImVec2(xOf(path->keyFrames.front()), t0.y + h * 0.4f),
-                          ImVec2(xOf(path->keyFrames.back()), t1.y - 2.0f), IM_COL32(51, 140, 242, 60));
+        dl.AddRectFilled(ImVec2(t.xOf(path->keyFrames.front()), t.t0.y + t.h * 0.4f),
+                         ImVec2(t.xOf(path->keyFrames.back()), t.t1.y - 2.0f), IM_COL32(51, 140, 242, 60));
     for (const auto& [f, rec] : doc.edits()) {
         (void)rec;
-        const float x = xOf(f);
-        dl->AddRectFilled(ImVec2(x - 1.5f, t0.y + h * 0.45f), ImVec2(x + 1.5f, t1.y - 2.0f),
-                          IM_COL32(255, 140, 40, 255));
+        const float x = t.xOf(f);
+        dl.AddRectFilled(ImVec2(x - 1.5f, t.t0.y + t.h * 0.45f), ImVec2(x + 1.5f, t.t1.y - 2.0f),
+                         IM_COL32(255, 140, 40, 255));
     }
-    {
-        // The animator's keys: a yellow diamond each at the top of the track; what a fill would
-        // regenerate, tinted: the gaps inside the Shift+drag range, else the gap at the playhead.
-        auto tintGap = [&](const InbetweenGap& g) {
-            dl->AddRectFilled(ImVec2(xOf(g.a), t0.y + h * 0.2f), ImVec2(xOf(g.b), t0.y + h * 0.32f),
-                              IM_COL32(240, 200, 60, 70));
-        };
-        if (s.timelineRange) {
-            const int r0 = std::clamp(s.timelineRange->first, 0, n - 1),
-                      r1 = std::clamp(s.timelineRange->second, 0, n - 1);
-            dl->AddRectFilled(ImVec2(xOf(r0) - 1.0f, t0.y + 1.0f), ImVec2(xOf(r1) + 1.0f, t1.y - 1.0f),
-                              IM_COL32(120, 170, 255, 45));
-            for (const InbetweenGap& g : doc.keyGapsIn(r0, r1)) tintGap(g);
-        } else if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame())) {
-            tintGap(*gap);
-        }
-        const float yc = t0.y + h * 0.26f, r = 5.0f;
-        for (int k : doc.keys()) {
-            const float x = xOf(k);
-            dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc),
-                              IM_COL32(240, 200, 60, 255));
-        }
+}
+
+void drawAnimatorKeys(ImDrawList& dl, const TimelineTrack& t, const EditorState& s) {
+    // The animator's keys: a yellow diamond each at the top of the track; what a fill would
+    // regenerate, tinted: the gaps inside the Shift+drag range, else the gap at the playhead.
+    const EditorDocument& doc = s.doc;
+    const int n = t.n;
+    auto tintGap = [&](const InbetweenGap& g) {
+        dl.AddRectFilled(ImVec2(t.xOf(g.a), t.t0.y + t.h * 0.2f), ImVec2(t.xOf(g.b), t.t0.y + t.h * 0.32f),
+                         IM_COL32(240, 200, 60, 70));
+    };
+    if (s.timelineRange) {
+        const int r0 = std::clamp(s.timelineRange->first, 0, n - 1), r1 = std::clamp(s.timelineRange->second, 0, n - 1);
+        dl.AddRectFilled(ImVec2(t.xOf(r0) - 1.0f, t.t0.y + 1.0f), ImVec2(t.xOf(r1) + 1.0f, t.t1.y - 1.0f),
+                         IM_COL32(120, 170, 255, 45));
+        for (const InbetweenGap& g : doc.keyGapsIn(r0, r1)) tintGap(g);
+    } else if (const std::optional<InbetweenGap> gap = doc.keyGapAt(doc.frame())) {
+        tintGap(*gap);
     }
-    if (path) {
-        // A diamond per key above the edited-frame marks (the selected key in the handle colour).
-        const float yc = t0.y + h * 0.4f, r = 5.0f;
-        for (std::size_t k = 0; k < path->keyFrames.size(); ++k) {
-            const float x = xOf(path->keyFrames[k]);
-            const ImU32 c = int(k) == s.selectedKey ? IM_COL32(255, 77, 56, 255) : IM_COL32(150, 200, 255, 255);
-            dl->AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), c);
-        }
+    const float yc = t.t0.y + t.h * 0.26f, r = 5.0f;
+    for (int k : doc.keys()) {
+        const float x = t.xOf(k);
+        dl.AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc),
+                         IM_COL32(240, 200, 60, 255));
     }
-    // Foot contacts: a thin lane per foot (left above right) at the bottom of the track, green
-    // when held by regeneration, grey when switched off; right-click one to switch it. Shown
-    // while they matter: a path is edited or drags spread over a span.
-    static const ContactSet kNone;
-    const ContactSet& contacts = path || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
+}
+
+void drawPathKeyDiamonds(ImDrawList& dl, const TimelineTrack& t, const EditorState& s) {
+    const auto& path = s.doc.pathEdit();
+    if (!path) return;
+    // A diamond per key above the edited-frame marks (the selected key in the handle colour).
+    const float yc = t.t0.y + t.h * 0.4f, r = 5.0f;
+    for (std::size_t k = 0; k < path->keyFrames.size(); ++k) {
+        const float x = t.xOf(path->keyFrames[k]);
+        const ImU32 c = int(k) == s.selectedKey ? IM_COL32(255, 77, 56, 255) : IM_COL32(150, 200, 255, 255);
+        dl.AddQuadFilled(ImVec2(x, yc - r), ImVec2(x + r, yc), ImVec2(x, yc + r), ImVec2(x - r, yc), c);
+    }
+}
+
+// Draws the foot contact lanes; returns the contact under the mouse, -1 none.
+int drawContactLanes(ImDrawList& dl, const TimelineTrack& t, const ContactSet& contacts, ImVec2 mouse) {
     const float laneH = 4.0f;
-    auto laneY = [&](Effector foot) { return t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * laneH + 1.0f : laneH); };
+    auto laneY = [&](Effector foot) {
+        return t.t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * laneH + 1.0f : laneH);
+    };
     int hoveredContact = -1;
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
     for (std::size_t i = 0; i < contacts.contacts.size(); ++i) {
         const FootContact& c = contacts.contacts[i];
-        const float y = laneY(c.foot), x0 = xOf(c.first), x1 = std::max(xOf(c.last), x0 + 2.0f);
-        dl->AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH),
-                          c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
+        const float y = laneY(c.foot), x0 = t.xOf(c.first), x1 = std::max(t.xOf(c.last), x0 + 2.0f);
+        dl.AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH),
+                         c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
         if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + laneH + 2.0f)
             hoveredContact = static_cast<int>(i);
     }
-    if (hoveredContact >= 0 && ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
-        const FootContact& c = contacts.contacts[hoveredContact];
-        doc.setContactEnabled(static_cast<std::size_t>(hoveredContact), !c.enabled);
-    }
-    const float xc = xOf(doc.frame());
-    dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);
-    dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8),
-                          IM_COL32(90, 170, 255, 255));
-    if (ImGui::IsItemHovered() && !active) {
-        const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
-        const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
-        if (hoveredContact >= 0) {
-            const FootContact& c = contacts.contacts[hoveredContact];
-            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1,
-                              c.last + 1, c.enabled ? "held when regenerating" : "off");
-        } else {
-            ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
-        }
-    }
+    return hoveredContact;
+}
+
+}  // namespace
+
+void TimelinePanel::scrub(EditorState& s, bool active, int mouseFrame) {
+    EditorDocument& doc = s.doc;
     if (active) {
-        const float u = (ImGui::GetIO().MousePos.x - t0.x - pad) / std::max(1.0f, avail.x - 2 * pad);
-        const int f = std::clamp(int(std::lround(u * (n - 1))), 0, n - 1);
+        const int f = mouseFrame;
         if (ImGui::IsItemActivated()) {  // the press: Shift starts a range, a plain click drops it
             selecting_ = ImGui::GetIO().KeyShift;
             rangeAnchor_ = f;
@@ -183,6 +181,64 @@ void TimelinePanel::draw(EditorState& s) {
         scrubbing_ = false;
         selecting_ = false;
     }
+}
+
+void TimelinePanel::draw(EditorState& s) {
+    EditorDocument& doc = s.doc;
+    if (!doc.hasClip()) {
+        ImGui::TextDisabled("No clip");
+        return;
+    }
+    const int n = doc.frameCount();
+    const double fps = doc.clip().fps;
+    // Transport.
+    drawTimelineTransport(s);
+
+    // Track.
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    TimelineTrack track;
+    track.t0 = ImGui::GetCursorScreenPos();
+    track.h = std::max(24.0f, avail.y - 2.0f);
+    ImGui::InvisibleButton("##track", ImVec2(avail.x, track.h));
+    s.recordControl("timeline track");
+    const bool active = ImGui::IsItemActive();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    track.t1 = ImVec2(track.t0.x + avail.x, track.t0.y + track.h);
+    track.width = avail.x;
+    track.n = n;
+    const ImVec2 t0 = track.t0, t1 = track.t1;
+    dl->AddRectFilled(t0, t1, IM_COL32(34, 36, 42, 255), 4.0f);
+    drawTimelineTicks(*dl, track, fps);
+    drawEditedFrameMarks(*dl, track, doc);
+    drawAnimatorKeys(*dl, track, s);
+    drawPathKeyDiamonds(*dl, track, s);
+    // Foot contacts: a thin lane per foot (left above right) at the bottom of the track, green
+    // when held by regeneration, grey when switched off; right-click one to switch it. Shown
+    // while they matter: a path is edited or drags spread over a span.
+    static const ContactSet kNone;
+    const ContactSet& contacts = doc.pathEdit() || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
+    const int hoveredContact = drawContactLanes(*dl, track, contacts, ImGui::GetIO().MousePos);
+    if (hoveredContact >= 0 && ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
+        const FootContact& c = contacts.contacts[hoveredContact];
+        doc.setContactEnabled(static_cast<std::size_t>(hoveredContact), !c.enabled);
+    }
+    const float xc = track.xOf(doc.frame());
+    dl->AddLine(ImVec2(xc, t0.y), ImVec2(xc, t1.y), IM_COL32(90, 170, 255, 255), 2.0f);
+    dl->AddTriangleFilled(ImVec2(xc - 6, t0.y), ImVec2(xc + 6, t0.y), ImVec2(xc, t0.y + 8),
+                          IM_COL32(90, 170, 255, 255));
+    // The frame under the mouse, for the tooltip and the scrub.
+    const int mouseFrame = track.frameAt(ImGui::GetIO().MousePos.x);
+    if (ImGui::IsItemHovered() && !active) {
+        const int f = mouseFrame;
+        if (hoveredContact >= 0) {
+            const FootContact& c = contacts.contacts[hoveredContact];
+            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1,
+                              c.last + 1, c.enabled ? "held when regenerating" : "off");
+        } else {
+            ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
+        }
+    }
+    scrub(s, active, mouseFrame);
 }
 
 }  // namespace mgp::ui

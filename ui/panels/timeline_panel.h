@@ -13,6 +13,8 @@ public:
     static void advance(EditorState& state, double dt);
 
 private:
+    // While the track is held: moves the playhead, or the Shift+drag range, to mouseFrame.
+    void scrub(EditorState& state, bool active, int mouseFrame);
     bool scrubbing_ = false;
     bool selecting_ = false;  // a Shift+drag selecting a range (EditorState::timelineRange)
     int rangeAnchor_ = 0;     // the frame the range drag started on

@@ -165,154 +165,189 @@ bool ViewportPanel::keyScreenPosition(const EditorState& s, int key, float& x, f
     return pathKeyWindowPosition(s, key, x, y);
 }
 
-void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
-    ImGuiIO& io = ImGui::GetIO();
-    const bool shift = io.KeyShift;
-    EditorDocument& doc = s.doc;
-    float dx = mx - lastX_, dy = my - lastY_;
-    if (!std::isfinite(dx) || !std::isfinite(dy)) dx = dy = 0.0f;
-    movedThisFrame_ = dx != 0.0f || dy != 0.0f;
+// What the mouse can pick this frame: effector handles, path keys and (with no gesture under way)
+// the rotate gizmo.
+struct ViewportPanel::Pickables {
+    std::vector<render::Handle> handles, keys;
+    render::RotateGizmo gizmo;
+};
 
-    // Hover (only when not in another mode).
-    std::vector<render::Handle> handles;
+ViewportPanel::Pickables ViewportPanel::collectPickables(const EditorState& s) const {
+    const EditorDocument& doc = s.doc;
+    Pickables picks;
     if (doc.hasClip()) {
         FkState fk;
         forwardKinematics(doc.clip().skeleton, doc.currentPose(), fk);
-        handles = render::effectorHandles(doc.clip().skeleton, fk);
+        picks.handles = render::effectorHandles(doc.clip().skeleton, fk);
     }
-    const std::vector<render::Handle> keys = keyHandles(s);
-    const render::RotateGizmo gizmo = mode_ == Mode::kNone ? viewportGizmo(s) : render::RotateGizmo{};
-    if (mode_ == Mode::kNone) {
-        s.hoveredHandle = -1;
-        s.hoveredKey = -1;
-        s.gizmoRing = -1;
-        // The gizmo's rings are drawn over everything, so they win over handles and keys.
-        if (hovered && gizmo.joint >= 0) s.gizmoRing = render::pickGizmoRing(gizmo, s.camera, mx, my, width_, height_);
-        if (hovered && s.gizmoRing < 0) {
-            // Effector handles first: a key lying on a handle must not hide it.
-            const int i = render::pickHandleAtPixel(handles, s.camera, mx, my, width_, height_, 2.5f);
-            if (i >= 0) s.hoveredHandle = handles[i].id;
-            const int k = i >= 0 ? -1 : render::pickHandleAtPixel(keys, s.camera, mx, my, width_, height_, 2.5f);
-            if (k >= 0) s.hoveredKey = keys[k].id;
-        }
-    }
+    picks.keys = keyHandles(s);
+    picks.gizmo = mode_ == Mode::kNone ? viewportGizmo(s) : render::RotateGizmo{};
+    return picks;
+}
 
-    if (mode_ == Mode::kNone && hovered) {
-        if (io.MouseClicked[0]) {
-            if (s.gizmoRing >= 0) {
-                mode_ = Mode::kRotateRing;
-                ringGizmo_ = gizmo;
-                ringAxis_ = s.gizmoRing;
-                ringStartAngles_ = doc.currentPose().anglesDeg[gizmo.joint];
-                ringSweepDeg_ = 0.0;
-                ringFrame_ = doc.frame();
-                ringUndoCount_ = doc.history().undoCount();
-                lastX_ = mx;  // the sweep starts at the press, not where the mouse was a frame ago
-                lastY_ = my;
-                s.playing = false;
-            } else if (s.hoveredHandle >= 0 && io.KeyAlt) {
-                // Alt+click lets go of what an earlier gesture placed (edit/held_effectors.h).
-                s.request("release", {effectorName(static_cast<Effector>(s.hoveredHandle))});
-            } else if (s.hoveredHandle >= 0) {
-                const auto e = static_cast<Effector>(s.hoveredHandle);
-                const Eigen::Vector3d start = doc.effectorPosition(e);
-                const std::string err = doc.beginDrag(e);
-                if (err.empty()) {
-                    mode_ = Mode::kDragHandle;
-                    s.dragStartCm = start;
-                    s.dragAxis = -1;
-                    s.selected = e;
-                    s.playing = false;
-                } else {
-                    s.setStatus(err, true);
-                }
-            } else if (s.hoveredKey >= 0) {
-                mode_ = Mode::kDragKey;
-                dragKey_ = s.hoveredKey;
-                dragKeyStartOffset_ = doc.pathEdit()->keyOffsetsCm[dragKey_];
-                s.selectedKey = dragKey_;
-                s.playing = false;
-            } else {
-                mode_ = shift ? Mode::kPan : Mode::kOrbit;
-                pressX_ = mx;
-                pressY_ = my;
-            }
-        } else if (io.MouseClicked[2]) {
-            mode_ = Mode::kPan;
-        } else if (io.MouseClicked[1] && s.hoveredHandle >= 0) {
-            const auto e = static_cast<Effector>(s.hoveredHandle);
-            doc.togglePin(e);
-            s.setStatus(std::string(doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
-        }
-        if (io.MouseWheel != 0.0f) s.camera.zoom(std::pow(0.88f, io.MouseWheel));
+void ViewportPanel::updateHover(EditorState& s, const Pointer& p, const Pickables& picks, bool hovered) const {
+    const std::vector<render::Handle>& handles = picks.handles;
+    const std::vector<render::Handle>& keys = picks.keys;
+    s.hoveredHandle = -1;
+    s.hoveredKey = -1;
+    s.gizmoRing = -1;
+    // The gizmo's rings are drawn over everything, so they win over handles and keys.
+    if (hovered && picks.gizmo.joint >= 0)
+        s.gizmoRing = render::pickGizmoRing(picks.gizmo, s.camera, p.mx, p.my, width_, height_);
+    if (hovered && s.gizmoRing < 0) {
+        // Effector handles first: a key lying on a handle must not hide it.
+        const int i = render::pickHandleAtPixel(handles, s.camera, p.mx, p.my, width_, height_, 2.5f);
+        if (i >= 0) s.hoveredHandle = handles[i].id;
+        const int k = i >= 0 ? -1 : render::pickHandleAtPixel(keys, s.camera, p.mx, p.my, width_, height_, 2.5f);
+        if (k >= 0) s.hoveredKey = keys[k].id;
     }
+}
 
+void ViewportPanel::pressMouse(EditorState& s, const Pointer& p, const render::RotateGizmo& gizmo) {
+    const ImGuiIO& io = ImGui::GetIO();
+    EditorDocument& doc = s.doc;
+    if (io.MouseClicked[0]) {
+        pressLeft(s, p, gizmo);
+    } else if (io.MouseClicked[2]) {
+        mode_ = Mode::kPan;
+    } else if (io.MouseClicked[1] && s.hoveredHandle >= 0) {
+        const auto e = static_cast<Effector>(s.hoveredHandle);
+        doc.togglePin(e);
+        s.setStatus(std::string(doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
+    }
+    if (io.MouseWheel != 0.0f) s.camera.zoom(std::pow(0.88f, io.MouseWheel));
+}
+
+void ViewportPanel::pressLeft(EditorState& s, const Pointer& p, const render::RotateGizmo& gizmo) {
+    EditorDocument& doc = s.doc;
+    if (s.gizmoRing >= 0) {
+        mode_ = Mode::kRotateRing;
+        ringGizmo_ = gizmo;
+        ringAxis_ = s.gizmoRing;
+        ringStartAngles_ = doc.currentPose().anglesDeg[gizmo.joint];
+        ringSweepDeg_ = 0.0;
+        ringFrame_ = doc.frame();
+        ringUndoCount_ = doc.history().undoCount();
+        lastX_ = p.mx;  // the sweep starts at the press, not where the mouse was a frame ago
+        lastY_ = p.my;
+        s.playing = false;
+    } else if (s.hoveredHandle >= 0 && ImGui::GetIO().KeyAlt) {
+        // Alt+click lets go of what an earlier gesture placed (edit/held_effectors.h).
+        s.request("release", {effectorName(static_cast<Effector>(s.hoveredHandle))});
+    } else if (s.hoveredHandle >= 0) {
+        const auto e = static_cast<Effector>(s.hoveredHandle);
+        const Eigen::Vector3d start = doc.effectorPosition(e);
+        const std::string err = doc.beginDrag(e);
+        if (err.empty()) {
+            mode_ = Mode::kDragHandle;
+            s.dragStartCm = start;
+            s.dragAxis = -1;
+            s.selected = e;
+            s.playing = false;
+        } else {
+            s.setStatus(err, true);
+        }
+    } else if (s.hoveredKey >= 0) {
+        mode_ = Mode::kDragKey;
+        dragKey_ = s.hoveredKey;
+        dragKeyStartOffset_ = doc.pathEdit()->keyOffsetsCm[dragKey_];
+        s.selectedKey = dragKey_;
+        s.playing = false;
+    } else {
+        mode_ = p.shift ? Mode::kPan : Mode::kOrbit;
+        pressX_ = p.mx;
+        pressY_ = p.my;
+    }
+}
+
+void ViewportPanel::continueGesture(EditorState& s, const Pointer& p) {
+    const ImGuiIO& io = ImGui::GetIO();
+    EditorDocument& doc = s.doc;
     switch (mode_) {
         case Mode::kOrbit:
             if (!io.MouseDown[0]) {
                 mode_ = Mode::kNone;
-                if (jointPicking_ && std::abs(mx - pressX_) + std::abs(my - pressY_) < 4.0f)
-                    pickedJoint_ = pickJoint(s, mx, my);
+                if (jointPicking_ && std::abs(p.mx - pressX_) + std::abs(p.my - pressY_) < 4.0f)
+                    pickedJoint_ = pickJoint(s, p.mx, p.my);
             } else if (movedThisFrame_)
-                s.camera.orbit(-dx * 0.4f, dy * 0.4f);
+                s.camera.orbit(-p.dx * 0.4f, p.dy * 0.4f);
             break;
         case Mode::kPan:
             if (!io.MouseDown[0] && !io.MouseDown[2])
                 mode_ = Mode::kNone;
             else if (movedThisFrame_)
-                s.camera.pan(dx, dy, height_);
+                s.camera.pan(p.dx, p.dy, height_);
             break;
-        case Mode::kDragHandle:
-            if (!doc.dragging()) {
-                mode_ = Mode::kNone;
-            } else if (!io.MouseDown[0]) {
-                doc.endDrag();
-                mode_ = Mode::kNone;
-                const std::string accepted = "accepted pose for frame " + std::to_string(doc.frame() + 1);
-                if (doc.adaptivePending() > 0)
-                    s.setStatusWhile(
-                        accepted + " (adaptive update running)", [d = &doc] { return d->adaptivePending() > 0; },
-                        accepted + " (adaptive update done)");
-                else
-                    s.setStatus(accepted);
-            } else if (movedThisFrame_) {
-                Eigen::Vector3d hit;
-                const bool ok = s.dragAxis >= 0
-                                    ? dragAxisPoint(s.camera, mx, my, width_, height_, s.dragStartCm, s.dragAxis, hit)
-                                    : dragPlanePoint(s.camera, mx, my, width_, height_, doc.dragTarget(), shift, hit);
-                const PhaseTimer timer(s.profile, s.profile.solveSeconds);
-                if (ok) doc.dragTo(hit, 50);
-            } else {
-                const PhaseTimer timer(s.profile, s.profile.solveSeconds);
-                doc.refine(50);  // the user holds still: keep converging
-            }
-            break;
-        case Mode::kDragKey:
-            // The key applies live (the path is only targets; Regenerate solves poses later).
-            if (!doc.pathEdit() || dragKey_ >= static_cast<int>(doc.pathEdit()->keyFrames.size())) {
-                mode_ = Mode::kNone;
-            } else if (!io.MouseDown[0]) {
-                mode_ = Mode::kNone;
-                const Eigen::Vector3d o = doc.pathEdit()->keyOffsetsCm[dragKey_];
-                char buf[96];
-                std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(),
-                              o.y(), o.z());
-                s.setStatus(buf);
-            } else if (movedThisFrame_) {
-                Eigen::Vector3d hit;
-                if (dragPlanePoint(s.camera, mx, my, width_, height_, doc.pathKeyPosition(dragKey_), shift, hit)) {
-                    const std::string err = doc.setPathKeyPosition(dragKey_, hit);
-                    if (!err.empty()) s.setStatus(err, true);
-                }
-            }
-            break;
+        case Mode::kDragHandle: continueHandleDrag(s, p); break;
+        case Mode::kDragKey: continueKeyDrag(s, p); break;
         case Mode::kRotateRing:
             if (movedThisFrame_ || !io.MouseDown[0] || doc.frame() != ringFrame_ ||
                 doc.history().undoCount() != ringUndoCount_)
-                rotateRing(s, mx, my, io.KeyCtrl, !io.MouseDown[0]);
+                rotateRing(s, p.mx, p.my, io.KeyCtrl, !io.MouseDown[0]);
             break;
         case Mode::kNone: break;
     }
+}
+
+void ViewportPanel::continueHandleDrag(EditorState& s, const Pointer& p) {
+    EditorDocument& doc = s.doc;
+    if (!doc.dragging()) {
+        mode_ = Mode::kNone;
+    } else if (!ImGui::GetIO().MouseDown[0]) {
+        doc.endDrag();
+        mode_ = Mode::kNone;
+        const std::string accepted = "accepted pose for frame " + std::to_string(doc.frame() + 1);
+        if (doc.adaptivePending() > 0)
+            s.setStatusWhile(
+                accepted + " (adaptive update running)", [d = &doc] { return d->adaptivePending() > 0; },
+                accepted + " (adaptive update done)");
+        else
+            s.setStatus(accepted);
+    } else if (movedThisFrame_) {
+        Eigen::Vector3d hit;
+        const bool ok = s.dragAxis >= 0
+                            ? dragAxisPoint(s.camera, p.mx, p.my, width_, height_, s.dragStartCm, s.dragAxis, hit)
+                            : dragPlanePoint(s.camera, p.mx, p.my, width_, height_, doc.dragTarget(), p.shift, hit);
+        const PhaseTimer timer(s.profile, s.profile.solveSeconds);
+        if (ok) doc.dragTo(hit, 50);
+    } else {
+        const PhaseTimer timer(s.profile, s.profile.solveSeconds);
+        doc.refine(50);  // the user holds still: keep converging
+    }
+}
+
+void ViewportPanel::continueKeyDrag(EditorState& s, const Pointer& p) {
+    EditorDocument& doc = s.doc;
+    // The key applies live (the path is only targets; Regenerate solves poses later).
+    if (!doc.pathEdit() || dragKey_ >= static_cast<int>(doc.pathEdit()->keyFrames.size())) {
+        mode_ = Mode::kNone;
+    } else if (!ImGui::GetIO().MouseDown[0]) {
+        mode_ = Mode::kNone;
+        const Eigen::Vector3d o = doc.pathEdit()->keyOffsetsCm[dragKey_];
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(), o.y(),
+                      o.z());
+        s.setStatus(buf);
+    } else if (movedThisFrame_) {
+        Eigen::Vector3d hit;
+        if (dragPlanePoint(s.camera, p.mx, p.my, width_, height_, doc.pathKeyPosition(dragKey_), p.shift, hit)) {
+            const std::string err = doc.setPathKeyPosition(dragKey_, hit);
+            if (!err.empty()) s.setStatus(err, true);
+        }
+    }
+}
+
+void ViewportPanel::interact(EditorState& s, float mx, float my, bool hovered) {
+    Pointer p{mx, my, mx - lastX_, my - lastY_, ImGui::GetIO().KeyShift};
+    if (!std::isfinite(p.dx) || !std::isfinite(p.dy)) p.dx = p.dy = 0.0f;
+    movedThisFrame_ = p.dx != 0.0f || p.dy != 0.0f;
+
+    // Hover (only when not in another mode), then a press starts a gesture and the gesture under
+    // way follows the mouse.
+    const Pickables picks = collectPickables(s);
+    if (mode_ == Mode::kNone) updateHover(s, p, picks, hovered);
+    if (mode_ == Mode::kNone && hovered) pressMouse(s, p, picks.gizmo);
+    continueGesture(s, p);
     lastX_ = mx;
     lastY_ = my;
 }
@@ -382,24 +417,41 @@ int ViewportPanel::pickJoint(const EditorState& s, float mx, float my) const {
     return i < 0 ? -1 : joints[i];
 }
 
-void ViewportPanel::draw(EditorState& s) {
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    ImVec2 avail = ImGui::GetContentRegionAvail();
-    const int w = std::max(16, int(avail.x)), h = std::max(16, int(avail.y));
-    ensureTarget(w, h);
-    s.viewportX = origin.x;
-    s.viewportY = origin.y;
-    s.viewportWidth = w;
-    s.viewportHeight = h;
-    if (s.cameraNeedsFraming || s.requestFrameCamera) {
-        frameCharacter(s);
-        s.requestFrameCamera = false;
+namespace {
+// What the viewport shows, as numbers: the scene is redrawn only when they change.
+std::vector<float> viewportSceneSignature(const render::Scene& scene, const render::OrbitCamera& camera, int rw,
+                                          int rh) {
+    std::vector<float> sig = {float(rw),     float(rh),       camera.targetCm.x, camera.targetCm.y, camera.targetCm.z,
+                              camera.yawDeg, camera.pitchDeg, camera.distanceCm, camera.fovYDeg};
+    auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
+    for (const render::Figure& f : scene.figures) {
+        sig.insert(sig.end(), {f.ghost ? 1.0f : 0.0f, f.ghostAlpha});
+        addVec(f.ghostTint);
+        addVec(f.tint);
+        sig.push_back(f.tintWeight);
+        for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
     }
-    ImGui::InvisibleButton(
-        "##viewport", ImVec2(float(w), float(h)),
-        ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
-    const bool hovered = ImGui::IsItemHovered();
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
+    for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
+    // Counts first: a pin, a held ring and a footprint at the same point are different pictures.
+    sig.insert(sig.end(), {float(scene.pins.size()), float(scene.heldMarks.size()), float(scene.footprints.size())});
+    for (const render::Pin& p : scene.pins) addVec(p.positionCm);
+    for (const render::HeldMark& m : scene.heldMarks) addVec(m.positionCm);
+    for (const render::Footprint& f : scene.footprints) addVec(f.positionCm);
+    for (const render::Path& p : scene.paths) {
+        sig.insert(sig.end(),
+                   {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
+                    p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
+        addVec(p.colour);
+        for (const glm::vec3& v : p.pointsCm) addVec(v);
+        for (const glm::vec3& v : p.keysCm) addVec(v);
+    }
+    sig.push_back(scene.groundHeightCm);
+    return sig;
+}
+}  // namespace
+
+void ViewportPanel::keepCharacterInView(EditorState& s) {
     // Follow: the camera keeps the character's root (projected on the ground) where it was, so a
     // walk stays in view during playback and scrubbing.
     if (std::exchange(s.cameraRestored, false)) followValid_ = false;  // the camera is as saved
@@ -413,95 +465,67 @@ void ViewportPanel::draw(EditorState& s) {
         followClip_ = s.doc.clip().name;
         followValid_ = root.allFinite();
     }
-    // The mouse can leave the window (ImGui reports -FLT_MAX): no camera or drag update then.
-    if (s.doc.hasClip() && ImGui::IsMousePosValid(&mouse)) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
+}
 
-    // Keys that act on the viewport.
-    if (!s.keysBlocked) {
-        if (chordPressed('F')) frameCharacter(s);
-        // X, Y or Z during a handle drag: move along that world axis only (again: free).
-        for (int a = 0; a < 3; ++a)
-            if (mode_ == Mode::kDragHandle && chordPressed("XYZ"[a])) s.dragAxis = s.dragAxis == a ? -1 : a;
-        // P acts on the handle under the mouse only: over the floor it would pin what the user
-        // does not see they picked (Model > Pin and the `pin` action name the effector).
-        if (chordPressed('P')) {
-            if (s.hoveredHandle >= 0) {
-                const auto e = static_cast<Effector>(s.hoveredHandle);
-                s.doc.togglePin(e);
-                s.setStatus(std::string(s.doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
-            } else {
-                s.setStatus("P pins the handle under the mouse: point at a hand, a foot or the head");
-            }
-        }
-        if (chordPressed(256 /*Escape*/) && s.doc.dragging()) {
-            s.doc.cancelDrag();
-            mode_ = Mode::kNone;
-            s.setStatus("drag cancelled");
-        }
-        if (chordPressed(256 /*Escape*/) && mode_ == Mode::kDragKey) {
-            s.doc.setPathKeyOffset(dragKey_, dragKeyStartOffset_);
-            mode_ = Mode::kNone;
-            s.setStatus("key drag cancelled");
-        }
-        if (chordPressed(256 /*Escape*/) && mode_ == Mode::kRotateRing) {
-            s.posePreview.reset();
-            s.dragReadout.clear();
-            mode_ = Mode::kNone;
-            s.setStatus("rotation cancelled");
+void ViewportPanel::handleViewportKeys(EditorState& s) {
+    if (chordPressed('F')) frameCharacter(s);
+    // X, Y or Z during a handle drag: move along that world axis only (again: free).
+    for (int a = 0; a < 3; ++a)
+        if (mode_ == Mode::kDragHandle && chordPressed("XYZ"[a])) s.dragAxis = s.dragAxis == a ? -1 : a;
+    // P acts on the handle under the mouse only: over the floor it would pin what the user
+    // does not see they picked (Model > Pin and the `pin` action name the effector).
+    if (chordPressed('P')) {
+        if (s.hoveredHandle >= 0) {
+            const auto e = static_cast<Effector>(s.hoveredHandle);
+            s.doc.togglePin(e);
+            s.setStatus(std::string(s.doc.pinned(e) ? "pinned " : "unpinned ") + effectorName(e));
+        } else {
+            s.setStatus("P pins the handle under the mouse: point at a hand, a foot or the head");
         }
     }
-
-    if (s.doc.hasClip()) {
-        const render::Scene scene = buildScene(s);
-        // Redraw only when what the viewport shows changed (llvmpipe spends most of a frame
-        // rasterising the scene; an idle editor should not).
-        // While the user drags, orbits or plays, the scene is drawn at a lower resolution into the
-        // corner of the target and scaled up (as Blender does during navigation); at rest it is
-        // drawn at full resolution again.
-        const bool moving = mode_ != Mode::kNone || s.playing || s.doc.latentDragging();
-        const float scale = moving ? kMovingScale : 1.0f;
-        rw_ = std::max(16, int(w * scale));
-        rh_ = std::max(16, int(h * scale));
-        std::vector<float> sig = {float(rw_),          float(rh_),          s.camera.targetCm.x,
-                                  s.camera.targetCm.y, s.camera.targetCm.z, s.camera.yawDeg,
-                                  s.camera.pitchDeg,   s.camera.distanceCm, s.camera.fovYDeg};
-        auto addVec = [&](const glm::vec3& v) { sig.insert(sig.end(), {v.x, v.y, v.z}); };
-        for (const render::Figure& f : scene.figures) {
-            sig.insert(sig.end(), {f.ghost ? 1.0f : 0.0f, f.ghostAlpha});
-            addVec(f.ghostTint);
-            addVec(f.tint);
-            sig.push_back(f.tintWeight);
-            for (const render::BoneSegment& b : f.bones) addVec(b.startCm), addVec(b.endCm);
-        }
-        for (const render::Handle& hd : scene.handles) addVec(hd.positionCm), sig.push_back(float(hd.state));
-        for (const render::Target& t : scene.targets) addVec(t.positionCm), sig.push_back(t.reached ? 1.0f : 0.0f);
-        // Counts first: a pin, a held ring and a footprint at the same point are different pictures.
-        sig.insert(sig.end(),
-                   {float(scene.pins.size()), float(scene.heldMarks.size()), float(scene.footprints.size())});
-        for (const render::Pin& p : scene.pins) addVec(p.positionCm);
-        for (const render::HeldMark& m : scene.heldMarks) addVec(m.positionCm);
-        for (const render::Footprint& f : scene.footprints) addVec(f.positionCm);
-        for (const render::Path& p : scene.paths) {
-            sig.insert(sig.end(),
-                       {float(p.pointsCm.size()), float(p.currentPoint), float(p.hoveredKey), float(p.selectedKey),
-                        p.radiusCm, p.tickRadiusCm, p.minKeyRadiusCm, p.onTop ? 1.0f : 0.0f});
-            addVec(p.colour);
-            for (const glm::vec3& v : p.pointsCm) addVec(v);
-            for (const glm::vec3& v : p.keysCm) addVec(v);
-        }
-        sig.push_back(scene.groundHeightCm);
-        lastScene_ = scene;
-        if (sig != lastSignature_) {
-            const PhaseTimer timer(s.profile, s.profile.sceneSeconds);
-            renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            lastSignature_ = std::move(sig);
-            ++sceneDraws_;
-        }
+    if (chordPressed(256 /*Escape*/) && s.doc.dragging()) {
+        s.doc.cancelDrag();
+        mode_ = Mode::kNone;
+        s.setStatus("drag cancelled");
     }
+    if (chordPressed(256 /*Escape*/) && mode_ == Mode::kDragKey) {
+        s.doc.setPathKeyOffset(dragKey_, dragKeyStartOffset_);
+        mode_ = Mode::kNone;
+        s.setStatus("key drag cancelled");
+    }
+    if (chordPressed(256 /*Escape*/) && mode_ == Mode::kRotateRing) {
+        s.posePreview.reset();
+        s.dragReadout.clear();
+        mode_ = Mode::kNone;
+        s.setStatus("rotation cancelled");
+    }
+}
+
+void ViewportPanel::redrawSceneIfChanged(EditorState& s, int w, int h) {
+    const render::Scene scene = buildScene(s);
+    // Redraw only when what the viewport shows changed (llvmpipe spends most of a frame
+    // rasterising the scene; an idle editor should not).
+    // While the user drags, orbits or plays, the scene is drawn at a lower resolution into the
+    // corner of the target and scaled up (as Blender does during navigation); at rest it is
+    // drawn at full resolution again.
+    const bool moving = mode_ != Mode::kNone || s.playing || s.doc.latentDragging();
+    const float scale = moving ? kMovingScale : 1.0f;
+    rw_ = std::max(16, int(w * scale));
+    rh_ = std::max(16, int(h * scale));
+    std::vector<float> sig = viewportSceneSignature(scene, s.camera, rw_, rh_);
+    lastScene_ = scene;
+    if (sig != lastSignature_) {
+        const PhaseTimer timer(s.profile, s.profile.sceneSeconds);
+        renderer_->draw(scene, s.camera, rw_, rh_, fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        lastSignature_ = std::move(sig);
+        ++sceneDraws_;
+    }
+}
+
+void ViewportPanel::drawMouseHints(EditorState& s, float x0, float y0) const {
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    presentX_ = int(origin.x), presentY_ = int(origin.y), presentW_ = w,
-    presentH_ = h;  // presentTo() copies the scene there
+    const ImVec2 origin(x0, y0);
     // Overlay: what the mouse does.
     const char* hint =
         mode_ == Mode::kDragHandle
@@ -527,8 +551,9 @@ void ViewportPanel::draw(EditorState& s) {
     } else {
         s.dragReadout.clear();
     }
-    drawBalance(s, origin.x, origin.y + h);
-    drawRangeLegend(s, origin.y, origin.x + w, origin.y + h);
+}
+
+void ViewportPanel::showHoverTooltips(const EditorState& s) const {
     if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 &&
         s.gizmoJoint < s.doc.clip().skeleton.jointCount())
         ImGui::SetTooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
@@ -547,6 +572,40 @@ void ViewportPanel::draw(EditorState& s) {
         ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1,
                           s.doc.pathEdit()->keyFrames[key] + 1, o.x(), o.y(), o.z());
     }
+}
+
+void ViewportPanel::draw(EditorState& s) {
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    const int w = std::max(16, int(avail.x)), h = std::max(16, int(avail.y));
+    ensureTarget(w, h);
+    s.viewportX = origin.x;
+    s.viewportY = origin.y;
+    s.viewportWidth = w;
+    s.viewportHeight = h;
+    if (s.cameraNeedsFraming || s.requestFrameCamera) {
+        frameCharacter(s);
+        s.requestFrameCamera = false;
+    }
+    ImGui::InvisibleButton(
+        "##viewport", ImVec2(float(w), float(h)),
+        ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+    const bool hovered = ImGui::IsItemHovered();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    keepCharacterInView(s);
+    // The mouse can leave the window (ImGui reports -FLT_MAX): no camera or drag update then.
+    if (s.doc.hasClip() && ImGui::IsMousePosValid(&mouse)) interact(s, mouse.x - origin.x, mouse.y - origin.y, hovered);
+
+    // Keys that act on the viewport.
+    if (!s.keysBlocked) handleViewportKeys(s);
+
+    if (s.doc.hasClip()) redrawSceneIfChanged(s, w, h);
+    presentX_ = int(origin.x), presentY_ = int(origin.y), presentW_ = w,
+    presentH_ = h;  // presentTo() copies the scene there
+    drawMouseHints(s, origin.x, origin.y);
+    drawBalance(s, origin.x, origin.y + h);
+    drawRangeLegend(s, origin.y, origin.x + w, origin.y + h);
+    showHoverTooltips(s);
 }
 
 // The balance overlay: the planted feet's support polygon on the ground (yellow), the centre of mass with a line down

@@ -50,6 +50,25 @@ public:
 private:
     void ensureTarget(int w, int h);
     void interact(EditorState& state, float mx, float my, bool hovered);
+    // The phases of interact(): the mouse in viewport pixels, its motion since the last frame, Shift.
+    struct Pointer {
+        float mx, my, dx, dy;
+        bool shift;
+    };
+    struct Pickables;
+    Pickables collectPickables(const EditorState& state) const;
+    void updateHover(EditorState& state, const Pointer& p, const Pickables& picks, bool hovered) const;
+    void pressMouse(EditorState& state, const Pointer& p, const render::RotateGizmo& gizmo);
+    void pressLeft(EditorState& state, const Pointer& p, const render::RotateGizmo& gizmo);
+    void continueGesture(EditorState& state, const Pointer& p);
+    void continueHandleDrag(EditorState& state, const Pointer& p);
+    void continueKeyDrag(EditorState& state, const Pointer& p);
+    // The phases of draw().
+    void keepCharacterInView(EditorState& state);
+    void handleViewportKeys(EditorState& state);
+    void redrawSceneIfChanged(EditorState& state, int w, int h);
+    void drawMouseHints(EditorState& state, float x0, float y0) const;  // top-left corner at (x0, y0)
+    void showHoverTooltips(const EditorState& state) const;
     render::Scene buildScene(const EditorState& state) const;
     // The animated joint whose bone is under viewport pixel (mx, my) (within its drawn radius
     // + 1 cm), -1 none.
