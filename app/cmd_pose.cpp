@@ -1,10 +1,11 @@
 // `motiongp pose MODEL --frame T --target EFF=dx,dy,dz[@STRENGTH] ... [--pin EFF ...]
-//  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--out F.bvh|.glb|.gltf|.fbx]
+//  [--release EFF ...] [--solver learned|lbfgs|plain] [--adaptive --out-model MODEL2] [--out
+//  F.bvh|.glb|.gltf|.fbx]
 //  [--json]`:
-// one IK solve on a frame of one of the model's source clips (--clip NAME, default the first; --frame
-// counts within it). Offsets are cm from the effector's position
-// in that frame. An unreachable target is a result (reached: false, exit 0), not an error; so is
-// an adaptive update the admission rule refuses (adaptive.refused: true, with the reason).
+// one IK solve on a frame of one of the model's source clips (--clip NAME, default the first;
+// --frame counts within it). Offsets are cm from the effector's position in that frame. An
+// unreachable target is a result (reached: false, exit 0), not an error; so is an adaptive update
+// the admission rule refuses (adaptive.refused: true, with the reason).
 //
 // Solvers: learned (default) is the constrained learned IK (core/ik/constrained_ik.h: hard pins,
 // per-target strength); lbfgs is the paper's λ-penalty L-BFGS (core/ik/learned_ik.h), kept for
@@ -60,7 +61,7 @@ nlohmann::json verdictJson(const AdmissionVerdict& v, const gp::GpModel& model) 
             {"training_rows", v.range.rows}};
 }
 
-int runPose(const PoseOptions& o) {
+void checkPoseOptions(const PoseOptions& o) {
     if (o.solver != "learned" && o.solver != "lbfgs" && o.solver != "plain")
         throw UsageError("expected --solver learned, lbfgs or plain, found '" + o.solver + "'");
     if (o.adaptive && o.outModel.empty()) throw UsageError("expected --out-model MODEL2 with --adaptive, found none");
@@ -70,14 +71,10 @@ int runPose(const PoseOptions& o) {
     // The learned solver's validate() judges the value itself.
     if (o.locality != kDefaultLocality && o.solver != "learned")
         throw UsageError("expected --solver learned with --locality, found --solver " + o.solver);
-    const auto t0 = std::chrono::steady_clock::now();
-    int clipIndex = 0;
-    const gp::ModelVersionPtr version = loadModelVersion(o.model, o.clip, &clipIndex);
-    const gp::GpModel& m = *version->model;
-    const Clip& clip = m.clip;
-    const int frame = frameIndexFromCli(clip, o.frame);
-    FkState fk;
-    forwardKinematics(clip.skeleton, clip.frames[frame], fk);
+}
+
+// --target and --pin, placed from the effectors' positions in the frame (`fk`).
+std::vector<IkConstraint> requestedConstraints(const PoseOptions& o, const Clip& clip, const FkState& fk) {
     std::vector<IkConstraint> constraints;
     for (const std::string& t : o.targets) {
         const TargetSpec spec = parseTargetWithStrength(t);
@@ -88,8 +85,13 @@ int runPose(const PoseOptions& o) {
         const Effector eff = parseEffectorOption(p, "--pin");
         constraints.push_back({eff, effectorCm(clip.skeleton, fk, eff), true});
     }
-    // Feet in ground contact on this frame are held like pins unless released (or already
-    // constrained): the contact rule of core/motion/foot_contacts.h.
+    return constraints;
+}
+
+// Feet in ground contact on this frame are held like pins unless released (or already
+// constrained): the contact rule of core/motion/foot_contacts.h. Returns the clip's contacts.
+ContactSet holdContactFeet(const PoseOptions& o, const Clip& clip, const FkState& fk, int frame,
+                           std::vector<IkConstraint>& constraints, nlohmann::json& j) {
     bool released[kEffectorCount] = {};
     for (const std::string& r : o.releases) {
         const Effector eff = parseEffectorOption(r, "--release");
@@ -97,140 +99,192 @@ int runPose(const PoseOptions& o) {
             throw UsageError("expected --release lfoot or rfoot, found '" + r + "'");
         released[static_cast<int>(eff)] = true;
     }
-    nlohmann::json j;
     j["contact_pins"] = nlohmann::json::array();
-    const ContactSet contacts = detectFootContacts(clip);
+    ContactSet contacts = detectFootContacts(clip);
     for (const IkConstraint& pin : contactPinsAt(clip, fk, contacts, frame, constraints, released)) {
         constraints.push_back(pin);
         j["contact_pins"].push_back(effectorName(pin.effector));
     }
+    return contacts;
+}
+
+// What a solve gives, whichever solver ran (x, y, sigma2 and lik: the learned solvers only).
+struct PoseSolution {
     Pose pose;
     std::vector<IkConstraintResult> results;
     bool reached = false;
-    if (o.solver == "plain") {
-        PlainIkJob job;
-        job.skeleton = &clip.skeleton;
-        job.start = clip.frames[frame];
-        job.constraints = constraints;
-        if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
-        job.solve();
-        pose = job.pose;
-        results = job.results;
-        reached = job.reached;
-        j["x"] = nullptr;
-        j["sigma2"] = nullptr;
-        j["L_IK"] = nullptr;
-        j["diagnostic"] = job.diagnostic;
+    Eigen::VectorXd x, y;
+    double sigma2 = 0.0, lik = 0.0;
+};
+
+void solvePlainPose(const Clip& clip, int frame, const std::vector<IkConstraint>& constraints, PoseSolution& s,
+                    nlohmann::json& j) {
+    PlainIkJob job;
+    job.skeleton = &clip.skeleton;
+    job.start = clip.frames[frame];
+    job.constraints = constraints;
+    if (const std::string problem = job.validate(); !problem.empty()) throw UsageError(problem);
+    job.solve();
+    s.pose = job.pose;
+    s.results = job.results;
+    s.reached = job.reached;
+    j["x"] = nullptr;
+    j["sigma2"] = nullptr;
+    j["L_IK"] = nullptr;
+    j["diagnostic"] = job.diagnostic;
+}
+
+// The constrained learned solver (--solver learned) or the paper's penalty L-BFGS (lbfgs).
+void solveLearnedPose(const PoseOptions& o, const gp::ModelVersionPtr& version, int frame,
+                      const std::vector<IkConstraint>& constraints, const ContactSet& contacts, PoseSolution& s,
+                      nlohmann::json& j) {
+    const Clip& clip = version->model->clip;
+    // Both learned solvers take the same request fields and report the same result fields.
+    auto solveWith = [&](auto& solver, auto req) {
+        req.start = clip.frames[frame];
+        req.startX = latentStartForFrame(*version, frame);
+        req.constraints = constraints;
+        req.maxIterations = o.iterations;
+        if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
+        const auto r = solver.solve(req);
+        s.pose = r.pose;
+        s.results = r.constraints;
+        s.reached = r.reached;
+        s.x = r.x;
+        s.y = r.y;
+        s.sigma2 = r.sigma2;
+        s.lik = r.lik;
+        j["diagnostic"] = r.diagnostic;
+        j["converged"] = r.converged;
+        j["iterations"] = r.iterations;
+        j["evaluations"] = r.evaluations;
+        j["objective"] = r.objective;
+        return r;
+    };
+    if (o.solver == "learned") {
+        ConstrainedIkSolver solver(version);
+        ConstrainedIkRequest request;
+        request.locality = o.locality;
+        request.floorCm = contacts.floorCm;
+        j["locality"] = o.locality;
+        j["stop"] = ikStopName(solveWith(solver, request).stop);
     } else {
-        Eigen::VectorXd x, y;
-        double sigma2 = 0.0, lik = 0.0;
-        // Both learned solvers take the same request fields and report the same result fields.
-        auto solveWith = [&](auto& solver, auto req) {
-            req.start = clip.frames[frame];
-            req.startX = latentStartForFrame(*version, frame);
-            req.constraints = constraints;
-            req.maxIterations = o.iterations;
-            if (const std::string problem = solver.validate(req); !problem.empty()) throw UsageError(problem);
-            const auto r = solver.solve(req);
-            pose = r.pose;
-            results = r.constraints;
-            reached = r.reached;
-            x = r.x;
-            y = r.y;
-            sigma2 = r.sigma2;
-            lik = r.lik;
-            j["diagnostic"] = r.diagnostic;
-            j["converged"] = r.converged;
-            j["iterations"] = r.iterations;
-            j["evaluations"] = r.evaluations;
-            j["objective"] = r.objective;
-            return r;
-        };
-        if (o.solver == "learned") {
-            ConstrainedIkSolver solver(version);
-            ConstrainedIkRequest request;
-            request.locality = o.locality;
-            request.floorCm = contacts.floorCm;
-            j["locality"] = o.locality;
-            j["stop"] = ikStopName(solveWith(solver, request).stop);
-        } else {
-            LearnedIkSolver solver(version);
-            const LearnedIkResult r = solveWith(solver, LearnedIkRequest{});
-            for (auto& c : results) c.strength = kStrengthPaper;  // the penalty form is the paper's λ
-            j["stop"] = learnedIkStopKey(r.stop);
-        }
-        j["x"] = std::vector<double>(x.data(), x.data() + x.size());
-        j["sigma2"] = sigma2;
-        j["L_IK"] = lik;
-        const AdmissionVerdict verdict =
-            admitPose(*version, pose, movedEffectors(results), reached, anyBelowFloor(results), sigma2, lik,
-                      judgeBalance(clip.skeleton, clip.frames[frame], pose, contacts, frame));
-        j["natural"] = verdictJson(verdict, *version->model);
-        if (o.adaptive) {
-            if (!verdict.admitted) {
-                j["adaptive"] = {{"refused", true}, {"reason", verdict.reason}, {"rows", m.N()}};
-            } else {
-                const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, x, y, frame);
-                if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
-                gp::saveModel(o.outModel, gp::withPrimaryClip(*u.version->model, clipIndex));  // the file's clip order
-                j["adaptive"] = {{"refused", false},
-                                 {"rows", u.version->model->N()},
-                                 {"new_point_active", u.newPointActive},
-                                 {"active_changed", u.activeChanged},
-                                 {"out_model", o.outModel}};
-            }
-        }
+        LearnedIkSolver solver(version);
+        const LearnedIkResult r = solveWith(solver, LearnedIkRequest{});
+        for (auto& c : s.results) c.strength = kStrengthPaper;  // the penalty form is the paper's λ
+        j["stop"] = learnedIkStopKey(r.stop);
     }
-    j["reached"] = reached;
+    j["x"] = std::vector<double>(s.x.data(), s.x.data() + s.x.size());
+    j["sigma2"] = s.sigma2;
+    j["L_IK"] = s.lik;
+}
+
+// The admission verdict on a learned solve and, with --adaptive, the model update it allows.
+void judgeLearnedPose(const PoseOptions& o, const gp::ModelVersionPtr& version, int clipIndex, int frame,
+                      const ContactSet& contacts, const PoseSolution& s, nlohmann::json& j) {
+    const gp::GpModel& m = *version->model;
+    const Clip& clip = m.clip;
+    const AdmissionVerdict verdict =
+        admitPose(*version, s.pose, movedEffectors(s.results), s.reached, anyBelowFloor(s.results), s.sigma2, s.lik,
+                  judgeBalance(clip.skeleton, clip.frames[frame], s.pose, contacts, frame));
+    j["natural"] = verdictJson(verdict, *version->model);
+    if (!o.adaptive) return;
+    if (!verdict.admitted) {
+        j["adaptive"] = {{"refused", true}, {"reason", verdict.reason}, {"rows", m.N()}};
+    } else {
+        const gp::AdaptiveUpdateResult u = gp::adaptiveUpdate(*version, s.x, s.y, frame);
+        if (!u.accepted) throw std::runtime_error("adaptive update: " + u.diagnostic);
+        gp::saveModel(o.outModel, gp::withPrimaryClip(*u.version->model, clipIndex));  // the file's clip order
+        j["adaptive"] = {{"refused", false},
+                         {"rows", u.version->model->N()},
+                         {"new_point_active", u.newPointActive},
+                         {"active_changed", u.activeChanged},
+                         {"out_model", o.outModel}};
+    }
+}
+
+// The solved pose's fields of the report (and the --out file); returns the nearest captured frame.
+NearestFrame reportSolvedPose(const PoseOptions& o, const gp::GpModel& m, int frame, const ContactSet& contacts,
+                              const PoseSolution& s, nlohmann::json& j) {
+    const Clip& clip = m.clip;
+    j["reached"] = s.reached;
     // Only the learned solver keeps hands and feet above the floor.
     j["floor_cm"] =
         o.solver == "learned" && contacts.floorCm ? nlohmann::json(*contacts.floorCm) : nlohmann::json(nullptr);
-    j["targets"] = constraintsJson(results, false);
-    j["pins"] = constraintsJson(results, true);
-    const Eigen::VectorXd poseDeg = PoseLayout(clip.skeleton).extract(pose);
+    j["targets"] = constraintsJson(s.results, false);
+    j["pins"] = constraintsJson(s.results, true);
+    const Eigen::VectorXd poseDeg = PoseLayout(clip.skeleton).extract(s.pose);
     j["pose_deg"] = std::vector<double>(poseDeg.data(), poseDeg.data() + poseDeg.size());
     // Where the solved pose is in the data: the nearest captured frame over every source clip.
     const NearestFrame nearest = nearestFrame(poseDeg, m.clipPoseMatrices());
     const std::string nearestClip = m.clipName(nearest.clip);
     j["clip"] = clip.name;
     // How far the whole-body centre of mass moved over the ground from the captured frame.
-    const std::optional<double> comShift = horizontalComShiftCm(clip.skeleton, pose, clip.frames[frame]);
+    const std::optional<double> comShift = horizontalComShiftCm(clip.skeleton, s.pose, clip.frames[frame]);
     j["com_shift_cm"] = comShift ? nlohmann::json(*comShift) : nlohmann::json(nullptr);
     j["nearest"] = {{"clip", nearestClip}, {"frame", nearest.frame + 1}, {"rms_deg", nearest.rmsDeg}};
     Clip solved = clip;
-    solved.frames = {pose};
+    solved.frames = {s.pose};
     j["positions_cm"] = effectorPositionsJson(solved, 0);
     if (!o.out.empty()) {
         // The whole clip with the solved frame in place, so any tool can check the pose in context.
         Clip withPose = clip;
-        withPose.frames[frame] = pose;
+        withPose.frames[frame] = s.pose;
         exportFromCli(withPose, o.out);
         j["out"] = o.out;
     }
-    j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o.json) {
-        printJson(j);
-    } else {
-        std::cout << (reached ? "reached" : "NOT reached") << " (" << j["diagnostic"].get<std::string>() << ")\n";
-        for (const auto& r : results)
-            std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
-                      << r.residualCm << " cm"
-                      << (r.belowFloor ? "  (below the floor: held on it)"
-                          : r.reached  ? ""
-                                       : "  (not reached)")
+    return nearest;
+}
+
+void printPoseText(const PoseOptions& o, const nlohmann::json& j, const PoseSolution& s, const std::string& nearestClip,
+                   const NearestFrame& nearest) {
+    std::cout << (s.reached ? "reached" : "NOT reached") << " (" << j["diagnostic"].get<std::string>() << ")\n";
+    for (const auto& r : s.results)
+        std::cout << "  " << (r.pin ? "pin    " : "target ") << effectorName(r.effector) << ": residual "
+                  << r.residualCm << " cm"
+                  << (r.belowFloor ? "  (below the floor: held on it)"
+                      : r.reached  ? ""
+                                   : "  (not reached)")
+                  << "\n";
+    std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " (" << nearest.rmsDeg
+              << "° RMS over the non-root DOFs)\n";
+    if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
+    if (j.contains("adaptive")) {
+        if (j["adaptive"]["refused"].get<bool>())
+            std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()
+                      << " (the model file was not written)\n";
+        else
+            std::cout << "adaptive update: " << j["adaptive"]["rows"].get<int>() << " rows, written to " << o.outModel
                       << "\n";
-        std::cout << "nearest captured frame: " << nearestClip << " frame " << nearest.frame + 1 << " ("
-                  << nearest.rmsDeg << "° RMS over the non-root DOFs)\n";
-        if (!o.out.empty()) std::cout << "wrote " << o.out << "\n";
-        if (j.contains("adaptive")) {
-            if (j["adaptive"]["refused"].get<bool>())
-                std::cout << "adaptive update refused: " << j["adaptive"]["reason"].get<std::string>()
-                          << " (the model file was not written)\n";
-            else
-                std::cout << "adaptive update: " << j["adaptive"]["rows"].get<int>() << " rows, written to "
-                          << o.outModel << "\n";
-        }
     }
+}
+
+int runPose(const PoseOptions& o) {
+    checkPoseOptions(o);
+    const auto t0 = std::chrono::steady_clock::now();
+    int clipIndex = 0;
+    const gp::ModelVersionPtr version = loadModelVersion(o.model, o.clip, &clipIndex);
+    const gp::GpModel& m = *version->model;
+    const Clip& clip = m.clip;
+    const int frame = frameIndexFromCli(clip, o.frame);
+    FkState fk;
+    forwardKinematics(clip.skeleton, clip.frames[frame], fk);
+    std::vector<IkConstraint> constraints = requestedConstraints(o, clip, fk);
+    nlohmann::json j;
+    const ContactSet contacts = holdContactFeet(o, clip, fk, frame, constraints, j);
+    PoseSolution s;
+    if (o.solver == "plain") {
+        solvePlainPose(clip, frame, constraints, s, j);
+    } else {
+        solveLearnedPose(o, version, frame, constraints, contacts, s, j);
+        judgeLearnedPose(o, version, clipIndex, frame, contacts, s, j);
+    }
+    const NearestFrame nearest = reportSolvedPose(o, m, frame, contacts, s, j);
+    j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (o.json)
+        printJson(j);
+    else
+        printPoseText(o, j, s, m.clipName(nearest.clip), nearest);
     return 0;
 }
 
@@ -242,20 +296,24 @@ const CommandRegistration poseCommand(
                        "NAME: which of the model's clips (file stem, e.g. 10_03; default: the first)");
         sub.add_option("--frame", o->frame, "Frame of that clip, counted from 1")->required();
         sub.add_option("--target", o->targets,
-                       "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact (default), paper "
+                       "EFF=dx,dy,dz[@STRENGTH]: move an effector by this many cm; STRENGTH exact "
+                       "(default), paper "
                        "(0.999) or a number in (0, 1] (repeatable)");
         sub.add_option("--pin", o->pins, "EFF: hold an effector exactly where it is (repeatable)");
         sub.add_option("--release", o->releases,
                        "EFF: do not hold this foot although it is in ground contact (repeatable)");
         sub.add_option("--solver", o->solver,
-                       "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or plain (no prior)");
+                       "learned (default: constrained, hard pins), lbfgs (the paper's penalty) or "
+                       "plain (no prior)");
         sub.add_option("--iterations", o->iterations, "Iteration cap")->check(CLI::Range(1, 100000));
         sub.add_option("--locality", o->locality,
-                       "Learned solver: how strongly the body away from the dragged limbs keeps its pose, per degree² "
+                       "Learned solver: how strongly the body away from the dragged limbs keeps "
+                       "its pose, per degree² "
                        "(0 = off; default " +
                            std::to_string(static_cast<int>(kDefaultLocality)) + ")");
         sub.add_flag("--adaptive", o->adaptive,
-                     "Add the solved pose to the model (docs/maths.md §11) and save it, if every constraint is reached "
+                     "Add the solved pose to the model (docs/maths.md §11) and save it, if every "
+                     "constraint is reached "
                      "and L_IK is within the "
                      "99th percentile (σ²: twice it) of the captured frames scored as new poses");
         sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");

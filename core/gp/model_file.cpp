@@ -115,6 +115,183 @@ void readMoreClips(const json& j, const std::string& file, int n, GpModel& m) {
             throwParseError(file, 0, "training clips in 0.." + std::to_string(m.clipCount() - 1), std::to_string(c));
 }
 
+// The document, checked to be a motiongp model file before any field is read.
+json parseModelDocument(const std::string& text, const std::string& file) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::exception& e) {
+        throwParseError(file, 0, "a JSON model file (format motiongp-model)",
+                        text.empty() ? "an empty file" : std::string("damaged JSON (") + e.what() + ")");
+    }
+    if (!j.is_object() || !j.contains("format") || !j["format"].is_string() || j["format"] != kModelFileFormat)
+        throwParseError(file, 0, std::string("\"format\": \"") + kModelFileFormat + "\"",
+                        j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
+    return j;
+}
+
+// The file's version, one this build reads.
+long long modelVersionOf(const json& j, const std::string& file) {
+    const json& ver = need(j, "version", file);
+    if (!ver.is_number_integer() || ver.get<long long>() < 1 || ver.get<long long>() > kModelFileVersion)
+        throwParseError(file, 0,
+                        "model file version ≤ " + std::to_string(kModelFileVersion) +
+                            " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
+                        "version " + ver.dump());
+    return ver.get<long long>();
+}
+
+void readModelKernel(const json& j, const std::string& file, GpModel& m) {
+    const std::string kind = need(j, "kernel", file).get<std::string>();
+    if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
+    m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
+    // exp(ln θ) must stay finite with room for products (α·e^(η), 1/β): a damaged value such
+    // as 1e308 would otherwise give an infinite K and NaN poses downstream.
+    for (Eigen::Index i = 0; i < m.logParams.size(); ++i)
+        if (std::abs(m.logParams[i]) > kMaxAbsLogParam)
+            throwParseError(file, 0, "log_params within ±100 (kernel parameters exp(±100))",
+                            json(m.logParams[i]).dump());
+}
+
+// N (training rows), D (kept pose columns) and latent_dim as the file declares them.
+struct ModelSizes {
+    int n = 0, D = 0, d = 0;
+};
+
+ModelSizes readModelSizes(const json& j, const std::string& file) {
+    const int n = needInt(j, "N", file), D = needInt(j, "D", file);
+    const int d = needInt(j, "latent_dim", file);
+    // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
+    // the pose DOFs, and D never exceeds three per joint of any file we read), else a
+    // declared 2^31 − 1 allocated gigabytes. The clip's pose vector checks D exactly below.
+    if (n < 1 || D < 1 || D > kMaxPoseColumns || d < 1 || d > D)
+        throwParseError(file, 0, "positive N, D ≤ " + std::to_string(kMaxPoseColumns) + " and latent_dim ≤ D",
+                        "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));
+    return {n, D, d};
+}
+
+void readModelLatents(const json& j, const std::string& file, int n, int d, GpModel& m) {
+    const json& xj = need(j, "X", file);
+    if (!xj.is_array() || static_cast<int>(xj.size()) != n)
+        throwParseError(file, 0, std::to_string(n) + " rows of X",
+                        xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
+    // Check every row's length before allocating N×d: a damaged latent_dim (say 10^9) must
+    // be an error, not a multi-GB allocation.
+    for (int r = 0; r < n; ++r)
+        if (!xj[r].is_array() || static_cast<long long>(xj[r].size()) != d)
+            throwParseError(file, 0, "X as an array of " + std::to_string(d) + " numbers",
+                            xj[r].is_array() ? std::to_string(xj[r].size()) + " entries" : xj[r].type_name());
+    m.X.resize(n, d);
+    for (int r = 0; r < n; ++r) m.X.row(r) = readVec(xj[r], file, "X", d).transpose();
+}
+
+void readModelActiveSet(const json& j, const std::string& file, int n, GpModel& m) {
+    m.active = readInts(need(j, "active", file), file, "active");
+    for (int i : m.active)
+        if (i < 0 || i >= n)
+            throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
+    if (m.active.empty()) throwParseError(file, 0, "a non-empty active set", "[]");
+    // A repeated active row makes K singular (not positive definite without noise); the
+    // active set is a set.
+    std::vector<char> inActive(static_cast<std::size_t>(n), 0);
+    for (int i : m.active)
+        if (inActive[static_cast<std::size_t>(i)]++)
+            throwParseError(file, 0, "distinct active indices (a positive definite K)", std::to_string(i) + " twice");
+}
+
+void readModelColumnsAndFrames(const json& j, const std::string& file, const ModelSizes& size, GpModel& m) {
+    m.keptColumns = readInts(need(j, "kept_columns", file), file, "kept_columns");
+    m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
+    m.constantValues = readVec(need(j, "constant_values", file), file, "constant_values",
+                               static_cast<Eigen::Index>(m.constantColumns.size()));
+    if (static_cast<int>(m.keptColumns.size()) != size.D)
+        throwParseError(file, 0, std::to_string(size.D) + " kept columns (D)", std::to_string(m.keptColumns.size()));
+    m.trainingFrames = readInts(need(j, "training_frames", file), file, "training_frames");
+    if (static_cast<int>(m.trainingFrames.size()) != size.n)
+        throwParseError(file, 0, std::to_string(size.n) + " training frames", std::to_string(m.trainingFrames.size()));
+}
+
+// The optional training fields: prior, back constraints, objective history.
+void readOptionalTrainingFields(const json& t, const std::string& file, GpModel& m) {
+    if (t.contains("prior")) {  // absent: the paper's model (no temporal prior)
+        const json& pr = t["prior"];
+        if (!pr.is_object() || !pr.contains("kind") || !pr["kind"].is_string() ||
+            !parseLatentPrior(pr["kind"].get<std::string>(), m.settings.prior))
+            throwParseError(file, 0, "training.prior.kind \"none\" or \"smooth\"", pr.dump());
+        if (!pr.contains("weight") || !pr["weight"].is_number() || !std::isfinite(pr["weight"].get<double>()) ||
+            pr["weight"].get<double>() < 0.0)
+            throwParseError(file, 0, "a finite training.prior.weight ≥ 0", pr.dump());
+        m.settings.priorWeight = pr["weight"].get<double>();
+    }
+    if (t.contains("back_constraints")) {
+        if (!t["back_constraints"].is_boolean())
+            throwParseError(file, 0, "training.back_constraints true or false", t["back_constraints"].dump());
+        m.settings.backConstraints = t["back_constraints"].get<bool>();
+    }
+    if (t.contains("objective_history")) {  // absent in files written before it existed
+        const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");
+        m.objectiveHistory.assign(h.data(), h.data() + h.size());
+    }
+}
+
+void readTrainingSettings(const json& j, const std::string& file, GpModel& m) {
+    const json& t = need(j, "training", file);
+    m.settings.activeSize = needInt(t, "active_size", file);
+    m.settings.outerIterations = needInt(t, "outer_iterations", file);
+    m.settings.scgIterations = needInt(t, "scg_iterations", file);
+    m.settings.pointIterations = needInt(t, "point_iterations", file);
+    m.settings.tolerance = need(t, "tolerance", file).get<double>();
+    m.settings.frameFirst = needInt(t, "frame_first", file);
+    m.settings.frameLast = needInt(t, "frame_last", file);
+    m.settings.frameStep = needInt(t, "frame_step", file);
+    m.iterations = needInt(t, "iterations", file);
+    m.converged = need(t, "converged", file).get<bool>();
+    readOptionalTrainingFields(t, file, m);
+}
+
+// Kept and constant columns partition the clip's pose vector (47 DOFs for ASF clips).
+void checkColumnPartition(const std::string& file, const GpModel& m) {
+    const int P = PoseLayout(m.clip.skeleton).size();
+    if (m.keptColumns.size() + m.constantColumns.size() != static_cast<std::size_t>(P))
+        throwParseError(file, 0, "kept and constant columns that partition the " + std::to_string(P) + " pose DOFs",
+                        std::to_string(m.keptColumns.size()) + " + " + std::to_string(m.constantColumns.size()));
+    std::vector<char> seen(static_cast<std::size_t>(P), 0);
+    for (const std::vector<int>* columns : {&m.keptColumns, &m.constantColumns})
+        for (int c : *columns) {
+            if (c < 0 || c >= P || seen[static_cast<std::size_t>(c)])
+                throwParseError(file, 0, "distinct columns 0.." + std::to_string(P - 1), std::to_string(c));
+            seen[static_cast<std::size_t>(c)] = 1;
+        }
+}
+
+// Training rows: each row's clip's pose at its training frame, kept columns.
+void rebuildTrainingRows(const std::string& file, int n, int D, GpModel& m) {
+    const std::vector<Eigen::MatrixXd> poses = m.clipPoseMatrices();
+    m.Y.resize(n, D);
+    for (int r = 0; r < n; ++r) {
+        const int f = m.trainingFrames[r];
+        const Clip& c = m.clipAt(m.rowClip(r));
+        if (f < 0 || f >= c.frameCount())
+            throwParseError(file, 0,
+                            "training frames of clip " + c.name + " in 0.." + std::to_string(c.frameCount() - 1),
+                            std::to_string(f));
+        for (int k = 0; k < D; ++k) m.Y(r, k) = poses[static_cast<std::size_t>(m.rowClip(r))](f, m.keptColumns[k]);
+    }
+}
+
+// Rows added by adaptive updates replace their rebuilt rows (absent in older files).
+void readEditedRows(const json& j, const std::string& file, int n, int D, GpModel& m) {
+    if (!j.contains("edited_rows")) return;
+    const json& edited = j["edited_rows"];
+    if (!edited.is_array()) throwParseError(file, 0, "edited_rows as an array", edited.type_name());
+    for (const json& e : edited) {
+        const int r = needInt(e, "row", file);
+        if (r < 0 || r >= n)
+            throwParseError(file, 0, "edited_rows row in 0.." + std::to_string(n - 1), std::to_string(r));
+        m.Y.row(r) = readVec(need(e, "y", file), file, "edited_rows y", D).transpose();
+    }
+}
+
 }  // namespace
 
 std::string modelToJsonText(const GpModel& m) {
@@ -184,147 +361,26 @@ std::string modelToJsonText(const GpModel& m) {
 }
 
 GpModel modelFromJsonText(const std::string& text, const std::string& file) {
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::exception& e) {
-        throwParseError(file, 0, "a JSON model file (format motiongp-model)",
-                        text.empty() ? "an empty file" : std::string("damaged JSON (") + e.what() + ")");
-    }
-    if (!j.is_object() || !j.contains("format") || !j["format"].is_string() || j["format"] != kModelFileFormat)
-        throwParseError(file, 0, std::string("\"format\": \"") + kModelFileFormat + "\"",
-                        j.is_object() && j.contains("format") ? j["format"].dump() : "no format field");
-    const json& ver = need(j, "version", file);
-    if (!ver.is_number_integer() || ver.get<long long>() < 1 || ver.get<long long>() > kModelFileVersion)
-        throwParseError(file, 0,
-                        "model file version ≤ " + std::to_string(kModelFileVersion) +
-                            " (this build reads up to version " + std::to_string(kModelFileVersion) + ")",
-                        "version " + ver.dump());
+    const json j = parseModelDocument(text, file);
+    const long long version = modelVersionOf(j, file);
     GpModel m;
     try {
-        const std::string kind = need(j, "kernel", file).get<std::string>();
-        if (!parseKernelKind(kind, m.kind)) throwParseError(file, 0, "kernel fas or sgplvm", "'" + kind + "'");
-        m.logParams = readVec(need(j, "log_params", file), file, "log_params", paramCount(m.kind));
-        // exp(ln θ) must stay finite with room for products (α·e^(η), 1/β): a damaged value such
-        // as 1e308 would otherwise give an infinite K and NaN poses downstream.
-        for (Eigen::Index i = 0; i < m.logParams.size(); ++i)
-            if (std::abs(m.logParams[i]) > kMaxAbsLogParam)
-                throwParseError(file, 0, "log_params within ±100 (kernel parameters exp(±100))",
-                                json(m.logParams[i]).dump());
-        const int n = needInt(j, "N", file), D = needInt(j, "D", file);
-        const int d = needInt(j, "latent_dim", file);
-        // latent_dim sizes X before its rows are read: bound it (the latent space never exceeds
-        // the pose DOFs, and D never exceeds three per joint of any file we read), else a
-        // declared 2^31 − 1 allocated gigabytes. The clip's pose vector checks D exactly below.
-        if (n < 1 || D < 1 || D > kMaxPoseColumns || d < 1 || d > D)
-            throwParseError(file, 0, "positive N, D ≤ " + std::to_string(kMaxPoseColumns) + " and latent_dim ≤ D",
-                            "N=" + std::to_string(n) + " D=" + std::to_string(D) + " latent_dim=" + std::to_string(d));
-        m.w = readVec(need(j, "w", file), file, "w", D);
-        m.mu = readVec(need(j, "mu", file), file, "mu", D);
-        const json& xj = need(j, "X", file);
-        if (!xj.is_array() || static_cast<int>(xj.size()) != n)
-            throwParseError(file, 0, std::to_string(n) + " rows of X",
-                            xj.is_array() ? std::to_string(xj.size()) : xj.type_name());
-        // Check every row's length before allocating N×d: a damaged latent_dim (say 10^9) must
-        // be an error, not a multi-GB allocation.
-        for (int r = 0; r < n; ++r)
-            if (!xj[r].is_array() || static_cast<long long>(xj[r].size()) != d)
-                throwParseError(file, 0, "X as an array of " + std::to_string(d) + " numbers",
-                                xj[r].is_array() ? std::to_string(xj[r].size()) + " entries" : xj[r].type_name());
-        m.X.resize(n, d);
-        for (int r = 0; r < n; ++r) m.X.row(r) = readVec(xj[r], file, "X", d).transpose();
-        m.active = readInts(need(j, "active", file), file, "active");
-        for (int i : m.active)
-            if (i < 0 || i >= n)
-                throwParseError(file, 0, "active indices in 0.." + std::to_string(n - 1), std::to_string(i));
-        if (m.active.empty()) throwParseError(file, 0, "a non-empty active set", "[]");
-        // A repeated active row makes K singular (not positive definite without noise); the
-        // active set is a set.
-        {
-            std::vector<char> inActive(static_cast<std::size_t>(n), 0);
-            for (int i : m.active)
-                if (inActive[static_cast<std::size_t>(i)]++)
-                    throwParseError(file, 0, "distinct active indices (a positive definite K)",
-                                    std::to_string(i) + " twice");
-        }
-        m.keptColumns = readInts(need(j, "kept_columns", file), file, "kept_columns");
-        m.constantColumns = readInts(need(j, "constant_columns", file), file, "constant_columns");
-        m.constantValues = readVec(need(j, "constant_values", file), file, "constant_values",
-                                   static_cast<Eigen::Index>(m.constantColumns.size()));
-        if (static_cast<int>(m.keptColumns.size()) != D)
-            throwParseError(file, 0, std::to_string(D) + " kept columns (D)", std::to_string(m.keptColumns.size()));
-        m.trainingFrames = readInts(need(j, "training_frames", file), file, "training_frames");
-        if (static_cast<int>(m.trainingFrames.size()) != n)
-            throwParseError(file, 0, std::to_string(n) + " training frames", std::to_string(m.trainingFrames.size()));
-        const json& t = need(j, "training", file);
-        m.settings.activeSize = needInt(t, "active_size", file);
-        m.settings.outerIterations = needInt(t, "outer_iterations", file);
-        m.settings.scgIterations = needInt(t, "scg_iterations", file);
-        m.settings.pointIterations = needInt(t, "point_iterations", file);
-        m.settings.tolerance = need(t, "tolerance", file).get<double>();
-        m.settings.frameFirst = needInt(t, "frame_first", file);
-        m.settings.frameLast = needInt(t, "frame_last", file);
-        m.settings.frameStep = needInt(t, "frame_step", file);
-        m.iterations = needInt(t, "iterations", file);
-        m.converged = need(t, "converged", file).get<bool>();
-        if (t.contains("prior")) {  // absent: the paper's model (no temporal prior)
-            const json& pr = t["prior"];
-            if (!pr.is_object() || !pr.contains("kind") || !pr["kind"].is_string() ||
-                !parseLatentPrior(pr["kind"].get<std::string>(), m.settings.prior))
-                throwParseError(file, 0, "training.prior.kind \"none\" or \"smooth\"", pr.dump());
-            if (!pr.contains("weight") || !pr["weight"].is_number() || !std::isfinite(pr["weight"].get<double>()) ||
-                pr["weight"].get<double>() < 0.0)
-                throwParseError(file, 0, "a finite training.prior.weight ≥ 0", pr.dump());
-            m.settings.priorWeight = pr["weight"].get<double>();
-        }
-        if (t.contains("back_constraints")) {
-            if (!t["back_constraints"].is_boolean())
-                throwParseError(file, 0, "training.back_constraints true or false", t["back_constraints"].dump());
-            m.settings.backConstraints = t["back_constraints"].get<bool>();
-        }
-        if (t.contains("objective_history")) {  // absent in files written before it existed
-            const Eigen::VectorXd h = readVec(t["objective_history"], file, "training.objective_history");
-            m.objectiveHistory.assign(h.data(), h.data() + h.size());
-        }
+        readModelKernel(j, file, m);
+        const ModelSizes size = readModelSizes(j, file);
+        m.w = readVec(need(j, "w", file), file, "w", size.D);
+        m.mu = readVec(need(j, "mu", file), file, "mu", size.D);
+        readModelLatents(j, file, size.n, size.d, m);
+        readModelActiveSet(j, file, size.n, m);
+        readModelColumnsAndFrames(j, file, size, m);
+        readTrainingSettings(j, file, m);
         const json& src = need(j, "source", file);
         m.sourceFile = need(src, "file", file).get<std::string>();
         m.sourceSha256 = need(src, "sha256", file).get<std::string>();
         m.clip = clipFromJson(need(j, "clip", file), file);
-        if (ver.get<long long>() >= 2) readMoreClips(j, file, n, m);
-        // Kept and constant columns partition the clip's pose vector (47 DOFs for ASF clips).
-        const int P = PoseLayout(m.clip.skeleton).size();
-        if (m.keptColumns.size() + m.constantColumns.size() != static_cast<std::size_t>(P))
-            throwParseError(file, 0, "kept and constant columns that partition the " + std::to_string(P) + " pose DOFs",
-                            std::to_string(m.keptColumns.size()) + " + " + std::to_string(m.constantColumns.size()));
-        std::vector<char> seen(static_cast<std::size_t>(P), 0);
-        for (const std::vector<int>* columns : {&m.keptColumns, &m.constantColumns})
-            for (int c : *columns) {
-                if (c < 0 || c >= P || seen[static_cast<std::size_t>(c)])
-                    throwParseError(file, 0, "distinct columns 0.." + std::to_string(P - 1), std::to_string(c));
-                seen[static_cast<std::size_t>(c)] = 1;
-            }
-        // Training rows: each row's clip's pose at its training frame, kept columns.
-        const std::vector<Eigen::MatrixXd> poses = m.clipPoseMatrices();
-        m.Y.resize(n, D);
-        for (int r = 0; r < n; ++r) {
-            const int f = m.trainingFrames[r];
-            const Clip& c = m.clipAt(m.rowClip(r));
-            if (f < 0 || f >= c.frameCount())
-                throwParseError(file, 0,
-                                "training frames of clip " + c.name + " in 0.." + std::to_string(c.frameCount() - 1),
-                                std::to_string(f));
-            for (int k = 0; k < D; ++k) m.Y(r, k) = poses[static_cast<std::size_t>(m.rowClip(r))](f, m.keptColumns[k]);
-        }
-        if (j.contains("edited_rows")) {  // rows added by adaptive updates (absent in older files)
-            const json& edited = j["edited_rows"];
-            if (!edited.is_array()) throwParseError(file, 0, "edited_rows as an array", edited.type_name());
-            for (const json& e : edited) {
-                const int r = needInt(e, "row", file);
-                if (r < 0 || r >= n)
-                    throwParseError(file, 0, "edited_rows row in 0.." + std::to_string(n - 1), std::to_string(r));
-                m.Y.row(r) = readVec(need(e, "y", file), file, "edited_rows y", D).transpose();
-            }
-        }
+        if (version >= 2) readMoreClips(j, file, size.n, m);
+        checkColumnPartition(file, m);
+        rebuildTrainingRows(file, size.n, size.D, m);
+        readEditedRows(j, file, size.n, size.D, m);
     } catch (const json::exception& e) {
         throwParseError(file, 0, "a valid motiongp-model document", e.what());
     }

@@ -77,70 +77,74 @@ tinygltf::Model loadGltfModel(const std::string& path) {
     return model;
 }
 
-}  // namespace
+// The skin's joints as a tree, in the order they become the skeleton's joints.
+struct GltfJointTree {
+    std::map<int, int> skinIndexOf;    // node → index in skin.joints
+    std::vector<int> parentJointNode;  // per skin joint: the node of its parent joint, -1 for the root
+    int rootNode = -1;
+    std::vector<int> order;      // nodes, parents before children
+    std::map<int, int> jointOf;  // node → skeleton joint
+};
 
-Clip readGltfClip(const std::string& path) {
-    const tinygltf::Model model = loadGltfModel(path);
-    if (model.skins.empty()) throwParseError(path, 0, "a skin (the skeleton's joints)", "no skin");
-    if (model.animations.empty()) throwParseError(path, 0, "an animation", "no animation");
-    const tinygltf::Skin& skin = model.skins[0];
+// Each joint's parent is its nearest ancestor node that is a joint; exactly one joint has none.
+void findGltfJointParents(const std::string& path, const tinygltf::Model& model, const tinygltf::Skin& skin,
+                          GltfJointTree& tree) {
     const int nodeCount = static_cast<int>(model.nodes.size());
-
-    // The joint tree: each joint's parent is its nearest ancestor node that is a joint.
     std::vector<int> parentNode(static_cast<std::size_t>(nodeCount), -1);
     for (int i = 0; i < nodeCount; ++i)
         for (int c : model.nodes[i].children)
             if (c >= 0 && c < nodeCount) parentNode[c] = i;
-    std::map<int, int> skinIndexOf;
     for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
         const int node = skin.joints[k];
         if (node < 0 || node >= nodeCount)
             throwParseError(path, 0, "skin joints that are nodes", "node " + std::to_string(node));
-        skinIndexOf[node] = k;
+        tree.skinIndexOf[node] = k;
     }
-    std::vector<int> parentJointNode(skin.joints.size(), -1);
-    int rootNode = -1;
+    tree.parentJointNode.assign(skin.joints.size(), -1);
     for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
         int a = parentNode[skin.joints[k]];
-        for (int guard = 0; a >= 0 && !skinIndexOf.count(a) && guard < nodeCount; ++guard) a = parentNode[a];
-        parentJointNode[k] = a >= 0 && skinIndexOf.count(a) ? a : -1;
-        if (parentJointNode[k] < 0) {
-            if (rootNode >= 0)
-                throwParseError(path, 0, "one root joint",
-                                "'" + model.nodes[rootNode].name + "' and '" + model.nodes[skin.joints[k]].name + "'");
-            rootNode = skin.joints[k];
+        for (int guard = 0; a >= 0 && !tree.skinIndexOf.count(a) && guard < nodeCount; ++guard) a = parentNode[a];
+        tree.parentJointNode[k] = a >= 0 && tree.skinIndexOf.count(a) ? a : -1;
+        if (tree.parentJointNode[k] < 0) {
+            if (tree.rootNode >= 0)
+                throwParseError(
+                    path, 0, "one root joint",
+                    "'" + model.nodes[tree.rootNode].name + "' and '" + model.nodes[skin.joints[k]].name + "'");
+            tree.rootNode = skin.joints[k];
         }
     }
-    if (rootNode < 0) throwParseError(path, 0, "a root joint", "a skin with no joints or a cycle");
+    if (tree.rootNode < 0) throwParseError(path, 0, "a root joint", "a skin with no joints or a cycle");
+}
+
+GltfJointTree gltfJointTree(const std::string& path, const tinygltf::Model& model, const tinygltf::Skin& skin) {
+    GltfJointTree tree;
+    findGltfJointParents(path, model, skin, tree);
     // Parents before children, otherwise in the skin's order (our exports' order is kept).
-    std::vector<int> order;
-    std::map<int, int> jointOf;
     for (bool grew = true; grew;) {
         grew = false;
         for (int k = 0; k < static_cast<int>(skin.joints.size()); ++k) {
             const int node = skin.joints[k];
-            if (jointOf.count(node) || (parentJointNode[k] >= 0 && !jointOf.count(parentJointNode[k]))) continue;
-            jointOf[node] = static_cast<int>(order.size());
-            order.push_back(node);
+            if (tree.jointOf.count(node) ||
+                (tree.parentJointNode[k] >= 0 && !tree.jointOf.count(tree.parentJointNode[k])))
+                continue;
+            tree.jointOf[node] = static_cast<int>(tree.order.size());
+            tree.order.push_back(node);
             grew = true;
         }
     }
+    return tree;
+}
 
-    Clip clip;
-    clip.sourcePath = path;
-    clip.format = ClipFormat::kGltf;
-    clip.convention = "gltf";
-    clip.cmPerFileUnit = kCmPerMetre;
-    const tinygltf::Animation& animation = model.animations[0];
-    clip.name = animation.name.empty() ? fileStem(path) : animation.name;
-    Skeleton& sk = clip.skeleton;
-    sk.poseVector = PoseVectorKind::kChannels;
+// The skeleton's joints from the nodes; returns each joint's rest rotation (the pose of a joint
+// no channel animates).
+std::vector<Eigen::Quaterniond> addGltfJoints(const std::string& path, const tinygltf::Model& model,
+                                              const GltfJointTree& tree, Clip& clip) {
     std::vector<Eigen::Quaterniond> restRotation;
-    for (int node : order) {
+    for (int node : tree.order) {
         const tinygltf::Node& nd = model.nodes[node];
         Joint joint;
         joint.name = nd.name.empty() ? "node" + std::to_string(node) : nd.name;
-        joint.parent = node == rootNode ? -1 : jointOf.at(parentJointNode[skinIndexOf.at(node)]);
+        joint.parent = node == tree.rootNode ? -1 : tree.jointOf.at(tree.parentJointNode[tree.skinIndexOf.at(node)]);
         if (!nd.matrix.empty())
             throwParseError(path, 0, "joint transforms as translation/rotation", "a matrix on '" + joint.name + "'");
         for (double s : nd.scale)
@@ -157,16 +161,26 @@ Clip readGltfClip(const std::string& path) {
             joint.bone = bone->Get<std::string>();
         if (const tinygltf::Value* tail = extraOf(nd.extras, "tail_m")) joint.tailCm = vectorOf(*tail) * kCmPerMetre;
         if (joint.bone.empty()) clip.unmappedJoints.push_back(joint.name);
-        sk.joints.push_back(joint);
+        clip.skeleton.joints.push_back(joint);
     }
-    const int n = sk.jointCount();
+    return restRotation;
+}
 
-    // The channels: one shared time line.
+// The animation's channels: one shared time line, rotations per joint, translation of the root.
+struct GltfChannels {
     std::vector<float> times;
-    std::vector<std::vector<float>> rotation(static_cast<std::size_t>(n)), rootTranslation(1);
+    std::vector<std::vector<float>> rotation, rootTranslation;
+};
+
+GltfChannels readGltfChannels(const std::string& path, const tinygltf::Model& model,
+                              const tinygltf::Animation& animation, const GltfJointTree& tree, const Skeleton& sk) {
+    GltfChannels ch;
+    std::vector<float>& times = ch.times;
+    ch.rotation.resize(static_cast<std::size_t>(sk.jointCount()));
+    ch.rootTranslation.resize(1);
     for (const tinygltf::AnimationChannel& channel : animation.channels) {
-        if (!jointOf.count(channel.target_node) || channel.target_path == "weights") continue;
-        const int j = jointOf.at(channel.target_node);
+        if (!tree.jointOf.count(channel.target_node) || channel.target_path == "weights") continue;
+        const int j = tree.jointOf.at(channel.target_node);
         const std::string& name = sk.joints[j].name;
         if (channel.sampler < 0 || channel.sampler >= static_cast<int>(animation.samplers.size()))
             throwParseError(path, 0, "a channel with a sampler",
@@ -180,13 +194,13 @@ Clip readGltfClip(const std::string& path) {
         for (std::size_t i = 0; same && i < t.size(); ++i) same = std::abs(t[i] - times[i]) <= 1e-5f;
         if (!same) throwParseError(path, 0, "every channel keyed at the same times", "other times on '" + name + "'");
         if (channel.target_path == "rotation") {
-            rotation[j] = readFloatAccessor(path, model, sampler.output, 4, "rotations of '" + name + "'");
-            if (rotation[j].size() != 4 * times.size())
+            ch.rotation[j] = readFloatAccessor(path, model, sampler.output, 4, "rotations of '" + name + "'");
+            if (ch.rotation[j].size() != 4 * times.size())
                 throwParseError(path, 0, "one rotation per key", "another count on '" + name + "'");
         } else if (channel.target_path == "translation") {
             if (j != 0) throwParseError(path, 0, "translation animated on the root joint only", "on '" + name + "'");
-            rootTranslation[0] = readFloatAccessor(path, model, sampler.output, 3, "translations of '" + name + "'");
-            if (rootTranslation[0].size() != 3 * times.size())
+            ch.rootTranslation[0] = readFloatAccessor(path, model, sampler.output, 3, "translations of '" + name + "'");
+            if (ch.rootTranslation[0].size() != 3 * times.size())
                 throwParseError(path, 0, "one translation per key", "another count on '" + name + "'");
         } else if (channel.target_path == "scale") {
             for (float s : readFloatAccessor(path, model, sampler.output, 3, "scales of '" + name + "'"))
@@ -195,7 +209,11 @@ Clip readGltfClip(const std::string& path) {
         }
     }
     if (times.empty()) throwParseError(path, 0, "an animation that keys the skeleton's joints", "none");
+    return ch;
+}
 
+// The asset's fps and rest_frame extras; without fps, the key spacing.
+void readGltfTiming(const tinygltf::Model& model, const std::vector<float>& times, Clip& clip) {
     clip.fps = 0.0;
     if (const tinygltf::Value* fps = extraOf(model.asset.extras, "fps"); fps && fps->IsNumber())
         clip.fps = fps->GetNumberAsDouble();
@@ -204,28 +222,55 @@ Clip readGltfClip(const std::string& path) {
     if (!(clip.fps > 0.0)) clip.fps = 30.0;  // a single key has no rate; any will do
     if (const tinygltf::Value* rest = extraOf(model.asset.extras, "rest_frame"); rest && rest->IsBool())
         clip.restFrame = rest->Get<bool>();
+}
 
+// One pose per key: animated rotations, else the rest rotation; the root's translation if keyed.
+void addGltfFrames(const GltfChannels& ch, const std::vector<Eigen::Quaterniond>& restRotation, Clip& clip) {
+    Skeleton& sk = clip.skeleton;
+    const int n = sk.jointCount();
     for (int j = 0; j < n; ++j)
-        if (!rotation[j].empty()) sk.joints[j].dof = {true, true, true};
-    for (std::size_t f = 0; f < times.size(); ++f) {
+        if (!ch.rotation[j].empty()) sk.joints[j].dof = {true, true, true};
+    for (std::size_t f = 0; f < ch.times.size(); ++f) {
         Pose pose;
         pose.anglesDeg.resize(static_cast<std::size_t>(n));
         for (int j = 0; j < n; ++j) {
             Eigen::Quaterniond q = restRotation[j];
-            if (!rotation[j].empty()) {
-                const float* r = &rotation[j][4 * f];
+            if (!ch.rotation[j].empty()) {
+                const float* r = &ch.rotation[j][4 * f];
                 q = Eigen::Quaterniond(r[3], r[0], r[1], r[2]).normalized();
             }
             pose.anglesDeg[j] = eulerZYXFromMatrix(q.toRotationMatrix());
         }
-        if (!rootTranslation[0].empty()) {
-            const float* t = &rootTranslation[0][3 * f];
+        if (!ch.rootTranslation[0].empty()) {
+            const float* t = &ch.rootTranslation[0][3 * f];
             pose.rootCm = Eigen::Vector3d(t[0], t[1], t[2]) * kCmPerMetre - sk.joints[0].offsetCm;
         }
         clip.frames.push_back(std::move(pose));
     }
-    sk.resolveEffectors();
-    sk.validate();
+}
+
+}  // namespace
+
+Clip readGltfClip(const std::string& path) {
+    const tinygltf::Model model = loadGltfModel(path);
+    if (model.skins.empty()) throwParseError(path, 0, "a skin (the skeleton's joints)", "no skin");
+    if (model.animations.empty()) throwParseError(path, 0, "an animation", "no animation");
+    const GltfJointTree tree = gltfJointTree(path, model, model.skins[0]);
+
+    Clip clip;
+    clip.sourcePath = path;
+    clip.format = ClipFormat::kGltf;
+    clip.convention = "gltf";
+    clip.cmPerFileUnit = kCmPerMetre;
+    const tinygltf::Animation& animation = model.animations[0];
+    clip.name = animation.name.empty() ? fileStem(path) : animation.name;
+    clip.skeleton.poseVector = PoseVectorKind::kChannels;
+    const std::vector<Eigen::Quaterniond> restRotation = addGltfJoints(path, model, tree, clip);
+    const GltfChannels channels = readGltfChannels(path, model, animation, tree, clip.skeleton);
+    readGltfTiming(model, channels.times, clip);
+    addGltfFrames(channels, restRotation, clip);
+    clip.skeleton.resolveEffectors();
+    clip.skeleton.validate();
     return clip;
 }
 
