@@ -149,7 +149,7 @@ nlohmann::json uiBenchJson(ui::EditorApp& app, bool real, int M, const UiBenchSa
         {"frame", summarizeSeconds(t.pFrame)},          {"ik_solve", summarizeSeconds(t.pSolve)},
         {"scene_draw", summarizeSeconds(t.pScene)},     {"imgui_render", summarizeSeconds(t.pRender)},
         {"latent_upload", summarizeSeconds(t.pUpload)}, {"panels_and_rest", summarizeSeconds(t.pRest)}};
-    j["adaptive_updates"] = app.state().doc.adaptiveUpdates();
+    j["adaptive_updates"] = app.state().doc.models().updates();
     j["latent_map_texels"] = 160 * 160;
     j["target_seconds"] = 0.016;
     return j;

@@ -74,7 +74,7 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
         dragBy(doc, Effector::kLFoot, {0, 0, 3});  // a move the admission takes (balanced, like the capture)
         CHECK_FALSE(doc.canRedo());
         doc.waitIdle();
-        INFO("adaptive: " << doc.adaptiveStatus());
+        INFO("adaptive: " << doc.models().status());
         CHECK(doc.model() != v1);
         REQUIRE(doc.undo() == "");
         CHECK(doc.model() == v1);
@@ -155,20 +155,20 @@ TEST_CASE("regenerating an edited path meets the moved keys, leaves other frames
     doc.setFrame(109);
     CHECK(doc.startRegenerate() == "no path is being edited");
     REQUIRE(doc.beginPathEdit(Effector::kRFoot) == "");
-    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{88, 102, 116, 130});
-    const Eigen::Vector3d lifted = doc.pathKeyPosition(1) + Eigen::Vector3d(0, 12, 4);
-    REQUIRE(doc.setPathKeyPosition(1, lifted) == "");
-    CHECK((doc.pathEdit()->keyOffsetsCm[1] - Eigen::Vector3d(0, 12, 4)).norm() < 1e-9);
-    REQUIRE(doc.setPathKeyOffset(2, {0, 12, 4}) == "");
-    CHECK(doc.setPathKeyOffset(7, {0, 0, 0}) == "expected a key in 1..4, found 8");
-    CHECK(doc.setPathKeyOffset(2, {0, NAN, 0}) == "expected a finite offset, found NaN or Inf");
+    REQUIRE(doc.paths().edit()->keyFrames == std::vector<int>{88, 102, 116, 130});
+    const Eigen::Vector3d lifted = doc.paths().keyPosition(1) + Eigen::Vector3d(0, 12, 4);
+    REQUIRE(doc.paths().setKeyPosition(1, lifted) == "");
+    CHECK((doc.paths().edit()->keyOffsetsCm[1] - Eigen::Vector3d(0, 12, 4)).norm() < 1e-9);
+    REQUIRE(doc.paths().setKeyOffset(2, {0, 12, 4}) == "");
+    CHECK(doc.paths().setKeyOffset(7, {0, 0, 0}) == "expected a key in 1..4, found 8");
+    CHECK(doc.paths().setKeyOffset(2, {0, NAN, 0}) == "expected a finite offset, found NaN or Inf");
 
     // The drawn curve passes through every key; the captured curve is the unedited path.
-    const std::vector<Eigen::Vector3d> curve = doc.pathTargets(), captured = doc.pathCaptured();
+    const std::vector<Eigen::Vector3d> curve = doc.paths().targets(), captured = doc.paths().captured();
     REQUIRE(curve.size() == 43);
     REQUIRE(captured.size() == 43);
     for (int k = 0; k < 4; ++k)
-        CHECK((curve[doc.pathEdit()->keyFrames[k] - 88] - doc.pathKeyPosition(k)).norm() < 1e-9);
+        CHECK((curve[doc.paths().edit()->keyFrames[k] - 88] - doc.paths().keyPosition(k)).norm() < 1e-9);
     CHECK((curve.front() - captured.front()).norm() < 1e-9);
 
     REQUIRE(doc.startRegenerate(200) == "");
@@ -180,11 +180,11 @@ TEST_CASE("regenerating an edited path meets the moved keys, leaves other frames
     CHECK(doc.undoLabel() == "regenerate rfoot, frames 90-130");
     for (int t = 0; t < doc.frameCount(); ++t) CHECK(doc.isEdited(t) == (t > 88 && t < 130));
     for (int k : {1, 2}) {
-        doc.setFrame(doc.pathEdit()->keyFrames[k]);
-        CHECK((doc.effectorPosition(Effector::kRFoot) - doc.pathKeyPosition(k)).norm() <= kReachedToleranceCm);
+        doc.setFrame(doc.paths().edit()->keyFrames[k]);
+        CHECK((doc.effectorPosition(Effector::kRFoot) - doc.paths().keyPosition(k)).norm() <= kReachedToleranceCm);
     }
     doc.waitIdle();
-    CHECK(doc.adaptiveUpdates() == 2);  // the two moved keys joined the model
+    CHECK(doc.models().updates() == 2);  // the two moved keys joined the model
     const gp::ModelVersionPtr v2 = doc.model();
     CHECK(v2->model->N() == v0->model->N() + 2);
 
@@ -206,7 +206,7 @@ TEST_CASE("a cancelled regeneration changes nothing") {
     doc.setModel(test::walkModel35(), true);
     doc.setFrame(200);
     REQUIRE(doc.beginPathEdit(Effector::kLHand) == "");
-    REQUIRE(doc.setPathKeyOffset(1, {0, 0, 20}) == "");
+    REQUIRE(doc.paths().setKeyOffset(1, {0, 0, 20}) == "");
     REQUIRE(doc.startRegenerate(5000) == "");
     doc.cancelRegenerate();
     doc.waitIdle();

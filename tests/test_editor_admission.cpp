@@ -27,11 +27,11 @@ TEST_CASE("editor: an unreachable drag is kept as an edit, refused by the model,
     if (rIn) CHECK((doc.effectorPosition(Effector::kRFoot) - rf).norm() <= 0.05);
     doc.waitIdle();
     CHECK(doc.model() == v0);  // not taught
-    const auto history = doc.adaptiveHistory();
+    const auto history = doc.models().history();
     REQUIRE(history.size() == 1);
     CHECK_FALSE(history.back().accepted);
     CHECK(history.back().diagnostic == "refused: a target or pin was not reached");
-    CHECK(doc.adaptiveStatus() == "pose kept as an edit, not added to the model: a target or pin was not reached");
+    CHECK(doc.models().status() == "pose kept as an edit, not added to the model: a target or pin was not reached");
 
     // Released, a foot in contact is free to move.
     const Effector planted = lIn ? Effector::kLFoot : Effector::kRFoot;

@@ -50,7 +50,7 @@ TEST_CASE("editor document: a learned drag reaches the target and becomes the fr
     doc.setFrame(99);
     CHECK((footOf(doc, Effector::kRFoot) - foot).norm() < 1e-9);
     doc.waitIdle();
-    CHECK(doc.adaptiveUpdates() == 1);
+    CHECK(doc.models().updates() == 1);
 }
 
 TEST_CASE("editor document: a pinned foot stays planted while a hand is dragged") {

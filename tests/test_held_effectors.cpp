@@ -54,14 +54,14 @@ double heldTestLargestMove(EditorDocument& doc, Effector e, const std::map<int, 
 void heldTestRaiseRightHandPath(EditorDocument& doc) {
     doc.setFrame(140);
     REQUIRE(doc.beginPathEdit(Effector::kRHand) == "");
-    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{119, 133, 147, 161});
-    for (int k : {1, 2}) REQUIRE(doc.setPathKeyOffset(k, {0, 12, 0}) == "");
+    REQUIRE(doc.paths().edit()->keyFrames == std::vector<int>{119, 133, 147, 161});
+    for (int k : {1, 2}) REQUIRE(doc.paths().setKeyOffset(k, {0, 12, 0}) == "");
     REQUIRE(doc.startRegenerate(500) == "");
     doc.waitIdle();
     REQUIRE(doc.pollRegenerate().rfind("regenerated", 0) == 0);
     for (int k : {1, 2}) {
-        const int t = doc.pathEdit()->keyFrames[static_cast<std::size_t>(k)];
-        CHECK((heldTestEffector(doc, t, Effector::kRHand) - doc.pathKeyPosition(k)).norm() <= 0.5);
+        const int t = doc.paths().edit()->keyFrames[static_cast<std::size_t>(k)];
+        CHECK((heldTestEffector(doc, t, Effector::kRHand) - doc.paths().keyPosition(k)).norm() <= 0.5);
     }
 }
 
@@ -325,7 +325,7 @@ TEST_CASE(
     // Without the hold the regeneration re-solves the foot from the capture: it drops back.
     REQUIRE(doc.undo().empty());
     REQUIRE(doc.releaseAllHeld().empty());
-    doc.endPathEdit();
+    doc.paths().end();
     heldTestRaiseRightHandPath(doc);
     const double unheld = heldTestLargestMove(doc, Effector::kRFoot, footBefore, 121, 159);
     MESSAGE("released first, the foot moved up to " << unheld << " cm");

@@ -34,7 +34,7 @@ TEST_CASE("session mapping: a document's edits, frame, pins, compare mode and pa
     doc.setCompareMode(CompareMode::kPlainIk);
     doc.setAdaptiveEnabled(false);
     REQUIRE(doc.beginPathEdit(Effector::kRFoot) == "");
-    REQUIRE(doc.setPathKeyOffset(1, Eigen::Vector3d(0, 3, 0)) == "");
+    REQUIRE(doc.paths().setKeyOffset(1, Eigen::Vector3d(0, 3, 0)) == "");
 
     const SessionData d = sessionFromDocument(doc);
     CHECK(d.syntheticClip);
@@ -46,7 +46,7 @@ TEST_CASE("session mapping: a document's edits, frame, pins, compare mode and pa
     CHECK(!d.pins[static_cast<int>(Effector::kRHand)]);
     CHECK(d.edits.size() == doc.edits().size());
     REQUIRE(d.path.present);
-    CHECK(d.path.keyFrames == doc.pathEdit()->keyFrames);
+    CHECK(d.path.keyFrames == doc.paths().edit()->keyFrames);
 
     // Through the file's text, as a real save and open.
     const SessionData read = sessionFromJsonText(sessionToJsonText(d, "/tmp/x.mgsession"), "x.mgsession");
@@ -56,16 +56,16 @@ TEST_CASE("session mapping: a document's edits, frame, pins, compare mode and pa
     CHECK(back.synthetic());
     CHECK(back.frame() == doc.frame());
     CHECK(back.compareMode() == CompareMode::kPlainIk);
-    CHECK(!back.adaptiveEnabled());
+    CHECK(!back.models().adaptiveEnabled());
     CHECK(back.pinned(Effector::kLFoot));
     REQUIRE(back.edits().size() == doc.edits().size());
     for (const auto& [frame, record] : doc.edits()) {
         REQUIRE(back.isEdited(frame));
         CHECK(test::samePose(back.edits().at(frame).pose, record.pose));
     }
-    REQUIRE(back.pathEdit());
-    CHECK(back.pathEdit()->keyFrames == doc.pathEdit()->keyFrames);
-    CHECK(back.pathEdit()->keyOffsetsCm[1].isApprox(doc.pathEdit()->keyOffsetsCm[1]));
+    REQUIRE(back.paths().edit());
+    CHECK(back.paths().edit()->keyFrames == doc.paths().edit()->keyFrames);
+    CHECK(back.paths().edit()->keyOffsetsCm[1].isApprox(doc.paths().edit()->keyOffsetsCm[1]));
     CHECK(test::samePose(back.currentPose(), doc.currentPose()));
 }
 
@@ -98,7 +98,7 @@ TEST_CASE("session mapping: the undo history and the adaptive table come back wi
     REQUIRE(doc.undo() == "");  // the second drag goes to the redo stack
     REQUIRE(doc.canRedo());
     const std::string undoLabel = doc.undoLabel(), redoLabel = doc.redoLabel();
-    const std::vector<AdaptiveHistoryEntry> table = doc.adaptiveHistory();
+    const std::vector<AdaptiveHistoryEntry> table = doc.models().history();
     REQUIRE_FALSE(table.empty());
 
     const SessionData read =
@@ -108,7 +108,7 @@ TEST_CASE("session mapping: the undo history and the adaptive table come back wi
     applySession(back, checked, "h.mgsession");
     CHECK(back.undoLabel() == undoLabel);
     CHECK(back.redoLabel() == redoLabel);
-    const std::vector<AdaptiveHistoryEntry> tableBack = back.adaptiveHistory();
+    const std::vector<AdaptiveHistoryEntry> tableBack = back.models().history();
     REQUIRE(tableBack.size() == table.size());
     for (std::size_t i = 0; i < table.size(); ++i) {
         CHECK(tableBack[i].frame == table[i].frame);

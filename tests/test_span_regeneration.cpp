@@ -115,8 +115,8 @@ TEST_CASE("editor: Regenerate holds the clip's contacts unless the user switches
         doc.setContactEnabled(rightStance, on);
         doc.setFrame(109);
         REQUIRE(doc.beginPathEdit(Effector::kLFoot) == "");
-        REQUIRE(doc.setPathKeyOffset(1, {0, 20, 0}) == "");
-        REQUIRE(doc.setPathKeyOffset(2, {0, 20, 0}) == "");
+        REQUIRE(doc.paths().setKeyOffset(1, {0, 20, 0}) == "");
+        REQUIRE(doc.paths().setKeyOffset(2, {0, 20, 0}) == "");
         REQUIRE(doc.startRegenerate() == "");
         doc.waitIdle();
         CHECK(doc.pollRegenerate().find(on ? "1 contact(s) held" : "0 contact(s) held") != std::string::npos);
@@ -126,6 +126,6 @@ TEST_CASE("editor: Regenerate holds the clip's contacts unless the user switches
         REQUIRE(doc.lastRegenerateKeys().size() == 2);  // the inner keys, for the Path panel's rows
         for (const MotionEditJob::KeyResult& k : doc.lastRegenerateKeys()) CHECK(k.reached);
         CHECK(doc.undo().empty());
-        doc.endPathEdit();
+        doc.paths().end();
     }
 }

@@ -116,7 +116,7 @@ TEST_CASE(
     doc.setFrame(99);
     test::dragBy(doc, Effector::kRHand, {5, 0, 0});  // a small move the model admits
     doc.waitIdle();
-    CHECK(doc.adaptiveUpdates() == 0);  // not taught to a model the next refinement replaces
+    CHECK(doc.models().updates() == 0);  // not taught to a model the next refinement replaces
     CHECK(doc.model() == v0);
     CHECK(doc.waitingPoses() == 1);
     const Pose taught = doc.currentPose();
@@ -138,8 +138,8 @@ TEST_CASE(
     CHECK_FALSE(doc.refining());
     CHECK(doc.waitingPoses() == 0);
     doc.waitIdle();
-    REQUIRE(doc.adaptiveUpdates() == 1);
-    const std::vector<AdaptiveHistoryEntry> history = doc.adaptiveHistory();
+    REQUIRE(doc.models().updates() == 1);
+    const std::vector<AdaptiveHistoryEntry> history = doc.models().history();
     REQUIRE(history.size() == 1);
     CHECK(history.back().frame == 99);
     CHECK(history.back().accepted);
@@ -150,5 +150,5 @@ TEST_CASE(
     doc.setFrame(120);
     test::dragBy(doc, Effector::kLHand, {0, 0, 5});
     doc.waitIdle();
-    CHECK(doc.adaptiveHistory().size() == 2);
+    CHECK(doc.models().history().size() == 2);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // EditorDocument: what the interactive editor edits, with no GL or ImGui (docs/architecture.md §1). The UI
-// calls these methods; tests call them directly. It coordinates four parts, each testable alone:
+// calls these methods and reads the parts it exposes (paths(), models(), history()) instead of
+// one-line forwards; tests do the same directly. It coordinates four parts, each testable alone:
 //
 //   store     ClipEdits: the clip (unwrapped), accepted poses per frame, foot contacts
 //   drag      DragSession: the drag state machine  beginDrag(e) -> dragTo(target)* / refine()* -> endDrag(),
@@ -134,14 +135,11 @@ public:
     gp::ModelVersionPtr model() const { return models_.current(); }  // the latest version (null if none)
     bool hasModel() const { return models_.hasModel(); }
     void setAdaptiveEnabled(bool on);
-    bool adaptiveEnabled() const { return models_.adaptiveEnabled(); }
-    int adaptivePending() const { return models_.pending(); }
+    // The model host's state, read-only (adaptive on, pending updates, status, update count and
+    // history): its changes go through the document (setModel, setAdaptiveEnabled, undo).
+    const ModelHost& models() const { return models_; }
     // Holds posted adaptive updates back until released (tests: "update running" without a race).
     void holdAdaptiveUpdates(bool on) { models_.holdUpdates(on); }
-    std::string adaptiveStatus() const { return models_.status(); }  // last update's outcome, "" if none yet
-    int adaptiveUpdates() const { return models_.updates(); }
-    // Every update since the model was installed, oldest first.
-    std::vector<AdaptiveHistoryEntry> adaptiveHistory() const { return models_.history(); }
     void restoreAdaptiveHistory(std::vector<AdaptiveHistoryEntry> entries) {
         models_.restoreHistory(std::move(entries));
     }
@@ -242,23 +240,10 @@ public:
     // ---- path editing (docs/maths.md §12) --------------------------------------------------
     // Starts editing `e`'s path with the default keys around the current frame; "" or why not.
     std::string beginPathEdit(Effector e);
-    // Installs a whole path edit (a loaded session); "" or why not.
-    std::string setPathEdit(PathEdit path) { return paths_.set(std::move(path)); }
-    void endPathEdit() { paths_.end(); }
-    const std::optional<PathEdit>& pathEdit() const { return paths_.edit(); }
-    // New key frames (0-based); keys at frames that were keys keep their offsets.
-    std::string setPathKeyFrames(std::vector<int> keyFrames) { return paths_.setKeyFrames(std::move(keyFrames)); }
-    std::string setPathKeyOffset(int key, const Eigen::Vector3d& offsetCm) {
-        return paths_.setKeyOffset(key, offsetCm);
-    }
-    // Moves a key to a world position (its offset becomes position − captured position).
-    std::string setPathKeyPosition(int key, const Eigen::Vector3d& positionCm) {
-        return paths_.setKeyPosition(key, positionCm);
-    }
-    void setPathMode(PathMode mode) { paths_.setMode(mode); }
-    Eigen::Vector3d pathKeyPosition(int key) const { return paths_.keyPosition(key); }  // captured + offset (cm)
-    std::vector<Eigen::Vector3d> pathTargets() const { return paths_.targets(); }       // edited, first..last key
-    std::vector<Eigen::Vector3d> pathCaptured() const { return paths_.captured(); }     // captured, first..last key
+    // The path being edited (edit/path_session.h): its keys, offsets and mode, set and read
+    // there (each change counts as a change to save); a regeneration reads it when it starts.
+    PathSession& paths() { return paths_; }
+    const PathSession& paths() const { return paths_; }
     // Solves the span between the first and last key on a background thread; "" or why not.
     std::string startRegenerate(int maxIterations = 500);
     bool regenerating() const { return regenerate_.running() || fill_.busy(); }

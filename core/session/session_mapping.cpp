@@ -27,13 +27,13 @@ SessionData sessionFromDocument(const EditorDocument& doc) {
     d.edits = doc.edits();
     d.undoSteps = doc.history().undoSteps();
     d.redoSteps = doc.history().redoSteps();
-    d.adaptiveHistory = doc.adaptiveHistory();
+    d.adaptiveHistory = doc.models().history();
     d.frame = doc.frame();
     for (int i = 0; i < kEffectorCount; ++i) d.pins[i] = doc.pinned(static_cast<Effector>(i));
     d.keys = doc.keys();
     d.compareMode = compareModeName(doc.compareMode());
-    d.adaptiveEnabled = doc.adaptiveEnabled();
-    if (const auto& p = doc.pathEdit()) {
+    d.adaptiveEnabled = doc.models().adaptiveEnabled();
+    if (const auto& p = doc.paths().edit()) {
         d.path.present = true;
         d.path.effector = p->effector;
         d.path.keyFrames = p->keyFrames;
@@ -84,7 +84,7 @@ void applySession(EditorDocument& doc, CheckedSession& s, const std::string& fil
     if (doc.hasModel()) doc.restoreAdaptiveHistory(std::move(d.adaptiveHistory));
     if (d.path.present) {
         PathEdit p{d.path.effector, d.path.keyFrames, d.path.keyOffsetsCm, d.path.mode};
-        if (const std::string problem = doc.setPathEdit(std::move(p)); !problem.empty())
+        if (const std::string problem = doc.paths().set(std::move(p)); !problem.empty())
             throw ParseError(file + ": path edit: " + problem);
     }
 }

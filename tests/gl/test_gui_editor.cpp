@@ -160,7 +160,7 @@ TEST_CASE("gui: dragging the right foot up by 15+ cm leaves it within 0.5 cm of 
     CHECK(doc.readout().reached);
     // The accepted pose went to the adaptive worker; the UI never waited for it.
     doc.waitIdle();
-    CHECK(doc.adaptiveUpdates() >= 1);
+    CHECK(doc.models().updates() >= 1);
 }
 
 TEST_CASE("gui golden: latent map and timeline panels") {

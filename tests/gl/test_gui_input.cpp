@@ -175,7 +175,7 @@ TEST_CASE("gui input: status messages follow the state they describe and stay in
     const auto errors = h->play(ui::GuiScript::parse("2 hover rhand\n4 down left\n6 moveby 0 -2\n10 up left\n"));
     REQUIRE(errors.empty());
     const std::string during = s.messages.latestText();
-    INFO("after the release: " << during << "  adaptive: " << doc.adaptiveStatus());
+    INFO("after the release: " << during << "  adaptive: " << doc.models().status());
     CHECK(during == "accepted pose for frame 41 (adaptive update running)");
     h->frame(3);
     CHECK(s.messages.latestText() == "accepted pose for frame 41 (adaptive update running)");  // still pending

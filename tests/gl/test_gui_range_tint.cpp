@@ -70,7 +70,7 @@ TEST_CASE("gui range tint: a hand dragged far out of reach is red and refused") 
     CHECK(shownFigure(*h->app).tint == render::kRangeRed);
     CHECK(shownFigure(*h->app).tintWeight == 1.0f);
     CHECK(contains(s.rangeLegend, "the model does not learn from it"));
-    CHECK(contains(doc.adaptiveStatus(), "not added to the model"));
+    CHECK(contains(doc.models().status(), "not added to the model"));
 
     // View > Pose range tint off: side colours and no legend.
     s.showRangeTint = false;

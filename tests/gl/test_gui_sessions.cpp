@@ -142,8 +142,8 @@ TEST_CASE(
     CHECK(h->play(s).empty());
     CHECK(doc.undoLabel() == "regenerate lfoot, frames 90-130");  // the key drag was no effector drag
 
-    REQUIRE(doc.pathEdit().has_value());
-    const PathEdit& path = *doc.pathEdit();
+    REQUIRE(doc.paths().edit().has_value());
+    const PathEdit& path = *doc.paths().edit();
     CHECK(path.keyFrames == std::vector<int>{88, 102, 116, 130});
     CHECK(path.keyOffsetsCm[1] == Eigen::Vector3d(0, 10, 4));
     INFO("key 3 offset after the mouse drag: " << path.keyOffsetsCm[2].transpose());
@@ -152,8 +152,9 @@ TEST_CASE(
         const int t = path.keyFrames[k];
         REQUIRE(doc.isEdited(t));
         const Eigen::Vector3d foot = effectorCm(doc.clip().skeleton, doc.edits().at(t).pose, Effector::kLFoot);
-        INFO("key " << k + 1 << " frame " << t + 1 << " residual " << (foot - doc.pathKeyPosition(k)).norm() << " cm");
-        CHECK((foot - doc.pathKeyPosition(k)).norm() <= 0.5);
+        INFO("key " << k + 1 << " frame " << t + 1 << " residual " << (foot - doc.paths().keyPosition(k)).norm()
+                    << " cm");
+        CHECK((foot - doc.paths().keyPosition(k)).norm() <= 0.5);
     }
     for (int t = 0; t < doc.frameCount(); ++t) CHECK(doc.isEdited(t) == (t > 88 && t < 130));
     const std::vector<std::string> before = bvhFrames(dir + "/before.bvh"), after = bvhFrames(dir + "/after.bvh");
@@ -243,7 +244,7 @@ TEST_CASE("gui: save session → quit → open it again gives the same poses, mo
     const std::map<int, EditRecord> edits = doc.edits();
     const std::string model = gp::modelToJsonText(*doc.model()->model);
     const int version = doc.model()->number;
-    const PathEdit path = *doc.pathEdit();
+    const PathEdit path = *doc.paths().edit();
     const render::OrbitCamera camera = h->app->state().camera;
     const int frame = doc.frame();
 
@@ -255,9 +256,9 @@ TEST_CASE("gui: save session → quit → open it again gives the same poses, mo
     REQUIRE(doc2.hasModel());
     CHECK(gp::modelToJsonText(*doc2.model()->model) == model);
     CHECK(doc2.model()->number == version);
-    REQUIRE(doc2.pathEdit().has_value());
-    CHECK(doc2.pathEdit()->keyFrames == path.keyFrames);
-    CHECK(doc2.pathEdit()->keyOffsetsCm == path.keyOffsetsCm);
+    REQUIRE(doc2.paths().edit().has_value());
+    CHECK(doc2.paths().edit()->keyFrames == path.keyFrames);
+    CHECK(doc2.paths().edit()->keyOffsetsCm == path.keyOffsetsCm);
     CHECK(doc2.frame() == frame);
     CHECK(h->app->state().camera.distanceCm == camera.distanceCm);
     CHECK(h->app->state().camera.yawDeg == camera.yawDeg);

@@ -36,7 +36,7 @@ void beginFootPath(Harness& h, Effector foot) {
     EditorDocument& doc = h.app->state().doc;
     doc.setFrame(kFrame);
     REQUIRE(doc.beginPathEdit(foot) == "");
-    REQUIRE(doc.pathEdit()->keyFrames == std::vector<int>{88, 102, 116, 130});
+    REQUIRE(doc.paths().edit()->keyFrames == std::vector<int>{88, 102, 116, 130});
     h.frame(3);
 }
 
@@ -89,10 +89,10 @@ TEST_CASE("gui path: dragging a path key up with the mouse raises its offset and
     EditorDocument& doc = s.doc;
     // The right foot is planted over frames 89–131 of 35_01, so every key starts under the foot's
     // handle (which wins the pick): lift key 2 clear of it first, as the panel's offset would.
-    REQUIRE(doc.setPathKeyOffset(kKey, Eigen::Vector3d(0, 15, 0)) == "");
+    REQUIRE(doc.paths().setKeyOffset(kKey, Eigen::Vector3d(0, 15, 0)) == "");
     h->frame(2);
-    const std::vector<Eigen::Vector3d> before = doc.pathTargets();
-    const Eigen::Vector3d offsetBefore = doc.pathEdit()->keyOffsetsCm[kKey];
+    const std::vector<Eigen::Vector3d> before = doc.paths().targets();
+    const Eigen::Vector3d offsetBefore = doc.paths().edit()->keyOffsetsCm[kKey];
     const float yaw = s.camera.yawDeg, pitch = s.camera.pitchDeg;
 
     hoverKey(*h, kKey);
@@ -105,7 +105,7 @@ TEST_CASE("gui path: dragging a path key up with the mouse raises its offset and
     h->input.mouseDown[0] = false;
     h->frame(2);
 
-    const Eigen::Vector3d offset = doc.pathEdit()->keyOffsetsCm[kKey];
+    const Eigen::Vector3d offset = doc.paths().edit()->keyOffsetsCm[kKey];
     INFO("offset before " << offsetBefore.transpose() << "  after " << offset.transpose());
     CHECK(offset.y() - offsetBefore.y() > 5.0);
     CHECK((offset - offsetBefore).norm() < 60.0);  // 40 px is not a metre
@@ -116,7 +116,7 @@ TEST_CASE("gui path: dragging a path key up with the mouse raises its offset and
     CHECK(std::abs(kx - h->input.mouseX) < 2.0f);
     CHECK(std::abs(ky - h->input.mouseY) < 2.0f);
     // The edited path moved at the key's frame and not at the fixed first key.
-    const std::vector<Eigen::Vector3d> after = doc.pathTargets();
+    const std::vector<Eigen::Vector3d> after = doc.paths().targets();
     REQUIRE(after.size() == before.size());
     const std::size_t at = std::size_t(102 - 88);
     CHECK(after[at].y() - before[at].y() > 5.0);
@@ -133,13 +133,13 @@ TEST_CASE("gui path: dragging a path key up with the mouse raises its offset and
     h->frame(2);
     h->input.mouseX += 30.0f;
     h->frame();
-    CHECK((doc.pathEdit()->keyOffsetsCm[kKey] - offset).norm() > 1.0);
+    CHECK((doc.paths().edit()->keyOffsetsCm[kKey] - offset).norm() > 1.0);
     h->input.keys[ui::key::kEscape] = true;
     h->frame();
     h->input.keys[ui::key::kEscape] = false;
     h->input.mouseDown[0] = false;
     h->frame(2);
-    CHECK((doc.pathEdit()->keyOffsetsCm[kKey] - offset).norm() < 1e-9);
+    CHECK((doc.paths().edit()->keyOffsetsCm[kKey] - offset).norm() < 1e-9);
     doc.waitIdle();
 }
 
@@ -149,8 +149,8 @@ TEST_CASE("gui path: the viewport shows the edited path, its keys, the captured 
     beginFootPath(*h, Effector::kLFoot);  // the left foot swings over these frames: a long path
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
-    REQUIRE(doc.setPathKeyOffset(1, Eigen::Vector3d(0, 20, 0)) == "");
-    REQUIRE(doc.setPathKeyOffset(2, Eigen::Vector3d(0, 20, 0)) == "");
+    REQUIRE(doc.paths().setKeyOffset(1, Eigen::Vector3d(0, 20, 0)) == "");
+    REQUIRE(doc.paths().setKeyOffset(2, Eigen::Vector3d(0, 20, 0)) == "");
     REQUIRE(doc.startRegenerate() == "");
     doc.waitIdle();
     std::string err;
@@ -182,7 +182,7 @@ TEST_CASE("gui path: the viewport shows the edited path, its keys, the captured 
     s.selectedKey = -1;
     const render::Image noSelection = shot();
     s.selectedKey = 1;
-    doc.endPathEdit();
+    doc.paths().end();
     const render::Image noPath = shot();
     const long ghost = countViewport(img, violet), ghostOff = countViewport(noGhost, violet);
     const long path = countViewport(img, blue), pathOff = countViewport(noPath, blue);
@@ -274,11 +274,11 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     p.frame(-1, -1, false);
     CHECK_FALSE(p.click("Done"));  // no path yet
     REQUIRE(p.click("Edit path"));
-    REQUIRE(doc.pathEdit().has_value());
-    CHECK(doc.pathEdit()->effector == Effector::kLHand);
-    CHECK(doc.pathEdit()->keyFrames == std::vector<int>{88, 102, 116, 130});
+    REQUIRE(doc.paths().edit().has_value());
+    CHECK(doc.paths().edit()->effector == Effector::kLHand);
+    CHECK(doc.paths().edit()->keyFrames == std::vector<int>{88, 102, 116, 130});
     REQUIRE(p.click("Displacement"));
-    CHECK(doc.pathEdit()->mode == PathMode::kDisplacement);
+    CHECK(doc.paths().edit()->mode == PathMode::kDisplacement);
     CHECK_FALSE(s.showBeforeGhost);
     REQUIRE(p.click("Before ghost"));
     CHECK(s.showBeforeGhost);
@@ -287,15 +287,15 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     CHECK(s.messages.latestText().find("regenerating") == std::string::npos);
     doc.setFrame(95);
     REQUIRE(p.click("Add key at current frame"));
-    CHECK(doc.pathEdit()->keyFrames == std::vector<int>{88, 95, 102, 116, 130});
-    REQUIRE(doc.setPathKeyOffset(2, Eigen::Vector3d(1.5, 12.0, -3.0)) == "");
+    CHECK(doc.paths().edit()->keyFrames == std::vector<int>{88, 95, 102, 116, 130});
+    REQUIRE(doc.paths().setKeyOffset(2, Eigen::Vector3d(1.5, 12.0, -3.0)) == "");
     s.selectedKey = 2;
     p.frame(-1, -1, false);
     p.frame(-1, -1, false);
     std::filesystem::create_directories(kOutDir);
     render::writePng(render::readFramebuffer(int(p.kPanelW), int(p.kPanelH)), kOutDir + "/path_panel.png");
     REQUIRE(p.click("Done"));
-    CHECK_FALSE(doc.pathEdit().has_value());
+    CHECK_FALSE(doc.paths().edit().has_value());
 }
 
 TEST_CASE("gui path: key handles stay at least 12 px across when the camera moves away, and can be grabbed") {

@@ -71,7 +71,7 @@ std::string pathKeys(EditorApp& app, const ActionArgs& a) {
         if (std::string err = parseIntArg(t, "a key frame", f); !err.empty()) return err;
         keys.push_back(f - 1);
     }
-    return app.state().doc.setPathKeyFrames(std::move(keys));
+    return app.state().doc.paths().setKeyFrames(std::move(keys));
 }
 
 std::string pathOffset(EditorApp& app, const ActionArgs& a) {
@@ -81,7 +81,7 @@ std::string pathOffset(EditorApp& app, const ActionArgs& a) {
     if (std::string err = parseIntArg(a[0], "the key number", key); !err.empty()) return err;
     for (int i = 0; i < 3; ++i)
         if (std::string err = parseFloatArg(a[1 + i], "an offset in cm", d[i]); !err.empty()) return err;
-    return app.state().doc.setPathKeyOffset(key - 1, d);
+    return app.state().doc.paths().setKeyOffset(key - 1, d);
 }
 
 std::string regenerate(EditorApp& app, const ActionArgs& a) {
@@ -377,7 +377,7 @@ std::vector<EditorAction> makeActions() {
          [](EditorApp& app, const ActionArgs& a) {
              if (a.empty() || (a[0] != "direct" && a[0] != "displacement"))
                  return "expected direct or displacement, found '" + (a.empty() ? std::string() : a[0]) + "'";
-             app.state().doc.setPathMode(a[0] == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
+             app.state().doc.paths().setMode(a[0] == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
              return std::string();
          }});
     add({"regenerate",
@@ -385,7 +385,7 @@ std::vector<EditorAction> makeActions() {
          "Ctrl+R",
          {{'R', kCtrl}},
          "solve the path span between the first and last key (background)",
-         [](const EditorApp& app) { return docOf(app).pathEdit() && !docOf(app).regenerating(); },
+         [](const EditorApp& app) { return docOf(app).paths().edit() && !docOf(app).regenerating(); },
          false,
          regenerate});
     add({"cancel-regenerate",
@@ -458,9 +458,9 @@ std::vector<EditorAction> makeActions() {
          "",
          {},
          "stop editing the path",
-         [](const EditorApp& app) { return docOf(app).pathEdit().has_value(); },
+         [](const EditorApp& app) { return docOf(app).paths().edit().has_value(); },
          false,
-         plain([](EditorApp& app) { app.state().doc.endPathEdit(); })});
+         plain([](EditorApp& app) { app.state().doc.paths().end(); })});
     // ---- Model
     const Enabled canTrain = [](const EditorApp& app) {
         return docOf(app).trainable() && !app.state().training.running();

@@ -327,11 +327,11 @@ void drawModelPanel(EditorState& s) {
                                     rows[static_cast<std::size_t>(c)], m.clipAt(c).frameCount(),
                                     c == 0 ? " (open)" : "");
         }
-        bool adaptive = doc.adaptiveEnabled();
+        bool adaptive = doc.models().adaptiveEnabled();
         if (ImGui::Checkbox("Adaptive active set after each drag", &adaptive)) doc.setAdaptiveEnabled(adaptive);
-        const int pending = doc.adaptivePending();
-        const std::string st = doc.adaptiveStatus();
-        const std::vector<AdaptiveHistoryEntry> history = doc.adaptiveHistory();
+        const int pending = doc.models().pending();
+        const std::string st = doc.models().status();
+        const std::vector<AdaptiveHistoryEntry> history = doc.models().history();
         // The last update's outcome only while it describes the model shown (undo and redo
         // install other versions).
         const bool describesThis = !history.empty() && history.back().versionAfter == v->number;

@@ -20,17 +20,17 @@ void reportError(EditorState& s, const std::string& err) {
 // Moves key `key` to `frame` (0-based). The document keeps offsets only for frames that stay
 // keys, so the moved key's offset is put back: retiming a key should not reset its shape.
 void retimeKey(EditorState& s, int key, int frame) {
-    const PathEdit path = *s.doc.pathEdit();
+    const PathEdit path = *s.doc.paths().edit();
     std::vector<int> frames = path.keyFrames;
     frames[key] = frame;
-    const std::string err = s.doc.setPathKeyFrames(frames);
+    const std::string err = s.doc.paths().setKeyFrames(frames);
     if (!err.empty()) return reportError(s, err);
-    s.doc.setPathKeyOffset(key, path.keyOffsetsCm[key]);
+    s.doc.paths().setKeyOffset(key, path.keyOffsetsCm[key]);
 }
 
 void keyTable(EditorState& s) {
     EditorDocument& doc = s.doc;
-    const int keys = static_cast<int>(doc.pathEdit()->keyFrames.size());
+    const int keys = static_cast<int>(doc.paths().edit()->keyFrames.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable(
@@ -47,7 +47,7 @@ void keyTable(EditorState& s) {
     int removeKey = -1;
     for (int k = 0; k < keys; ++k) {
         // Read per row: a row's edit may have changed the path.
-        const PathEdit& path = *doc.pathEdit();
+        const PathEdit& path = *doc.paths().edit();
         if (k >= static_cast<int>(path.keyFrames.size())) break;
         ImGui::PushID(k);
         ImGui::TableNextRow();
@@ -75,16 +75,16 @@ void keyTable(EditorState& s) {
             frame - 1 != path.keyFrames[k])
             retimeKey(s, k, frame - 1);
         ImGui::TableNextColumn();
-        const Eigen::Vector3d& o = doc.pathEdit()->keyOffsetsCm[k];
+        const Eigen::Vector3d& o = doc.paths().edit()->keyOffsetsCm[k];
         float v[3] = {float(o.x()), float(o.y()), float(o.z())};
         ImGui::SetNextItemWidth(-1);
         if (ImGui::DragFloat3("##offset", v, 0.1f, -500.0f, 500.0f, "%.1f"))
-            reportError(s, doc.setPathKeyOffset(k, Eigen::Vector3d(v[0], v[1], v[2])));
+            reportError(s, doc.paths().setKeyOffset(k, Eigen::Vector3d(v[0], v[1], v[2])));
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("x, y (up), z offset from the captured path, cm (drag or Ctrl+click to type)");
         ImGui::TableNextColumn();
         if (ImGui::SmallButton("Go")) {
-            doc.setFrame(doc.pathEdit()->keyFrames[k]);
+            doc.setFrame(doc.paths().edit()->keyFrames[k]);
             s.selectedKey = k;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Go to this key's frame");
@@ -98,9 +98,9 @@ void keyTable(EditorState& s) {
     }
     ImGui::EndTable();
     if (removeKey >= 0) {
-        std::vector<int> frames = doc.pathEdit()->keyFrames;
+        std::vector<int> frames = doc.paths().edit()->keyFrames;
         frames.erase(frames.begin() + removeKey);
-        reportError(s, doc.setPathKeyFrames(frames));
+        reportError(s, doc.paths().setKeyFrames(frames));
         if (s.selectedKey >= removeKey) s.selectedKey = s.selectedKey == removeKey ? -1 : s.selectedKey - 1;
     }
 }
@@ -173,7 +173,7 @@ void drawPathPanel(EditorState& s) {
         ImGui::TextDisabled("No clip");
         return;
     }
-    const auto& path = doc.pathEdit();
+    const auto& path = doc.paths().edit();
     if (!path || s.selectedKey >= static_cast<int>(path->keyFrames.size())) s.selectedKey = -1;
 
     // Effector: the path's while one is edited, else the viewport's selection (right foot by default).
@@ -207,27 +207,28 @@ void drawPathPanel(EditorState& s) {
         return;
     }
     if (ImGui::Button("Done")) {
-        doc.endPathEdit();
+        doc.paths().end();
         s.selectedKey = s.hoveredKey = -1;
         return;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop editing the path (regenerated frames stay)");
     ImGui::SameLine();
-    if (ImGui::Button("Default keys")) reportError(s, doc.beginPathEdit(doc.pathEdit()->effector));
+    if (ImGui::Button("Default keys")) reportError(s, doc.beginPathEdit(doc.paths().edit()->effector));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Four keys 14 frames apart around the current frame; offsets reset");
     sameLineIfFits("Regenerate");
     regenerateRow(s);
-    if (!doc.pathEdit()) return;
+    if (!doc.paths().edit()) return;
 
-    int mode = static_cast<int>(doc.pathEdit()->mode);
-    if (ImGui::RadioButton("Direct", &mode, static_cast<int>(PathMode::kDirect))) doc.setPathMode(PathMode::kDirect);
+    int mode = static_cast<int>(doc.paths().edit()->mode);
+    if (ImGui::RadioButton("Direct", &mode, static_cast<int>(PathMode::kDirect)))
+        doc.paths().setMode(PathMode::kDirect);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "The paper's: a Hermite curve through the keys' positions\n(smooth, but loses the captured detail between "
             "keys)");
     ImGui::SameLine();
     if (ImGui::RadioButton("Displacement", &mode, static_cast<int>(PathMode::kDisplacement)))
-        doc.setPathMode(PathMode::kDisplacement);
+        doc.paths().setMode(PathMode::kDisplacement);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "A Hermite curve through the keys' offsets, added to the captured path\n(keeps the captured detail)");
@@ -239,12 +240,12 @@ void drawPathPanel(EditorState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("This frame's pose before the last undoable step, in violet");
     sameLineIfFits("Add key at current frame");
     if (ImGui::Button("Add key at current frame")) {
-        std::vector<int> frames = doc.pathEdit()->keyFrames;
+        std::vector<int> frames = doc.paths().edit()->keyFrames;
         if (std::find(frames.begin(), frames.end(), doc.frame()) != frames.end()) {
             s.setStatus("frame " + std::to_string(doc.frame() + 1) + " is already a key", true);
         } else {
             frames.insert(std::upper_bound(frames.begin(), frames.end(), doc.frame()), doc.frame());
-            reportError(s, doc.setPathKeyFrames(frames));
+            reportError(s, doc.paths().setKeyFrames(frames));
         }
     }
 

@@ -94,7 +94,7 @@ void drawTimelineTicks(ImDrawList& dl, const TimelineTrack& t, double fps) {
 }
 
 void drawEditedFrameMarks(ImDrawList& dl, const TimelineTrack& t, const EditorDocument& doc) {
-    const auto& path = doc.pathEdit();
+    const auto& path = doc.paths().edit();
     if (path)  // the edited span, tinted under the edited-frame marks
         dl.AddRectFilled(ImVec2(t.xOf(path->keyFrames.front()), t.t0.y + t.h * 0.4f),
                          ImVec2(t.xOf(path->keyFrames.back()), t.t1.y - 2.0f), IM_COL32(51, 140, 242, 60));
@@ -132,7 +132,7 @@ void drawAnimatorKeys(ImDrawList& dl, const TimelineTrack& t, const EditorState&
 }
 
 void drawPathKeyDiamonds(ImDrawList& dl, const TimelineTrack& t, const EditorState& s) {
-    const auto& path = s.doc.pathEdit();
+    const auto& path = s.doc.paths().edit();
     if (!path) return;
     // A diamond per key above the edited-frame marks (the selected key in the handle colour).
     const float yc = t.t0.y + t.h * 0.4f, r = 5.0f;
@@ -216,7 +216,7 @@ void TimelinePanel::draw(EditorState& s) {
     // when held by regeneration, grey when switched off; right-click one to switch it. Shown
     // while they matter: a path is edited or drags spread over a span.
     static const ContactSet kNone;
-    const ContactSet& contacts = doc.pathEdit() || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
+    const ContactSet& contacts = doc.paths().edit() || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
     const int hoveredContact = drawContactLanes(*dl, track, contacts, ImGui::GetIO().MousePos);
     if (hoveredContact >= 0 && ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
         const FootContact& c = contacts.contacts[hoveredContact];

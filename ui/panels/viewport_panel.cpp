@@ -74,7 +74,7 @@ std::vector<render::Handle> keyHandles(const EditorState& s) {
     if (const auto p = editedPath(s)) {
         for (std::size_t k = 0; k < p->keysCm.size(); ++k)
             out.push_back({static_cast<int>(k), p->keysCm[k], p->keyRadiusCm(), render::HandleState::kIdle});
-        const std::vector<int>& frames = s.doc.pathEdit()->keyFrames;
+        const std::vector<int>& frames = s.doc.paths().edit()->keyFrames;
         std::stable_sort(out.begin(), out.end(), [&](const render::Handle& a, const render::Handle& b) {
             return std::abs(frames[a.id] - s.doc.frame()) < std::abs(frames[b.id] - s.doc.frame());
         });
@@ -95,9 +95,9 @@ bool viewportWindowPosition(const EditorState& s, const Eigen::Vector3d& pointCm
 }
 
 bool pathKeyWindowPosition(const EditorState& s, int key, float& x, float& y) {
-    const auto& path = s.doc.pathEdit();
+    const auto& path = s.doc.paths().edit();
     if (!path || key < 0 || key >= static_cast<int>(path->keyFrames.size())) return false;
-    return viewportWindowPosition(s, s.doc.pathKeyPosition(key), x, y);
+    return viewportWindowPosition(s, s.doc.paths().keyPosition(key), x, y);
 }
 
 ViewportPanel::ViewportPanel() : renderer_(std::make_unique<render::SceneRenderer>(1)) {}
@@ -250,7 +250,7 @@ void ViewportPanel::pressLeft(EditorState& s, const Pointer& p, const render::Ro
     } else if (s.hoveredKey >= 0) {
         mode_ = Mode::kDragKey;
         dragKey_ = s.hoveredKey;
-        dragKeyStartOffset_ = doc.pathEdit()->keyOffsetsCm[dragKey_];
+        dragKeyStartOffset_ = doc.paths().edit()->keyOffsetsCm[dragKey_];
         s.selectedKey = dragKey_;
         s.playing = false;
     } else {
@@ -297,9 +297,9 @@ void ViewportPanel::continueHandleDrag(EditorState& s, const Pointer& p) {
         doc.endDrag();
         mode_ = Mode::kNone;
         const std::string accepted = "accepted pose for frame " + std::to_string(doc.frame() + 1);
-        if (doc.adaptivePending() > 0)
+        if (doc.models().pending() > 0)
             s.setStatusWhile(
-                accepted + " (adaptive update running)", [d = &doc] { return d->adaptivePending() > 0; },
+                accepted + " (adaptive update running)", [d = &doc] { return d->models().pending() > 0; },
                 accepted + " (adaptive update done)");
         else
             s.setStatus(accepted);
@@ -319,19 +319,19 @@ void ViewportPanel::continueHandleDrag(EditorState& s, const Pointer& p) {
 void ViewportPanel::continueKeyDrag(EditorState& s, const Pointer& p) {
     EditorDocument& doc = s.doc;
     // The key applies live (the path is only targets; Regenerate solves poses later).
-    if (!doc.pathEdit() || dragKey_ >= static_cast<int>(doc.pathEdit()->keyFrames.size())) {
+    if (!doc.paths().edit() || dragKey_ >= static_cast<int>(doc.paths().edit()->keyFrames.size())) {
         mode_ = Mode::kNone;
     } else if (!ImGui::GetIO().MouseDown[0]) {
         mode_ = Mode::kNone;
-        const Eigen::Vector3d o = doc.pathEdit()->keyOffsetsCm[dragKey_];
+        const Eigen::Vector3d o = doc.paths().edit()->keyOffsetsCm[dragKey_];
         char buf[96];
         std::snprintf(buf, sizeof buf, "key %d moved to offset (%.1f, %.1f, %.1f) cm", dragKey_ + 1, o.x(), o.y(),
                       o.z());
         s.setStatus(buf);
     } else if (movedThisFrame_) {
         Eigen::Vector3d hit;
-        if (dragPlanePoint(s.camera, p.mx, p.my, width_, height_, doc.pathKeyPosition(dragKey_), p.shift, hit)) {
-            const std::string err = doc.setPathKeyPosition(dragKey_, hit);
+        if (dragPlanePoint(s.camera, p.mx, p.my, width_, height_, doc.paths().keyPosition(dragKey_), p.shift, hit)) {
+            const std::string err = doc.paths().setKeyPosition(dragKey_, hit);
             if (!err.empty()) s.setStatus(err, true);
         }
     }
@@ -489,7 +489,7 @@ void ViewportPanel::handleViewportKeys(EditorState& s) {
         s.setStatus("drag cancelled");
     }
     if (chordPressed(256 /*Escape*/) && mode_ == Mode::kDragKey) {
-        s.doc.setPathKeyOffset(dragKey_, dragKeyStartOffset_);
+        s.doc.paths().setKeyOffset(dragKey_, dragKeyStartOffset_);
         mode_ = Mode::kNone;
         s.setStatus("key drag cancelled");
     }
@@ -532,7 +532,7 @@ void ViewportPanel::drawMouseHints(EditorState& s, float x0, float y0) const {
             ? "Dragging: release to accept  |  X/Y/Z: along an axis  |  Shift: ground plane  |  Esc: cancel"
         : mode_ == Mode::kDragKey    ? "Dragging path key: the path follows  |  Shift: ground plane  |  Esc: cancel"
         : mode_ == Mode::kRotateRing ? "Rotating the joint: release to apply  |  Ctrl: 5 deg steps  |  Esc: cancel"
-        : s.doc.pathEdit()
+        : s.doc.paths().edit()
             ? "LMB handle/key: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame"
             : "LMB handle: drag  |  RMB/P: pin  |  LMB: orbit  |  MMB/Shift+LMB: pan  |  Wheel: zoom  |  F: frame";
     dl->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(230, 232, 236, 200), hint);
@@ -567,10 +567,10 @@ void ViewportPanel::showHoverTooltips(const EditorState& s) const {
                           held ? "\nAlt+click to release it (here and on the neighbouring frames that hold it)" : "");
     }
     const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
-    if (key >= 0 && s.doc.pathEdit() && key < static_cast<int>(s.doc.pathEdit()->keyFrames.size())) {
-        const Eigen::Vector3d& o = s.doc.pathEdit()->keyOffsetsCm[key];
+    if (key >= 0 && s.doc.paths().edit() && key < static_cast<int>(s.doc.paths().edit()->keyFrames.size())) {
+        const Eigen::Vector3d& o = s.doc.paths().edit()->keyOffsetsCm[key];
         ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1,
-                          s.doc.pathEdit()->keyFrames[key] + 1, o.x(), o.y(), o.z());
+                          s.doc.paths().edit()->keyFrames[key] + 1, o.x(), o.y(), o.z());
     }
 }
 

@@ -68,12 +68,12 @@ std::optional<Pose> beforeGhostPose(const EditorState& s) {
 }
 
 std::optional<render::Path> editedPath(const EditorState& s) {
-    const auto& path = s.doc.pathEdit();
+    const auto& path = s.doc.paths().edit();
     if (!path) return std::nullopt;
     render::Path p;
-    for (const Eigen::Vector3d& v : s.doc.pathTargets()) p.pointsCm.push_back(toGlm(v));
+    for (const Eigen::Vector3d& v : s.doc.paths().targets()) p.pointsCm.push_back(toGlm(v));
     const int keys = static_cast<int>(path->keyFrames.size());
-    for (int k = 0; k < keys; ++k) p.keysCm.push_back(toGlm(s.doc.pathKeyPosition(k)));
+    for (int k = 0; k < keys; ++k) p.keysCm.push_back(toGlm(s.doc.paths().keyPosition(k)));
     p.colour = {0.20f, 0.55f, 0.95f};
     p.radiusCm = 0.7f;
     const int first = path->keyFrames.front(), last = path->keyFrames.back();
@@ -150,10 +150,10 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
                                       double(doc.frame() - gap->a) / double(gap->b - gap->a)),
                      glm::vec3(0.95f, 0.8f, 0.25f));
     addMotionOverlays(s, scene);
-    if (doc.pathEdit() && s.showCapturedPath) {
+    if (doc.paths().edit() && s.showCapturedPath) {
         // Fainter and thinner than the edited path, which covers it where the two agree.
         render::Path captured;
-        for (const Eigen::Vector3d& v : doc.pathCaptured()) captured.pointsCm.push_back(toGlm(v));
+        for (const Eigen::Vector3d& v : doc.paths().captured()) captured.pointsCm.push_back(toGlm(v));
         captured.colour = {0.62f, 0.64f, 0.70f};
         captured.radiusCm = 0.35f;
         scene.paths.push_back(std::move(captured));

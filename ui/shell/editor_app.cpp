@@ -245,8 +245,8 @@ void EditorApp::waitIdle() {
 bool EditorApp::animating() const {
     const EditorDocument& d = state_.doc;
     return replay_.pending() || state_.playing || d.dragging() || d.latentDragging() || d.regenerating() ||
-           state_.training.running() || state_.compareTraining.running() || d.adaptivePending() > 0 || latent_.busy() ||
-           (d.hasModel() && !latent_.upToDate(state_));
+           state_.training.running() || state_.compareTraining.running() || d.models().pending() > 0 ||
+           latent_.busy() || (d.hasModel() && !latent_.upToDate(state_));
 }
 
 std::string EditorApp::title() const {

@@ -95,7 +95,7 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
     ImGui::Begin("Readout and path", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
     if (ImGui::BeginTabBar("##bottomright")) {
         // The Path tab comes forward while a path is edited.
-        const bool pathActive = state.doc.pathEdit().has_value();
+        const bool pathActive = state.doc.paths().edit().has_value();
         if (ImGui::BeginTabItem("IK readout")) {
             drawIkReadout(state);
             ImGui::EndTabItem();

@@ -54,7 +54,7 @@ struct EditorState {
     std::optional<Pose> posePreview;
     FrameProfile profile;  // where the last frame's time went (bench --only ui)
 
-    // Path editing (path panel, viewport, timeline); keys are indices into doc.pathEdit()->keyFrames.
+    // Path editing (path panel, viewport, timeline); keys are indices into doc.paths().edit()->keyFrames.
     int hoveredKey = -1;   // path key under the mouse in the viewport, -1 none
     int selectedKey = -1;  // path key last dragged or picked, -1 none
     // Frames selected on the timeline by Shift+drag (0-based, first ≤ last): Fill between keys

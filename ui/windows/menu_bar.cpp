@@ -157,7 +157,7 @@ void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText)
         t.menuItem(app, "train", "Train");
         t.menuItem(app, "train-clips", "Train on clips...");
         t.menuItem(app, "cancel-train", "Cancel training");
-        const bool adaptive = app.state().doc.adaptiveEnabled();
+        const bool adaptive = app.state().doc.models().adaptiveEnabled();
         t.menuItem(app, "adaptive", "Adaptive active set", {adaptive ? "off" : "on"}, adaptive);
         ImGui::EndMenu();
     }
@@ -181,7 +181,7 @@ void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText)
         bg = "training " + std::to_string(p.iteration) + "/" + std::to_string(p.total);
     } else if (s.doc.filling()) {
         bg = "filling between keys...";
-    } else if (s.doc.adaptivePending() > 0) {
+    } else if (s.doc.models().pending() > 0) {
         bg = "adaptive update...";
     } else if (latentBusyText && *latentBusyText) {
         bg = latentBusyText;
