@@ -6,9 +6,11 @@
 #include <filesystem>
 
 #include "io/clip_loader.h"
+#include "ui/actions/editor_commands.h"
 #include "ui/input/input_state.h"
 #include "ui/panels/model_panel.h"
-#include "ui/shell/editor_app.h"
+#include "ui/shell/editor_state.h"
+#include "ui/windows/file_dialog.h"
 
 namespace mgp::ui {
 
@@ -28,7 +30,7 @@ const char* shortReason(const std::string& reason) {
 }
 }  // namespace
 
-void TrainClipsWindow::show(EditorApp& app) {
+void TrainClipsWindow::show(EditorCommands& app) {
     const EditorDocument& doc = app.state().doc;
     candidates_.clear();
     checked_.clear();
@@ -45,7 +47,7 @@ void TrainClipsWindow::show(EditorApp& app) {
     open_ = true;
 }
 
-const Clip* TrainClipsWindow::clipOf(std::size_t i, const EditorApp& app) const {
+const Clip* TrainClipsWindow::clipOf(std::size_t i, const EditorCommands& app) const {
     if (i >= candidates_.size()) return nullptr;
     if (candidates_[i].open) return app.state().doc.hasClip() ? &app.state().doc.clip() : nullptr;
     const auto it = loaded_.find(candidates_[i].path);
@@ -132,7 +134,7 @@ int TrainClipsWindow::totalRows(std::string* error) const {
     return rows;
 }
 
-std::string TrainClipsWindow::train(EditorApp& app) {
+std::string TrainClipsWindow::train(EditorCommands& app) {
     EditorState& s = app.state();
     if (!open_ || candidates_.empty()) return "open Model > Train on clips... first";
     if (!s.doc.hasClip() || s.doc.clip().name != openName_ || s.doc.clip().frameCount() != openFrames_)
@@ -159,7 +161,7 @@ std::string TrainClipsWindow::train(EditorApp& app) {
     return err;
 }
 
-void TrainClipsWindow::draw(EditorApp& app) {
+void TrainClipsWindow::draw(EditorCommands& app) {
     EditorState& s = app.state();
     if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
         ImGui::OpenPopup(kTitle);
