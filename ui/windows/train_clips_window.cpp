@@ -161,23 +161,8 @@ std::string TrainClipsWindow::train(EditorCommands& app) {
     return err;
 }
 
-void TrainClipsWindow::draw(EditorCommands& app) {
+void TrainClipsWindow::drawCandidates(EditorCommands& app, float scale) {
     EditorState& s = app.state();
-    if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
-        ImGui::OpenPopup(kTitle);
-    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    popupUp_ =
-        ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-    if (!popupUp_) return;
-    if (!open_) {  // closed by train() or an action
-        ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-        popupUp_ = false;
-        return;
-    }
-    const float scale = app.uiScale();
-    ImGui::Text("One model from the open clip and other clips of its skeleton");
-    ImGui::TextDisabled("The open clip is always included and becomes the model's primary clip.");
     // The list: open clip, offered clips, refused ones (greyed, the reason as tooltip).
     const float rowH = ImGui::GetFrameHeightWithSpacing();
     const float listH =
@@ -216,6 +201,9 @@ void TrainClipsWindow::draw(EditorCommands& app) {
         ImGui::PopID();
     }
     ImGui::EndChild();
+}
+
+void TrainClipsWindow::drawAddFile(float scale) {
     // Add file…: a path typed in (there is no native file dialog).
     char buf[512];
     const std::size_t n = std::min(addPath_.size(), sizeof buf - 1);
@@ -230,7 +218,9 @@ void TrainClipsWindow::draw(EditorCommands& app) {
         if (error_.empty()) addPath_.clear();
     }
     ImGui::EndDisabled();
+}
 
+void TrainClipsWindow::drawFrameSelection(float scale) {
     // Frames of each clip, as `train --frames A:B --step K`.
     ImGui::PushItemWidth(70.0f * scale);
     ImGui::InputInt("from", &selection_.first, 0);
@@ -244,8 +234,9 @@ void TrainClipsWindow::draw(EditorCommands& app) {
     selection_.step = std::max(selection_.step, 1);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Frames from..to of each clip (counted from 1 within it), then every step-th");
-    drawTrainOptions(s.trainOptions);
+}
 
+int TrainClipsWindow::drawSummary(const EditorState& s, float scale) const {
     std::string rangeError;
     const int rows = totalRows(&rangeError);
     int clipsChecked = 0;
@@ -264,6 +255,31 @@ void TrainClipsWindow::draw(EditorCommands& app) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", error_.c_str());
         ImGui::PopTextWrapPos();
     }
+    return rows;
+}
+
+void TrainClipsWindow::draw(EditorCommands& app) {
+    EditorState& s = app.state();
+    if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
+        ImGui::OpenPopup(kTitle);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    popupUp_ =
+        ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!popupUp_) return;
+    if (!open_) {  // closed by train() or an action
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        popupUp_ = false;
+        return;
+    }
+    const float scale = app.uiScale();
+    ImGui::Text("One model from the open clip and other clips of its skeleton");
+    ImGui::TextDisabled("The open clip is always included and becomes the model's primary clip.");
+    drawCandidates(app, scale);
+    drawAddFile(scale);
+    drawFrameSelection(scale);
+    drawTrainOptions(s.trainOptions);
+    const int rows = drawSummary(s, scale);
     const bool busy = s.training.running();
     const bool canTrain = !busy && rows >= 3;
     ImGui::BeginDisabled(!canTrain);

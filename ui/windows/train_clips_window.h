@@ -17,6 +17,7 @@
 namespace mgp::ui {
 
 class EditorCommands;
+struct EditorState;
 
 class TrainClipsWindow {
 public:
@@ -45,6 +46,12 @@ public:
 private:
     const Clip* clipOf(std::size_t i, const EditorCommands& app) const;  // loaded (or the open clip), null if not
     std::string load(std::size_t i);                                     // "" or the reader's error
+    // The parts of draw(), top to bottom.
+    void drawCandidates(EditorCommands& app, float scale);  // the list, each row's checkbox
+    void drawAddFile(float scale);                          // a path typed in, and its button
+    void drawFrameSelection(float scale);                   // from, to and step of each clip
+    // N, a frame range's error and the last refusal; returns N (-1 when the range is wrong).
+    int drawSummary(const EditorState& s, float scale) const;
 
     bool open_ = false;
     bool popupUp_ = false;  // the modal was drawn last frame
