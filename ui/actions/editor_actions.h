@@ -3,7 +3,8 @@
 // arguments, a shortcut, an enabled predicate and run(args). The menus, the keyboard shortcuts,
 // the F1 help window, the script player and docs/guide.md's action table all read this table, so
 // a new action is added once. Scripts run an action whatever its predicate says, so they get
-// the action's own error ("nothing to undo") instead of silence.
+// the action's own error ("nothing to undo") instead of silence. Actions ask the editor shell
+// for what they do through EditorCommands (editor_commands.h).
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,7 +13,7 @@
 
 namespace mgp::ui {
 
-class EditorApp;
+class EditorCommands;
 
 using ActionArgs = std::vector<std::string>;  // the arguments after the action's name
 
@@ -29,10 +30,10 @@ struct EditorAction {
     std::vector<KeyChord> chords;  // the keys that run it (may be fewer than `shortcut` names)
     std::string summary;           // what it does, one line (F1 and docs/guide.md)
     // Whether the menu item is enabled and the shortcut fires; null = always.
-    std::function<bool(const EditorApp&)> enabled;
+    std::function<bool(const EditorCommands&)> enabled;
     // The shortcut also fires when disabled, so the user hears why ("nothing to undo").
     bool keyWhenDisabled = false;
-    std::function<std::string(EditorApp&, const ActionArgs&)> run;  // "" or the error
+    std::function<std::string(EditorCommands&, const ActionArgs&)> run;  // "" or the error
 };
 
 class ActionTable {
@@ -41,16 +42,16 @@ public:
 
     const std::vector<EditorAction>& actions() const { return actions_; }
     const EditorAction* find(const std::string& name) const;  // null if unknown
-    bool enabled(const std::string& name, const EditorApp& app) const;
+    bool enabled(const std::string& name, const EditorCommands& app) const;
 
     // args[0] is the name: "" or the error (an unknown name included).
-    std::string run(EditorApp& app, const std::vector<std::string>& args) const;
+    std::string run(EditorCommands& app, const std::vector<std::string>& args) const;
     // Runs the actions whose chord went down this frame (between NewFrame and Render); errors go
     // to the status line.
-    void runShortcuts(EditorApp& app) const;
+    void runShortcuts(EditorCommands& app) const;
     // A menu item for the action: `label` and its shortcut, greyed out unless enabled (and
     // `alsoEnabled`); runs it with `args` when clicked, errors to the status line.
-    void menuItem(EditorApp& app, const std::string& name, const std::string& label, const ActionArgs& args = {},
+    void menuItem(EditorCommands& app, const std::string& name, const std::string& label, const ActionArgs& args = {},
                   bool selected = false, bool alsoEnabled = true) const;
     // docs/guide.md's table of script actions (markdown), generated from the table.
     std::string markdownTable() const;

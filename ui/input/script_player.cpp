@@ -2,13 +2,13 @@
 
 #include "ui/actions/action_args.h"
 #include "ui/actions/editor_actions.h"
-#include "ui/shell/editor_app.h"
+#include "ui/actions/editor_commands.h"
 
 namespace mgp::ui {
 
 ScriptPlayer::ScriptPlayer(GuiScript script) : script_(std::move(script)) {}
 
-void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<std::string>& screenshots) {
+void ScriptPlayer::apply(int frame, InputState& in, EditorCommands& app, std::vector<std::string>& screenshots) {
     const auto& ev = script_.events();
     while (next_ < ev.size() && ev[next_].frame <= frame) {
         const ScriptEvent& e = ev[next_++];
@@ -17,7 +17,7 @@ void ScriptPlayer::apply(int frame, InputState& in, EditorApp& app, std::vector<
     }
 }
 
-std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorApp& app,
+std::string ScriptPlayer::play(const ScriptEvent& e, InputState& in, EditorCommands& app,
                                std::vector<std::string>& screenshots) {
     const auto& a = e.args;
     // Scripts made with GuiScript::add skip parse()'s checks: arguments are checked here too.

@@ -10,20 +10,21 @@
 
 namespace mgp::ui {
 
-class EditorApp;
+class EditorCommands;
 
 class ScriptPlayer {
 public:
     explicit ScriptPlayer(GuiScript script);
     // Applies the events of `frame` (before EditorApp::frame). Screenshot actions are returned in
     // `screenshots` and must be written after the frame is drawn.
-    void apply(int frame, InputState& input, EditorApp& app, std::vector<std::string>& screenshots);
+    void apply(int frame, InputState& input, EditorCommands& app, std::vector<std::string>& screenshots);
     int lastFrame() const { return script_.lastFrame(); }
     const std::vector<std::string>& errors() const { return errors_; }
 
 private:
     // One event: "" or the error.
-    std::string play(const ScriptEvent& e, InputState& input, EditorApp& app, std::vector<std::string>& screenshots);
+    std::string play(const ScriptEvent& e, InputState& input, EditorCommands& app,
+                     std::vector<std::string>& screenshots);
 
     GuiScript script_;
     std::size_t next_ = 0;

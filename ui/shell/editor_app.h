@@ -6,8 +6,10 @@
 //
 // Default layout (1280×800): menu bar; viewport in the centre; Model panel, latent map and IK
 // readout on the right; timeline and status line at the bottom (editor_layout.h). What the
-// menus, shortcuts and scripts can do is the action table (editor_actions.h); the modal
-// questions are editor_prompts.h; the script player is script_player.h.
+// menus, shortcuts and scripts can do is the action table (editor_actions.h); it, the menu bar,
+// the windows and the script player reach the editor through EditorCommands
+// (editor_commands.h), which EditorApp implements. The modal questions are editor_prompts.h; the
+// script player is script_player.h.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -16,8 +18,7 @@
 #include <vector>
 
 #include "render/png_capture.h"
-#include "session/autosave_policy.h"
-#include "session/recent_files.h"
+#include "ui/actions/editor_commands.h"
 #include "ui/input/input_replay.h"
 #include "ui/input/input_state.h"
 #include "ui/input/script_player.h"
@@ -48,7 +49,7 @@ struct EditorOptions {
     std::string layoutFile;
 };
 
-class EditorApp {
+class EditorApp : public EditorCommands {
 public:
     explicit EditorApp(EditorOptions options = {});  // needs a current GL 3.3 core context
     ~EditorApp();
@@ -56,73 +57,73 @@ public:
     EditorApp& operator=(const EditorApp&) = delete;
 
     // Each returns "" or the error (also shown in the status line). Nothing here throws.
-    std::string openClip(const std::string& path);
-    void openSyntheticClip(const std::string& why);
+    std::string openClip(const std::string& path) override;
+    void openSyntheticClip(const std::string& why) override;
     // Opens a model with the clip it was trained on. When that is not the open clip, it asks
     // first (Open its clip, or Cancel) and returns "" while the question is up.
     // `askedAboutUnsaved`: the caller already asked (before a file dialog, a recent file).
-    std::string openModel(const std::string& path, bool askedAboutUnsaved = false);
-    std::string saveModel(const std::string& path);
+    std::string openModel(const std::string& path, bool askedAboutUnsaved = false) override;
+    std::string saveModel(const std::string& path) override;
     // Makes the model's training clip `name` the open clip at `frame` (0-based), the model staying
     // (gp::withPrimaryClip); asks about unsaved changes first. "" or the error.
-    std::string openModelClip(const std::string& name, int frame);
+    std::string openModelClip(const std::string& name, int frame) override;
     // Trainings replace the model when they finish: with a model no file holds, they start after
     // asking about it (and return "" while the question is up).
-    std::string startTraining();  // on the open clip with state().trainOptions
+    std::string startTraining() override;  // on the open clip with state().trainOptions
     // On clips checked by gp::prepareTrainingClips (the open clip first) with state().trainOptions:
     // Model > Train on clips... (train_clips_window.h).
-    std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection);
-    std::string startCompareTraining();  // the compare model: the other kernel, same options
-    // Sessions (core/session/session_file.h): clip reference, model, edits, camera, UI state.
-    std::string openSession(const std::string& path, bool addToRecent = true);
-    std::string saveSession(const std::string& path);  // becomes the current session file
-    void saveSessionOrAsk();    // to the current session file, or the Save dialog when there is none
-    std::string autosaveNow();  // to this editor's autosave file
+    std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) override;
+    std::string startCompareTraining() override;  // the compare model: the other kernel, same options
+    // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
+    std::string openSession(const std::string& path, bool addToRecent = true) override;
+    std::string saveSession(const std::string& path) override;  // becomes the current session file
+    void saveSessionOrAsk() override;    // to the current session file, or the Save dialog when there is none
+    std::string autosaveNow() override;  // to this editor's autosave file
     // Restores an autosave (the newest one a dead editor left behind when `path` is "").
-    std::string restoreAutosave(const std::string& path = "");
+    std::string restoreAutosave(const std::string& path = "") override;
     // Exports: the edited motion as BVH (the CLI's exporter) and the 3-D view as PNG.
     // The edited motion as BVH, glTF or FBX (by the path's extension; `defaultExtension` when it has
     // none). FBX runs on the export worker; pollExport reports it.
-    std::string exportMotion(const std::string& path, const std::string& defaultExtension);
-    std::string exportPng(const std::string& path);
+    std::string exportMotion(const std::string& path, const std::string& defaultExtension) override;
+    std::string exportPng(const std::string& path) override;
     // Opens the file dialog for `kind`; with `what` ("opening a model") after asking about
     // unsaved changes, since the document will be replaced.
-    void askForFile(FileKind kind, const std::string& what = "");
+    void askForFile(FileKind kind, const std::string& what = "") override;
     // Runs `action` now, or after asking about unsaved changes ("Save them before <what>?").
-    void guardUnsaved(std::function<void()> action, std::string what);
+    void guardUnsaved(std::function<void()> action, std::string what) override;
     // Runs `run` now and returns its error when nothing is `unsaved`; else asks as guardUnsaved
     // does and returns "" while the question is up (an error after it goes to the status line).
-    std::string runAfterAsking(bool unsaved, std::function<std::string()> run, std::string what);
-    void copyPose();          // the current frame's pose to the pose clipboard
-    std::string pastePose();  // onto the current frame (root position kept), one undo step
-    bool hasCopiedPose() const { return poseClipboard_.has_value(); }
-    std::string mirrorPose();  // the current frame's pose mirrored left/right, one undo step
+    std::string runAfterAsking(bool unsaved, std::function<std::string()> run, std::string what) override;
+    void copyPose() override;          // the current frame's pose to the pose clipboard
+    std::string pastePose() override;  // onto the current frame (root position kept), one undo step
+    bool hasCopiedPose() const override { return poseClipboard_.has_value(); }
+    std::string mirrorPose() override;  // the current frame's pose mirrored left/right, one undo step
     // Rotate joint: no arguments shows the window; JOINT and one angle (degrees) per axis it
     // animates, in x, y, z order, sets them as one undo step (with the window's prior option).
-    std::string rotateJoint(const std::vector<std::string>& args);
-    JointRotationWindow& jointWindow() { return jointWindow_; }
+    std::string rotateJoint(const std::vector<std::string>& args) override;
+    JointRotationWindow& jointWindow() override { return jointWindow_; }
     TrainClipsWindow& trainClipsWindow() { return trainClips_; }
     const TrainClipsWindow& trainClipsWindow() const { return trainClips_; }
     // The `train-clips` action: no arguments shows Train on clips...; CLIPS (comma-separated names
     // or paths) [A:B|all] [K] [M] [T] ticks those clips, sets the range and options and trains.
-    std::string trainOnClips(const std::vector<std::string>& args);
+    std::string trainOnClips(const std::vector<std::string>& args) override;
     const JointRotationWindow& jointWindow() const { return jointWindow_; }
-    void toggleHelp() { showHelp_ = !showHelp_; }
-    const RecentFiles* recentFiles() const { return recent_.get(); }  // null when turned off
-    void openRecent(const std::string& path);                         // after asking about unsaved changes
-    bool layoutCustomized() const { return layout_.customized(); }
-    void resetLayout() { layout_.reset(); }
+    void toggleHelp() override { showHelp_ = !showHelp_; }
+    const RecentFiles* recentFiles() const override { return recent_.get(); }  // null when turned off
+    void openRecent(const std::string& path) override;                         // after asking about unsaved changes
+    bool layoutCustomized() const override { return layout_.customized(); }
+    void resetLayout() override { layout_.reset(); }
 
     // Unsaved work: edits since the last save or open, or a model this editor trained or changed
     // that no model file or session holds (it outlives opening a clip and switching clips, and so
     // does the question).
-    bool dirty() const { return state_.doc.revision() != savedRevision_ || modelUnsaved(); }
+    bool dirty() const override { return state_.doc.revision() != savedRevision_ || modelUnsaved(); }
     bool modelUnsaved() const;
     bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
     bool askingAboutModelClip() const { return prompts_.askingModelClip(); }     // the modal is up
-    const FileDialog& fileDialog() const { return dialog_; }
+    const FileDialog& fileDialog() const override { return dialog_; }
     bool popupOpen() const;  // a menu, a modal or the file dialog is open (as of the last frame)
-    float uiScale() const { return scale_; }
+    float uiScale() const override { return scale_; }
     bool offeringAutosave() const { return prompts_.offeringAutosave(); }
     const std::string& sessionPath() const { return sessionPath_; }
 
@@ -139,7 +140,7 @@ public:
     // buffer is undefined after a swap, so call requestRedraw() before that frame there.
     render::Image capture(int width, int height) const;
     // Blocks until training, adaptive updates and the latent image are finished (scripts, tests).
-    void waitIdle();
+    void waitIdle() override;
 
     std::string title() const;
     // Whether the next frames change on their own (playback, a drag being refined, background
@@ -147,20 +148,20 @@ public:
     bool animating() const;
     // True once the user confirmed quitting (after the unsaved-changes prompt if needed).
     bool quitRequested() const { return quitConfirmed_; }
-    void requestQuit() { quitAsked_ = true; }      // asks about unsaved changes first
-    void confirmQuit() { quitConfirmed_ = true; }  // quits without asking
-    EditorState& state() { return state_; }
-    const EditorState& state() const { return state_; }
+    void requestQuit() override { quitAsked_ = true; }      // asks about unsaved changes first
+    void confirmQuit() override { quitConfirmed_ = true; }  // quits without asking
+    EditorState& state() override { return state_; }
+    const EditorState& state() const override { return state_; }
     const ViewportPanel& viewport() const { return *viewport_; }
     bool latentMapUpToDate() const { return latent_.upToDate(state_); }
     int latentMapLayerRenders() const { return latent_.layerRenders(); }
     // Window pixel of an effector handle (as last drawn).
-    bool handleScreenPosition(Effector e, float& x, float& y) const;
-    bool keyScreenPosition(int key, float& x, float& y) const;  // path key (0-based), as last drawn
+    bool handleScreenPosition(Effector e, float& x, float& y) const override;
+    bool keyScreenPosition(int key, float& x, float& y) const override;  // path key (0-based), as last drawn
     // Window pixel of the latent map's dot of clip `clip` frame `frame` (0-based), as last drawn.
-    bool latentDotScreenPosition(const std::string& clip, int frame, float& x, float& y) const;
+    bool latentDotScreenPosition(const std::string& clip, int frame, float& x, float& y) const override;
     // Runs a named action (editor_actions.h; args[0] is the name): "" or the error.
-    std::string runAction(const std::vector<std::string>& args);
+    std::string runAction(const std::vector<std::string>& args) override;
 
 private:
     void pollJobs();

@@ -7,7 +7,8 @@
 
 #include "edit/joint_rotation.h"
 #include "ui/actions/action_args.h"
-#include "ui/shell/editor_app.h"
+#include "ui/actions/editor_commands.h"
+#include "ui/shell/editor_state.h"
 
 namespace mgp::ui {
 
@@ -29,7 +30,7 @@ std::vector<std::string> rotateJointAction(const Joint& joint, const Eigen::Vect
     return args;
 }
 
-void JointRotationWindow::draw(EditorApp& app) {
+void JointRotationWindow::draw(EditorCommands& app) {
     EditorState& s = app.state();
     EditorDocument& doc = s.doc;
     if (!open_ || !doc.hasClip()) {

@@ -18,7 +18,7 @@ namespace mgp::ui {
 // lacks left out): what the window's sliders and the viewport's gizmo run on release.
 std::vector<std::string> rotateJointAction(const Joint& joint, const Eigen::Vector3d& anglesDeg);
 
-class EditorApp;
+class EditorCommands;
 struct EditorState;
 
 class JointRotationWindow {
@@ -36,7 +36,7 @@ public:
     const std::string& readout() const { return readout_; }  // the last solve, one line
 
     // Draws the window while shown.
-    void draw(EditorApp& app);
+    void draw(EditorCommands& app);
     // The `rotate-joint JOINT ANGLE...` action: one angle per DOF the joint has (degrees, strict
     // parsing), applied as one undo step, with the prior when the window's option is on.
     // "" or why not.

@@ -4,8 +4,11 @@
 
 #include <filesystem>
 
+#include "edit/recent_files.h"
 #include "ui/actions/editor_actions.h"
-#include "ui/shell/editor_app.h"
+#include "ui/actions/editor_commands.h"
+#include "ui/shell/editor_state.h"
+#include "ui/windows/joint_rotation_window.h"
 
 namespace mgp::ui {
 
@@ -17,7 +20,7 @@ bool beginMenu(const char* label, bool escape, bool enabled = true) {
     return true;
 }
 
-void fileMenu(EditorApp& app, const ActionTable& t, bool escape) {
+void fileMenu(EditorCommands& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "open", "Open...");
     const RecentFiles* recent = app.recentFiles();
     if (beginMenu("Open recent", escape, recent && !recent->entries().empty())) {
@@ -46,7 +49,7 @@ void fileMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "quit", "Quit");
 }
 
-void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
+void editMenu(EditorCommands& app, const ActionTable& t, bool escape) {
     const EditorDocument& doc = app.state().doc;
     t.menuItem(app, "undo", doc.canUndo() ? "Undo " + doc.undoLabel() : "Undo");
     t.menuItem(app, "redo", doc.canRedo() ? "Redo " + doc.redoLabel() : "Redo");
@@ -89,7 +92,7 @@ void editMenu(EditorApp& app, const ActionTable& t, bool escape) {
     t.menuItem(app, "fill-between-keys", "Fill between keys");
 }
 
-void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessages) {
+void viewMenu(EditorCommands& app, const ActionTable& t, bool escape, bool& showMessages) {
     EditorState& s = app.state();
     t.menuItem(app, "frame-camera", "Frame character");
     ImGui::MenuItem("Messages", nullptr, &showMessages);
@@ -130,7 +133,7 @@ void viewMenu(EditorApp& app, const ActionTable& t, bool escape, bool& showMessa
     }
 }
 
-void playbackMenu(EditorApp& app, const ActionTable& t) {
+void playbackMenu(EditorCommands& app, const ActionTable& t) {
     t.menuItem(app, "play-pause", app.state().playing ? "Pause" : "Play");
     t.menuItem(app, "next-frame", "Next frame");
     t.menuItem(app, "previous-frame", "Previous frame");
@@ -141,7 +144,7 @@ void playbackMenu(EditorApp& app, const ActionTable& t) {
 }
 }  // namespace
 
-void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText) {
+void drawMenuBar(EditorCommands& app, bool& showMessages, const char* latentBusyText) {
     if (!ImGui::BeginMainMenuBar()) return;
     const ActionTable& t = ActionTable::editor();
     const bool escape = ImGui::IsKeyPressed(key::kEscape, false);

@@ -4,11 +4,11 @@
 // to EditorState) and the recent-files list are drawn here directly.
 namespace mgp::ui {
 
-class EditorApp;
+class EditorCommands;
 
 // Between NewFrame and Render. `showMessages` is View > Messages.
 // Training and adaptive updates show at the right end of the bar; `latentBusyText` ("latent
 // map...", "" or null when idle) comes after them.
-void drawMenuBar(EditorApp& app, bool& showMessages, const char* latentBusyText);
+void drawMenuBar(EditorCommands& app, bool& showMessages, const char* latentBusyText);
 
 }  // namespace mgp::ui

@@ -6,9 +6,11 @@
 #include <filesystem>
 
 #include "io/clip_loader.h"
+#include "ui/actions/editor_commands.h"
 #include "ui/input/input_state.h"
 #include "ui/panels/model_panel.h"
-#include "ui/shell/editor_app.h"
+#include "ui/shell/editor_state.h"
+#include "ui/windows/file_dialog.h"
 
 namespace mgp::ui {
 
@@ -28,7 +30,7 @@ const char* shortReason(const std::string& reason) {
 }
 }  // namespace
 
-void TrainClipsWindow::show(EditorApp& app) {
+void TrainClipsWindow::show(EditorCommands& app) {
     const EditorDocument& doc = app.state().doc;
     candidates_.clear();
     checked_.clear();
@@ -45,7 +47,7 @@ void TrainClipsWindow::show(EditorApp& app) {
     open_ = true;
 }
 
-const Clip* TrainClipsWindow::clipOf(std::size_t i, const EditorApp& app) const {
+const Clip* TrainClipsWindow::clipOf(std::size_t i, const EditorCommands& app) const {
     if (i >= candidates_.size()) return nullptr;
     if (candidates_[i].open) return app.state().doc.hasClip() ? &app.state().doc.clip() : nullptr;
     const auto it = loaded_.find(candidates_[i].path);
@@ -132,7 +134,7 @@ int TrainClipsWindow::totalRows(std::string* error) const {
     return rows;
 }
 
-std::string TrainClipsWindow::train(EditorApp& app) {
+std::string TrainClipsWindow::train(EditorCommands& app) {
     EditorState& s = app.state();
     if (!open_ || candidates_.empty()) return "open Model > Train on clips... first";
     if (!s.doc.hasClip() || s.doc.clip().name != openName_ || s.doc.clip().frameCount() != openFrames_)
@@ -159,23 +161,8 @@ std::string TrainClipsWindow::train(EditorApp& app) {
     return err;
 }
 
-void TrainClipsWindow::draw(EditorApp& app) {
+void TrainClipsWindow::drawCandidates(EditorCommands& app, float scale) {
     EditorState& s = app.state();
-    if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
-        ImGui::OpenPopup(kTitle);
-    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    popupUp_ =
-        ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-    if (!popupUp_) return;
-    if (!open_) {  // closed by train() or an action
-        ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-        popupUp_ = false;
-        return;
-    }
-    const float scale = app.uiScale();
-    ImGui::Text("One model from the open clip and other clips of its skeleton");
-    ImGui::TextDisabled("The open clip is always included and becomes the model's primary clip.");
     // The list: open clip, offered clips, refused ones (greyed, the reason as tooltip).
     const float rowH = ImGui::GetFrameHeightWithSpacing();
     const float listH =
@@ -214,6 +201,9 @@ void TrainClipsWindow::draw(EditorApp& app) {
         ImGui::PopID();
     }
     ImGui::EndChild();
+}
+
+void TrainClipsWindow::drawAddFile(float scale) {
     // Add file…: a path typed in (there is no native file dialog).
     char buf[512];
     const std::size_t n = std::min(addPath_.size(), sizeof buf - 1);
@@ -228,7 +218,9 @@ void TrainClipsWindow::draw(EditorApp& app) {
         if (error_.empty()) addPath_.clear();
     }
     ImGui::EndDisabled();
+}
 
+void TrainClipsWindow::drawFrameSelection(float scale) {
     // Frames of each clip, as `train --frames A:B --step K`.
     ImGui::PushItemWidth(70.0f * scale);
     ImGui::InputInt("from", &selection_.first, 0);
@@ -242,8 +234,9 @@ void TrainClipsWindow::draw(EditorApp& app) {
     selection_.step = std::max(selection_.step, 1);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Frames from..to of each clip (counted from 1 within it), then every step-th");
-    drawTrainOptions(s.trainOptions);
+}
 
+int TrainClipsWindow::drawSummary(const EditorState& s, float scale) const {
     std::string rangeError;
     const int rows = totalRows(&rangeError);
     int clipsChecked = 0;
@@ -262,6 +255,31 @@ void TrainClipsWindow::draw(EditorApp& app) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", error_.c_str());
         ImGui::PopTextWrapPos();
     }
+    return rows;
+}
+
+void TrainClipsWindow::draw(EditorCommands& app) {
+    EditorState& s = app.state();
+    if (open_ && !popupUp_ && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) && !app.fileDialog().isOpen())
+        ImGui::OpenPopup(kTitle);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    popupUp_ =
+        ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!popupUp_) return;
+    if (!open_) {  // closed by train() or an action
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        popupUp_ = false;
+        return;
+    }
+    const float scale = app.uiScale();
+    ImGui::Text("One model from the open clip and other clips of its skeleton");
+    ImGui::TextDisabled("The open clip is always included and becomes the model's primary clip.");
+    drawCandidates(app, scale);
+    drawAddFile(scale);
+    drawFrameSelection(scale);
+    drawTrainOptions(s.trainOptions);
+    const int rows = drawSummary(s, scale);
     const bool busy = s.training.running();
     const bool canTrain = !busy && rows >= 3;
     ImGui::BeginDisabled(!canTrain);

@@ -16,12 +16,13 @@
 
 namespace mgp::ui {
 
-class EditorApp;
+class EditorCommands;
+struct EditorState;
 
 class TrainClipsWindow {
 public:
     // Lists the candidates of the open clip and shows the modal (only the open clip checked).
-    void show(EditorApp& app);
+    void show(EditorCommands& app);
     bool shown() const { return open_; }
     void close() { open_ = false; }
 
@@ -37,14 +38,20 @@ public:
     int totalRows(std::string* error = nullptr) const;
     // Checks the chosen clips (gp::prepareTrainingClips) and starts training with the Model
     // panel's options; closes the modal when it started. "" or why not.
-    std::string train(EditorApp& app);
+    std::string train(EditorCommands& app);
 
     // Between NewFrame and Render.
-    void draw(EditorApp& app);
+    void draw(EditorCommands& app);
 
 private:
-    const Clip* clipOf(std::size_t i, const EditorApp& app) const;  // loaded (or the open clip), null if not
-    std::string load(std::size_t i);                                // "" or the reader's error
+    const Clip* clipOf(std::size_t i, const EditorCommands& app) const;  // loaded (or the open clip), null if not
+    std::string load(std::size_t i);                                     // "" or the reader's error
+    // The parts of draw(), top to bottom.
+    void drawCandidates(EditorCommands& app, float scale);  // the list, each row's checkbox
+    void drawAddFile(float scale);                          // a path typed in, and its button
+    void drawFrameSelection(float scale);                   // from, to and step of each clip
+    // N, a frame range's error and the last refusal; returns N (-1 when the range is wrong).
+    int drawSummary(const EditorState& s, float scale) const;
 
     bool open_ = false;
     bool popupUp_ = false;  // the modal was drawn last frame
