@@ -417,7 +417,7 @@ void addPathActions(ActionList& list) {
               [](EditorCommands& app, const ActionArgs& a) {
                   if (a.empty() || (a[0] != "direct" && a[0] != "displacement"))
                       return "expected direct or displacement, found '" + (a.empty() ? std::string() : a[0]) + "'";
-                  app.state().doc.setPathMode(a[0] == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
+                  app.state().doc.paths().setMode(a[0] == "displacement" ? PathMode::kDisplacement : PathMode::kDirect);
                   return std::string();
               }});
     list.add({"regenerate",
@@ -425,7 +425,7 @@ void addPathActions(ActionList& list) {
               "Ctrl+R",
               {{'R', kCtrl}},
               "solve the path span between the first and last key (background)",
-              [](const EditorCommands& app) { return docOf(app).pathEdit() && !docOf(app).regenerating(); },
+              [](const EditorCommands& app) { return docOf(app).paths().edit() && !docOf(app).regenerating(); },
               false,
               regenerate});
     list.add({"cancel-regenerate",
@@ -503,9 +503,9 @@ void addKeyActions(ActionList& list) {
               "",
               {},
               "stop editing the path",
-              [](const EditorCommands& app) { return docOf(app).pathEdit().has_value(); },
+              [](const EditorCommands& app) { return docOf(app).paths().edit().has_value(); },
               false,
-              plain([](EditorCommands& app) { app.state().doc.endPathEdit(); })});
+              plain([](EditorCommands& app) { app.state().doc.paths().end(); })});
 }
 
 // Training and the adaptive active set.
