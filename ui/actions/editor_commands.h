@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "gp/training_clips.h"
+#include "gp/train/training_clips.h"
 #include "skeleton/skeleton.h"
 #include "ui/shell/file_requests.h"
 

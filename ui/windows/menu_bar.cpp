@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "edit/recent_files.h"
+#include "session/recent_files.h"
 #include "ui/actions/editor_actions.h"
 #include "ui/actions/editor_commands.h"
 #include "ui/shell/editor_state.h"
