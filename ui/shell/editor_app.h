@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "render/png_capture.h"
+#include "session/autosave_policy.h"
+#include "session/recent_files.h"
 #include "ui/actions/editor_commands.h"
 #include "ui/input/input_replay.h"
 #include "ui/input/input_state.h"
