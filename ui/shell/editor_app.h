@@ -76,7 +76,7 @@ public:
     // Model > Train on clips... (train_clips_window.h).
     std::string startTraining(std::vector<gp::TrainingClip> clips, const gp::FrameSelection& selection) override;
     std::string startCompareTraining() override;  // the compare model: the other kernel, same options
-    // Sessions (core/edit/session_file.h): clip reference, model, edits, camera, UI state.
+    // Sessions (core/session/session_file.h): clip reference, model, edits, camera, UI state.
     std::string openSession(const std::string& path, bool addToRecent = true) override;
     std::string saveSession(const std::string& path) override;  // becomes the current session file
     void saveSessionOrAsk() override;    // to the current session file, or the Save dialog when there is none
