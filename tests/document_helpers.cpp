@@ -15,11 +15,4 @@ void dragBy(EditorDocument& doc, Effector e, const Eigen::Vector3d& delta) {
     REQUIRE(doc.endDrag().has_value());
 }
 
-bool samePose(const Pose& a, const Pose& b) {
-    if (a.rootCm != b.rootCm || a.anglesDeg.size() != b.anglesDeg.size()) return false;
-    for (std::size_t j = 0; j < a.anglesDeg.size(); ++j)
-        if (a.anglesDeg[j] != b.anglesDeg[j]) return false;
-    return true;
-}
-
 }  // namespace mgp::test

@@ -8,7 +8,5 @@ namespace mgp::test {
 
 // A drag made of 1 cm steps (as mouse moves would be), a few idle refinements, then release.
 void dragBy(EditorDocument& doc, Effector e, const Eigen::Vector3d& delta);
-// Bit-for-bit equality of two poses (root and every joint angle).
-bool samePose(const Pose& a, const Pose& b);
 
 }  // namespace mgp::test

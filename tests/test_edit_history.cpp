@@ -11,7 +11,6 @@
 
 using namespace mgp;
 using test::dragBy;
-using test::samePose;
 
 namespace {
 std::string modelText(const gp::ModelVersionPtr& v) { return gp::modelToJsonText(*v->model); }
@@ -46,9 +45,9 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
     const gp::ModelVersionPtr v2 = doc.redo() == "" ? doc.model() : nullptr;  // redo then undo again
     REQUIRE(v2 != nullptr);
     CHECK(v2 != v1);
-    CHECK(samePose(doc.currentPose(), pose119));
+    CHECK(posesIdentical(doc.currentPose(), pose119));
     REQUIRE(doc.undo() == "");
-    CHECK(samePose(doc.poseAt(119), before119));
+    CHECK(posesIdentical(doc.poseAt(119), before119));
     CHECK(doc.model() == v1);
     CHECK(modelText(doc.model()) == modelText(v1));
 
@@ -62,7 +61,7 @@ TEST_CASE("undo restores the previous pose and the exact model version, redo re-
     REQUIRE(doc.redo() == "");
     CHECK(doc.model() == v1);
     doc.setFrame(99);
-    CHECK(samePose(doc.currentPose(), pose99));
+    CHECK(posesIdentical(doc.currentPose(), pose99));
     REQUIRE(doc.redo() == "");
     CHECK(doc.model() == v2);
     CHECK(doc.redo() == "nothing to redo");
@@ -114,7 +113,7 @@ TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps 
     CHECK_FALSE(doc.isEdited(50));
     CHECK(doc.undoLabel() == "reset frame 51 to the captured pose");
     REQUIRE(doc.undo() == "");
-    CHECK(samePose(doc.currentPose(), edited));
+    CHECK(posesIdentical(doc.currentPose(), edited));
 
     REQUIRE(doc.beginLatentDrag());
     Eigen::VectorXd x = doc.currentLatent();
@@ -123,7 +122,7 @@ TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps 
     doc.endLatentDrag();
     CHECK(doc.undoLabel() == "latent pose on frame 51");
     REQUIRE(doc.undo() == "");
-    CHECK(samePose(doc.currentPose(), edited));
+    CHECK(posesIdentical(doc.currentPose(), edited));
 
     // Installing another model (e.g. a retrained one) keeps the undo steps for the poses, but
     // undoing the drag must not bring back the old model's versions.
@@ -131,7 +130,7 @@ TEST_CASE("clearing an edit and a latent drag are undo steps, a new model keeps 
     doc.setModel(retrained, false);
     REQUIRE(doc.canUndo());
     REQUIRE(doc.undo() == "");
-    CHECK(samePose(doc.currentPose(), captured));
+    CHECK(posesIdentical(doc.currentPose(), captured));
     CHECK(doc.model() == retrained);
 }
 
@@ -191,7 +190,7 @@ TEST_CASE("regenerating an edited path meets the moved keys, leaves other frames
     // The before/after ghost of a regenerated frame is its captured pose.
     doc.setFrame(100);
     REQUIRE(doc.beforeGhost().has_value());
-    CHECK(samePose(*doc.beforeGhost(), doc.clip().frames[100]));
+    CHECK(posesIdentical(*doc.beforeGhost(), doc.clip().frames[100]));
 
     REQUIRE(doc.undo() == "");
     CHECK(doc.edits().empty());

@@ -152,7 +152,7 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
             CHECK(plainPinMove > 1.0);
         CHECK(prior.pose.rootCm == before.rootCm);
     }
-    CHECK(test::samePose(doc.currentPose(), before));  // solving changes nothing in the document
+    CHECK(posesIdentical(doc.currentPose(), before));  // solving changes nothing in the document
 }
 
 TEST_CASE("rotate joint: the plain rotation changes exactly that joint's DOFs and is one undo step") {
@@ -177,7 +177,7 @@ TEST_CASE("rotate joint: the plain rotation changes exactly that joint's DOFs an
         }
     CHECK(doc.undoLabel() == "rotate ltibia on frame 13");
     REQUIRE(doc.undo() == "");
-    CHECK(test::samePose(doc.currentPose(), before));
+    CHECK(posesIdentical(doc.currentPose(), before));
     CHECK_FALSE(doc.canUndo());
     // Without a model the prior option says why, and nothing changes.
     EditorDocument bare;
@@ -210,7 +210,7 @@ TEST_CASE("mirror pose on the document is one undo step, and mirroring twice res
         CHECK((doc.currentPose().anglesDeg[k] - before.anglesDeg[k]).cwiseAbs().maxCoeff() < 1e-9);
     REQUIRE(doc.undo() == "");
     REQUIRE(doc.undo() == "");
-    CHECK(test::samePose(doc.currentPose(), before));
+    CHECK(posesIdentical(doc.currentPose(), before));
     EditorDocument empty;
     CHECK(mirrorCurrentPose(empty).find("no clip") != std::string::npos);
 }

@@ -10,7 +10,6 @@
 #include <functional>
 #include <map>
 #include <regex>
-#include <set>
 #include <string>
 #include <vector>
 

@@ -61,12 +61,12 @@ TEST_CASE("session mapping: a document's edits, frame, pins, compare mode and pa
     REQUIRE(back.edits().size() == doc.edits().size());
     for (const auto& [frame, record] : doc.edits()) {
         REQUIRE(back.isEdited(frame));
-        CHECK(test::samePose(back.edits().at(frame).pose, record.pose));
+        CHECK(posesIdentical(back.edits().at(frame).pose, record.pose));
     }
     REQUIRE(back.paths().edit());
     CHECK(back.paths().edit()->keyFrames == doc.paths().edit()->keyFrames);
     CHECK(back.paths().edit()->keyOffsetsCm[1].isApprox(doc.paths().edit()->keyOffsetsCm[1]));
-    CHECK(test::samePose(back.currentPose(), doc.currentPose()));
+    CHECK(posesIdentical(back.currentPose(), doc.currentPose()));
 }
 
 TEST_CASE("session mapping: a path outside the clip is refused before the document changes") {
@@ -122,7 +122,7 @@ TEST_CASE("session mapping: the undo history and the adaptive table come back wi
     REQUIRE_FALSE(back.isEdited(80));
     REQUIRE(back.redo() == "");
     CHECK(back.isEdited(80));
-    CHECK(test::samePose(back.edits().at(80).pose, dragged80));
+    CHECK(posesIdentical(back.edits().at(80).pose, dragged80));
     REQUIRE(back.undo() == "");
     REQUIRE(back.undo() == "");
     CHECK_FALSE(back.isEdited(40));

@@ -144,7 +144,7 @@ TEST_CASE(
     CHECK(history.back().frame == 99);
     CHECK(history.back().accepted);
     doc.setFrame(99);
-    CHECK(test::samePose(doc.currentPose(), taught));  // teaching changes the model, not the edit
+    CHECK(posesIdentical(doc.currentPose(), taught));  // teaching changes the model, not the edit
 
     // Once refining has ended, a drag is taught at once again.
     doc.setFrame(120);

@@ -69,7 +69,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     store_.reset(std::move(clip), synthetic);
     editLineage_.clear();
-    falloffStep_ = {};
+    falloffStepId_ = 0;
     lastRegenerateQuality_.reset();
     lastRegenerateKeys_.clear();
     contactReleased_.fill(false);
@@ -357,7 +357,7 @@ void EditorDocument::finishRunningFalloff() {
     // falloff (tens of milliseconds) and applies it first, so the earlier drag is never left as a
     // one-frame spike. A spread that has finished but not been collected yet is applied too:
     // otherwise the new step would sit on top of the drag's and the spread would be dropped.
-    if (falloffStep_.stepId == 0) return;
+    if (falloffStepId_ == 0) return;
     regenerate_.join();
     pollRegenerate();
 }
@@ -366,10 +366,10 @@ void EditorDocument::dropRunningFalloff() {
     // Undo or redo right after a drag does not wait for the drag's falloff: the spread is dropped
     // (the drag's own frame stays in its step) and the undo goes on. A path regeneration is the
     // user's explicit request and still has to be waited for or cancelled.
-    if (falloffStep_.stepId == 0 || !regenerate_.running()) return;
+    if (falloffStepId_ == 0 || !regenerate_.running()) return;
     stopRegeneration();
     regenerate_.takeMessage();
-    falloffStep_ = {};
+    falloffStepId_ = 0;
 }
 
 std::string EditorDocument::undoOrRedo(bool undo) {

@@ -360,11 +360,7 @@ private:
     std::vector<MotionEditJob::KeyResult> lastRegenerateKeys_;
     int falloffRadius_ = 0;  // set by setClip
     double bodyStiffness_ = 1.0;
-    // The undo step a running falloff job merges into (its id; 0 = no falloff running) and its label.
-    struct PendingFalloff {
-        long stepId = 0;
-        std::string stepLabel;
-    } falloffStep_;
+    long falloffStepId_ = 0;      // the undo step a running falloff job merges into (0 = none)
     std::string falloffSkipped_;  // why the last change was not spread, until pollRegenerate says it
 
     std::set<int> keys_;

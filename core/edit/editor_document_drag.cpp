@@ -252,7 +252,7 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
         heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
     job.placesEffector = !wholePose;
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    if (regenerate_.start(std::move(job)).empty()) falloffStep_ = {stepId, stepLabel};
+    if (regenerate_.start(std::move(job)).empty()) falloffStepId_ = stepId;
 }
 
 void EditorDocument::cancelDrag() {

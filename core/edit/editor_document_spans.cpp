@@ -62,13 +62,13 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         return std::exchange(falloffSkipped_, std::string());
     }
     // A drag's falloff joins the drag's own undo step when that step is still the latest.
-    if (const PendingFalloff falloff = std::exchange(falloffStep_, PendingFalloff{}); falloff.stepId != 0) {
-        EditStep* top = history_.topUndoWithId(falloff.stepId);
+    if (const long stepId = std::exchange(falloffStepId_, 0); stepId != 0) {
+        EditStep* top = history_.topUndoWithId(stepId);
         if (!top) return "";  // undone or superseded: drop the falloff
         mergeFalloff(*job, store_, *top);
         applyFrames(top->after);
         ++revision_;
-        return falloffSummary(*job, falloffRadius_, falloff.stepLabel);
+        return falloffSummary(*job, falloffRadius_, top->label);
     }
     lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
     lastRegenerateKeys_ = job->keys;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "editor_harness.h"
+#include "skeleton/pose_layout.h"
 #include "ui/input/input_state.h"
 #include "ui/shell/editor_app.h"
 
@@ -14,7 +15,6 @@ using namespace mgp;
 using test::makeHarness;
 
 namespace {
-bool samePose(const Pose& a, const Pose& b) { return a.rootCm == b.rootCm && a.anglesDeg == b.anglesDeg; }
 bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 }  // namespace
 
@@ -53,7 +53,7 @@ TEST_CASE("gui fill between keys: K marks keys, Ctrl+I fills the gap around the 
     for (int t = 0; t < doc.frameCount(); ++t) {
         const bool inner = t > 100 && t < 160;
         if (!inner)
-            CHECK(samePose(doc.poseAt(t), clip.frames[t]));
+            CHECK(posesIdentical(doc.poseAt(t), clip.frames[t]));
         else
             changed += doc.isEdited(t) ? 1 : 0;
     }

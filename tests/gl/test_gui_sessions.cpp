@@ -49,7 +49,7 @@ std::string readFile(const std::string& path) {
 bool sameEdits(const std::map<int, EditRecord>& a, const std::map<int, EditRecord>& b) {
     if (a.size() != b.size()) return false;
     for (auto ia = a.begin(), ib = b.begin(); ia != a.end(); ++ia, ++ib)
-        if (ia->first != ib->first || !test::samePose(ia->second.pose, ib->second.pose) || ia->second.x != ib->second.x)
+        if (ia->first != ib->first || !posesIdentical(ia->second.pose, ib->second.pose) || ia->second.x != ib->second.x)
             return false;
     return true;
 }
