@@ -429,7 +429,14 @@ TEST_CASE(
     ConstrainedIkSolver solver(kick);
     for (const FixtureMove& c : cases) {
         CAPTURE(c.frame);
-        const ConstrainedIkRequest req = poseMove(*c.version, c.frame, c.move.effector, c.move.offset);
+        ConstrainedIkRequest req = poseMove(*c.version, c.frame, c.move.effector, c.move.offset);
+        // These requests were found when a contact was the toe's flat phase alone; the left foot's
+        // toe-off at frame 356, held since (docs/maths.md §13), was free then. It is released so the
+        // request stays the one the mechanism was found on.
+        if (c.frame == 355)
+            req.constraints.erase(std::remove_if(req.constraints.begin(), req.constraints.end(),
+                                                 [](const IkConstraint& k) { return k.effector == Effector::kLFoot; }),
+                                  req.constraints.end());
         REQUIRE(req.constraints.size() == 2);  // the one foot in contact is pinned
         checkConvergesWithin50AtTheLongSolvesMinimum(solver, req);
     }

@@ -1,5 +1,5 @@
 // The foot-contact rule (core/motion/foot_contacts.h): hand-made trajectories with known answers,
-// then the shipped walk.
+// then the shipped walk and run.
 #include "io/clip_loader.h"
 #include "motion/foot_contacts.h"
 #include "test_support.h"
@@ -116,7 +116,7 @@ TEST_CASE("foot contacts: the ground is the lower foot's height percentile, disa
 TEST_CASE("foot contacts: a bad rule is refused with a clear message") {
     const auto foot = track(repeat(10, 0.0, 0.0));
     ContactRule rule;
-    rule.exitHeightCm = 1.0;  // tighter than enter (2.5): no hysteresis
+    rule.toe.exitHeightCm = 1.0;  // tighter than enter (2.5): no hysteresis
     CHECK_THROWS_WITH_AS(detectFootContacts(foot, {}, 120.0, rule),
                          doctest::Contains("expected exit thresholds at least the enter thresholds"),
                          std::invalid_argument);
@@ -124,29 +124,107 @@ TEST_CASE("foot contacts: a bad rule is refused with a clear message") {
     rule.minFrames = 0;
     CHECK_THROWS_AS(detectFootContacts(foot, {}, 120.0, rule), std::invalid_argument);
     CHECK_THROWS_AS(detectFootContacts(foot, {}, 0.0, ContactRule{}), std::invalid_argument);
+    rule = ContactRule{};
+    rule.heel.exitSpeedCmPerFrame = 0.5;  // tighter than the heel's enter speed (0.8)
+    CHECK_THROWS_WITH_AS(detectFootContacts(foot, {}, 120.0, rule), doctest::Contains("(heel)"), std::invalid_argument);
+    // A heel track must cover the toe track's frames.
+    CHECK_THROWS_WITH_AS(detectFootContacts(FootTrack{foot, track(repeat(9, 0.0, 0.0))}, FootTrack{}, 120.0),
+                         doctest::Contains("expected a heel track as long as its toe track (10 frames), found 9"),
+                         std::invalid_argument);
 }
 
-TEST_CASE("foot contacts on the shipped walk (35_01): three plants per foot, alternating, each held") {
+TEST_CASE("foot contacts: a stance runs from heel strike to toe-off, each point down for its own phase") {
+    ContactRule rule;
+    rule.groundPercentile = 0.0;
+    // 60 frames. The heel comes down at frame 10 and rolls forward at 0.6 cm/frame (slow enough
+    // for the heel's enter speed, 0.8, too fast for the toe's, 0.2) until the foot is flat at 20;
+    // the heel lifts at 40 (2 cm a frame), the toe stays down and pivots at 0.5 cm/frame (under the
+    // toe's exit speed, 0.8) until it lifts at 50.
+    std::vector<std::pair<double, double>> heel, toe;
+    for (int t = 0; t < 60; ++t) {
+        const bool heelDown = t >= 10 && t < 40, toeDown = t >= 20 && t < 50;
+        heel.push_back({heelDown ? 0.0 : 10.0 + 2.0 * std::abs(t - 25), t < 20 ? 0.6 : 0.0});
+        toe.push_back({toeDown ? 0.0 : 6.0, t >= 40 && t < 50 ? 0.5 : (toeDown ? 0.0 : 0.6)});
+    }
+    const auto heelPath = track(heel), toePath = track(toe);
+    const ContactSet set = detectFootContacts(FootTrack{toePath, heelPath}, FootTrack{}, 120.0, rule);
+    REQUIRE(set.contacts.size() == 1);
+    const FootContact& c = set.contacts[0];
+    MESSAGE("stance " << c.first << ".." << c.last << ", heel " << c.heel.first << ".." << c.heel.last << ", toe "
+                      << c.toe.first << ".." << c.toe.last);
+    // Frames 10 and 39 see the 10 cm step in their central differences (5 cm/frame), like 20 and
+    // 49 for the toe: each phase starts a frame late and ends a frame early.
+    CHECK(c.heel.first == 11);
+    CHECK(c.heel.last == 38);
+    CHECK(c.toe.first == 21);
+    CHECK(c.toe.last == 48);
+    CHECK(c.first == 11);
+    CHECK(c.last == 48);
+    // The toe alone, as before heel tracking: the stance would start 10 frames after heel strike.
+    const ContactSet toeOnly = detectFootContacts(toePath, {}, 120.0, rule);
+    REQUIRE(toeOnly.contacts.size() == 1);
+    CHECK(toeOnly.contacts[0].first == 21);
+    CHECK(toeOnly.contacts[0].heel.empty());
+}
+
+TEST_CASE("foot contacts on the shipped walk (35_01): heel strike to toe-off, alternating, always a foot down") {
     const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     const ContactSet set = detectFootContacts(clip);
+    const ContactRule rule;
     int left = 0, right = 0;
-    const auto lfoot = effectorTrajectory(clip, Effector::kLFoot);
-    const auto rfoot = effectorTrajectory(clip, Effector::kRFoot);
+    const FootTrack ltrack = footTrack(clip, Effector::kLFoot), rtrack = footTrack(clip, Effector::kRFoot);
     for (const FootContact& c : set.contacts) {
         (c.foot == Effector::kLFoot ? left : right) += 1;
-        const auto& p = c.foot == Effector::kLFoot ? lfoot : rfoot;
-        double travel = 0.0;
-        for (int t = c.first; t <= c.last; ++t) {
-            CHECK(p[t].y() - set.groundCm <= 3.5 + 1e-9);  // never above the exit height
-            travel = std::max(travel, (p[t] - p[c.first]).norm());
+        const FootTrack& p = c.foot == Effector::kLFoot ? ltrack : rtrack;
+        MESSAGE(std::string(effectorName(c.foot))
+                << " " << c.first + 1 << ".." << c.last + 1 << " heel " << c.heel.first + 1 << ".." << c.heel.last + 1
+                << " toe " << c.toe.first + 1 << ".." << c.toe.last + 1);
+        // Each point is low for its own phase. The ball of the foot stays put while the foot is flat
+        // (both points down), and at toe-off pivots about the toes: a few cm, never a step (≈ 60 cm).
+        for (int t = c.heel.first; t <= c.heel.last; ++t)
+            CHECK(p.heelCm[t].y() - set.heelGroundCm <= rule.heel.exitHeightCm + 1e-9);
+        double flatTravel = 0.0, toeTravel = 0.0;
+        for (int t = c.toe.first; t <= c.toe.last; ++t) {
+            CHECK(p.toeCm[t].y() - set.groundCm <= rule.toe.exitHeightCm + 1e-9);
+            const double d = (p.toeCm[t] - p.toeCm[c.toe.first]).norm();
+            toeTravel = std::max(toeTravel, d);
+            if (c.heel.contains(t)) flatTravel = std::max(flatTravel, d);
         }
-        CHECK(travel < 5.0);  // a planted ankle rolls a few cm, never a step (≈ 60 cm)
+        MESSAGE("ball travel while flat " << flatTravel << " cm, over the toe phase " << toeTravel << " cm");
+        CHECK(flatTravel < 2.0);
+        CHECK(toeTravel < 8.0);
+        // A stance the clip does not cut starts at heel strike and ends at toe-off.
+        if (c.first > 0 && c.last < clip.frameCount() - 1) {
+            CHECK(c.heel.first == c.first);
+            CHECK(c.toe.last == c.last);
+            CHECK(c.heel.first < c.toe.first);
+            CHECK(c.heel.last < c.toe.last);
+        }
     }
+    // Three stances a foot, and the right heel striking again at the clip's end.
     CHECK(left == 3);
-    CHECK(right == 3);
-    // A walk always has a foot on the ground except in brief double-float-free transitions: at
-    // least 60 % of frames have a planted foot.
+    CHECK(right == 4);
+    // A walk has a foot on the ground at every frame (double support between a heel strike and the
+    // other foot's toe-off); the toe alone left a third of the frames with no foot held.
     int covered = 0;
     for (int t = 0; t < clip.frameCount(); ++t) covered += set.at(Effector::kLFoot, t) || set.at(Effector::kRFoot, t);
-    CHECK(covered >= 0.6 * clip.frameCount());
+    CHECK(covered == clip.frameCount());
+}
+
+TEST_CASE("foot contacts on a real run (16_35): each stance from heel strike to toe-off") {
+    const Clip clip = loadClip(test::mocap("asf_amc/16_35.amc"));
+    const ContactSet set = detectFootContacts(clip);
+    // Frames as 1-based in the comments; 0-based in the checks. The left foot's second stance, the
+    // one the span tests edit across: the heel lands at 102, the toe is down 106..123.
+    const FootContact* c = set.at(Effector::kLFoot, 110);
+    REQUIRE(c != nullptr);
+    MESSAGE("left stance " << c->first + 1 << ".." << c->last + 1 << " heel " << c->heel.first + 1 << ".."
+                           << c->heel.last + 1 << " toe " << c->toe.first + 1 << ".." << c->toe.last + 1);
+    CHECK(c->first == 101);
+    CHECK(c->heel.first == 101);
+    CHECK(c->toe.first == 105);
+    CHECK(c->last == 122);
+    CHECK(c->toe.last == 122);
+    // The toe's phase alone (the rule before heel tracking) held 14 of these 22 frames.
+    CHECK(c->length() == 22);
 }

@@ -10,14 +10,20 @@
 namespace mgp {
 namespace {
 
+void validateThresholds(const ContactThresholds& t, const char* point) {
+    auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    if (!finitePositive(t.enterHeightCm) || !finitePositive(t.enterSpeedCmPerFrame))
+        throw std::invalid_argument(std::string("contact rule (") + point + "): expected positive enter thresholds");
+    if (!(t.exitHeightCm >= t.enterHeightCm) || !(t.exitSpeedCmPerFrame >= t.enterSpeedCmPerFrame))
+        throw std::invalid_argument(std::string("contact rule (") + point +
+                                    "): expected exit thresholds at least the enter thresholds, found a tighter exit "
+                                    "(no hysteresis)");
+}
+
 void validateRule(const ContactRule& rule, double fps) {
     auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
-    if (!finitePositive(rule.enterHeightCm) || !finitePositive(rule.enterSpeedCmPerFrame))
-        throw std::invalid_argument("contact rule: expected positive enter thresholds");
-    if (!(rule.exitHeightCm >= rule.enterHeightCm) || !(rule.exitSpeedCmPerFrame >= rule.enterSpeedCmPerFrame))
-        throw std::invalid_argument(
-            "contact rule: expected exit thresholds at least the enter thresholds, found "
-            "a tighter exit (no hysteresis)");
+    validateThresholds(rule.toe, "toe");
+    validateThresholds(rule.heel, "heel");
     if (rule.mergeGapFrames < 0)
         throw std::invalid_argument("contact rule: expected mergeGapFrames >= 0, found " +
                                     std::to_string(rule.mergeGapFrames));
@@ -44,36 +50,73 @@ double speedAt(const std::vector<Eigen::Vector3d>& foot, int t) {
     return (foot[b] - foot[a]).norm() / double(b - a);
 }
 
-void detectOne(Effector e, const std::vector<Eigen::Vector3d>& foot, double groundCm, double speedScale,
-               const ContactRule& rule, std::vector<FootContact>& out) {
-    const int n = static_cast<int>(foot.size());
-    bool planted = false;
+// Ranges at most `gap` frames apart become one (`ranges` sorted by first frame).
+std::vector<FrameRange> mergeRanges(std::vector<FrameRange> ranges, int gap) {
+    std::sort(ranges.begin(), ranges.end(), [](const FrameRange& a, const FrameRange& b) { return a.first < b.first; });
+    std::vector<FrameRange> merged;
+    for (const FrameRange& r : ranges) {
+        if (!merged.empty() && r.first - merged.back().last - 1 <= gap)
+            merged.back().last = std::max(merged.back().last, r.last);
+        else
+            merged.push_back(r);
+    }
+    return merged;
+}
+
+// The frames one point is down: low and slow, with hysteresis; jitters merged, short phases dropped.
+std::vector<FrameRange> pointPhases(const std::vector<Eigen::Vector3d>& point, double groundCm, double speedScale,
+                                    const ContactThresholds& th, const ContactRule& rule) {
+    const int n = static_cast<int>(point.size());
+    bool down = false;
     int start = 0;
-    std::vector<FootContact> raw;
-    auto close = [&](int last) { raw.push_back({e, start, last, true}); };
+    std::vector<FrameRange> raw;
     for (int t = 0; t < n; ++t) {
-        const double height = foot[t].y() - groundCm;
-        const double speed = speedAt(foot, t);
-        if (!planted) {
-            if (height <= rule.enterHeightCm && speed <= rule.enterSpeedCmPerFrame * speedScale) {
-                planted = true;
+        const double height = point[t].y() - groundCm;
+        const double speed = speedAt(point, t);
+        if (!down) {
+            if (height <= th.enterHeightCm && speed <= th.enterSpeedCmPerFrame * speedScale) {
+                down = true;
                 start = t;
             }
-        } else if (height > rule.exitHeightCm || speed > rule.exitSpeedCmPerFrame * speedScale) {
-            planted = false;
-            close(t - 1);
+        } else if (height > th.exitHeightCm || speed > th.exitSpeedCmPerFrame * speedScale) {
+            down = false;
+            raw.push_back({start, t - 1});
         }
     }
-    if (planted) close(n - 1);
-    std::vector<FootContact> merged;
-    for (const FootContact& c : raw) {
-        if (!merged.empty() && c.first - merged.back().last - 1 <= rule.mergeGapFrames)
-            merged.back().last = c.last;
-        else
-            merged.push_back(c);
+    if (down) raw.push_back({start, n - 1});
+    std::vector<FrameRange> out;
+    for (const FrameRange& r : mergeRanges(std::move(raw), rule.mergeGapFrames))
+        if (r.last - r.first + 1 >= rule.minFrames) out.push_back(r);
+    return out;
+}
+
+// The span of the phases inside `stance` (empty when none is).
+FrameRange phaseWithin(const std::vector<FrameRange>& phases, const FrameRange& stance) {
+    FrameRange out{stance.last + 1, stance.first - 1};
+    for (const FrameRange& p : phases)
+        if (p.first >= stance.first && p.last <= stance.last) {
+            out.first = std::min(out.first, p.first);
+            out.last = std::max(out.last, p.last);
+        }
+    return out.empty() ? FrameRange{} : out;
+}
+
+// A foot's stances: the union of its heel and toe phases.
+void detectFoot(Effector foot, const FootTrack& track, const ContactSet& set, double speedScale,
+                const ContactRule& rule, std::vector<FootContact>& out) {
+    const std::vector<FrameRange> toe = pointPhases(track.toeCm, set.groundCm, speedScale, rule.toe, rule);
+    const std::vector<FrameRange> heel = pointPhases(track.heelCm, set.heelGroundCm, speedScale, rule.heel, rule);
+    std::vector<FrameRange> both(toe);
+    both.insert(both.end(), heel.begin(), heel.end());
+    for (const FrameRange& stance : mergeRanges(std::move(both), rule.mergeGapFrames)) {
+        FootContact c;
+        c.foot = foot;
+        c.first = stance.first;
+        c.last = stance.last;
+        c.heel = phaseWithin(heel, stance);
+        c.toe = phaseWithin(toe, stance);
+        out.push_back(c);
     }
-    for (const FootContact& c : merged)
-        if (c.length() >= rule.minFrames) out.push_back(c);
 }
 
 }  // namespace
@@ -88,23 +131,38 @@ FootContact* ContactSet::at(Effector foot, int frame) {
     return const_cast<FootContact*>(static_cast<const ContactSet&>(*this).at(foot, frame));
 }
 
-ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
-                              const std::vector<Eigen::Vector3d>& rightFootCm, double fps, const ContactRule& rule) {
+ContactSet detectFootContacts(const FootTrack& left, const FootTrack& right, double fps, const ContactRule& rule) {
     validateRule(rule, fps);
+    for (const FootTrack* track : {&left, &right})
+        if (!track->heelCm.empty() && track->heelCm.size() != track->toeCm.size())
+            throw std::invalid_argument("foot contacts: expected a heel track as long as its toe track (" +
+                                        std::to_string(track->toeCm.size()) + " frames), found " +
+                                        std::to_string(track->heelCm.size()));
     ContactSet set;
-    if (leftFootCm.empty() && rightFootCm.empty()) return set;
-    double ground = INFINITY;
-    if (!leftFootCm.empty()) ground = std::min(ground, heightQuantile(leftFootCm, rule.groundPercentile));
-    if (!rightFootCm.empty()) ground = std::min(ground, heightQuantile(rightFootCm, rule.groundPercentile));
-    set.groundCm = ground;
+    if (left.toeCm.empty() && right.toeCm.empty()) return set;
+    // Each point's ground: the lower foot's percentile, so that a foot that never lands (held up
+    // through the clip) is not declared planted at its own lowest height.
+    auto groundOf = [&](const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+        double ground = INFINITY;
+        if (!a.empty()) ground = std::min(ground, heightQuantile(a, rule.groundPercentile));
+        if (!b.empty()) ground = std::min(ground, heightQuantile(b, rule.groundPercentile));
+        return std::isfinite(ground) ? ground : 0.0;
+    };
+    set.groundCm = groundOf(left.toeCm, right.toeCm);
+    set.heelGroundCm = groundOf(left.heelCm, right.heelCm);
     double lowest = INFINITY;
-    for (const auto* foot : {&leftFootCm, &rightFootCm})
+    for (const auto* foot : {&left.toeCm, &right.toeCm})
         for (const Eigen::Vector3d& p : *foot) lowest = std::min(lowest, p.y());
     set.floorCm = lowest;
     const double speedScale = 120.0 / fps;
-    detectOne(Effector::kLFoot, leftFootCm, ground, speedScale, rule, set.contacts);
-    detectOne(Effector::kRFoot, rightFootCm, ground, speedScale, rule, set.contacts);
+    detectFoot(Effector::kLFoot, left, set, speedScale, rule, set.contacts);
+    detectFoot(Effector::kRFoot, right, set, speedScale, rule, set.contacts);
     return set;
+}
+
+ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
+                              const std::vector<Eigen::Vector3d>& rightFootCm, double fps, const ContactRule& rule) {
+    return detectFootContacts(FootTrack{leftFootCm, {}}, FootTrack{rightFootCm, {}}, fps, rule);
 }
 
 std::vector<Eigen::Vector3d> effectorTrajectory(const Skeleton& skeleton, const std::vector<Pose>& frames,
@@ -124,9 +182,26 @@ std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effec
     return effectorTrajectory(clip.skeleton, clip.frames, effector);
 }
 
+FootTrack footTrack(const Clip& clip, Effector foot) {
+    FootTrack track;
+    if (!clip.skeleton.hasEffector(foot)) return track;
+    const EffectorSite& site = clip.skeleton.effectorSite(foot);
+    // The effector is the end of the foot bone (the heel is that bone's start) or the start of the
+    // toes (the heel is the parent's start).
+    const int heelJoint = site.localCm.isZero() ? clip.skeleton.joints[site.joint].parent : site.joint;
+    track.toeCm.reserve(clip.frames.size());
+    track.heelCm.reserve(clip.frames.size());
+    FkState fk;
+    for (const Pose& pose : clip.frames) {
+        forwardKinematics(clip.skeleton, pose, fk);
+        track.toeCm.push_back(effectorCm(clip.skeleton, fk, foot));
+        track.heelCm.push_back(fk.jointCm[static_cast<std::size_t>(std::max(heelJoint, 0))]);
+    }
+    return track;
+}
+
 ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule) {
-    return detectFootContacts(effectorTrajectory(clip, Effector::kLFoot), effectorTrajectory(clip, Effector::kRFoot),
-                              clip.fps, rule);
+    return detectFootContacts(footTrack(clip, Effector::kLFoot), footTrack(clip, Effector::kRFoot), clip.fps, rule);
 }
 
 std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 namespace mgp::ui {
 
@@ -143,22 +145,43 @@ void drawPathKeyDiamonds(ImDrawList& dl, const TimelineTrack& t, const EditorSta
     }
 }
 
-// Draws the foot contact lanes; returns the contact under the mouse, -1 none.
+// Draws the foot contact lanes; returns the contact under the mouse, -1 none. Each foot has two
+// lanes, heel above toe: its stance (heel strike to toe-off) is a dim bar across both, and each
+// point's phase a bright one on its lane, so the roll from heel to toe shows as a step.
 int drawContactLanes(ImDrawList& dl, const TimelineTrack& t, const ContactSet& contacts, ImVec2 mouse) {
-    const float laneH = 4.0f;
-    auto laneY = [&](Effector foot) {
-        return t.t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * laneH + 1.0f : laneH);
+    const float laneH = 3.0f, footH = 2.0f * laneH + 1.0f;
+    auto footY = [&](Effector foot) {
+        return t.t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * footH + 1.0f : footH);
     };
     int hoveredContact = -1;
     for (std::size_t i = 0; i < contacts.contacts.size(); ++i) {
         const FootContact& c = contacts.contacts[i];
-        const float y = laneY(c.foot), x0 = t.xOf(c.first), x1 = std::max(t.xOf(c.last), x0 + 2.0f);
-        dl.AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + laneH),
-                         c.enabled ? IM_COL32(90, 210, 120, 230) : IM_COL32(110, 110, 116, 200));
-        if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + laneH + 2.0f)
+        const float y = footY(c.foot), x0 = t.xOf(c.first), x1 = std::max(t.xOf(c.last), x0 + 2.0f);
+        dl.AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + footH),
+                         c.enabled ? IM_COL32(50, 110, 66, 230) : IM_COL32(80, 80, 86, 200));
+        const ImU32 bright = c.enabled ? IM_COL32(90, 210, 120, 255) : IM_COL32(130, 130, 136, 220);
+        auto phase = [&](const FrameRange& r, float top) {
+            if (r.empty()) return;
+            const float a = t.xOf(r.first), b = std::max(t.xOf(r.last), a + 2.0f);
+            dl.AddRectFilled(ImVec2(a, top), ImVec2(b, top + laneH), bright);
+        };
+        phase(c.heel, y);
+        phase(c.toe, y + laneH + 1.0f);
+        if (mouse.x >= x0 && mouse.x <= x1 && mouse.y >= y - 2.0f && mouse.y <= y + footH + 2.0f)
             hoveredContact = static_cast<int>(i);
     }
     return hoveredContact;
+}
+
+// "heel 86-101, toe 90-107" (1-based frames), the phases a stance has.
+std::string contactPhases(const FootContact& c) {
+    std::string out;
+    for (const auto& [name, r] : {std::pair<const char*, FrameRange>{"heel", c.heel}, {"toe", c.toe}}) {
+        if (r.empty()) continue;
+        if (!out.empty()) out += ", ";
+        out += std::string(name) + " " + std::to_string(r.first + 1) + "-" + std::to_string(r.last + 1);
+    }
+    return out;
 }
 
 }  // namespace
@@ -212,8 +235,8 @@ void TimelinePanel::draw(EditorState& s) {
     drawEditedFrameMarks(*dl, track, doc);
     drawAnimatorKeys(*dl, track, s);
     drawPathKeyDiamonds(*dl, track, s);
-    // Foot contacts: a thin lane per foot (left above right) at the bottom of the track, green
-    // when held by regeneration, grey when switched off; right-click one to switch it. Shown
+    // Foot contacts: thin heel and toe lanes per foot (left above right) at the bottom of the track,
+    // green when held by regeneration, grey when switched off; right-click one to switch it. Shown
     // while they matter: a path is edited or drags spread over a span.
     static const ContactSet kNone;
     const ContactSet& contacts = doc.paths().edit() || doc.dragFalloff() > 0 ? doc.contacts() : kNone;
@@ -232,8 +255,9 @@ void TimelinePanel::draw(EditorState& s) {
         const int f = mouseFrame;
         if (hoveredContact >= 0) {
             const FootContact& c = contacts.contacts[hoveredContact];
-            ImGui::SetTooltip("%s contact, frames %d-%d: %s (right-click to switch)", effectorName(c.foot), c.first + 1,
-                              c.last + 1, c.enabled ? "held when regenerating" : "off");
+            ImGui::SetTooltip("%s contact, frames %d-%d (%s): %s (right-click to switch)", effectorName(c.foot),
+                              c.first + 1, c.last + 1, contactPhases(c).c_str(),
+                              c.enabled ? "held when regenerating" : "off");
         } else {
             ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
         }
