@@ -69,6 +69,7 @@ void EditorDocument::setClip(Clip clip, bool synthetic) {
     ++revision_;
     store_.reset(std::move(clip), synthetic);
     editLineage_.clear();
+    judgedEdits_.clear();
     falloffStepId_ = 0;
     lastRegenerateQuality_.reset();
     lastRegenerateKeys_.clear();

@@ -41,6 +41,7 @@
 #include "edit/path_edit.h"
 #include "edit/path_session.h"
 #include "edit/regenerate_job.h"
+#include "edit/steady_verdict.h"
 #include "eval/admission.h"
 #include "ik/constrained_ik.h"
 #include "motion/foot_contacts.h"
@@ -228,6 +229,11 @@ public:
     // update gave the new training row, so the verdict judges the model that holds it). None without a
     // model, on a captured frame, or for an edit without a latent point (plain IK).
     std::optional<AdmissionVerdict> currentPoseVerdict() const;
+    // What the range tint and its legend show for the current frame: its own verdict, steadied over
+    // its edited neighbours (edit/steady_verdict.h) unless a drag is live. Each neighbour is judged
+    // once per pose, model version and contacts (a cache), so the tint, the legend and the Model
+    // panel agree within a UI frame.
+    std::optional<ShownVerdict> shownPoseVerdict() const;
     // Whether `edited` on clip frame `frame` keeps the balance its captured pose had on the planted feet.
     Balance balanceOf(int frame, const Pose& edited) const;
 
@@ -331,6 +337,9 @@ private:
     // The current frame's point on `v`: the captured frame's start (learned_ik.h), or an edit's
     // point fitted on this model (edit/latent_refit.h); cached per frame, version and pose.
     const Eigen::VectorXd& frameLatent(const gp::ModelVersion& v) const;
+    // Edited frame `frame` judged on the current version without the model's score (the class
+    // steadying compares); none on a captured frame. Cached in judgedEdits_.
+    std::optional<AdmissionVerdict> judgedEditAt(int frame) const;
     // Posts an accepted pose to the adaptive worker, or keeps it for the final model while refining;
     // the sequence number of the post (0: none).
     long teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved);
@@ -390,6 +399,19 @@ private:
         bool belowFloor = false;
     } lastDrag_;
     std::optional<EditRecord> latentBefore_;
+
+    // judgedEditAt's cache: a verdict per frame and the inputs it was judged from.
+    struct JudgedEdit {
+        const void* model = nullptr;
+        int version = -1;
+        const void* clipFrames = nullptr;
+        std::vector<bool> contactsOn;
+        Pose pose;
+        std::vector<Effector> moved;
+        bool reached = true, belowFloor = false;
+        std::optional<AdmissionVerdict> verdict;
+    };
+    mutable std::map<int, JudgedEdit> judgedEdits_;
 
     // The current frame's latent point on the current model (frameLatent's cache).
     mutable int cacheFrame_ = -1, cacheVersion_ = -1;

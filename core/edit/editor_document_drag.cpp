@@ -284,37 +284,4 @@ void EditorDocument::endLatentDrag() {
     updatePinPositions();
 }
 
-Balance EditorDocument::balanceOf(int frame, const Pose& edited) const {
-    return judgeBalance(clip().skeleton, clip().frames[frame], edited, store_.contacts(), frame);
-}
-
-std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
-    const gp::ModelVersionPtr v = model();
-    if (!v || !hasClip()) return std::nullopt;
-    if (drag_.active()) {
-        const SolveReadout& r = drag_.readout();
-        if (!r.valid || !r.learned) return std::nullopt;
-        return admitPose(*v, drag_.pose(), movedEffectors(r.constraints), r.reached, anyBelowFloor(r.constraints),
-                         r.sigma2, r.lik, balanceOf(frame_, drag_.pose()));
-    }
-    const auto it = store_.edits().find(frame_);
-    if (it == store_.edits().end()) return std::nullopt;
-    const EditRecord& e = it->second;
-    if (e.x.size() != v->posterior->latentDim() || !e.x.allFinite()) return std::nullopt;
-    if (v->model->clip.skeleton.jointCount() != clip().skeleton.jointCount()) return std::nullopt;
-    const PoseLayout layout(clip().skeleton);
-    const Eigen::VectorXd y = v->model->keptPose(layout.extract(e.pose));
-    // Judged at the pose's point on this model (frameLatent): a taught pose's training row, or its x
-    // fitted here when the edit was solved on another model (a retrain, a refinement).
-    const Eigen::VectorXd& x = frameLatent(*v);
-    const double lik = v->posterior->evaluate(x, y, nullptr, nullptr);
-    Eigen::VectorXd mean;
-    double sigma2 = 0.0;
-    v->posterior->predict(x, mean, sigma2);
-    // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
-    const bool lastDragged = lastDrag_.frame == frame_ && posesIdentical(lastDrag_.pose, e.pose);
-    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor,
-                     sigma2, lik, balanceOf(frame_, e.pose));
-}
-
 }  // namespace mgp

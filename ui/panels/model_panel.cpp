@@ -475,9 +475,12 @@ void drawIkReadout(EditorState& s) {
     }
     // The current frame's pose judged as the viewport legend judges it (one verdict, one sigma^2 per frame); the
     // numbers behind it in the tooltip.
-    if (const std::optional<AdmissionVerdict> v = r.learned ? s.doc.currentPoseVerdict() : std::nullopt) {
-        ImGui::Text("this pose is %s, %s", judgementWords(v->judgement),
+    if (const std::optional<ShownVerdict> shown = r.learned ? s.doc.shownPoseVerdict() : std::nullopt) {
+        const AdmissionVerdict* v = &shown->own;
+        ImGui::Text("this pose is %s, %s", judgementWords(shown->shown().judgement),
                     v->admitted ? "the model learns from it" : "kept as an edit only");
+        if (shown->steadied)
+            ImGui::TextDisabled("like frame %d; alone: %s", shown->steadiedFrame + 1, judgementWords(v->judgement));
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(),
                               r.iterations);

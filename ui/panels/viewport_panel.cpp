@@ -696,11 +696,16 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
     s.rangeLegend.clear();
     s.controls.erase("range legend");
     if (!s.showRangeTint || !s.doc.hasModel()) return;
-    const std::optional<AdmissionVerdict> v = s.doc.currentPoseVerdict();
-    const render::RangeTint tint = v ? render::rangeTint(*v) : render::RangeTint{};
+    const std::optional<ShownVerdict> shown = s.doc.shownPoseVerdict();
+    // The tint and the first line: the steadied class; the second line and the tooltip: this frame's own verdict.
+    const AdmissionVerdict* v = shown ? &shown->own : nullptr;
+    const render::RangeTint tint = shown ? render::rangeTint(shown->shown()) : render::RangeTint{};
     std::string l1, l2;
     if (v) {
-        l1 = std::string("this pose is ") + judgementWords(v->judgement);
+        l1 = std::string("this pose is ") + judgementWords(shown->shown().judgement);
+        if (shown->steadied)
+            l1 += std::string(" like frame ") + std::to_string(shown->steadiedFrame + 1) +
+                  " (alone: " + judgementWords(v->judgement) + ")";
         l2 = v->admitted ? "the model learns from it" : "kept as an edit, the model does not learn from it";
     } else {
         l1 = "no solved pose on this frame: not tinted";
@@ -752,11 +757,13 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
                                 col(render::kRangeAmber), col(render::kRangeAmber), col(neutral));
     dl->AddRectFilled(ImVec2(bx + 2 * third, by), ImVec2(bx + barW, by + bh), col(render::kRangeRed));
     if (v) {
-        // Where this pose sits on the bar: its nearest-frame distance against the capture's median, then the ramp.
-        const float at = tint.band == render::RangeBand::kOutOfRange ? 2.5f
-                         : tint.band == render::RangeBand::kNearLimit
-                             ? 1.0f + tint.weight
-                             : std::clamp(float(v->capture.nearestCm / std::max(v->nearestMedianCm, 1e-9)), 0.0f, 1.0f);
+        // Where the shown pose sits on the bar: its nearest-frame distance against the capture's median, then the ramp.
+        const AdmissionVerdict& at0 = shown->shown();
+        const float at =
+            tint.band == render::RangeBand::kOutOfRange ? 2.5f
+            : tint.band == render::RangeBand::kNearLimit
+                ? 1.0f + tint.weight
+                : std::clamp(float(at0.capture.nearestCm / std::max(at0.nearestMedianCm, 1e-9)), 0.0f, 1.0f);
         const float px = bx + at * third;
         dl->AddTriangleFilled(ImVec2(px, by + bh + 1), ImVec2(px - 5, by + bh + 7), ImVec2(px + 5, by + bh + 7),
                               IM_COL32(255, 255, 255, 255));

@@ -117,8 +117,8 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     forwardKinematics(doc.clip().skeleton, s.posePreview ? *s.posePreview : doc.currentPose(), fk);
     scene.figures.push_back(render::makeFigure(doc.clip().skeleton, fk));
     if (s.showRangeTint && !s.posePreview)
-        if (const std::optional<AdmissionVerdict> v = doc.currentPoseVerdict())
-            render::applyRangeTint(scene.figures.back(), render::rangeTint(*v));
+        if (const std::optional<ShownVerdict> v = doc.shownPoseVerdict())
+            render::applyRangeTint(scene.figures.back(), render::rangeTint(v->shown()));
     scene.groundHeightCm = groundHeight_;
     scene.groundCentreCm = toGlm(fk.jointCm[0]);
     scene.handles = render::effectorHandles(doc.clip().skeleton, fk);
