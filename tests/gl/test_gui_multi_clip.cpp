@@ -15,6 +15,7 @@
 #include <string>
 
 #include "editor_harness.h"
+#include "gl_test_paths.h"
 #include "gp/model_file.h"
 #include "gp/train/trainer.h"
 #include "io/clip_loader.h"
@@ -291,4 +292,45 @@ TEST_CASE(
     CHECK_FALSE(h->app->askingAboutUnsavedChanges());
     CHECK(doc.clip().name == "synthetic_walk");
     std::filesystem::remove_all(std::filesystem::path(model).parent_path());
+}
+
+TEST_CASE("gui: a compare model no session holds is asked about before anything drops or replaces it") {
+    // A compare model as a finished compare training installs one; every path that would drop it
+    // (opening a clip, a model, the demo clip, quitting) or replace it (a new compare training)
+    // asks first, and Cancel keeps it. Saved in a session, a new compare training asks nothing.
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    EditorDocument& doc = h->app->state().doc;
+    CHECK_FALSE(h->app->dirty());
+    doc.setCompareModel(gp::ModelVersion::make(gp::GpModel(*doc.model()->model)));
+    const gp::ModelVersionPtr compare = doc.compareModel();
+    CHECK(h->app->compareModelUnsaved());
+    CHECK(h->app->dirty());
+    const std::string bvh = test::mocapDir() + "/bvh/02_03.bvh";
+    const std::vector<std::vector<std::string>> drops = {
+        {"open", bvh}, {"open-model", test::fixtureModelPath()}, {"demo-clip"}, {"train-compare"}, {"quit"}};
+    for (const std::vector<std::string>& action : drops) {
+        INFO(action.front());
+        REQUIRE(h->app->runAction(action) == "");
+        h->frame(2);
+        CHECK(h->app->askingAboutUnsavedChanges());
+        tapKey(*h, key::kEscape);
+        h->frame(1);
+        CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+        CHECK(doc.compareModel() == compare);
+        CHECK_FALSE(h->app->state().compareTraining.running());
+        CHECK_FALSE(h->app->quitRequested());
+    }
+    const std::string dir = test::kOutDir + "/compare_model_session";
+    std::filesystem::create_directories(dir);
+    REQUIRE(h->app->runAction({"save-session", dir + "/with_compare.mgsession"}) == "");
+    CHECK_FALSE(h->app->compareModelUnsaved());
+    CHECK_FALSE(h->app->dirty());
+    REQUIRE(h->app->runAction({"train-compare"}) == "");
+    h->frame(1);
+    CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+    CHECK(h->app->state().compareTraining.running());
+    h->app->state().compareTraining.cancel();
+    h->app->waitIdle();
+    std::filesystem::remove_all(dir);
 }

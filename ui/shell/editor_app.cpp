@@ -139,6 +139,7 @@ std::string EditorApp::restoreAutosave(const std::string& path) {
     sessionPath_.clear();
     savedRevision_ = -1;
     savedModel_.reset();  // only the autosave holds its model
+    savedCompareModel_.reset();
     if (!autosaveNow().empty()) return "could not keep the restored autosave: " + state_.messages.latestText();
     discardAutosave(file);
     prompts_.dropAutosaveOffer();
@@ -208,11 +209,17 @@ void EditorApp::pollTraining() {
 }
 
 std::string EditorApp::startCompareTraining() {
-    gp::TrainOptions o = state_.trainOptions;
-    o.kind = o.kind == gp::KernelKind::kFas ? gp::KernelKind::kSgplvm : gp::KernelKind::kFas;
-    const std::string err = state_.compareTraining.start(state_.doc.clip(), o);
-    if (!err.empty()) state_.setStatus(err, true);
-    return err;
+    // Its model replaces the compare model when ready: one no session file holds is asked about first.
+    return runAfterAsking(
+        compareModelUnsaved(),
+        [this] {
+            gp::TrainOptions o = state_.trainOptions;
+            o.kind = o.kind == gp::KernelKind::kFas ? gp::KernelKind::kSgplvm : gp::KernelKind::kFas;
+            const std::string err = state_.compareTraining.start(state_.doc.clip(), o);
+            if (!err.empty()) state_.setStatus(err, true);
+            return err;
+        },
+        "training a new compare model");
 }
 
 void EditorApp::pollExport() {

@@ -121,6 +121,8 @@ public:
     // does the question).
     bool dirty() const override { return state_.doc.revision() != savedRevision_ || modelUnsaved(); }
     bool modelUnsaved() const;
+    // A compare model (trained here) that no session file holds: a new compare training asks first.
+    bool compareModelUnsaved() const;
     bool askingAboutUnsavedChanges() const { return prompts_.askingUnsaved(); }  // the modal is up
     bool askingAboutModelClip() const { return prompts_.askingModelClip(); }     // the modal is up
     const FileDialog& fileDialog() const override { return dialog_; }
@@ -177,6 +179,7 @@ private:
     // The document's edits count as saved; so does its model when `modelSaved` (a session or a
     // model file opened, a clip opened without one), else an unsaved model stays unsaved (a switch
     // to the model's other clip keeps the model).
+    void noteSavedCompareModel();  // the compare model a session file now holds
     void markSaved(bool modelSaved);
     void installModel(gp::ModelVersionPtr version, const std::string& path);  // with its clip
     void remember(const std::string& path, RecentKind kind);
@@ -214,7 +217,8 @@ private:
     std::string sessionPath_;                      // "" until saved or opened
     long savedRevision_ = 0;                       // doc.revision() when last saved or opened
     std::weak_ptr<const gp::GpModel> savedModel_;  // the model a file or session holds (weak: never a reused address)
-    std::unique_ptr<RecentFiles> recent_;          // null when the options turn the list off
+    std::weak_ptr<const gp::GpModel> savedCompareModel_;  // the compare model the session file holds
+    std::unique_ptr<RecentFiles> recent_;                 // null when the options turn the list off
     AutosavePolicy autosave_;
     bool quitAsked_ = false;  // Quit was chosen: the unsaved-changes question comes first
     bool quitConfirmed_ = false;

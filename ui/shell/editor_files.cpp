@@ -170,6 +170,18 @@ bool EditorApp::modelUnsaved() const {
     return v && v->model != savedModel_.lock();
 }
 
+bool EditorApp::compareModelUnsaved() const {
+    const gp::ModelVersionPtr v = state_.doc.compareModel();
+    return v && v->model != savedCompareModel_.lock();
+}
+
+void EditorApp::noteSavedCompareModel() {
+    if (const gp::ModelVersionPtr v = state_.doc.compareModel())
+        savedCompareModel_ = v->model;
+    else
+        savedCompareModel_.reset();
+}
+
 void EditorApp::markSaved(bool modelSaved) {
     savedRevision_ = state_.doc.revision();
     if (modelSaved) {
@@ -198,6 +210,7 @@ std::string EditorApp::saveSession(const std::string& pathIn) {
         mgp::saveSession(path, editorSession(state_));
         sessionPath_ = absolutePath(path);
         markSaved(false);
+        noteSavedCompareModel();
         if (written)
             savedModel_ = written->model;
         else
@@ -228,6 +241,7 @@ std::string EditorApp::openSession(const std::string& path, bool addToRecent) {
         const SessionData& d = checked.data;
         sessionPath_ = absolutePath(path);
         markSaved(true);
+        noteSavedCompareModel();
         forgetAutosave();
         if (addToRecent) remember(path, RecentKind::kSession);
         std::string status = "opened session " + path;
