@@ -24,6 +24,7 @@
 #include "ik/plain_ik.h"
 #include "ik_cli.h"
 #include "motion/foot_contacts.h"
+#include "motion/support_polygon.h"
 #include "skeleton/centre_of_mass.h"
 
 namespace mgp::app {
@@ -36,6 +37,7 @@ struct PoseOptions {
     bool adaptive = false, json = false;
     int iterations = 500;
     double locality = kDefaultLocality;
+    double balanceWeight = kBalanceWeight;
 };
 
 nlohmann::json verdictJson(const AdmissionVerdict& v, const gp::GpModel& model) {
@@ -71,6 +73,8 @@ void checkPoseOptions(const PoseOptions& o) {
     // The learned solver's validate() judges the value itself.
     if (o.locality != kDefaultLocality && o.solver != "learned")
         throw UsageError("expected --solver learned with --locality, found --solver " + o.solver);
+    if (o.balanceWeight != kBalanceWeight && o.solver != "learned")
+        throw UsageError("expected --solver learned with --balance, found --solver " + o.solver);
 }
 
 // --target and --pin, placed from the effectors' positions in the frame (`fk`).
@@ -166,7 +170,13 @@ void solveLearnedPose(const PoseOptions& o, const gp::ModelVersionPtr& version, 
         ConstrainedIkRequest request;
         request.locality = o.locality;
         request.floorCm = contacts.floorCm;
+        FkState fk;
+        forwardKinematics(clip.skeleton, clip.frames[frame], fk);
+        if (o.balanceWeight > 0.0)
+            request.balance = balanceRegion(clip.skeleton, clip.frames[frame], fk, contacts, frame, constraints);
+        request.balanceWeight = o.balanceWeight;
         j["locality"] = o.locality;
+        j["balance_asked"] = request.balance.has_value();
         j["stop"] = ikStopName(solveWith(solver, request).stop);
     } else {
         LearnedIkSolver solver(version);
@@ -311,6 +321,10 @@ const CommandRegistration poseCommand(
                        "its pose, per degree² "
                        "(0 = off; default " +
                            std::to_string(static_cast<int>(kDefaultLocality)) + ")");
+        sub.add_option("--balance", o->balanceWeight,
+                       "Learned solver: the weight per cm² that keeps the centre of mass over the planted feet "
+                       "where the captured frame stands balanced on them (0 = off; default " +
+                           std::to_string(static_cast<int>(kBalanceWeight)) + ")");
         sub.add_flag("--adaptive", o->adaptive,
                      "Add the solved pose to the model (docs/maths.md §11) and save it, if every "
                      "constraint is reached "

@@ -110,6 +110,34 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
     CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
 }
 
+TEST_CASE("motiongp pose --balance: a hand pulled far forward stays over the planted foot, 0 turns it off") {
+    // The walk's frame 200 stands balanced on its planted foot; the right hand 60 cm forward tips
+    // the centre of mass 6.2 cm out of the support without the term (docs/maths-ik.md §1).
+    const std::string model = test::walkModelPath();
+    const std::string base = "pose '" + model + "' --frame 200 --target rhand=0,0,60 --json";
+    auto off = test::runCli(base + " --balance 0");
+    auto on = test::runCli(base);
+    REQUIRE(off.exitCode == 0);
+    REQUIRE(on.exitCode == 0);
+    const json a = json::parse(off.out), b = json::parse(on.out);
+    CHECK(a["balance_asked"] == false);
+    CHECK(b["balance_asked"] == true);
+    CHECK(a["reached"] == true);
+    CHECK(b["reached"] == true);
+    const double outA = a["natural"]["com_outside_support_cm"].get<double>();
+    const double outB = b["natural"]["com_outside_support_cm"].get<double>();
+    MESSAGE("centre of mass outside the support: " << outA << " cm without the term, " << outB << " cm with it");
+    CHECK(a["natural"]["judgement"] == "off balance");
+    CHECK(b["natural"]["judgement"] != "off balance");
+    CHECK(outB < 0.25 * outA);
+    auto r = test::runCli(base + " --balance -1");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected a balance weight ≥ 0, found -1.000000\n");
+    r = test::runCli(base + " --balance 3 --solver plain");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --solver learned with --balance, found --solver plain\n");
+}
+
 TEST_CASE(
     "motiongp pose: a foot target below the floor ends on it and is refused, and --out writes the clip with the pose "
     "in place") {

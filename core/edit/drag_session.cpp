@@ -109,6 +109,7 @@ void DragSession::solveLearned(int maxIterations) {
     request_.constraints = constraints();
     request_.maxIterations = maxIterations;
     request_.floorCm = floorCm_;
+    request_.balance = balance_;
     request_.locality = locality_;
     request_.localityReference = startPose_;
     // The root rotation is held (stiffly) near where the drag began, not where the last event left it.

@@ -61,6 +61,8 @@ public:
     // How the learned solves of the next drags hold the body (ConstrainedIkRequest): the floor
     // hands and feet stay above (none: no floor) and the locality ℓ, against the drag's start pose.
     void setFloor(std::optional<double> floorCm) { floorCm_ = floorCm; }
+    // The balance term's region for the next drag (ConstrainedIkRequest::balance); none: not asked.
+    void setBalance(std::optional<BalanceRegion> region) { balance_ = std::move(region); }
     void setLocality(double locality) { locality_ = locality; }
     // Pins changed while dragging: the next solve holds these.
     void setPins(std::vector<IkConstraint> pins) { pins_ = std::move(pins); }
@@ -125,6 +127,7 @@ private:
     Eigen::VectorXd x_;
     int refineBudget_ = 0;
     std::optional<double> floorCm_;
+    std::optional<BalanceRegion> balance_;
     double locality_ = kDefaultLocality;
     bool converged_ = false;
     std::vector<IkConstraint> pins_, contactPins_;

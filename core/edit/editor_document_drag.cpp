@@ -11,6 +11,7 @@
 #include "ik/locality.h"
 #include "motion/drag_falloff.h"
 #include "motion/pose_layer.h"
+#include "motion/support_polygon.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
@@ -135,8 +136,19 @@ std::string EditorDocument::beginDrag(Effector e) {
     updatePinPositions();
     drag_.setCompare(compare_, compareModel_, frame_);
     drag_.setFloor(store_.contacts().floorCm);
-    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holdConstraints(),
-                contactHolds());
+    const std::vector<IkConstraint> holds = holdConstraints(), feet = contactHolds();
+    {
+        // Balance where the captured frame stands balanced on the feet this drag pins.
+        std::vector<IkConstraint> pinned = holds;
+        pinned.insert(pinned.end(), feet.begin(), feet.end());
+        pinned.erase(
+            std::remove_if(pinned.begin(), pinned.end(), [e](const IkConstraint& c) { return c.effector == e; }),
+            pinned.end());
+        FkState fk;
+        forwardKinematics(clip().skeleton, start, fk);
+        drag_.setBalance(balanceRegion(clip().skeleton, clip().frames[frame_], fk, store_.contacts(), frame_, pinned));
+    }
+    drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holds, feet);
     return "";
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "skeleton/centre_of_mass.h"
 #include "skeleton/limb_extension.h"
 
 namespace mgp {
@@ -131,6 +132,15 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
     }
     if (r.floorCm && !std::isfinite(*r.floorCm))
         return "expected a finite floor height, found " + std::to_string(*r.floorCm);
+    if (!(r.balanceWeight >= 0.0) || !std::isfinite(r.balanceWeight))
+        return "expected a balance weight ≥ 0, found " + std::to_string(r.balanceWeight);
+    if (r.balance) {
+        if (r.balance->hull.empty()) return "expected a balance region with at least one point, found none";
+        for (const Eigen::Vector2d& p : r.balance->hull)
+            if (!p.allFinite()) return "expected a finite balance region, found NaN or Inf";
+        if (!(r.balance->growCm >= 0.0) || !std::isfinite(r.balance->growCm))
+            return "expected a balance region grown by ≥ 0 cm, found " + std::to_string(r.balance->growCm);
+    }
     for (std::size_t i = 0; i < r.held.size(); ++i) {
         const HeldDof& h = r.held[i];
         if (h.joint < 0 || h.joint >= sk.jointCount() || h.axis < 0 || h.axis > 2)
@@ -263,10 +273,11 @@ double ConstrainedIkSolver::evaluate(const Eigen::VectorXd& z, bool derivatives)
     double F = lik_;
     if (derivatives) priorDerivatives();
     setPose(y_);
-    // F's terms are added in this order (targets, root, locality, floor): the sum is bit-exact.
+    // F's terms are added in this order (targets, root, locality, floor, balance): the sum is bit-exact.
     addTargetTerms(F, derivatives);
     addRootAndLocalityTerms(F, derivatives);
     addFloorTerms(F, derivatives);
+    addBalanceTerm(F, derivatives);
     if (derivatives) pinDerivatives();
     return F;
 }
@@ -371,6 +382,51 @@ void ConstrainedIkSolver::addFloorTerms(double& F, bool derivatives) {
                 H_(d_ + ka, d_ + kb) += h;
                 if (kb != ka) H_(d_ + kb, d_ + ka) += h;
             }
+        }
+    }
+}
+
+void ConstrainedIkSolver::addBalanceTerm(double& F, bool derivatives) {
+    if (!request_->balance) return;
+    const Skeleton& sk = version_->model->clip.skeleton;
+    const std::optional<Eigen::Vector3d> com = centreOfMass(sk, fk_);
+    if (!com) return;
+    Eigen::Vector2d n;
+    double k = 0.0;
+    const double d = request_->balance->outsideCm(Eigen::Vector2d(com->x(), com->z()), &n, &k);
+    if (!(d > 0.0) || !std::isfinite(d)) return;
+    const double kappa = request_->balanceWeight;
+    F += 0.5 * kappa * d * d;
+    if (!derivatives) return;
+    // ∂d/∂y = nᵀ ∂c_xz/∂y (n: the unit direction d grows in); Gauss–Newton curvature κ (∂d)ᵀ∂d in H,
+    // and in the Newton regime the rest of ∇²(½κd²) in C: κd (Σ n·∂²c + J_cᵀ k (I − nnᵀ) J_c).
+    centreOfMassJacobian(sk, layout_, fk_, pose_, jac_);
+    if (curvature_) {
+        centreOfMassHessianContracted(sk, layout_, fk_, pose_, kappa * d * Eigen::Vector3d(n.x(), 0.0, n.y()), hc_);
+        const Eigen::Vector2d t(-n.y(), n.x());  // I − nnᵀ = t tᵀ in the plane
+        for (int a = 0; a < layout_.size(); ++a) {
+            const int ka = yOfDof_[a];
+            if (ka < 0) continue;
+            const double ta = t.x() * jac_(0, a) + t.y() * jac_(2, a);
+            for (int b = 0; b < layout_.size(); ++b) {
+                const int kb = yOfDof_[b];
+                if (kb < 0) continue;
+                const double tb = t.x() * jac_(0, b) + t.y() * jac_(2, b);
+                C_(d_ + ka, d_ + kb) += hc_(a, b) + kappa * d * k * ta * tb;
+            }
+        }
+    }
+    for (int a = 0; a < layout_.size(); ++a) {
+        const int ka = yOfDof_[a];
+        const double da = n.x() * jac_(0, a) + n.y() * jac_(2, a);
+        if (ka < 0 || da == 0.0) continue;
+        g_[d_ + ka] += kappa * d * da;
+        for (int b = 0; b <= a; ++b) {
+            const int kb = yOfDof_[b];
+            if (kb < 0) continue;
+            const double h = kappa * da * (n.x() * jac_(0, b) + n.y() * jac_(2, b));
+            H_(d_ + ka, d_ + kb) += h;
+            if (kb != ka) H_(d_ + kb, d_ + ka) += h;
         }
     }
 }

@@ -96,6 +96,7 @@
 #include <vector>
 
 #include "gp/model_version.h"
+#include "ik/balance_region.h"
 #include "ik/ik_types.h"
 #include "ik/locality.h"
 #include "skeleton/forward_kinematics.h"
@@ -108,6 +109,11 @@ namespace mgp {
 constexpr double kExactTargetWeight = 1e6;
 // Root orientation stiffness per degree² (in ½k‖Δ‖²).
 constexpr double kDefaultRootStiffness = 0.5;
+// Balance weight κ_b per cm² (in ½κ_b d²): the centre of mass 1 cm outside its support costs 5·10⁴,
+// far more than the prior's range over natural poses and a tenth of an exact target's weight, so the
+// body leans back rather than tip where it can, and a reachable target is still met (≤ 0.011 cm off
+// in the measured cases, docs/maths-ik.md §1).
+constexpr double kBalanceWeight = 1e5;
 
 enum class IkStop {
     kConverged,       // the KKT test above holds
@@ -141,6 +147,11 @@ struct ConstrainedIkRequest {
     double locality = kDefaultLocality;     // 0: off
     std::optional<Pose> localityReference;  // y_ref; default: the start pose
     std::optional<double> floorCm;          // world Y (cm) that hands and feet may not pass; none: no floor
+    // Balance (docs/maths-ik.md §1): where the whole-body centre of mass may fall on the ground, the
+    // pinned planted feet's support grown by half a sole (motion/support_polygon.h, balanceRegion);
+    // the centre of mass outside it costs ½ κ_b d², d its distance outside (cm). None: not asked.
+    std::optional<BalanceRegion> balance;
+    double balanceWeight = kBalanceWeight;  // κ_b per cm²
     double pinToleranceCm = 1e-5;
     double stationarityAbsolute = 1e-6;
     double stationarityRelative = 1e-10;
@@ -194,6 +205,8 @@ private:
     void addRootAndLocalityTerms(double& F, bool derivatives);
     // F += the one-sided floor penalty of the free hands and feet (Gauss–Newton on the vertical row).
     void addFloorTerms(double& F, bool derivatives);
+    // F += the balance term ½ κ_b d² (Gauss–Newton on the centre of mass's ground Jacobian).
+    void addBalanceTerm(double& F, bool derivatives);
     // c_, A_ and Aall_'s pin rows; held DOFs frozen; C_ += the pins' ν·∇²FK in the Newton regime.
     void pinDerivatives();
     // FK at z and the second-order correction's residual r = [pins' c; exact targets' e − ê]

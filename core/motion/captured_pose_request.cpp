@@ -1,6 +1,7 @@
 #include "motion/captured_pose_request.h"
 
 #include "ik/learned_ik.h"
+#include "motion/support_polygon.h"
 
 namespace mgp {
 
@@ -18,6 +19,7 @@ ConstrainedIkRequest capturedPoseRequest(const gp::ModelVersion& version, int fr
         req.constraints.push_back(pin);
     req.maxIterations = maxIterations;
     req.floorCm = contacts.floorCm;
+    req.balance = balanceRegion(clip.skeleton, clip.frames[frame], fk, contacts, frame, req.constraints);
     return req;
 }
 

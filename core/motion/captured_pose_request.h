@@ -2,7 +2,8 @@
 // The pose solve that starts from a captured frame, as `motiongp pose`, a drag from the captured
 // pose and the IK and falloff benches set it up: the frame's pose and latent start, the given
 // constraints, then each foot in ground contact on that frame as a pin where it stands (the rule of
-// foot_contacts.h, contactPinsAt), the clip's floor under hands and feet, the default locality.
+// foot_contacts.h, contactPinsAt), the clip's floor under hands and feet, the default locality, and
+// the balance term where the frame stands balanced on those pinned feet (support_polygon.h).
 #include <vector>
 
 #include "gp/model_version.h"

@@ -14,13 +14,6 @@ double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
     return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    const Eigen::Vector2d ab = b - a;
-    const double len2 = ab.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    return (p - (a + t * ab)).norm();
-}
-
 Eigen::Vector2d ground(const Eigen::Vector3d& p) { return {p.x(), p.z()}; }
 
 }  // namespace
@@ -43,20 +36,6 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> pts) {
     }
     hull.resize(k - 1);  // the last point is the first
     return hull;
-}
-
-double SupportPolygon::outsideCm(const Eigen::Vector2d& p) const {
-    if (hull.empty()) return std::numeric_limits<double>::infinity();
-    if (hull.size() == 1) return std::max(0.0, (p - hull[0]).norm() - kFootHalfWidthCm);
-    bool inside = hull.size() >= 3;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-        const Eigen::Vector2d& a = hull[i];
-        const Eigen::Vector2d& b = hull[(i + 1) % hull.size()];
-        nearest = std::min(nearest, segmentDistance(p, a, b));
-        if (cross(a, b, p) < 0.0) inside = false;  // right of a counter-clockwise edge
-    }
-    return inside ? 0.0 : std::max(0.0, nearest - kFootHalfWidthCm);
 }
 
 std::vector<Eigen::Vector2d> SupportPolygon::grownOutline(int samples) const {
@@ -85,6 +64,23 @@ std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkS
     if (out.feet.empty()) return std::nullopt;
     out.hull = convexHull(std::move(points));
     return out;
+}
+
+std::optional<BalanceRegion> balanceRegion(const Skeleton& skeleton, const Pose& captured, const FkState& startFk,
+                                           const ContactSet& contacts, int frame,
+                                           const std::vector<IkConstraint>& constraints) {
+    FkState fk;
+    forwardKinematics(skeleton, captured, fk);
+    const std::optional<SupportPolygon> own = supportPolygon(skeleton, fk, contacts, frame);
+    const std::optional<Eigen::Vector3d> com = centreOfMass(skeleton, fk);
+    if (!own || !com || own->outsideCm(ground(*com)) > kBalanceToleranceCm) return std::nullopt;
+    const std::optional<SupportPolygon> support = supportPolygon(skeleton, startFk, contacts, frame);
+    if (!support) return std::nullopt;
+    for (Effector foot : support->feet)
+        if (std::none_of(constraints.begin(), constraints.end(),
+                         [foot](const IkConstraint& c) { return c.pin && c.effector == foot; }))
+            return std::nullopt;
+    return support->region();
 }
 
 Balance judgeBalance(const Skeleton& skeleton, const Pose& captured, const Pose& edited, const ContactSet& contacts,

@@ -11,14 +11,13 @@
 #include <optional>
 #include <vector>
 
+#include "ik/balance_region.h"
 #include "motion/foot_contacts.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp {
 
-// Half the width of a sole (cm): how far the support reaches beside the line of the foot bones.
-constexpr double kFootHalfWidthCm = 5.0;
 // How far outside its support a centre of mass may fall before the pose is "off balance" (cm).
 constexpr double kBalanceToleranceCm = 2.0;
 
@@ -26,7 +25,8 @@ struct SupportPolygon {
     std::vector<Eigen::Vector2d> hull;  // (x, z), counter-clockwise seen from above; 1 or 2 points when degenerate
     std::vector<Effector> feet;         // the planted feet it stands on
     // How far (cm) the ground point p = (x, z) lies outside the grown polygon (0 inside).
-    double outsideCm(const Eigen::Vector2d& p) const;
+    double outsideCm(const Eigen::Vector2d& p) const { return region().outsideCm(p); }
+    BalanceRegion region() const { return {hull, kFootHalfWidthCm}; }
     // The grown polygon's outline (what outsideCm measures from), each hull point's half-sole disc
     // sampled at `samples` angles: counter-clockwise, for drawing.
     std::vector<Eigen::Vector2d> grownOutline(int samples = 12) const;
@@ -46,6 +46,15 @@ struct Balance {
     double outsideCm = 0.0;   // the edited pose's centre of mass outside its support (cm)
     bool offBalance = false;  // judged and outsideCm > kBalanceToleranceCm
 };
+
+// The balance term's region for a pose solve on clip frame `frame` (ConstrainedIkRequest::balance):
+// the support of the planted feet where the start pose (`startFk`) has them, when the captured pose
+// stands balanced on them (its centre of mass within kBalanceToleranceCm of its own support) and
+// every one of those feet is pinned in `constraints` (a free foot would move the support). None
+// otherwise: balance is then not asked for.
+std::optional<BalanceRegion> balanceRegion(const Skeleton& skeleton, const Pose& captured, const FkState& startFk,
+                                           const ContactSet& contacts, int frame,
+                                           const std::vector<IkConstraint>& constraints);
 
 // Judges `edited` on clip frame `frame`: only where the captured pose's centre of mass lies over its
 // support (within the tolerance) is the edited one required to stay over it too.

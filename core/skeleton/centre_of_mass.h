@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_layout.h"
 #include "skeleton/skeleton.h"
 
 namespace mgp {
@@ -26,6 +27,17 @@ const BodySegment* bodySegments(int* count);
 // Centre of mass (world, cm) of the pose whose FK is `fk`, or none (see above).
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const FkState& fk);
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose& pose);
+
+// ∂(centre of mass)/∂y for the P pose-vector DOFs (3×P, cm/deg) of the pose whose FK is `fk`; false
+// (and `jac` zero) where centreOfMass has no answer. A segment's point p_s moves with every DOF of
+// its bone's joint and the joints above it: ∂p_s/∂θ = (π/180) ω × (p_s − q), ω the DOF's world axis
+// and q its joint, as for an effector (forward_kinematics.h).
+bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                          Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
+// λ · ∂²(centre of mass)/∂y² (P×P, cm/deg², symmetric): the second-order term a Newton step on a
+// function of the centre of mass needs (the segments' points, as addPointHessianContracted).
+void centreOfMassHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                                   const Pose& pose, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out);
 
 // Horizontal (XZ) distance between two points (cm), and between the centres of mass of two
 // poses, or none.

@@ -85,7 +85,12 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
     out.setZero();
     const EffectorSite& site = skeleton.effectorSite(e);
     if (site.joint < 0) return;
-    const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
+    addPointHessianContracted(skeleton, layout, fk, pose, site.joint, effectorCm(skeleton, fk, e), lambda, out);
+}
+
+void addPointHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                               int pointJoint, const Eigen::Vector3d& pe, const Eigen::Vector3d& lambda,
+                               Eigen::Ref<Eigen::MatrixXd> out) {
     // The chain's DOFs: index, joint, position in the joint's rotation order (outermost first),
     // world axis ω and ω × (p − q).
     // Per-thread scratch sized to the largest pose vector seen: a solve's calls allocate nothing.
@@ -109,7 +114,7 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
     int n = 0;
     for (int i = 0; i < layout.size(); ++i) {
         const int j = layout.joint(i);
-        if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
+        if (j < 0 || !skeleton.isAncestorOrSelf(j, pointJoint)) continue;
         const RotationOrder& order = skeleton.joints[j].order;
         dof[n] = i;
         joint[n] = j;
@@ -131,8 +136,8 @@ void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layou
                 aUp = depth[a] < depth[b];  // both lie on the root-to-effector path
             const int up = aUp ? a : b, down = aUp ? b : a;
             const double h = k2 * lambda.dot(w[up].cross(v[down]));
-            out(dof[a], dof[b]) = h;
-            out(dof[b], dof[a]) = h;
+            out(dof[a], dof[b]) += h;
+            if (b != a) out(dof[b], dof[a]) += h;
         }
     }
 }

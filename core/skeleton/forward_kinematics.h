@@ -46,5 +46,10 @@ void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const 
 // pivot q_b: ∂²p/∂θ_a∂θ_b = (π/180)² ω_a × (ω_b × (p − q_b)). Other entries are exactly 0.
 void effectorHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
                                Effector e, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out);
+// The same for any point `p` fixed in joint `pointJoint`'s frame, ADDED to `out` (a sum over points,
+// as the centre of mass needs).
+void addPointHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                               int pointJoint, const Eigen::Vector3d& p, const Eigen::Vector3d& lambda,
+                               Eigen::Ref<Eigen::MatrixXd> out);
 
 }  // namespace mgp

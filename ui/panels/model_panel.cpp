@@ -370,6 +370,12 @@ void drawModelPanel(EditorState& s) {
         } else if (const auto cm = doc.compareModel()) {
             ImGui::TextDisabled("2nd model: %s, N = %d",
                                 cm->model->kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", cm->model->N());
+            // Training it again replaces it: the editor asks first when no session file holds it.
+            ImGui::SameLine();
+            ImGui::BeginDisabled(!doc.trainable());
+            if (ImGui::SmallButton("Retrain")) s.request("train-compare");
+            s.recordControl("retrain compare model");
+            ImGui::EndDisabled();
         } else {
             ImGui::BeginDisabled(!doc.trainable());
             if (ImGui::Button("Train 2nd model (other kernel)")) s.request("train-compare");

@@ -149,7 +149,8 @@ void drawPathKeyDiamonds(ImDrawList& dl, const TimelineTrack& t, const EditorSta
 // lanes, heel above toe: its stance (heel strike to toe-off) is a dim bar across both, and each
 // point's phase a bright one on its lane, so the roll from heel to toe shows as a step.
 int drawContactLanes(ImDrawList& dl, const TimelineTrack& t, const ContactSet& contacts, ImVec2 mouse) {
-    const float laneH = 3.0f, footH = 2.0f * laneH + 1.0f;
+    // 2 px lanes: the four fit under the frame numbers of the shortest track (24 px).
+    const float laneH = 2.0f, footH = 2.0f * laneH + 1.0f;
     auto footY = [&](Effector foot) {
         return t.t1.y - 2.0f - (foot == Effector::kLFoot ? 2.0f * footH + 1.0f : footH);
     };
