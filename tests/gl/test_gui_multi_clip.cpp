@@ -26,6 +26,16 @@ using test::tapKey;
 namespace key = ui::key;
 
 namespace {
+
+// Runs `action`, which must ask about unsaved changes first, and answers Cancel (Escape).
+void askThenCancel(test::Harness& h, const std::vector<std::string>& action) {
+    REQUIRE(h.app->runAction(action) == "");
+    h.frame(2);
+    CHECK(h.app->askingAboutUnsavedChanges());
+    tapKey(h, key::kEscape);
+    h.frame(1);
+    CHECK_FALSE(h.app->askingAboutUnsavedChanges());
+}
 std::string twoKickModel() {
     const std::string dir =
         (std::filesystem::temp_directory_path() / ("motiongp_gui_multi_clip_" + std::to_string(::getpid()))).string();
@@ -269,12 +279,7 @@ TEST_CASE(
         {"open"}, {"open", bvh}, {"open-model"}, {"open-model", model}, {"demo-clip"}, {"train"}, {"quit"}};
     for (const std::vector<std::string>& action : drops) {
         INFO(action.front());
-        REQUIRE(h->app->runAction(action) == "");
-        h->frame(2);
-        CHECK(h->app->askingAboutUnsavedChanges());
-        tapKey(*h, key::kEscape);
-        h->frame(1);
-        CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+        askThenCancel(*h, action);
         CHECK(doc.clip().name == "10_02");
         CHECK(doc.hasModel());
         CHECK(h->app->modelUnsaved());
@@ -311,12 +316,7 @@ TEST_CASE("gui: a compare model no session holds is asked about before anything 
         {"open", bvh}, {"open-model", test::fixtureModelPath()}, {"demo-clip"}, {"train-compare"}, {"quit"}};
     for (const std::vector<std::string>& action : drops) {
         INFO(action.front());
-        REQUIRE(h->app->runAction(action) == "");
-        h->frame(2);
-        CHECK(h->app->askingAboutUnsavedChanges());
-        tapKey(*h, key::kEscape);
-        h->frame(1);
-        CHECK_FALSE(h->app->askingAboutUnsavedChanges());
+        askThenCancel(*h, action);
         CHECK(doc.compareModel() == compare);
         CHECK_FALSE(h->app->state().compareTraining.running());
         CHECK_FALSE(h->app->quitRequested());
