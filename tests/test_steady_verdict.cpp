@@ -114,6 +114,21 @@ TEST_CASE("editor: the range tint of an edited span is steadied, the frame's own
         doc.setFrame(99);
         CHECK_FALSE(doc.shownPoseVerdict());
     }
+    SUBCASE("a drag that misses its target is not steadied: red among natural neighbours, as dragged") {
+        doc.restoreEdits(edits(1, 0));  // 100..110 natural
+        doc.setDragFalloff(0);          // the neighbours stay the natural edits
+        doc.setFrame(105);
+        REQUIRE(doc.beginDrag(Effector::kRHand).empty());
+        doc.dragTo(doc.effectorPosition(Effector::kRHand) + Eigen::Vector3d(0, 0, 300), 200);  // out of reach
+        REQUIRE(doc.endDrag());
+        const std::optional<ShownVerdict> shown = doc.shownPoseVerdict();
+        REQUIRE(shown);
+        CHECK(shown->own.judgement == PoseJudgement::kOutOfReach);
+        CHECK_FALSE(shown->steadied);
+        CHECK_FALSE(shown->shown().admitted);
+        doc.setFrame(104);
+        CHECK(doc.shownPoseVerdict()->shown().admitted);
+    }
     SUBCASE("switching the frame's judgement inputs is seen: an undo of the bend") {
         doc.restoreEdits(edits(104, 106));
         doc.setFrame(105);

@@ -87,6 +87,7 @@ void DragSession::settle() {
 
 void DragSession::finish() {
     active_ = false;
+    balance_.reset();
     latent_ = false;
     comparePose_.reset();
 }

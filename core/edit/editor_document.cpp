@@ -260,6 +260,7 @@ void EditorDocument::installWorker(gp::ModelVersionPtr version) {
     models_.install(std::move(version));
     drag_.forgetModel();
     cacheFrame_ = -1;
+    judgedEdits_.clear();
 }
 
 void EditorDocument::clearModel() {
@@ -272,6 +273,7 @@ void EditorDocument::clearModel() {
     models_.clear();
     drag_.forgetModel();
     cacheFrame_ = -1;
+    judgedEdits_.clear();
 }
 
 void EditorDocument::setAdaptiveEnabled(bool on) {
@@ -340,7 +342,10 @@ void EditorDocument::applyFrames(const FrameEdits& frames) {
 }
 
 void EditorDocument::installVersion(const gp::ModelVersionPtr& version) {
-    if (models_.restore(version)) cacheFrame_ = -1;
+    if (models_.restore(version)) {
+        cacheFrame_ = -1;
+        judgedEdits_.clear();
+    }
 }
 
 std::string EditorDocument::undoLabel() const {

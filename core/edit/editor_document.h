@@ -230,9 +230,10 @@ public:
     // model, on a captured frame, or for an edit without a latent point (plain IK).
     std::optional<AdmissionVerdict> currentPoseVerdict() const;
     // What the range tint and its legend show for the current frame: its own verdict, steadied over
-    // its edited neighbours (edit/steady_verdict.h) unless a drag is live. Each neighbour is judged
-    // once per pose, model version and contacts (a cache), so the tint, the legend and the Model
-    // panel agree within a UI frame.
+    // its edited neighbours (edit/steady_verdict.h), except during a drag, on the last drag's pose
+    // and for a refusal that is not about the capture's range (out of reach, through the floor, off
+    // balance). The frame and its neighbours are judged on one model version; each neighbour once
+    // per pose, model version and contact switches (a cache).
     std::optional<ShownVerdict> shownPoseVerdict() const;
     // Whether `edited` on clip frame `frame` keeps the balance its captured pose had on the planted feet.
     Balance balanceOf(int frame, const Pose& edited) const;
@@ -337,9 +338,20 @@ private:
     // The current frame's point on `v`: the captured frame's start (learned_ik.h), or an edit's
     // point fitted on this model (edit/latent_refit.h); cached per frame, version and pose.
     const Eigen::VectorXd& frameLatent(const gp::ModelVersion& v) const;
-    // Edited frame `frame` judged on the current version without the model's score (the class
-    // steadying compares); none on a captured frame. Cached in judgedEdits_.
-    std::optional<AdmissionVerdict> judgedEditAt(int frame) const;
+    // Edited frame `frame` judged on version `v` without the model's score (the class steadying
+    // compares); none on a captured frame or an edit without a latent point. Cached in judgedEdits_.
+    std::optional<AdmissionVerdict> judgedEditAt(int frame, const gp::ModelVersionPtr& v) const;
+    // currentPoseVerdict on version `v`.
+    std::optional<AdmissionVerdict> poseVerdictOn(const gp::ModelVersionPtr& v) const;
+    // The balance term's region for a drag of `dragged` from `pose` with these pins and planted feet.
+    std::optional<BalanceRegion> dragBalance(Effector dragged, const Pose& pose, const std::vector<IkConstraint>& holds,
+                                             const std::vector<IkConstraint>& feet) const;
+    void setDragPins();  // a live drag's pins and balance region after a pin changed
+    // Whether `pose` on `frame` is what the last drag left there, and what that drag reached.
+    struct DragOutcome {
+        bool lastDragged = false, reached = true, belowFloor = false;
+    };
+    DragOutcome dragOutcomeAt(int frame, const Pose& pose) const;
     // Posts an accepted pose to the adaptive worker, or keeps it for the final model while refining;
     // the sequence number of the post (0: none).
     long teach(AdaptiveSample sample, const Pose& edited, std::vector<Effector> moved);

@@ -26,7 +26,7 @@ void EditorDocument::setPinned(Effector e, bool on) {
     if (pins_[static_cast<int>(e)] != on) ++revision_;
     pins_[static_cast<int>(e)] = on;
     if (on) pinPositions_[static_cast<int>(e)] = effectorPosition(e);
-    if (drag_.active()) drag_.setPins(holdConstraints());
+    if (drag_.active()) setDragPins();
 }
 
 std::vector<IkConstraint> EditorDocument::pinConstraints() const {
@@ -99,7 +99,7 @@ void EditorDocument::updatePinPositions() {
     forwardKinematics(clip().skeleton, currentPose(), fk);
     for (int i = 0; i < kEffectorCount; ++i)
         if (pins_[i]) pinPositions_[i] = effectorCm(clip().skeleton, fk, static_cast<Effector>(i));
-    if (drag_.active()) drag_.setPins(holdConstraints());
+    if (drag_.active()) setDragPins();
 }
 
 // ---- drag ----------------------------------------------------------------------------------
@@ -122,6 +122,27 @@ void EditorDocument::setContactReleased(Effector foot, bool released) {
     contactReleased_[static_cast<int>(foot)] = released;
 }
 
+std::optional<BalanceRegion> EditorDocument::dragBalance(Effector dragged, const Pose& pose,
+                                                         const std::vector<IkConstraint>& holds,
+                                                         const std::vector<IkConstraint>& feet) const {
+    // Balance where the captured frame stands balanced on the feet this drag pins (not the dragged one).
+    std::vector<IkConstraint> pinned = holds;
+    pinned.insert(pinned.end(), feet.begin(), feet.end());
+    pinned.erase(std::remove_if(pinned.begin(), pinned.end(),
+                                [dragged](const IkConstraint& c) { return c.effector == dragged; }),
+                 pinned.end());
+    FkState fk;
+    forwardKinematics(clip().skeleton, pose, fk);
+    return balanceRegion(clip().skeleton, clip().frames[frame_], fk, store_.contacts(), frame_, pinned);
+}
+
+void EditorDocument::setDragPins() {
+    // The pins changed during a drag: so may the feet the support stands on.
+    const std::vector<IkConstraint> holds = holdConstraints();
+    drag_.setBalance(dragBalance(drag_.effector(), drag_.pose(), holds, contactHolds()));
+    drag_.setPins(holds);
+}
+
 std::string EditorDocument::beginDrag(Effector e) {
     finishRunningFalloff();
     if (!hasClip()) return "no clip is open";
@@ -137,17 +158,7 @@ std::string EditorDocument::beginDrag(Effector e) {
     drag_.setCompare(compare_, compareModel_, frame_);
     drag_.setFloor(store_.contacts().floorCm);
     const std::vector<IkConstraint> holds = holdConstraints(), feet = contactHolds();
-    {
-        // Balance where the captured frame stands balanced on the feet this drag pins.
-        std::vector<IkConstraint> pinned = holds;
-        pinned.insert(pinned.end(), feet.begin(), feet.end());
-        pinned.erase(
-            std::remove_if(pinned.begin(), pinned.end(), [e](const IkConstraint& c) { return c.effector == e; }),
-            pinned.end());
-        FkState fk;
-        forwardKinematics(clip().skeleton, start, fk);
-        drag_.setBalance(balanceRegion(clip().skeleton, clip().frames[frame_], fk, store_.contacts(), frame_, pinned));
-    }
+    drag_.setBalance(dragBalance(e, start, holds, feet));
     drag_.begin(clip().skeleton, e, start, v, v ? currentLatent() : Eigen::VectorXd(), holds, feet);
     return "";
 }

@@ -11,8 +11,15 @@ Balance EditorDocument::balanceOf(int frame, const Pose& edited) const {
     return judgeBalance(clip().skeleton, clip().frames[frame], edited, store_.contacts(), frame);
 }
 
-std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
-    const gp::ModelVersionPtr v = model();
+EditorDocument::DragOutcome EditorDocument::dragOutcomeAt(int frame, const Pose& pose) const {
+    // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
+    const bool lastDragged = lastDrag_.frame == frame && posesIdentical(lastDrag_.pose, pose);
+    return {lastDragged, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor};
+}
+
+std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const { return poseVerdictOn(model()); }
+
+std::optional<AdmissionVerdict> EditorDocument::poseVerdictOn(const gp::ModelVersionPtr& v) const {
     if (!v || !hasClip()) return std::nullopt;
     if (drag_.active()) {
         const SolveReadout& r = drag_.readout();
@@ -34,50 +41,55 @@ std::optional<AdmissionVerdict> EditorDocument::currentPoseVerdict() const {
     Eigen::VectorXd mean;
     double sigma2 = 0.0;
     v->posterior->predict(x, mean, sigma2);
-    // Edits from regeneration, falloff or a latent drag have no hard targets left to miss.
-    const bool lastDragged = lastDrag_.frame == frame_ && posesIdentical(lastDrag_.pose, e.pose);
-    return admitPose(*v, e.pose, e.moved, !lastDragged || lastDrag_.reached, lastDragged && lastDrag_.belowFloor,
-                     sigma2, lik, balanceOf(frame_, e.pose));
+    const DragOutcome d = dragOutcomeAt(frame_, e.pose);
+    return admitPose(*v, e.pose, e.moved, d.reached, d.belowFloor, sigma2, lik, balanceOf(frame_, e.pose));
 }
 
-std::optional<AdmissionVerdict> EditorDocument::judgedEditAt(int frame) const {
-    const gp::ModelVersionPtr v = model();
+std::optional<AdmissionVerdict> EditorDocument::judgedEditAt(int frame, const gp::ModelVersionPtr& v) const {
     const auto it = store_.edits().find(frame);
     if (!v || !hasClip() || it == store_.edits().end()) return std::nullopt;
     const EditRecord& e = it->second;
+    // As currentPoseVerdict: an edit without a latent point on this model (plain IK) is not judged.
+    if (e.x.size() != v->posterior->latentDim() || !e.x.allFinite()) return std::nullopt;
     if (v->model->clip.skeleton.jointCount() != clip().skeleton.jointCount()) return std::nullopt;
     std::vector<bool> contactsOn;
     for (const FootContact& c : store_.contacts().contacts) contactsOn.push_back(c.enabled);
-    const bool lastDragged = lastDrag_.frame == frame && posesIdentical(lastDrag_.pose, e.pose);
-    const bool reached = !lastDragged || lastDrag_.reached, belowFloor = lastDragged && lastDrag_.belowFloor;
+    const DragOutcome d = dragOutcomeAt(frame, e.pose);
     JudgedEdit& cached = judgedEdits_[frame];
     if (cached.verdict && cached.model == v->model.get() && cached.version == v->number &&
-        cached.clipFrames == clip().frames.data() && cached.contactsOn == contactsOn && cached.reached == reached &&
-        cached.belowFloor == belowFloor && cached.moved == e.moved && posesIdentical(cached.pose, e.pose))
+        cached.clipFrames == clip().frames.data() && cached.contactsOn == contactsOn && cached.reached == d.reached &&
+        cached.belowFloor == d.belowFloor && cached.moved == e.moved && posesIdentical(cached.pose, e.pose))
         return cached.verdict;
     cached = JudgedEdit{v->model.get(), v->number, clip().frames.data(), contactsOn,  e.pose,
-                        e.moved,        reached,   belowFloor,           std::nullopt};
+                        e.moved,        d.reached, d.belowFloor,         std::nullopt};
     // σ² and L_IK are shown, not judged: the class needs no latent point.
-    cached.verdict = admitPose(*v, e.pose, e.moved, reached, belowFloor, 0.0, 0.0, balanceOf(frame, e.pose));
+    cached.verdict = admitPose(*v, e.pose, e.moved, d.reached, d.belowFloor, 0.0, 0.0, balanceOf(frame, e.pose));
     return cached.verdict;
 }
 
 std::optional<ShownVerdict> EditorDocument::shownPoseVerdict() const {
-    const std::optional<AdmissionVerdict> own = currentPoseVerdict();
+    const gp::ModelVersionPtr v = model();  // one version for the frame and its neighbours
+    const std::optional<AdmissionVerdict> own = poseVerdictOn(v);
     if (!own) return std::nullopt;
     ShownVerdict out;
     out.own = *own;
     out.first = out.last = frame_;
-    if (drag_.active()) return out;  // a live solve is judged as it is
+    // A live solve is judged as it is. So is a pose that missed its target, went through the floor
+    // or tipped off balance, and the pose the last drag left: steadying smooths the capture-range
+    // judgement through a span, it never hides what a gesture did.
+    if (drag_.active() || !steadiable(own->judgement)) return out;
+    if (const auto it = store_.edits().find(frame_);
+        it != store_.edits().end() && dragOutcomeAt(frame_, it->second.pose).lastDragged)
+        return out;
     // The window: edited frames within two of this one, joined to it by edited frames.
     std::vector<std::optional<AdmissionVerdict>> before, after;
     for (int f = frame_ - 1; f >= std::max(0, frame_ - 2); --f) {
-        std::optional<AdmissionVerdict> j = judgedEditAt(f);
+        std::optional<AdmissionVerdict> j = judgedEditAt(f, v);
         if (!j) break;
         before.push_back(std::move(j));
     }
     for (int f = frame_ + 1; f <= std::min(frameCount() - 1, frame_ + 2); ++f) {
-        std::optional<AdmissionVerdict> j = judgedEditAt(f);
+        std::optional<AdmissionVerdict> j = judgedEditAt(f, v);
         if (!j) break;
         after.push_back(std::move(j));
     }

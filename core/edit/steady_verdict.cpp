@@ -9,6 +9,11 @@ VerdictClass verdictClass(const AdmissionVerdict& v) {
     return v.judgement == PoseJudgement::kNatural ? VerdictClass::kNatural : VerdictClass::kUnusual;
 }
 
+bool steadiable(PoseJudgement judgement) {
+    return judgement == PoseJudgement::kNatural || judgement == PoseJudgement::kUnusual ||
+           judgement == PoseJudgement::kUnlikeCapture;
+}
+
 VerdictClass steadyClass(const std::vector<VerdictClass>& classes, std::size_t self) {
     std::array<std::size_t, 3> count{};
     for (VerdictClass c : classes) ++count[static_cast<std::size_t>(c)];

@@ -17,6 +17,10 @@ namespace mgp {
 
 enum class VerdictClass { kNatural, kUnusual, kRefused };
 VerdictClass verdictClass(const AdmissionVerdict& v);
+// Whether a frame judged so may show its neighbours' class: natural, unusual or unlike the captured
+// data (the capture-range judgements that flicker through a span), not out of reach, through the
+// floor or off balance (what a gesture did to this frame).
+bool steadiable(PoseJudgement judgement);
 
 // The class shown for `classes[self]`, given its window (at most 5 joined edited frames, in order).
 VerdictClass steadyClass(const std::vector<VerdictClass>& classes, std::size_t self);

@@ -6,10 +6,6 @@
 namespace mgp {
 namespace {
 
-double crossOf(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
 // The point of segment ab nearest p; `atEnd`: it is a or b (not inside the segment).
 Eigen::Vector2d nearestOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                  bool* atEnd) {
@@ -21,6 +17,18 @@ Eigen::Vector2d nearestOnSegment(const Eigen::Vector2d& p, const Eigen::Vector2d
 }
 
 }  // namespace
+
+double turn(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+bool BalanceRegion::convexCounterClockwise() const {
+    const std::size_t n = hull.size();
+    if (n < 3) return true;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(turn(hull[i], hull[(i + 1) % n], hull[(i + 2) % n]) > 0.0)) return false;
+    return true;
+}
 
 double BalanceRegion::outsideCm(const Eigen::Vector2d& p, Eigen::Vector2d* direction, double* curvature) const {
     if (direction) direction->setZero();
@@ -40,7 +48,7 @@ double BalanceRegion::outsideCm(const Eigen::Vector2d& p, Eigen::Vector2d* direc
             nearest = q;
             corner = atEnd;
         }
-        if (hull.size() >= 3 && crossOf(a, b, p) < 0.0) inside = false;  // right of a counter-clockwise edge
+        if (hull.size() >= 3 && turn(a, b, p) < 0.0) inside = false;  // right of a counter-clockwise edge
     }
     if (inside || best <= growCm) return 0.0;
     if (direction) *direction = (p - nearest) / best;

@@ -140,6 +140,8 @@ std::string ConstrainedIkSolver::validate(const ConstrainedIkRequest& r) const {
             if (!p.allFinite()) return "expected a finite balance region, found NaN or Inf";
         if (!(r.balance->growCm >= 0.0) || !std::isfinite(r.balance->growCm))
             return "expected a balance region grown by ≥ 0 cm, found " + std::to_string(r.balance->growCm);
+        if (!r.balance->convexCounterClockwise())
+            return "expected a balance region's hull convex and counter-clockwise, found one that is not";
     }
     for (std::size_t i = 0; i < r.held.size(); ++i) {
         const HeldDof& h = r.held[i];

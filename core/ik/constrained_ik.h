@@ -4,6 +4,7 @@
 //
 //   minimise over z = (x, y):  F(z) = L_IK(x, y) + ½ Σ_targets κ(s_t) ‖FK_t(y) − c_t‖²
 //                                              + ½ k_root ‖y_root − r_ref‖² + ½ ℓ Σ_k w_k (y_k − y_ref,k)²
+//                                              [+ the floor's and the balance's one-sided penalties]
 //   subject to                 FK_p(y) = c_p  for every pin p                      (cm, degrees)
 //
 // Semantics (what an animator gets):
@@ -13,6 +14,9 @@
 //     closest one (the prior only breaks ties) and the target reports reached = false.
 //   - A target of strength s < 1 has κ = 2s/(1 − s): F is then (L_IK·(1 − s) + s‖FK − c‖²)/(1 − s),
 //     the paper's penalty with λ = s. Lower s lets the prior keep the pose more natural.
+//   - Balance (optional, `balance`): the whole-body centre of mass outside the pinned feet's support
+//     costs ½ κ_b d², d its distance outside (docs/maths-ik.md §1): Gauss–Newton in H, the rest of
+//     its Hessian (the centre of mass's curvature, the distance's own) in C in the Newton regime.
 //   - Root orientation: y's three root rotations carry the stiff quadratic ½ k_root ‖Δ‖² (per
 //     degree²) around r_ref (the drag's starting root rotation), so the whole body turns or tilts
 //     only as much as the targets need once the limbs alone cost more than k_root·Δ.

@@ -10,8 +10,9 @@
 namespace mgp {
 namespace {
 
+bool finitePositive(double v) { return std::isfinite(v) && v > 0.0; }
+
 void validateThresholds(const ContactThresholds& t, const char* point) {
-    auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
     if (!finitePositive(t.enterHeightCm) || !finitePositive(t.enterSpeedCmPerFrame))
         throw std::invalid_argument(std::string("contact rule (") + point + "): expected positive enter thresholds");
     if (!(t.exitHeightCm >= t.enterHeightCm) || !(t.exitSpeedCmPerFrame >= t.enterSpeedCmPerFrame))
@@ -21,7 +22,6 @@ void validateThresholds(const ContactThresholds& t, const char* point) {
 }
 
 void validateRule(const ContactRule& rule, double fps) {
-    auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
     validateThresholds(rule.toe, "toe");
     validateThresholds(rule.heel, "heel");
     if (rule.mergeGapFrames < 0)
@@ -185,17 +185,18 @@ std::vector<Eigen::Vector3d> effectorTrajectory(const Clip& clip, Effector effec
 FootTrack footTrack(const Clip& clip, Effector foot) {
     FootTrack track;
     if (!clip.skeleton.hasEffector(foot)) return track;
+    // The heel is the start of the foot bone, found by its ASF role; else the effector's own joint
+    // (the foot effector is the end of the foot bone) or, at the start of the toes, its parent.
     const EffectorSite& site = clip.skeleton.effectorSite(foot);
-    // The effector is the end of the foot bone (the heel is that bone's start) or the start of the
-    // toes (the heel is the parent's start).
-    const int heelJoint = site.localCm.isZero() ? clip.skeleton.joints[site.joint].parent : site.joint;
+    int heelJoint = clip.skeleton.findBone(foot == Effector::kLFoot ? "lfoot" : "rfoot");
+    if (heelJoint < 0) heelJoint = site.localCm.isZero() ? clip.skeleton.joints[site.joint].parent : site.joint;
     track.toeCm.reserve(clip.frames.size());
-    track.heelCm.reserve(clip.frames.size());
+    if (heelJoint >= 0) track.heelCm.reserve(clip.frames.size());
     FkState fk;
     for (const Pose& pose : clip.frames) {
         forwardKinematics(clip.skeleton, pose, fk);
         track.toeCm.push_back(effectorCm(clip.skeleton, fk, foot));
-        track.heelCm.push_back(fk.jointCm[static_cast<std::size_t>(std::max(heelJoint, 0))]);
+        if (heelJoint >= 0) track.heelCm.push_back(fk.jointCm[static_cast<std::size_t>(heelJoint)]);  // none: toe only
     }
     return track;
 }

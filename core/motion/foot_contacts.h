@@ -34,7 +34,7 @@ struct ContactThresholds {
     double enterHeightCm = 2.5;         // down when at most this high above its ground …
     double enterSpeedCmPerFrame = 0.2;  // … and at most this fast (24 cm/s at 120 fps)
     double exitHeightCm = 3.5;          // a point that is down lifts off above this height …
-    double exitSpeedCmPerFrame = 0.4;   // … or above this speed (48 cm/s at 120 fps)
+    double exitSpeedCmPerFrame = 0.8;   // … or above this speed (96 cm/s at 120 fps)
 };
 
 struct ContactRule {
@@ -67,6 +67,9 @@ struct FootContact {
     bool enabled = true;  // the user can switch a contact off
     bool contains(int frame) const { return frame >= first && frame <= last; }
     int length() const { return last - first + 1; }
+    // The ball of the foot is down and still: the toe is down and so is the heel, if the stance
+    // has a heel phase at all (not while the foot rolls onto its sole or pivots at toe-off).
+    bool flatAt(int frame) const { return toe.contains(frame) && (heel.empty() || heel.contains(frame)); }
 };
 
 struct ContactSet {

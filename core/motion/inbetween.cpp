@@ -240,7 +240,13 @@ std::vector<SpanTarget> heldFeet(const Skeleton& sk, const std::vector<Pose>& fi
     const int L = b - a;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
         if (!sk.hasEffector(foot)) continue;
-        auto planted = [&](int i) { return source.at(foot, stretch.sourceFrame(i, L)) != nullptr; };
+        // Held in one place only while the stretch's foot is flat (FootContact::flatAt): its ball
+        // moves while the foot rolls onto its sole and pivots at toe-off.
+        auto planted = [&](int i) {
+            const int f = stretch.sourceFrame(i, L);
+            const FootContact* c = source.at(foot, f);
+            return c != nullptr && c->flatAt(f);
+        };
         const auto footAt = [&](int t) { return effectorCm(sk, filled[static_cast<std::size_t>(t)], foot); };
         for (int i = 1; i < L; ++i) {
             if (!planted(i)) continue;

@@ -10,10 +10,6 @@ namespace mgp {
 
 namespace {
 
-double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
 Eigen::Vector2d ground(const Eigen::Vector3d& p) { return {p.x(), p.z()}; }
 
 }  // namespace
@@ -27,11 +23,11 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> pts) {
     std::vector<Eigen::Vector2d> hull(2 * pts.size());
     std::size_t k = 0;
     for (const Eigen::Vector2d& p : pts) {  // lower hull
-        while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
         hull[k++] = p;
     }
     for (std::size_t i = pts.size() - 1, lower = k + 1; i-- > 0;) {  // upper hull
-        while (k >= lower && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0.0) --k;
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], pts[i]) <= 0.0) --k;
         hull[k++] = pts[i];
     }
     hull.resize(k - 1);  // the last point is the first
@@ -53,13 +49,19 @@ std::optional<SupportPolygon> supportPolygon(const Skeleton& skeleton, const FkS
     SupportPolygon out;
     std::vector<Eigen::Vector2d> points;
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
-        if (!skeleton.hasEffector(foot) || !contacts.at(foot, frame)) continue;
+        const FootContact* contact = skeleton.hasEffector(foot) ? contacts.at(foot, frame) : nullptr;
+        if (!contact) continue;
         const int j = skeleton.effectorSite(foot).joint;
         out.feet.push_back(foot);
-        points.push_back(ground(fk.jointCm[j]));
-        points.push_back(ground(effectorCm(skeleton, fk, foot)));
-        for (int c = j + 1; c < skeleton.jointCount(); ++c)
-            if (skeleton.joints[c].parent == j) points.push_back(ground(boneEndCm(skeleton, fk, c)));
+        // The points that are down: the ankle while the heel is, the ball and the toe tips while the
+        // toe is (all three between two phases of one stance).
+        const bool heel = contact->heel.contains(frame), toe = contact->toe.contains(frame);
+        if (heel || !toe) points.push_back(ground(fk.jointCm[j]));
+        if (toe || !heel) {
+            points.push_back(ground(effectorCm(skeleton, fk, foot)));
+            for (int c = j + 1; c < skeleton.jointCount(); ++c)
+                if (skeleton.joints[c].parent == j) points.push_back(ground(boneEndCm(skeleton, fk, c)));
+        }
     }
     if (out.feet.empty()) return std::nullopt;
     out.hull = convexHull(std::move(points));

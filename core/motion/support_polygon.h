@@ -2,10 +2,11 @@
 // Balance on a frame: the support polygon of the feet in ground contact and where the centre of
 // mass (skeleton/centre_of_mass.h) falls against it, on the ground plane (world x, z; cm).
 //
-// Each planted foot (motion/foot_contacts.h) stands on its ankle (the foot bone's start), the ball
-// (the foot effector) and, where the skeleton has one, the toe tip; the polygon is the convex hull
-// of those points grown by kFootHalfWidthCm (a foot is a sole, not a line), so one planted foot
-// gives a sole-shaped region and two give the area between them. A frame without a planted foot
+// Each planted foot (motion/foot_contacts.h) stands on the points that are down: its ankle (the
+// foot bone's start) while the heel is, the ball (the foot effector) and, where the skeleton has
+// them, the toe tips while the toe is; the polygon is the convex hull of those points grown by
+// kFootHalfWidthCm (a foot is a sole, not a line), so one flat foot gives a sole-shaped region, a
+// heel or a toe alone a disc, and two feet the area between them. A frame without a planted foot
 // has no polygon (in the air: balance is not judged).
 #include <Eigen/Core>
 #include <optional>

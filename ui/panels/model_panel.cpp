@@ -485,9 +485,12 @@ void drawIkReadout(EditorState& s) {
         const AdmissionVerdict* v = &shown->own;
         ImGui::Text("this pose is %s, %s", judgementWords(shown->shown().judgement),
                     v->admitted ? "the model learns from it" : "kept as an edit only");
-        if (shown->steadied)
+        bool hovered = ImGui::IsItemHovered();
+        if (shown->steadied) {
             ImGui::TextDisabled("like frame %d; alone: %s", shown->steadiedFrame + 1, judgementWords(v->judgement));
-        if (ImGui::IsItemHovered())
+            hovered = hovered || ImGui::IsItemHovered();
+        }
+        if (hovered)
             ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(),
                               r.iterations);
     } else if (r.learned) {

@@ -175,11 +175,11 @@ private:
     std::string reportTrainingStart(const std::string& err);  // status line for a training start: "" or err
     // Runs `work`; an exception becomes the status line's error and the returned text ("" if none).
     std::string reportingErrors(const std::function<void()>& work);
-    void forgetAutosave();  // after a save or an open: this editor's autosave is stale
+    void forgetAutosave();         // after a save or an open: this editor's autosave is stale
+    void noteSavedCompareModel();  // the compare model a session file now holds
     // The document's edits count as saved; so does its model when `modelSaved` (a session or a
     // model file opened, a clip opened without one), else an unsaved model stays unsaved (a switch
     // to the model's other clip keeps the model).
-    void noteSavedCompareModel();  // the compare model a session file now holds
     void markSaved(bool modelSaved);
     void installModel(gp::ModelVersionPtr version, const std::string& path);  // with its clip
     void remember(const std::string& path, RecentKind kind);
