@@ -74,6 +74,7 @@ private:
 struct UiBenchSamples {
     std::vector<double> idle, drag;
     std::vector<double> dragPlain, dragOverlays;
+    long overlayLayerDraws = 0;  // how often the still overlays' layer was drawn in those rounds
     std::vector<double> pFrame, pSolve, pScene, pRender, pUpload, pRest;  // the profiled drags' phases
     std::vector<double> sceneOnly;
 };
@@ -81,13 +82,15 @@ struct UiBenchSamples {
 // The same drags with onion skins (2 before, 2 after, 10 frames apart) and trails of both feet
 // and the right hand over ±30 frames, alternating with rounds without them (A B A B, as the
 // machine's load drifts): what the overlays cost a dragging frame.
-void measureOverlayDrags(UiBenchDriver& d, int rounds, UiBenchSamples& t) {
+void measureOverlayDrags(UiBenchDriver& d, const ui::ViewportPanel& viewport, int rounds, UiBenchSamples& t) {
+    const long layerDrawsBefore = viewport.overlayLayerDraws();
     for (int r = 0; r < rounds; ++r)
         for (bool on : {false, true}) {
             d.setOverlays(on);
             d.dragRounds([&](double seconds) { (on ? t.dragOverlays : t.dragPlain).push_back(seconds); }, 1);
         }
     d.setOverlays(false);
+    t.overlayLayerDraws = viewport.overlayLayerDraws() - layerDrawsBefore;
 }
 
 // The same drags again with every phase ending in glFinish (ui/shell/frame_profile.h): where a
@@ -142,7 +145,9 @@ nlohmann::json uiBenchJson(ui::EditorApp& app, bool real, int M, const UiBenchSa
                      {"trails", {"lfoot", "rfoot", "rhand"}},
                      {"trail_frames_each_side", 30},
                      {"drag_frame_seconds_without", summarizeSeconds(t.dragPlain)},
-                     {"drag_frame_seconds_with", summarizeSeconds(t.dragOverlays)}};
+                     {"drag_frame_seconds_with", summarizeSeconds(t.dragOverlays)},
+                     {"still_layer_draws", t.overlayLayerDraws},
+                     {"frames_with", t.dragOverlays.size()}};
     j["scene_only_seconds"] = summarizeSeconds(t.sceneOnly);
     j["scene_only_size"] = {kW - 380, kH - 123};
     j["drag_profile_seconds"] = {
@@ -179,7 +184,7 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     const int rounds = ctx.quick ? 2 : std::max(3, ctx.repeats);
     d.dragRounds([&](double seconds) { t.drag.push_back(seconds); }, rounds);
     const int dragFrames = static_cast<int>(t.drag.size());
-    measureOverlayDrags(d, rounds, t);
+    measureOverlayDrags(d, app.viewport(), rounds, t);
     profileDrags(d, app.state().profile, rounds, t);
     t.sceneOnly = timeSceneOnly(app);
     return uiBenchJson(app, real, M, t, dragFrames);

@@ -63,6 +63,7 @@ Figure onionGhost(const Skeleton& skeleton, const Pose& pose, int step, const On
     }
     ghost.joints.clear();  // a slim bone's ends meet closely enough; llvmpipe pays per instance
     ghost.ghost = true;
+    ghost.stillOverlay = true;  // another frame's pose: still while this one is posed
     ghost.castsShadow = false;
     // Green before, blue after, as Blender's onion skins (neither is a bone colour: the right
     // side is orange, the left grey); the nearest ghost 0.45 opaque, the farthest 0.20.
@@ -101,13 +102,22 @@ bool hasTrailPart(const Skeleton& skeleton, TrailPart part) {
 
 Path motionTrail(const Skeleton& skeleton, const std::function<const Pose&(int)>& poseAt, int frameCount,
                  TrailPart part, int first, int last, int current, bool captured) {
+    FkState fk;
+    const auto fkAt = [&](int f) -> const FkState& {
+        forwardKinematics(skeleton, poseAt(f), fk);
+        return fk;
+    };
+    return motionTrailFromFk(skeleton, fkAt, frameCount, part, first, last, current, captured);
+}
+
+Path motionTrailFromFk(const Skeleton& skeleton, const std::function<const FkState&(int)>& fkAt, int frameCount,
+                       TrailPart part, int first, int last, int current, bool captured) {
     Path path;
     if (frameCount <= 0 || !hasTrailPart(skeleton, part)) return path;
     first = std::clamp(first, 0, frameCount - 1);
     last = std::clamp(last, first, frameCount - 1);
-    FkState fk;
     for (int f = first; f <= last; ++f) {
-        forwardKinematics(skeleton, poseAt(f), fk);
+        const FkState& fk = fkAt(f);
         const Eigen::Vector3d p = part == TrailPart::kRoot
                                       ? fk.jointCm[0]
                                       : effectorCm(skeleton, fk, static_cast<Effector>(static_cast<int>(part)));
@@ -121,6 +131,27 @@ Path motionTrail(const Skeleton& skeleton, const std::function<const Pose&(int)>
     path.tickRadiusCm = captured ? 0.0f : 0.7f;
     if (captured) path.currentPoint = -1;
     return path;
+}
+
+std::vector<Path> splitForPosing(const Path& trail) {
+    const int n = static_cast<int>(trail.pointsCm.size()), c = trail.currentPoint;
+    Path still = trail;
+    still.stillOverlay = true;
+    still.currentPoint = -1;
+    if (c < 0 || c >= n) return {still};
+    std::vector<Path> pieces;
+    auto piece = [&](Path base, int first, int last) {  // points first..last, if any
+        if (first > last) return;
+        base.pointsCm.assign(trail.pointsCm.begin() + first, trail.pointsCm.begin() + last + 1);
+        if (base.currentPoint >= 0) base.currentPoint = c - first;
+        pieces.push_back(std::move(base));
+    };
+    piece(still, 0, c - 1);
+    Path live = trail;
+    live.stillOverlay = false;
+    piece(live, std::max(0, c - 1), std::min(n - 1, c + 1));
+    piece(still, c + 1, n - 1);
+    return pieces;
 }
 
 std::vector<Path> differingParts(const Path& reference, const Path& other, float toleranceCm) {

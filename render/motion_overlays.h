@@ -13,6 +13,7 @@
 
 #include "render/scene.h"
 #include "skeleton/clip.h"
+#include "skeleton/forward_kinematics.h"
 
 namespace mgp::render {
 
@@ -46,6 +47,15 @@ bool hasTrailPart(const Skeleton& skeleton, TrailPart part);
 // Empty if the skeleton lacks the part.
 Path motionTrail(const Skeleton& skeleton, const std::function<const Pose&(int)>& poseAt, int frameCount,
                  TrailPart part, int first, int last, int current, bool captured);
+// The same from each frame's forward kinematics (the editor keeps them between frames: FkMemo).
+Path motionTrailFromFk(const Skeleton& skeleton, const std::function<const FkState&(int)>& fkAt, int frameCount,
+                       TrailPart part, int first, int last, int current, bool captured);
+
+// A trail cut for posing (Path::stillOverlay): the stretches before and after the current point,
+// which stay put while the current frame is posed, as still overlays, and the live piece from the
+// point before the current one to the point after it, with the current mark. A trail without a
+// current point is one still piece.
+std::vector<Path> splitForPosing(const Path& trail);
 
 // The stretches of `reference` that lie more than toleranceCm from `other` at the same index (each
 // with its neighbouring points, so that it joins the rest), one path per stretch; none where the

@@ -38,6 +38,8 @@ struct Figure {
     // pose lies outside the model's training range (render/range_tint.h); 0 = the side colours.
     glm::vec3 tint{0.0f};
     float tintWeight = 0.0f;
+    // Part of the still overlays (an onion skin): see Path::stillOverlay.
+    bool stillOverlay = false;
 };
 
 // The colour a solid figure's bone or joint of side colour `base` is drawn in.
@@ -98,6 +100,11 @@ struct Path {
     // Key balls are this big (the editor picks keys with the same radius); the editor sets
     // minKeyRadiusCm so that a key stays large enough to grab when the camera is far away.
     float minKeyRadiusCm = 0.0f;
+    // Part of the still overlays (a trail's stretch away from the current frame): content that
+    // stays put while the current frame is posed. A renderer without MSAA keeps them in a cached
+    // layer drawn again only when they or the view change (render/overlay_layer.h); with MSAA
+    // (stills) they are drawn as any other path.
+    bool stillOverlay = false;
     float keyRadiusCm() const { return radiusCm * 3.2f > minKeyRadiusCm ? radiusCm * 3.2f : minKeyRadiusCm; }
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/gl_context.h"
+#include "render/overlay_layer.h"
 
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -209,6 +210,7 @@ struct SceneRenderer::Impl {
     unsigned emptyVao = 0;
     unsigned textVao = 0, textVbo = 0;
     int samples = 4;
+    std::unique_ptr<OverlayLayer> stillOverlays;  // without MSAA only (see Path::stillOverlay)
     unsigned fbo = 0, colourRb = 0, depthRb = 0;
     int fboWidth = 0, fboHeight = 0;
 
@@ -238,6 +240,8 @@ struct SceneRenderer::Impl {
     void drawBackground(const RenderStyle& s, float viewportHeight);
     void drawCaption(const std::string& caption, int width, int height);
     void resolveFrame(int width, int height, unsigned targetFramebuffer);
+    void drawStillOverlays(const Scene& scene, const RenderStyle& s, const FrameView& view, int width, int height,
+                           unsigned targetFramebuffer);
     void releaseFramebuffer() {
         if (depthRb) glDeleteRenderbuffers(1, &depthRb);
         if (colourRb) glDeleteRenderbuffers(1, &colourRb);
@@ -265,6 +269,7 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
     r.tube = GpuMesh(makeTube(20));
     r.thinTube = GpuMesh(makeTube(8));
     r.quad = GpuMesh(makeQuadXZ());
+    if (r.samples == 1) r.stillOverlays = std::make_unique<OverlayLayer>();
     glGenBuffers(1, &r.instanceVbo);
     glGenTextures(1, &r.shadowTexture);
     glBindTexture(GL_TEXTURE_2D, r.shadowTexture);
@@ -288,6 +293,8 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
 }
 
 int SceneRenderer::msaaSamples() const { return impl_->samples; }
+
+long SceneRenderer::overlayLayerDraws() const { return impl_->stillOverlays ? impl_->stillOverlays->draws() : 0; }
 
 SceneRenderer::~SceneRenderer() {
     Impl& r = *impl_;
@@ -541,32 +548,41 @@ void addFootprintRosette(Drawer& d, const Footprint& f, float groundHeightCm) {
     }
 }
 
-// The opaque solids, collected in draw order: figures, paths (not the on-top ones), targets,
-// pins, held rings and footprints.
-void addOpaqueSolids(Drawer& d, const Scene& scene, const RenderStyle& s) {
+// The opaque solids, collected in draw order: figures, paths (not the on-top ones, nor the still
+// overlays when `layered` keeps them in their layer), targets, pins, held rings and footprints.
+void addOpaqueSolids(Drawer& d, const Scene& scene, const RenderStyle& s, bool layered) {
     for (const Figure& f : scene.figures)
         if (!f.ghost) d.figure(f, s, false);
     for (const Path& p : scene.paths)
-        if (!p.onTop) addScenePath(d, p, s);
+        if (!p.onTop && !(layered && p.stillOverlay)) addScenePath(d, p, s);
     for (const Target& t : scene.targets) addTargetMarker(d, t, s);
     for (const Pin& p : scene.pins) addPinMarker(d, p, s);
     for (const HeldMark& m : scene.heldMarks) addHeldRing(d, m);
     for (const Footprint& f : scene.footprints) addFootprintRosette(d, f, scene.groundHeightCm);
 }
 
-// Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the ghost
-// nearest to the eye there, once (onion skins draw several ghosts: two passes in all instead of
-// two per ghost).
-void drawGhostFigures(Drawer& d, const Scene& scene, const RenderStyle& s) {
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+enum class GhostSet { kAll, kStillOverlays, kOthers };
+
+// Collects the ghosts of `which` set, in the scene's order; whether there were any.
+bool addGhosts(Drawer& d, const Scene& scene, const RenderStyle& s, GhostSet which) {
     bool anyGhost = false;
     for (const Figure& f : scene.figures) {
-        if (!f.ghost) continue;
+        if (!f.ghost || (which == GhostSet::kStillOverlays && !f.stillOverlay) ||
+            (which == GhostSet::kOthers && f.stillOverlay))
+            continue;
         d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
         d.figure(f, s, true);
         anyGhost = true;
     }
+    return anyGhost;
+}
+
+// Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the ghost
+// nearest to the eye there, once (onion skins draw several ghosts: two passes in all instead of
+// two per ghost). Colour blends as source-over, alpha as premultiplied (an overlay layer keeps it).
+void drawCollectedGhosts(Drawer& d, bool anyGhost) {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     if (anyGhost) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         d.flush(true);
@@ -577,6 +593,60 @@ void drawGhostFigures(Drawer& d, const Scene& scene, const RenderStyle& s) {
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LEQUAL);
     }
+}
+
+// The window rectangle that holds every collected solid (each point's cube of its radius
+// projected, grown by 2 pixels); the whole frame when one reaches behind the eye.
+ScreenRect screenRectOf(const Drawer& d, const glm::mat4& viewProj, int width, int height) {
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    bool behind = false;
+    auto cover = [&](const glm::vec3& c, float r) {
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p =
+                c + r * glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f, corner & 4 ? 1.0f : -1.0f);
+            const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+            if (clip.w <= 1e-4f) {
+                behind = true;
+                return;
+            }
+            const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) *
+                                 glm::vec2(static_cast<float>(width), static_cast<float>(height));
+            lo = glm::min(lo, px);
+            hi = glm::max(hi, px);
+        }
+    };
+    for (const std::vector<Instance>* batch : {&d.tubes, &d.thinTubes, &d.balls, &d.smallBalls, &d.tinyBalls})
+        for (const Instance& i : *batch) {
+            cover(glm::vec3(i.a), i.a.w);
+            if (batch == &d.tubes || batch == &d.thinTubes) cover(glm::vec3(i.b), i.b.w);
+        }
+    if (behind) return {0, 0, width, height};
+    if (lo.x > hi.x) return {};
+    return {std::clamp(static_cast<int>(std::floor(lo.x)) - 2, 0, width),
+            std::clamp(static_cast<int>(std::floor(lo.y)) - 2, 0, height),
+            std::clamp(static_cast<int>(std::ceil(hi.x)) + 2, 0, width),
+            std::clamp(static_cast<int>(std::ceil(hi.y)) + 2, 0, height)};
+}
+
+// What the still overlays' picture is drawn from, as bytes: the view, the size and every instance.
+std::vector<unsigned char> overlayKey(const FrameView& view, int width, int height, const Drawer& paths,
+                                      const Drawer& ghosts) {
+    std::vector<unsigned char> key;
+    auto append = [&key](const void* data, std::size_t bytes) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        key.insert(key.end(), b, b + bytes);
+    };
+    append(&view, sizeof view);
+    append(&width, sizeof width);
+    append(&height, sizeof height);
+    for (const Drawer* d : {&paths, &ghosts})
+        for (const std::vector<Instance>* batch :
+             {&d->tubes, &d->thinTubes, &d->balls, &d->smallBalls, &d->tinyBalls}) {
+            const std::size_t n = batch->size();
+            append(&n, sizeof n);
+            append(batch->data(), n * sizeof(Instance));
+        }
+    return key;
 }
 
 glm::vec3 handleColourOf(const Handle& h, const RenderStyle& s) {
@@ -735,6 +805,40 @@ void SceneRenderer::Impl::resolveFrame(int width, int height, unsigned targetFra
     glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
 }
 
+// The still overlays (trails away from the current frame, onion skins) through their cached layer:
+// drawn into it only when their content or the view changed, then laid into the frame by depth.
+void SceneRenderer::Impl::drawStillOverlays(const Scene& scene, const RenderStyle& s, const FrameView& view, int width,
+                                            int height, unsigned targetFramebuffer) {
+    Drawer paths{lit, sphere, smallSphere, tinySphere, tube, thinTube,        instanceVbo,
+                 {},  {},     {},          {},         {},   glm::vec4(1.0f), 0.0f};
+    Drawer ghosts = paths;
+    for (const Path& p : scene.paths)
+        if (p.stillOverlay && !p.onTop) addScenePath(paths, p, s);
+    const bool anyGhost = addGhosts(ghosts, scene, s, GhostSet::kStillOverlays);
+    const auto none = [](const Drawer& d) {
+        return d.tubes.empty() && d.thinTubes.empty() && d.balls.empty() && d.smallBalls.empty() && d.tinyBalls.empty();
+    };
+    if (none(paths) && none(ghosts)) return;  // nothing still in this scene: the layer stays as it was
+    std::vector<unsigned char> key = overlayKey(view, width, height, paths, ghosts);
+    if (!stillOverlays->holds(key)) {
+        ScreenRect rect = screenRectOf(paths, view.viewProj, width, height);
+        const ScreenRect ghostRect = screenRectOf(ghosts, view.viewProj, width, height);
+        if (rect.empty())
+            rect = ghostRect;
+        else if (!ghostRect.empty())
+            rect = {std::min(rect.x0, ghostRect.x0), std::min(rect.y0, ghostRect.y0), std::max(rect.x1, ghostRect.x1),
+                    std::max(rect.y1, ghostRect.y1)};
+        stillOverlays->beginDraw(width, height);
+        useLit(view);
+        paths.flush();
+        drawCollectedGhosts(ghosts, anyGhost);
+        stillOverlays->endDraw(std::move(key), rect);
+        glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+        glViewport(0, 0, width, height);
+    }
+    stillOverlays->composite();
+}
+
 void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int width, int height,
                          unsigned targetFramebuffer) {
     Impl& r = *impl_;
@@ -747,7 +851,9 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     r.useLit(view);
     Drawer d{r.lit, r.sphere, r.smallSphere,   r.tinySphere, r.tube, r.thinTube, r.instanceVbo, {}, {}, {},
              {},    {},       glm::vec4(1.0f), 0.0f};
-    addOpaqueSolids(d, scene, s);
+    // Without MSAA the still overlays go through their cached layer (step 5).
+    const bool layered = r.stillOverlays != nullptr;
+    addOpaqueSolids(d, scene, s, layered);
     d.flush();
 
     // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
@@ -757,10 +863,11 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
 
     // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
     r.drawBackground(s, viewportHeight);
-    r.lit.use();  // the passes below draw solids again
 
-    // 5. Ghosts (blended), 6. handles, 6b. paths drawn on top.
-    drawGhostFigures(d, scene, s);
+    // 5. The still overlays' layer, ghosts (blended), 6. handles, 6b. paths drawn on top.
+    if (layered) r.drawStillOverlays(scene, s, view, width, height, targetFramebuffer);
+    r.lit.use();  // the passes below draw solids again
+    drawCollectedGhosts(d, addGhosts(d, scene, s, layered ? GhostSet::kOthers : GhostSet::kAll));
     drawEffectorHandles(d, scene, s);
     drawOnTopPaths(d, scene, s);
 

@@ -49,6 +49,8 @@ public:
 
     // Draws the scene over the whole width×height viewport of `targetFramebuffer`.
     void draw(const Scene& scene, const OrbitCamera& camera, int width, int height, unsigned targetFramebuffer = 0);
+    // How many times the still overlays' cached layer was drawn (without MSAA; tests count misses).
+    long overlayLayerDraws() const;
 
 private:
     struct Impl;

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <vector>
 
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
@@ -23,6 +24,33 @@ int ghostCount(const render::Scene& scene) {
 }
 
 double overlayDistanceCm(const glm::vec3& a, const glm::vec3& b) { return static_cast<double>(glm::length(a - b)); }
+
+// The scene's paths of the captured motion (unticked) and the edited trail's pieces (ticked).
+std::vector<render::Path> trailPaths(const render::Scene& scene, bool edited) {
+    std::vector<render::Path> out;
+    for (const render::Path& p : scene.paths)
+        if ((p.tickRadiusCm > 0.0f) == edited) out.push_back(p);
+    return out;
+}
+
+// The edited trail as one polyline. The viewport cuts it at the current frame (the stretches
+// before and after it are still overlays, render::splitForPosing), into pieces that share their
+// end points; the live piece carries the current mark. `pieces` is how many there were.
+render::Path joinedTrail(const render::Scene& scene, int& pieces) {
+    const std::vector<render::Path> parts = trailPaths(scene, true);
+    pieces = static_cast<int>(parts.size());
+    render::Path joined;
+    for (const render::Path& part : parts) {
+        const bool sharesStart = !joined.pointsCm.empty() && !part.pointsCm.empty() &&
+                                 overlayDistanceCm(joined.pointsCm.back(), part.pointsCm.front()) == 0.0;
+        const int offset = static_cast<int>(joined.pointsCm.size()) - (sharesStart ? 1 : 0);
+        if (part.currentPoint >= 0) joined.currentPoint = offset + part.currentPoint;
+        joined.tickRadiusCm = part.tickRadiusCm;
+        joined.pointsCm.insert(joined.pointsCm.end(), part.pointsCm.begin() + (sharesStart ? 1 : 0),
+                               part.pointsCm.end());
+    }
+    return joined;
+}
 
 }  // namespace
 
@@ -65,10 +93,19 @@ TEST_CASE("gui overlays: onion skins show the frames around the current one, tra
     s.trailHalfSpan = 20;
     h->frame(1);
     {
-        // Nothing edited: the captured trail would lie exactly under the edited one, so only that is drawn.
+        // Nothing edited: the captured trail would lie exactly under the edited one, so only that is
+        // drawn, cut at the current frame: still before, live around it, still after.
         const render::Scene& scene = h->app->viewport().lastScene();
-        REQUIRE(scene.paths.size() == 1);
-        const render::Path& edited = scene.paths[0];
+        CHECK(trailPaths(scene, false).empty());
+        int pieces = 0;
+        const render::Path edited = joinedTrail(scene, pieces);
+        CHECK(pieces == 3);
+        const std::vector<render::Path> parts = trailPaths(scene, true);
+        REQUIRE(parts.size() == 3);
+        CHECK(parts[0].stillOverlay);
+        CHECK_FALSE(parts[1].stillOverlay);
+        CHECK(parts[1].pointsCm.size() == 3);
+        CHECK(parts[2].stillOverlay);
         REQUIRE(edited.pointsCm.size() == 41);
         CHECK(edited.currentPoint == 20);
         CHECK(edited.tickRadiusCm > 0.0f);
@@ -89,10 +126,15 @@ TEST_CASE("gui overlays: onion skins show the frames around the current one, tra
     h->frame(2);
     REQUIRE(doc.isEdited(60));
     const render::Scene& after = h->app->viewport().lastScene();
-    // The captured trail beneath where the edit moved the hand (one stretch), then the edited trail.
-    REQUIRE(after.paths.size() == 2);
-    const render::Path& capturedPart = after.paths[0];
-    const render::Path& edited = after.paths[1];
+    // The captured trail beneath where the edit moved the hand (one stretch, a still overlay), then
+    // the edited trail.
+    const std::vector<render::Path> capturedParts = trailPaths(after, false);
+    REQUIRE(capturedParts.size() == 1);
+    const render::Path& capturedPart = capturedParts[0];
+    CHECK(capturedPart.stillOverlay);
+    int pieces = 0;
+    const render::Path edited = joinedTrail(after, pieces);
+    CHECK(pieces == 3);
     REQUIRE(edited.pointsCm.size() == 41);
     auto capturedHand = [&](int f) {
         return render::toGlm(effectorCm(doc.clip().skeleton, doc.clip().frames[f], Effector::kRHand));
@@ -111,7 +153,8 @@ TEST_CASE("gui overlays: onion skins show the frames around the current one, tra
     // Without the captured reference only the edited trail is drawn.
     s.showCapturedTrails = false;
     h->frame(1);
-    CHECK(h->app->viewport().lastScene().paths.size() == 1);
+    CHECK(trailPaths(h->app->viewport().lastScene(), false).empty());
+    CHECK(trailPaths(h->app->viewport().lastScene(), true).size() == 3);
 }
 
 TEST_CASE("gui overlays: a session keeps the onion skin and trail settings") {

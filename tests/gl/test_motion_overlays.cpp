@@ -73,6 +73,7 @@ TEST_CASE("onion skin: ghosts fade with distance, green before and blue after, a
     const Figure after = onionGhost(clip.skeleton, clip.frames[105], 1, o);
     for (const Figure* f : {&nearBefore, &midBefore, &farBefore, &after}) {
         CHECK(f->ghost);
+        CHECK(f->stillOverlay);  // another frame's pose: cached while this one is posed
         CHECK_FALSE(f->castsShadow);
         CHECK_FALSE(f->bones.empty());
     }
@@ -119,6 +120,37 @@ TEST_CASE("motion trail: the point's FK position on every frame of the window, a
     CHECK(captured.radiusCm < hand.radiusCm);
     CHECK(captured.tickRadiusCm == 0.0f);
     CHECK(captured.currentPoint == -1);
+}
+
+TEST_CASE("motion trail: cut for posing, the stretches away from the current frame are still overlays") {
+    Path trail;
+    for (int i = 0; i < 7; ++i) trail.pointsCm.push_back(glm::vec3(float(i), 0.0f, 0.0f));
+    trail.tickRadiusCm = 0.7f;
+    trail.currentPoint = 3;
+    const std::vector<Path> pieces = splitForPosing(trail);
+    REQUIRE(pieces.size() == 3);
+    // Before (0..2) and after (4..6) are still; the live piece runs 2..4 and carries the mark.
+    CHECK(pieces[0].stillOverlay);
+    CHECK(pieces[0].pointsCm == std::vector<glm::vec3>(trail.pointsCm.begin(), trail.pointsCm.begin() + 3));
+    CHECK(pieces[0].currentPoint == -1);
+    CHECK_FALSE(pieces[1].stillOverlay);
+    CHECK(pieces[1].pointsCm == std::vector<glm::vec3>(trail.pointsCm.begin() + 2, trail.pointsCm.begin() + 5));
+    CHECK(pieces[1].currentPoint == 1);
+    CHECK(pieces[2].stillOverlay);
+    CHECK(pieces[2].pointsCm == std::vector<glm::vec3>(trail.pointsCm.begin() + 4, trail.pointsCm.end()));
+    for (const Path& p : pieces) CHECK(p.tickRadiusCm == trail.tickRadiusCm);
+    // At the window's first point there is nothing before; without a current point, one still piece.
+    trail.currentPoint = 0;
+    const std::vector<Path> atStart = splitForPosing(trail);
+    REQUIRE(atStart.size() == 2);
+    CHECK(atStart[0].pointsCm.size() == 2);
+    CHECK(atStart[0].currentPoint == 0);
+    CHECK(atStart[1].pointsCm.size() == 6);
+    trail.currentPoint = -1;
+    const std::vector<Path> none = splitForPosing(trail);
+    REQUIRE(none.size() == 1);
+    CHECK(none[0].stillOverlay);
+    CHECK(none[0].pointsCm == trail.pointsCm);
 }
 
 TEST_CASE("motion trail: part names round-trip and unknown ones are refused") {

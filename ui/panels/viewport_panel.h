@@ -15,6 +15,7 @@
 #include "render/png_capture.h"
 #include "render/scene_builder.h"
 #include "render/skeleton_renderer.h"
+#include "skeleton/fk_memo.h"
 #include "ui/shell/editor_state.h"
 
 namespace mgp::ui {
@@ -44,8 +45,9 @@ public:
     // lists, which then lay the overlays on top: on llvmpipe a blit costs a fraction of a
     // blended, textured ImGui quad the size of the viewport (docs/architecture.md §3).
     void presentTo(int windowHeight) const;
-    long sceneDraws() const { return sceneDraws_; }                // how often the 3-D scene was redrawn
-    const render::Scene& lastScene() const { return lastScene_; }  // as last built by draw()
+    long sceneDraws() const { return sceneDraws_; }                            // how often the 3-D scene was redrawn
+    long overlayLayerDraws() const { return renderer_->overlayLayerDraws(); }  // ... and its still overlays
+    const render::Scene& lastScene() const { return lastScene_; }              // as last built by draw()
 
 private:
     void ensureTarget(int w, int h);
@@ -108,6 +110,7 @@ private:
     void drawRangeLegend(EditorState& state, float y0, float x1, float y1);
     void drawBalance(EditorState& state, float x0, float y1);  // bottom-left corner at (x0, y1)
     mutable std::string groundClip_;
+    mutable FkMemo overlayFk_;  // the trails' frames (forgotten with groundClip_)
     mutable float groundHeight_ = 0.0f;
 };
 

@@ -11,6 +11,7 @@
 #include "motion/inbetween.h"
 #include "render/range_tint.h"
 #include "render/scene_builder.h"
+#include "skeleton/fk_memo.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::ui {
@@ -30,30 +31,37 @@ std::optional<Pose> nearestGhostPose(const EditorState& s) {
 }
 
 // Onion skins and motion trails over the edited motion (a trail of the captured motion beneath).
-void addMotionOverlays(const EditorState& s, render::Scene& scene) {
+// Everything but the trails' pieces at the current frame is a still overlay (Path::stillOverlay):
+// a drag there redraws none of it. `memo` keeps each frame's FK between UI frames.
+void addMotionOverlays(const EditorState& s, render::Scene& scene, FkMemo& memo) {
     const EditorDocument& doc = s.doc;
     const Skeleton& skeleton = doc.clip().skeleton;
     if (s.showOnionSkin)
         for (const render::OnionGhostFrame& g : render::onionFrames(s.onionSkin, doc.frame(), doc.frameCount()))
             scene.figures.push_back(render::onionGhost(skeleton, doc.poseAt(g.frame), g.step, s.onionSkin));
-    const auto edited = [&doc](int f) -> const Pose& { return f == doc.frame() ? doc.currentPose() : doc.poseAt(f); };
-    const auto captured = [&doc](int f) -> const Pose& { return doc.clip().frames[f]; };
+    // Slots: 2f for the edited frame f, 2f + 1 for the captured one.
+    const auto edited = [&](int f) -> const FkState& {
+        return memo.of(skeleton, f == doc.frame() ? doc.currentPose() : doc.poseAt(f), 2L * f);
+    };
+    const auto captured = [&](int f) -> const FkState& { return memo.of(skeleton, doc.clip().frames[f], 2L * f + 1); };
     const int half = std::clamp(s.trailHalfSpan, 1, doc.frameCount());  // no overflow for any typed value
     const int first = doc.frame() - half, last = doc.frame() + half;
     for (int i = 0; i < render::kTrailPartCount; ++i) {
         if (!s.trails[i]) continue;
         const auto part = static_cast<render::TrailPart>(i);
-        render::Path editedTrail =
-            render::motionTrail(skeleton, edited, doc.frameCount(), part, first, last, doc.frame(), false);
+        const render::Path editedTrail =
+            render::motionTrailFromFk(skeleton, edited, doc.frameCount(), part, first, last, doc.frame(), false);
         // The captured trail only where the edit moved the point: elsewhere the edited trail
         // covers it exactly, and llvmpipe pays for every segment drawn.
         if (s.showCapturedTrails) {
             const render::Path capturedTrail =
-                render::motionTrail(skeleton, captured, doc.frameCount(), part, first, last, doc.frame(), true);
-            for (render::Path& moved : render::differingParts(capturedTrail, editedTrail, 0.05f))
+                render::motionTrailFromFk(skeleton, captured, doc.frameCount(), part, first, last, doc.frame(), true);
+            for (render::Path& moved : render::differingParts(capturedTrail, editedTrail, 0.05f)) {
+                moved.stillOverlay = true;  // captured points: they only come and go with an edit
                 scene.paths.push_back(std::move(moved));
+            }
         }
-        scene.paths.push_back(std::move(editedTrail));
+        for (render::Path& piece : render::splitForPosing(editedTrail)) scene.paths.push_back(std::move(piece));
     }
 }
 
@@ -110,6 +118,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     if (groundClip_ != doc.clip().name + "#" + std::to_string(doc.frameCount())) {
         groundClip_ = doc.clip().name + "#" + std::to_string(doc.frameCount());
         groundHeight_ = render::clipGroundHeight(doc.clip());
+        overlayFk_.forget();
     }
     render::Scene scene;
     FkState fk;
@@ -149,7 +158,7 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
             addGhost(interpolatedPose(doc.clip().skeleton, doc.poseAt(gap->a), doc.poseAt(gap->b),
                                       double(doc.frame() - gap->a) / double(gap->b - gap->a)),
                      glm::vec3(0.95f, 0.8f, 0.25f));
-    addMotionOverlays(s, scene);
+    addMotionOverlays(s, scene, overlayFk_);
     if (doc.paths().edit() && s.showCapturedPath) {
         // Fainter and thinner than the edited path, which covers it where the two agree.
         render::Path captured;
