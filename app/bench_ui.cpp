@@ -11,6 +11,7 @@
 
 #include "bench_registry.h"
 #include "render/gl_context.h"
+#include "render/motion_overlays.h"
 #include "render/scene_builder.h"
 #include "render/skeleton_renderer.h"
 #include "ui/shell/editor_app.h"
@@ -76,7 +77,7 @@ struct UiBenchSamples {
     std::vector<double> dragPlain, dragOverlays;
     long overlayLayerDraws = 0;  // how often the still overlays' layer was drawn in those rounds
     std::vector<double> pFrame, pSolve, pScene, pRender, pUpload, pRest;  // the profiled drags' phases
-    std::vector<double> sceneOnly;
+    std::vector<double> sceneOnly, sceneOnlyOverlays;
 };
 
 // The same drags with onion skins (2 before, 2 after, 10 frames apart) and trails of both feet
@@ -112,21 +113,30 @@ void profileDrags(UiBenchDriver& d, ui::FrameProfile& profile, int rounds, UiBen
 }
 
 // For comparison: the 3-D scene alone (no MSAA) at the viewport's size, i.e. the part of a
-// UI frame that is the renderer's, not the editor's.
-std::vector<double> timeSceneOnly(ui::EditorApp& app) {
-    std::vector<double> sceneOnly;
+// UI frame that is the renderer's, not the editor's; alternately without and with the overlays
+// of the drags above, their trails cut at the current frame as the viewport cuts them (the still
+// overlays' layer is drawn once, then laid in).
+void timeSceneOnly(ui::EditorApp& app, UiBenchSamples& t) {
     render::SceneRenderer renderer(1);
     render::ClipSceneOptions so;
     so.frameIndex = app.state().doc.frame();
     so.editedPose = app.state().doc.currentPose();
     so.caption = false;
-    const render::Scene scene = render::buildClipScene(app.state().doc.clip(), so);
-    for (int i = 0; i < 30; ++i)
-        sceneOnly.push_back(secondsOf([&] {
-            renderer.draw(scene, app.state().camera, kUiBenchWidth - 380, kUiBenchHeight - 123, 0);
+    const render::Scene plain = render::buildClipScene(app.state().doc.clip(), so);
+    so.onion = render::OnionSkin{2, 2, 10};
+    so.trails = {render::TrailPart::kLFoot, render::TrailPart::kRFoot, render::TrailPart::kRHand};
+    render::Scene overlays = render::buildClipScene(app.state().doc.clip(), so);
+    std::vector<render::Path> pieces;
+    for (const render::Path& p : overlays.paths)
+        for (render::Path& piece : render::splitForPosing(p)) pieces.push_back(std::move(piece));
+    overlays.paths = std::move(pieces);
+    for (int i = 0; i < 60; ++i) {
+        const bool with = i % 2 == 1;
+        (with ? t.sceneOnlyOverlays : t.sceneOnly).push_back(secondsOf([&] {
+            renderer.draw(with ? overlays : plain, app.state().camera, kUiBenchWidth - 380, kUiBenchHeight - 123, 0);
             glFinish();
         }));
-    return sceneOnly;
+    }
 }
 
 nlohmann::json uiBenchJson(ui::EditorApp& app, bool real, int M, const UiBenchSamples& t, int dragFrames) {
@@ -149,6 +159,7 @@ nlohmann::json uiBenchJson(ui::EditorApp& app, bool real, int M, const UiBenchSa
                      {"still_layer_draws", t.overlayLayerDraws},
                      {"frames_with", t.dragOverlays.size()}};
     j["scene_only_seconds"] = summarizeSeconds(t.sceneOnly);
+    j["scene_only_seconds_with_overlays"] = summarizeSeconds(t.sceneOnlyOverlays);
     j["scene_only_size"] = {kW - 380, kH - 123};
     j["drag_profile_seconds"] = {
         {"frame", summarizeSeconds(t.pFrame)},          {"ik_solve", summarizeSeconds(t.pSolve)},
@@ -186,7 +197,7 @@ nlohmann::json benchUi(const BenchContext& ctx) {
     const int dragFrames = static_cast<int>(t.drag.size());
     measureOverlayDrags(d, app.viewport(), rounds, t);
     profileDrags(d, app.state().profile, rounds, t);
-    t.sceneOnly = timeSceneOnly(app);
+    timeSceneOnly(app, t);
     return uiBenchJson(app, real, M, t, dragFrames);
 }
 

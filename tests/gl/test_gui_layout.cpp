@@ -5,12 +5,16 @@
 #include <doctest/doctest.h>
 #include <imgui.h>
 
+#include <imgui_internal.h>
+
 #include <filesystem>
+#include <string>
 #include <utility>
 
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
 #include "test_paths.h"
+#include "ui/input/gui_script.h"
 #include "ui/panels/viewport_panel.h"
 #include "ui/shell/editor_app.h"
 
@@ -164,4 +168,89 @@ TEST_CASE("gui layout: the range legend never covers the character, at 1280x800,
             }
         CHECK(inView > sk.jointCount());
     }
+}
+
+TEST_CASE("gui layout: after a drag the whole IK readout is in view at 1280x800, and the main controls at every size") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    s.doc.setFrame(60);
+    frames(*h, 1280, 800, 2);
+    // A real drag of the right hand: the readout then lists its targets, the verdict, the centre of
+    // mass, the nearest frame and the solver's diagnostic, its last line.
+    std::string script = "0 hover rhand\n2 down left\n";
+    for (int k = 0; k < 5; ++k) script += std::to_string(4 + 2 * k) + " moveby 0 -6\n";
+    script += "16 up left\n";
+    REQUIRE(h->play(ui::GuiScript::parse(script)).empty());
+    h->app->waitIdle();
+    REQUIRE(s.doc.readout().valid);
+    for (const std::pair<int, int>& size : {std::pair{1280, 800}, std::pair{1024, 600}, std::pair{800, 500}}) {
+        const int W = size.first, H = size.second;
+        CAPTURE(W);
+        s.controls.clear();
+        frames(*h, W, H, 3);
+        // Train, Open and Save on one line in view (Save was below the fold at 800x500), the status line
+        // (it was gone at 1024x600), the timeline and the readout's first control.
+        for (const char* name : {"Train", "Open model", "Save model", "status line", "timeline track", "drag falloff"})
+            checkControl(s, name, W, H);
+        CHECK(s.controls.at("Save model").y0 == doctest::Approx(s.controls.at("Train").y0));
+        // The right column's controls stay out of the viewport, and inside the window.
+        for (const char* name : {"Train", "Open model", "Save model", "latent map", "drag falloff", "body stiffness"}) {
+            INFO("control " << name);
+            CHECK(s.controls.at(name).x0 >= s.viewportX + float(s.viewportWidth));
+            CHECK(s.controls.at(name).x1 <= float(W));
+        }
+    }
+    // At 1280x800 the readout's last line is in view without scrolling.
+    s.controls.clear();
+    frames(*h, 1280, 800, 3);
+    checkControl(s, "readout end", 1280, 800);
+}
+
+TEST_CASE("gui layout: a long tooltip wraps and stays on screen at 800x500") {
+    auto h = test::makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    constexpr int W = 800, H = 500;
+    // A status message far wider than the timeline: shown ending in "...", whole in its tooltip.
+    s.setStatus(std::string("a long message ") + std::string(300, 'x') + " the end", false);
+    frames(*h, W, H, 2);
+    REQUIRE(s.controls.count("status line"));
+    const ui::EditorState::ControlRect line = s.controls.at("status line");
+    CHECK(line.x1 <= s.viewportX + float(s.viewportWidth));
+    h->input.mouseX = line.x1 - 4.0f;  // its right end, near the column's edge
+    h->input.mouseY = 0.5f * (line.y0 + line.y1);
+    frames(*h, W, H, 3);
+    const ImGuiWindow* tip = nullptr;
+    for (const ImGuiWindow* win : ImGui::GetCurrentContext()->Windows)
+        if ((win->Flags & ImGuiWindowFlags_Tooltip) && win->Active) tip = win;
+    REQUIRE(tip != nullptr);
+    INFO("tooltip at " << tip->Pos.x << "," << tip->Pos.y << " size " << tip->Size.x << "x" << tip->Size.y);
+    CHECK(tip->Pos.x >= 0.0f);
+    CHECK(tip->Pos.y >= 0.0f);
+    CHECK(tip->Pos.x + tip->Size.x <= float(W));
+    CHECK(tip->Pos.y + tip->Size.y <= float(H));
+    CHECK(tip->Size.y > 2.0f * ImGui::GetTextLineHeight());  // wrapped onto several lines
+}
+
+TEST_CASE("gui layout: with a path edited and regenerated, its span report and every key are in view at 1280x800") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    s.doc.setFrame(100);
+    REQUIRE(s.doc.beginPathEdit(Effector::kRFoot) == "");
+    REQUIRE(s.doc.paths().setKeyOffset(1, Eigen::Vector3d(0.0, 15.0, 0.0)) == "");
+    REQUIRE(s.doc.startRegenerate() == "");
+    s.doc.waitIdle();
+    frames(*h, 1280, 800, 2);
+    s.doc.waitIdle();
+    REQUIRE(s.doc.lastRegenerateQuality().has_value());
+    s.controls.clear();
+    frames(*h, 1280, 800, 3);  // the Path tab comes forward; the latent map gives it room
+    REQUIRE(s.doc.paths().edit()->keyFrames.size() == 4);
+    checkControl(s, "span report", 1280, 800);
+    checkControl(s, "key table", 1280, 800);
+    checkControl(s, "latent map", 1280, 800);
+    const auto& map = s.controls.at("latent map");
+    CHECK(map.x1 - map.x0 >= 110.0f);  // still a usable map
 }

@@ -277,10 +277,13 @@ TEST_CASE("gui path panel: Edit path, mode, ghost switch and Done drive the docu
     REQUIRE(doc.paths().edit().has_value());
     CHECK(doc.paths().edit()->effector == Effector::kLHand);
     CHECK(doc.paths().edit()->keyFrames == std::vector<int>{88, 102, 116, 130});
-    REQUIRE(p.click("Displacement"));
+    CHECK(doc.paths().edit()->mode == PathMode::kDisplacement);  // the default
+    REQUIRE(p.click("displacement"));
+    CHECK(doc.paths().edit()->mode == PathMode::kDirect);
+    REQUIRE(p.click("displacement"));
     CHECK(doc.paths().edit()->mode == PathMode::kDisplacement);
     CHECK_FALSE(s.showBeforeGhost);
-    REQUIRE(p.click("Before ghost"));
+    REQUIRE(p.click("before"));
     CHECK(s.showBeforeGhost);
     p.click("Regenerate");  // disabled without a model: a click does nothing
     CHECK_FALSE(doc.regenerating());

@@ -9,10 +9,13 @@
 #include <limits>
 
 #include "eval/layout_quality.h"
+#include "ui/widgets/widgets.h"
 
 namespace mgp::ui {
 
 namespace {
+constexpr float kBarWidth = 10.0f;  // the upright colour bar beside the map
+
 ImU32 mapColour(double t, int alpha = 255) {
     std::uint8_t rgb[3];
     colourMap(t, rgb);
@@ -212,10 +215,13 @@ LatentMapPanel::MapLayout LatentMapPanel::layoutMap(const gp::GpModel& model,
             m.legend.push_back(std::move(e));
         }
     }
-    // Geometry: a square map, the colour bar below it (and the clip legend under that).
-    const float barBlock = 84.0f + float(m.legendRows) * (m.lineH + 4.0f);
+    // Geometry: a square map with the colour bar upright at its right (its range beside it, its
+    // caption in its tooltip), then the "x1" line, the clip legend and the time-path row below:
+    // the panel's height goes to the map, which the right column is short of.
+    const float below = m.lineH + 4.0f + float(m.legendRows) * (m.lineH + 4.0f) + ImGui::GetFrameHeightWithSpacing();
+    const float barRoom = 18.0f + kBarWidth + 6.0f + ImGui::CalcTextSize("0.0000").x;
     // Whole pixels, so that the static layer's texels land on screen pixels one to one.
-    m.side = std::floor(std::max(64.0f, std::min(m.avail.x - 22.0f, m.avail.y - barBlock - 4.0f)));
+    m.side = std::floor(std::max(64.0f, std::min(m.avail.x - 16.0f - barRoom, m.avail.y - below - 2.0f)));
     m.cur = ImVec2(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
     m.p0 = ImVec2(m.cur.x + 16.0f, m.cur.y);
     m.p1 = ImVec2(m.p0.x + m.side, m.p0.y + m.side);
@@ -317,51 +323,48 @@ void LatentMapPanel::showTooltip(EditorState& s, const gp::GpModel& model, const
         s.hoveredTrainingRow = nearest;
         const int frame = nearest < int(model.trainingFrames.size()) ? model.trainingFrames[nearest] : -1;
         const int c = model.rowClip(nearest);
-        ImGui::SetTooltip(
+        tooltip(
             "Nearest training pose: %s frame %d\nlatent (%.3f, %.3f)%s\nClick: %s", model.clipName(c).c_str(),
             frame + 1, model.X(nearest, 0), model.latentDim() > 1 ? model.X(nearest, 1) : 0.0,
             std::find(model.active.begin(), model.active.end(), nearest) != model.active.end() ? "  [active set]" : "",
             c == 0 ? "go to this frame" : "open this clip at this frame (the model stays)");
     } else if (pointer.hovered && pointer.currentD2 <= 81.0f && !dragging_) {
-        ImGui::SetTooltip("Current latent point: drag to pose from the model mean");
+        tooltip("Current latent point: drag to pose from the model mean");
     }
 }
 
 float LatentMapPanel::drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, const MapLayout& map) const {
-    const ImVec2 b0(map.p0.x, map.p1.y + 18.0f), b1(map.p1.x, map.p1.y + 28.0f);
+    // Upright at the map's right: confident (small σ², yellow) at the top.
+    const ImVec2 b0(map.p1.x + 18.0f, map.p0.y), b1(map.p1.x + 18.0f + kBarWidth, map.p1.y);
     const int segs = 48;
     for (int k = 0; k < segs; ++k) {
-        const float xa = b0.x + (b1.x - b0.x) * k / segs, xb = b0.x + (b1.x - b0.x) * (k + 1) / segs;
-        dl.AddRectFilledMultiColor(ImVec2(xa, b0.y), ImVec2(xb, b1.y), mapColour(1.0 - double(k) / segs),
-                                   mapColour(1.0 - double(k + 1) / segs), mapColour(1.0 - double(k + 1) / segs),
-                                   mapColour(1.0 - double(k) / segs));
+        const float ya = b0.y + (b1.y - b0.y) * k / segs, yb = b0.y + (b1.y - b0.y) * (k + 1) / segs;
+        const ImU32 top = mapColour(1.0 - double(k) / segs), bottom = mapColour(1.0 - double(k + 1) / segs);
+        dl.AddRectFilledMultiColor(ImVec2(b0.x, ya), ImVec2(b1.x, yb), top, top, bottom, bottom);
     }
     dl.AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
     char lo[48], hi[48];
     std::snprintf(lo, sizeof lo, "%.2g", shown_.size ? std::exp(shown_.minLogVar) : 0.0);
     std::snprintf(hi, sizeof hi, "%.2g", shown_.size ? std::exp(shown_.maxLogVar) : 0.0);
-    dl.AddText(ImVec2(b0.x, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), lo);
-    const float hiW = ImGui::CalcTextSize(hi).x;
-    dl.AddText(ImVec2(b1.x - hiW, b1.y + 1.0f), IM_COL32(210, 210, 215, 255), hi);
+    dl.AddText(ImVec2(b1.x + 6.0f, b0.y), IM_COL32(210, 210, 215, 255), lo);
+    dl.AddText(ImVec2(b1.x + 6.0f, b1.y - map.lineH), IM_COL32(210, 210, 215, 255), hi);
+    dl.AddText(ImVec2(b1.x + 6.0f, 0.5f * (b0.y + b1.y) - map.lineH), IM_COL32(150, 152, 160, 255), "sigma^2");
     // With d = 3 the map is a slice (latentMapBase): say which.
     char capText[128] = "predictive variance sigma^2(x), log scale";
     if (model.latentDim() > 2)
         std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)",
                       latentMapBase(model)[2]);
-    const char* cap = capText;
-    const float capW = ImGui::CalcTextSize(cap).x;
-    // Centred under the bar, but never left of the panel's content edge (the caption is wider).
-    const float capX = std::max(map.cur.x, 0.5f * (b0.x + b1.x) - 0.5f * capW);
-    dl.AddText(ImVec2(capX, b1.y + 2.0f + map.lineH), IM_COL32(210, 210, 215, 255), cap);
-    return b1.y;
+    if (ImGui::IsMouseHoveringRect(b0, ImVec2(b1.x + 6.0f + ImGui::CalcTextSize("0.0000").x, b1.y)))
+        tooltip("%s: bright is confident", capText);
+    return map.p1.y + map.lineH + 4.0f;
 }
 
-float LatentMapPanel::drawClipLegend(ImDrawList& dl, EditorState& s, const MapLayout& map, float barBottom) {
+float LatentMapPanel::drawClipLegend(ImDrawList& dl, EditorState& s, const MapLayout& map, float top) {
     // The clip legend: a swatch in the clip's colour and its name, the open clip marked.
     const float lineH = map.lineH;
     const ImVec2 cur = map.cur;
     s.clipLegend.clear();
-    float lx = cur.x, ly = barBottom + 4.0f + 2.0f * lineH;
+    float lx = cur.x, ly = top;
     for (const MapLayout::LegendEntry& e : map.legend) {
         if (lx > cur.x && lx + e.width > cur.x + map.avail.x) lx = cur.x, ly += lineH + 4.0f;
         dl.AddRectFilled(ImVec2(lx, ly + 1.0f), ImVec2(lx + lineH, ly + 1.0f + lineH), e.colour);
@@ -420,11 +423,10 @@ void LatentMapPanel::draw(EditorState& s) {
     showTooltip(s, model, pointer);
 
     // Colour bar, then the clip legend, then the time-path toggle.
-    const float barBottom = drawVarianceBar(*dl, model, map);
-    const float ly = drawClipLegend(*dl, s, map, barBottom);
+    const float ly = drawClipLegend(*dl, s, map, drawVarianceBar(*dl, model, map));
     ImGui::SetCursorScreenPos(ImVec2(map.cur.x, ly));
     ImGui::Checkbox("time path", &showTrajectory_);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Join the training frames in time order");
+    if (ImGui::IsItemHovered()) tooltip("Join the training frames in time order");
     ImGui::SameLine();
     if (!upToDate(s))
         ImGui::TextDisabled("updating variance image...");

@@ -88,10 +88,11 @@ private:
                                   int nearest);
     void handleMouse(EditorState& state, const gp::GpModel& model, const MapLayout& map, const MapPointer& pointer);
     void showTooltip(EditorState& state, const gp::GpModel& model, const MapPointer& pointer) const;
-    // The colour bar with its range and caption; returns the bar's bottom edge.
+    // The colour bar upright beside the map, with its range (its caption in its tooltip); returns
+    // the top of the row below the map.
     float drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, const MapLayout& map) const;
-    // Returns the top of the row below the legend.
-    static float drawClipLegend(ImDrawList& dl, EditorState& state, const MapLayout& map, float barBottom);
+    // The clip legend from `top` down; returns the top of the row below it.
+    static float drawClipLegend(ImDrawList& dl, EditorState& state, const MapLayout& map, float top);
 };
 
 }  // namespace mgp::ui

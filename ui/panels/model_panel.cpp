@@ -92,7 +92,7 @@ void drawParameters(const gp::GpModel& m) {
     const double sigma = 1.0 / std::sqrt(k.beta());
     ImGui::Text("noise sigma = 1/sqrt(beta) = %s deg", sig4(sigma).c_str());
     if (ImGui::IsItemHovered() && m.D() > 0)
-        ImGui::SetTooltip(
+        tooltip(
             "Noise std of a DOF with w = 1 (the geometric mean of W).\n"
             "DOF k has sigma / w_k: %s .. %s deg here.",
             sig4(sigma / m.w.maxCoeff()).c_str(), sig4(sigma / m.w.minCoeff()).c_str());
@@ -128,7 +128,7 @@ void drawWeights(const gp::GpModel& m) {
     ImGui::PlotHistogram("##w", wf.data(), D, 0, nullptr, 0.0f, float(m.w.maxCoeff()),
                          ImVec2(ImGui::GetContentRegionAvail().x, 44));
     const int h = hoveredPlotIndex(D, false);
-    if (h >= 0) ImGui::SetTooltip("%s  w = %s", dofName(m, layout, h).c_str(), sig4(m.w[h]).c_str());
+    if (h >= 0) tooltip("%s  w = %s", dofName(m, layout, h).c_str(), sig4(m.w[h]).c_str());
     ImGui::TextDisabled("w per DOF, pose order (hover for names)");
 }
 
@@ -159,9 +159,9 @@ void drawConvergence(const gp::GpModel& m) {
     dl->AddText(ImVec2(origin.x, ImGui::GetItemRectMax().y - ImGui::GetTextLineHeight()), grey, bottom.c_str());
     const int h = hoveredPlotIndex(n, true);
     if (h == 0)
-        ImGui::SetTooltip("L_init = %.6g (before training)", hist[0]);
+        tooltip("L_init = %.6g (before training)", hist[0]);
     else if (h > 0)
-        ImGui::SetTooltip("iteration %d: L_GP = %.6g", h, hist[h]);
+        tooltip("iteration %d: L_GP = %.6g", h, hist[h]);
     ImGui::TextDisabled("x: iteration 0 (L_init) .. %d, L_GP after Step 6", n - 1);
 }
 
@@ -206,7 +206,7 @@ void drawAdaptiveHistory(const std::vector<AdaptiveHistoryEntry>& history) {
     for (int c = 0; c < kCols; ++c) {
         ImGui::TableSetColumnIndex(c);
         ImGui::TableHeader(kColumns[c].name);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kColumns[c].tip);
+        if (ImGui::IsItemHovered()) tooltip("%s", kColumns[c].tip);
     }
     for (auto it = history.rbegin(); it != history.rend(); ++it) {
         const AdaptiveHistoryEntry& e = *it;
@@ -229,8 +229,8 @@ void drawAdaptiveHistory(const std::vector<AdaptiveHistoryEntry>& history) {
         else
             ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "rejected");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\nN = %d, M = %d after the update\nL_GP %.6g -> %.6g", e.diagnostic.c_str(),
-                              e.rowsAfter, e.activeSize, e.objectiveBefore, e.objectiveAfter);
+            tooltip("%s\nN = %d, M = %d after the update\nL_GP %.6g -> %.6g", e.diagnostic.c_str(), e.rowsAfter,
+                    e.activeSize, e.objectiveBefore, e.objectiveAfter);
     }
     ImGui::EndTable();
 }
@@ -256,7 +256,7 @@ void drawTrainOptions(gp::TrainOptions& o) {
     ImGui::InputDouble("C", &o.tolerance, 0, 0, "%.3g");
     ImGui::PopItemWidth();
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
+        tooltip(
             "M active set, T outer iterations, S SCG iterations per Step 6, C convergence tolerance\n"
             "%s temporal prior, lambda %.3g at this T (100 up to T = 10, 30 from T = 100)",
             gp::latentPriorName(o.prior), o.resolvedPriorWeight());
@@ -297,16 +297,19 @@ void drawModelPanel(EditorState& s) {
         s.recordControl("Train");
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)"
-                                              : "Open a clip first (File > Open)");
-        sameLineIfFits("Open model...");
-        if (ImGui::Button("Open model...")) s.request("open-model");
+            tooltip(doc.trainable() ? "Train a model on this clip (Ctrl+T)" : "Open a clip first (File > Open)");
+        // Short labels: the three stay on one line down to an 800-pixel window (the panel says Model).
+        sameLineIfFits("Open...");
+        if (ImGui::Button("Open...")) s.request("open-model");
         s.recordControl("Open model");
-        sameLineIfFits("Save model...");
+        if (ImGui::IsItemHovered()) tooltip("Open a model file (.model); its clip comes with it");
+        sameLineIfFits("Save...");
         ImGui::BeginDisabled(!v);
-        if (ImGui::Button("Save model...")) s.request("save-model");
+        if (ImGui::Button("Save...")) s.request("save-model");
         s.recordControl("Save model");
         ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            tooltip(v ? "Save the model to a file" : "No model to save yet");
     }
     const std::string msg = s.training.message();
     if (!msg.empty() && !s.training.running() && msg.rfind("trained", 0) != 0)
@@ -338,23 +341,20 @@ void drawModelPanel(EditorState& s) {
         if (pending > 0)
             ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
         else if (!st.empty() && describesThis)
-            ImGui::TextDisabled("last %s", st.c_str());
+            textEllipsized(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), "last " + st);
         else if (!history.empty())
             ImGui::TextDisabled("version %d (restored by undo/redo)", v->number);
-        if (ImGui::CollapsingHeader("Parameters")) drawParameters(m);
-        if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
-        if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
-        char label[64];
-        std::snprintf(label, sizeof label, "Adaptive updates (%zu)###adaptive", history.size());
-        if (ImGui::CollapsingHeader(label)) drawAdaptiveHistory(history);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("No model: drags use plain IK until one is trained or opened");
         ImGui::PopStyleColor();
     }
-    ImGui::Separator();
+}
 
-    // Compare ghost.
+namespace {
+// The compare ghost: off, plain IK, or a second model of the other kernel (trained here).
+void drawCompareGhost(EditorState& s) {
+    EditorDocument& doc = s.doc;
     int mode = int(doc.compareMode());
     ImGui::Text("Compare ghost");
     ImGui::SameLine();
@@ -383,6 +383,25 @@ void drawModelPanel(EditorState& s) {
         }
     }
 }
+}  // namespace
+
+void drawModelDetails(EditorState& s) {
+    drawCompareGhost(s);
+    ImGui::Separator();
+    const gp::ModelVersionPtr v = s.doc.model();
+    if (!v) {
+        ImGui::TextDisabled("No model yet: train one or open one (Model panel)");
+        return;
+    }
+    const gp::GpModel& m = *v->model;
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameters(m);
+    if (ImGui::CollapsingHeader("Scale weights W")) drawWeights(m);
+    if (ImGui::CollapsingHeader("Training convergence")) drawConvergence(m);
+    const std::vector<AdaptiveHistoryEntry> history = s.doc.models().history();
+    char label[64];
+    std::snprintf(label, sizeof label, "Adaptive updates (%zu)###adaptive", history.size());
+    if (ImGui::CollapsingHeader(label)) drawAdaptiveHistory(history);
+}
 
 namespace {
 // What the current frame holds because the animator placed it there (edit/held_effectors.h), each
@@ -392,7 +411,7 @@ void drawHeldEffectors(EditorState& s) {
     if (held.empty()) {
         ImGui::TextDisabled("held here: nothing");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
+            tooltip(
                 "A hand, foot or head you drag stays where you put it: later drags and their falloff hold it "
                 "until you release it (Alt+click its handle).");
         return;
@@ -403,32 +422,35 @@ void drawHeldEffectors(EditorState& s) {
         const std::string label = std::string(effectorName(e)) + " x##release";
         if (ImGui::SmallButton(label.c_str())) s.request("release", {effectorName(e)});
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
+            tooltip(
                 "%s was placed by an edit and is held by later drags and falloffs here. Click to release it "
                 "on this frame and the neighbouring frames that hold it (one undo step).",
                 effectorName(e));
     }
     ImGui::SameLine();
     if (ImGui::SmallButton("release all")) s.request("release-all");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Release every held hand, foot and head on every frame (one undo step).");
+    if (ImGui::IsItemHovered()) tooltip("Release every held hand, foot and head on every frame (one undo step).");
 }
 }  // namespace
 
 void drawIkReadout(EditorState& s) {
     // Drag falloff radius (core/motion/drag_falloff.h): 0 edits the dragged frame only.
+    // The two sliders share a line (the readout below stays in view at 1280×800).
+    const float sliderW = std::max(50.0f, ImGui::GetContentRegionAvail().x * 0.5f -
+                                              ImGui::CalcTextSize("stiffness ").x - ImGui::GetStyle().ItemSpacing.x);
     int radius = s.doc.dragFalloff();
-    ImGui::SetNextItemWidth(120.0f);
-    if (ImGui::SliderInt("drag falloff (frames)", &radius, 0, 120)) s.doc.setDragFalloff(radius);
+    ImGui::SetNextItemWidth(sliderW);
+    if (ImGui::SliderInt("falloff", &radius, 0, 120, "%d frames")) s.doc.setDragFalloff(radius);
     s.recordControl("drag falloff");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
+        tooltip(
             "A drag on frame t also changes t-r..t+r, fading to zero, re-solved with planted feet and pins on release "
             "(one undo step). 0: this frame only. A quarter second is 30 frames at 120 fps.");
     // Locality (core/ik/locality.h) as a multiple of the default.
     float stiffness = static_cast<float>(s.doc.bodyStiffness());
-    ImGui::SetNextItemWidth(120.0f);
-    if (ImGui::SliderFloat("body stiffness", &stiffness, 0.0f, 3.0f, "%.2f")) s.doc.setBodyStiffness(stiffness);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(sliderW);
+    if (ImGui::SliderFloat("stiffness", &stiffness, 0.0f, 3.0f, "%.2f")) s.doc.setBodyStiffness(stiffness);
     s.recordControl("body stiffness");
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
@@ -455,11 +477,9 @@ void drawIkReadout(EditorState& s) {
         ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
     else
         ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.5f, 1), "not reached");
+    // One row per target: the effector, its residual and whether it was reached (no header row: the
+    // unit says what the number is).
     if (ImGui::BeginTable("targets", 3, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("target");
-        ImGui::TableSetupColumn("residual cm");
-        ImGui::TableSetupColumn("status");
-        ImGui::TableHeadersRow();
         for (const IkConstraintResult& c : r.constraints) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
@@ -470,7 +490,7 @@ void drawIkReadout(EditorState& s) {
                                                           : " (planted)";
             ImGui::Text("%s%s", effectorName(c.effector), kind);
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", c.residualCm);
+            ImGui::Text("%.3f cm", c.residualCm);
             ImGui::TableNextColumn();
             if (c.reached)
                 ImGui::TextColored(ImVec4(0.35f, 0.9f, 0.4f, 1), "reached");
@@ -483,38 +503,38 @@ void drawIkReadout(EditorState& s) {
     // numbers behind it in the tooltip.
     if (const std::optional<ShownVerdict> shown = r.learned ? s.doc.shownPoseVerdict() : std::nullopt) {
         const AdmissionVerdict* v = &shown->own;
-        ImGui::Text("this pose is %s, %s", judgementWords(shown->shown().judgement),
-                    v->admitted ? "the model learns from it" : "kept as an edit only");
+        ImGui::TextWrapped("this pose is %s, %s", judgementWords(shown->shown().judgement),
+                           v->admitted ? "the model learns from it" : "kept as an edit only");
         bool hovered = ImGui::IsItemHovered();
         if (shown->steadied) {
             ImGui::TextDisabled("like frame %d; alone: %s", shown->steadiedFrame + 1, judgementWords(v->judgement));
             hovered = hovered || ImGui::IsItemHovered();
         }
         if (hovered)
-            ImGui::SetTooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(),
-                              r.iterations);
+            tooltip("%s\nsolve: %d iterations", admissionDetails(*v, *s.doc.model()->model).c_str(), r.iterations);
     } else if (r.learned) {
         ImGui::Text("%d iterations", r.iterations);
     }
     if (r.comShiftCm) {
         ImGui::Text("centre of mass moved %.1f cm", *r.comShiftCm);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
+            tooltip(
                 "How far the whole body's centre of mass moved sideways (over the ground) since the drag "
                 "began, from de Leva's segment masses. A few cm on a standing frame can tip the character.");
     }
     if (r.nearest.row >= 0) {
         ImGui::Checkbox("##nearestghost", &s.showNearestGhost);
         s.recordControl("nearest ghost");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show that captured pose as a green ghost at the current root");
+        if (ImGui::IsItemHovered()) tooltip("Show that captured pose as a green ghost at the current root");
         ImGui::SameLine();
         ImGui::Text("nearest: %s frame %d, %.1f deg RMS", r.nearestClip.c_str(), r.nearest.row + 1, r.nearest.rmsDeg);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
+            tooltip(
                 "The captured frame of the model's clip closest to this pose in joint angles "
                 "(RMS over the non-root DOFs): where the pose is in the data. Tick to see it as a ghost.");
     }
     ImGui::TextDisabled("%s", r.diagnostic.c_str());
+    s.recordControl("readout end");
 }
 
 }  // namespace mgp::ui

@@ -1,8 +1,7 @@
 #pragma once
 // The Model panel (clip facts, model facts, training with progress/ETA/Cancel, open/save, the
-// adaptive update switch, the compare ghost; collapsed sections for α, γ, η, β and the noise σ,
-// the W summary, the training convergence plot and the history of adaptive updates) and the IK readout (per-target
-// residual in cm, reached or not, σ²(x), L_IK).
+// adaptive update switch, the compare ghost), the model's details (a tab beside the IK readout) and
+// the IK readout (per-target residual in cm, reached or not, σ²(x), L_IK).
 #include "ui/shell/editor_state.h"
 
 namespace mgp::ui {
@@ -12,5 +11,8 @@ void drawModelPanel(EditorState& state);
 // the Model panel's Train and Model ▸ Train on clips… share them (EditorState::trainOptions).
 void drawTrainOptions(gp::TrainOptions& options);
 void drawIkReadout(EditorState& state);
+// The model's details, each a collapsible section: α, γ, η, β and the noise σ (open), the W summary,
+// the training convergence plot and the history of adaptive updates.
+void drawModelDetails(EditorState& state);
 
 }  // namespace mgp::ui

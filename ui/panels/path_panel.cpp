@@ -31,13 +31,15 @@ void retimeKey(EditorState& s, int key, int frame) {
 void keyTable(EditorState& s) {
     EditorDocument& doc = s.doc;
     const int keys = static_cast<int>(doc.paths().edit()->keyFrames.size());
-    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable(
-            "keys", 5, flags,
-            ImVec2(0, std::max(ImGui::GetContentRegionAvail().y, 4.0f * ImGui::GetFrameHeightWithSpacing()))))
+    // Every key's row, in the tab's own scrolling (no scroll area of its own inside it).
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    // Slim rows (1-pixel frame padding): the four default keys fit under the span report at 1280×800.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f));
+    if (!ImGui::BeginTable("keys", 5, flags)) {
+        ImGui::PopStyleVar();
         return;
-    ImGui::TableSetupScrollFreeze(0, 1);
+    }
     ImGui::TableSetupColumn("#");
     ImGui::TableSetupColumn("Frame", ImGuiTableColumnFlags_WidthFixed, 78.0f);
     ImGui::TableSetupColumn("Offset (cm)", ImGuiTableColumnFlags_WidthStretch);
@@ -63,9 +65,8 @@ void keyTable(EditorState& s) {
         if (missed) {
             ImGui::PopStyleColor();
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip(
-                    "The last regeneration missed this key by %.1f cm (out of reach with the feet and pins held?)",
-                    missed->errorCm);
+                tooltip("The last regeneration missed this key by %.1f cm (out of reach with the feet and pins held?)",
+                        missed->errorCm);
         }
         ImGui::TableNextColumn();
         int frame = path.keyFrames[k] + 1;
@@ -81,22 +82,24 @@ void keyTable(EditorState& s) {
         if (ImGui::DragFloat3("##offset", v, 0.1f, -500.0f, 500.0f, "%.1f"))
             reportError(s, doc.paths().setKeyOffset(k, Eigen::Vector3d(v[0], v[1], v[2])));
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("x, y (up), z offset from the captured path, cm (drag or Ctrl+click to type)");
+            tooltip("x, y (up), z offset from the captured path, cm (drag or Ctrl+click to type)");
         ImGui::TableNextColumn();
         if (ImGui::SmallButton("Go")) {
             doc.setFrame(doc.paths().edit()->keyFrames[k]);
             s.selectedKey = k;
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Go to this key's frame");
+        if (ImGui::IsItemHovered()) tooltip("Go to this key's frame");
         ImGui::TableNextColumn();
         ImGui::BeginDisabled(keys <= 2);
         if (ImGui::SmallButton("x")) removeKey = k;
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip(keys <= 2 ? "A path needs at least two keys" : "Remove this key");
+            tooltip(keys <= 2 ? "A path needs at least two keys" : "Remove this key");
         ImGui::PopID();
     }
     ImGui::EndTable();
+    ImGui::PopStyleVar();
+    s.recordControl("key table");
     if (removeKey >= 0) {
         std::vector<int> frames = doc.paths().edit()->keyFrames;
         frames.erase(frames.begin() + removeKey);
@@ -106,22 +109,27 @@ void keyTable(EditorState& s) {
 }
 
 // The last regeneration's span report (core/motion/motion_quality.h): edited next to captured.
-void regenerateReport(const EditorDocument& doc) {
+void regenerateReport(EditorState& s) {
+    const EditorDocument& doc = s.doc;
     const auto& q = doc.lastRegenerateQuality();
     if (!q) return;
-    if (!ImGui::BeginTable("regen_report", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) return;
-    ImGui::TableSetupColumn("last regeneration");
-    ImGui::TableSetupColumn("edited");
-    ImGui::TableSetupColumn("captured");
-    ImGui::TableHeadersRow();
+    // A section the animator can fold to bring the keys up (the tab scrolls as one); each row says
+    // the edited value and, in brackets, the captured one.
+    if (!ImGui::CollapsingHeader("Last regeneration: edited (captured)###lastregen", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    if (!ImGui::BeginTable("regen_report", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
     auto row = [](const char* label, const char* fmt, double edited, double captured, bool hasCaptured) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(label);
         ImGui::TableNextColumn();
-        ImGui::Text(fmt, edited);
-        ImGui::TableNextColumn();
-        if (hasCaptured) ImGui::Text(fmt, captured);
+        char value[64], reference[64] = "";
+        std::snprintf(value, sizeof value, fmt, edited);
+        if (hasCaptured) std::snprintf(reference, sizeof reference, fmt, captured);
+        if (hasCaptured)
+            ImGui::Text("%s  (%s)", value, reference);
+        else
+            ImGui::TextUnformatted(value);
     };
     row("2nd difference p95", "%.1f°", q->edited.p95Deg, q->captured.p95Deg, true);
     row("2nd difference max", "%.1f°", q->edited.maxDeg, q->captured.maxDeg, true);
@@ -133,6 +141,7 @@ void regenerateReport(const EditorDocument& doc) {
         row(label, "%.1f cm", c.editedCm, c.capturedCm, true);
     }
     ImGui::EndTable();
+    s.recordControl("span report");
 }
 
 void regenerateRow(EditorState& s) {
@@ -158,11 +167,10 @@ void regenerateRow(EditorState& s) {
     }
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(doc.hasModel()
-                              ? "Solve every frame between the first and last key as one problem: learned IK, "
-                                "smoothness, planted feet and pins held (one undo step)"
-                              : "Regeneration needs a model: train one or open one first");
-    regenerateReport(doc);
+        tooltip(doc.hasModel() ? "Solve every frame between the first and last key as one problem: learned IK, "
+                                 "smoothness, planted feet and pins held (one undo step)"
+                               : "Regeneration needs a model: train one or open one first");
+    regenerateReport(s);
 }
 
 }  // namespace
@@ -203,7 +211,7 @@ void drawPathPanel(EditorState& s) {
                 reportError(s, err);
             }
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Four keys 14 frames apart around the current frame");
+        if (ImGui::IsItemHovered()) tooltip("Four keys 14 frames apart around the current frame");
         return;
     }
     if (ImGui::Button("Done")) {
@@ -211,33 +219,30 @@ void drawPathPanel(EditorState& s) {
         s.selectedKey = s.hoveredKey = -1;
         return;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop editing the path (regenerated frames stay)");
+    if (ImGui::IsItemHovered()) tooltip("Stop editing the path (regenerated frames stay)");
     ImGui::SameLine();
     if (ImGui::Button("Default keys")) reportError(s, doc.beginPathEdit(doc.paths().edit()->effector));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Four keys 14 frames apart around the current frame; offsets reset");
+    if (ImGui::IsItemHovered()) tooltip("Four keys 14 frames apart around the current frame; offsets reset");
     sameLineIfFits("Regenerate");
     regenerateRow(s);
     if (!doc.paths().edit()) return;
 
-    int mode = static_cast<int>(doc.paths().edit()->mode);
-    if (ImGui::RadioButton("Direct", &mode, static_cast<int>(PathMode::kDirect)))
-        doc.paths().setMode(PathMode::kDirect);
+    // The options on one line: the mode (Direct when unticked), then what the viewport shows beside
+    // the path.
+    bool displacement = doc.paths().edit()->mode == PathMode::kDisplacement;
+    if (ImGui::Checkbox("displacement", &displacement))
+        doc.paths().setMode(displacement ? PathMode::kDisplacement : PathMode::kDirect);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "The paper's: a Hermite curve through the keys' positions\n(smooth, but loses the captured detail between "
-            "keys)");
+        tooltip(
+            "Ticked: a Hermite curve through the keys' offsets, added to the captured path (keeps the captured "
+            "detail).\nUnticked, Direct (the paper's): a Hermite curve through the keys' positions (smooth, but "
+            "loses the captured detail between keys).");
     ImGui::SameLine();
-    if (ImGui::RadioButton("Displacement", &mode, static_cast<int>(PathMode::kDisplacement)))
-        doc.paths().setMode(PathMode::kDisplacement);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "A Hermite curve through the keys' offsets, added to the captured path\n(keeps the captured detail)");
-    sameLineIfFits("Captured path", ImGui::GetFrameHeight());
-    ImGui::Checkbox("Captured path", &s.showCapturedPath);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the captured path (grey) beside the edited one (blue)");
-
-    ImGui::Checkbox("Before ghost", &s.showBeforeGhost);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("This frame's pose before the last undoable step, in violet");
+    ImGui::Checkbox("captured", &s.showCapturedPath);
+    if (ImGui::IsItemHovered()) tooltip("Show the captured path (grey) beside the edited one (blue)");
+    ImGui::SameLine();
+    ImGui::Checkbox("before", &s.showBeforeGhost);
+    if (ImGui::IsItemHovered()) tooltip("Show this frame's pose before the last undoable step, in violet");
     sameLineIfFits("Add key at current frame");
     if (ImGui::Button("Add key at current frame")) {
         std::vector<int> frames = doc.paths().edit()->keyFrames;

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "ui/widgets/widgets.h"
+
 namespace mgp::ui {
 
 void TimelinePanel::advance(EditorState& s, double dt) {
@@ -29,21 +31,21 @@ void drawTimelineTransport(EditorState& s) {
     const int n = doc.frameCount();
     const double fps = doc.clip().fps;
     if (ImGui::Button("|<")) doc.setFrame(0);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("First frame (Home)");
+    if (ImGui::IsItemHovered()) tooltip("First frame (Home)");
     ImGui::SameLine();
     if (ImGui::Button("<")) doc.setFrame(doc.frame() - 1);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Previous frame (Left)");
+    if (ImGui::IsItemHovered()) tooltip("Previous frame (Left)");
     ImGui::SameLine();
     // Wide enough for "Pause" in any font size (HiDPI), so the row does not jump when it toggles.
     const float playW = std::max(56.0f, ImGui::CalcTextSize("Pause").x + 2.0f * ImGui::GetStyle().FramePadding.x);
     if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(playW, 0))) s.playing = !s.playing;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
+    if (ImGui::IsItemHovered()) tooltip("Play / pause (Space)");
     ImGui::SameLine();
     if (ImGui::Button(">")) doc.setFrame(doc.frame() + 1);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Next frame (Right)");
+    if (ImGui::IsItemHovered()) tooltip("Next frame (Right)");
     ImGui::SameLine();
     if (ImGui::Button(">|")) doc.setFrame(n - 1);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Last frame (End)");
+    if (ImGui::IsItemHovered()) tooltip("Last frame (End)");
     ImGui::SameLine();
     ImGui::Text("Frame %d / %d   %.2f s / %.2f s   %.0f fps%s", doc.frame() + 1, n, doc.frame() / fps, (n - 1) / fps,
                 fps, doc.isEdited(doc.frame()) ? "   [edited]" : "");
@@ -256,11 +258,10 @@ void TimelinePanel::draw(EditorState& s) {
         const int f = mouseFrame;
         if (hoveredContact >= 0) {
             const FootContact& c = contacts.contacts[hoveredContact];
-            ImGui::SetTooltip("%s contact, frames %d-%d (%s): %s (right-click to switch)", effectorName(c.foot),
-                              c.first + 1, c.last + 1, contactPhases(c).c_str(),
-                              c.enabled ? "held when regenerating" : "off");
+            tooltip("%s contact, frames %d-%d (%s): %s (right-click to switch)", effectorName(c.foot), c.first + 1,
+                    c.last + 1, contactPhases(c).c_str(), c.enabled ? "held when regenerating" : "off");
         } else {
-            ImGui::SetTooltip("Frame %d  (%.2f s)", f + 1, f / fps);
+            tooltip("Frame %d  (%.2f s)", f + 1, f / fps);
         }
     }
     scrub(s, active, mouseFrame);

@@ -18,6 +18,7 @@
 #include "skeleton/centre_of_mass.h"
 #include "skeleton/forward_kinematics.h"
 #include "ui/actions/shortcuts.h"
+#include "ui/widgets/widgets.h"
 #include "ui/windows/joint_rotation_window.h"
 
 namespace mgp::ui {
@@ -556,21 +557,20 @@ void ViewportPanel::drawMouseHints(EditorState& s, float x0, float y0) const {
 void ViewportPanel::showHoverTooltips(const EditorState& s) const {
     if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 &&
         s.gizmoJoint < s.doc.clip().skeleton.jointCount())
-        ImGui::SetTooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
-                          s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
+        tooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
+                s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         const bool held = s.doc.held(e);
-        ImGui::SetTooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e),
-                          s.doc.pinned(e) ? " (pinned)" : "", held ? " (held: placed by an edit)" : "",
-                          s.doc.pinned(e) ? "unpin" : "pin",
-                          held ? "\nAlt+click to release it (here and on the neighbouring frames that hold it)" : "");
+        tooltip("%s%s%s\nLMB drag to pose, RMB or P to %s%s", effectorName(e), s.doc.pinned(e) ? " (pinned)" : "",
+                held ? " (held: placed by an edit)" : "", s.doc.pinned(e) ? "unpin" : "pin",
+                held ? "\nAlt+click to release it (here and on the neighbouring frames that hold it)" : "");
     }
     const int key = mode_ == Mode::kDragKey ? dragKey_ : mode_ == Mode::kNone ? s.hoveredKey : -1;
     if (key >= 0 && s.doc.paths().edit() && key < static_cast<int>(s.doc.paths().edit()->keyFrames.size())) {
         const Eigen::Vector3d& o = s.doc.paths().edit()->keyOffsetsCm[key];
-        ImGui::SetTooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1,
-                          s.doc.paths().edit()->keyFrames[key] + 1, o.x(), o.y(), o.z());
+        tooltip("key %d, frame %d, offset (%.1f, %.1f, %.1f) cm", key + 1, s.doc.paths().edit()->keyFrames[key] + 1,
+                o.x(), o.y(), o.z());
     }
 }
 
@@ -730,9 +730,9 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
                            : tint.band == render::RangeBand::kOutOfRange ? IM_COL32(255, 110, 100, 255)
                            : tint.band == render::RangeBand::kNearLimit  ? IM_COL32(255, 190, 90, 255)
                                                                          : IM_COL32(150, 230, 150, 255);
-    const auto tooltip = [&](const ImVec2& p0, const ImVec2& p1) {
+    const auto detailsOnHover = [&](const ImVec2& p0, const ImVec2& p1) {
         if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(p0, p1))
-            ImGui::SetTooltip("%s\n%s", l2.c_str(), admissionDetails(*v, *s.doc.model()->model).c_str());
+            tooltip("%s\n%s", l2.c_str(), admissionDetails(*v, *s.doc.model()->model).c_str());
     };
     // In a small viewport the box would cover the character: one line at the top-right instead,
     // the rest in its tooltip (as in Blender, overlays give way to the model).
@@ -743,7 +743,7 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
         dl->AddRectFilled(c, c1, IM_COL32(20, 22, 26, 210), 4.0f);
         dl->AddText(ImVec2(c.x + pad, c.y + pad), v ? stateCol : IM_COL32(230, 232, 236, 255), l1.c_str());
         s.controls["range legend"] = {c.x, c.y, c1.x, c1.y, true};
-        tooltip(c, c1);
+        detailsOnHover(c, c1);
         return;
     }
     s.controls["range legend"] = {a.x, a.y, a.x + boxW, a.y + boxH, true};
@@ -779,7 +779,7 @@ void ViewportPanel::drawRangeLegend(EditorState& s, float y0, float x1, float y1
     text(ty, v ? stateCol : IM_COL32(230, 232, 236, 255), l1);
     if (v) text(ty + h1, IM_COL32(230, 232, 236, 255), l2);
     if (v && mode_ == Mode::kNone && ImGui::IsMouseHoveringRect(a, ImVec2(a.x + boxW, a.y + boxH)))
-        ImGui::SetTooltip("%s", admissionDetails(*v, *s.doc.model()->model).c_str());
+        tooltip("%s", admissionDetails(*v, *s.doc.model()->model).c_str());
 }
 
 }  // namespace mgp::ui

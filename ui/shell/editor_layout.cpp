@@ -6,6 +6,7 @@
 
 #include "ui/panels/model_panel.h"
 #include "ui/panels/path_panel.h"
+#include "ui/widgets/widgets.h"
 
 namespace mgp::ui {
 
@@ -28,13 +29,17 @@ void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPa
     // narrower (30 % of the width, at least 290 px) with the heights shared out so every panel
     // keeps its main controls in view down to 1024×600.
     const float avail = float(h) - menuH;
-    float rightW = 380.0f * k, modelH = 262.0f * k, latentH = 356.0f * k;
-    if (float(w) < 1280.0f * k || avail < modelH + latentH + 160.0f * k) {
+    // The readout below them gets the rest: at 1280×800 about 249 px, its whole drag report.
+    float rightW = 380.0f * k, modelH = 232.0f * k, latentH = 300.0f * k;
+    if (float(w) < 1280.0f * k || avail < modelH + latentH + 249.0f * k) {
         rightW = std::clamp(float(w) * 0.30f, std::min(290.0f * k, float(w) * 0.45f), 380.0f * k);
-        modelH = std::clamp(avail * 0.30f, 130.0f * k, 262.0f * k);
-        const float readoutH = std::max(avail * 0.29f, 170.0f * k);
-        latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(356.0f * k, rightW));
+        modelH = std::clamp(avail * 0.30f, 132.0f * k, 232.0f * k);
+        const float readoutH = std::max(avail * 0.29f, 140.0f * k);
+        latentH = std::clamp(avail - modelH - readoutH, 120.0f * k, std::min(300.0f * k, rightW));
     }
+    // While the Path tab is in front its keys and span report need about 340 px: the latent map gives
+    // up to 100 px to them (down to 180 px, a map of about 125 px).
+    if (pathTabSelected_) latentH -= std::clamp(latentH - 180.0f * k, 0.0f, 100.0f * k);
     // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
     if (prefs_.rightWidth > 0.0f)
         rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
@@ -72,12 +77,7 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
         ImGui::BeginChild("tl", ImVec2(0, -statusH), false, ImGuiWindowFlags_NoScrollbar);
         timeline.draw(state);
         ImGui::EndChild();
-        if (const StatusMessage* m = state.messages.current()) {
-            if (m->error)
-                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "%s", m->text.c_str());
-            else
-                ImGui::TextDisabled("%s", m->text.c_str());
-        }
+        if (const StatusMessage* m = state.messages.current()) statusLine(state, *m);
     }
     ImGui::End();
 
@@ -100,8 +100,14 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
             drawIkReadout(state);
             ImGui::EndTabItem();
         }
+        pathTabSelected_ = false;
         if (ImGui::BeginTabItem("Path", nullptr, pathActive && !pathTabShown_ ? ImGuiTabItemFlags_SetSelected : 0)) {
+            pathTabSelected_ = true;
             drawPathPanel(state);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Model details")) {
+            drawModelDetails(state);
             ImGui::EndTabItem();
         }
         pathTabShown_ = pathActive;
@@ -121,6 +127,12 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
         const std::string err = saveLayoutPrefs(layoutFile_, prefs_);
         if (!err.empty()) state.setStatus("could not remember the layout: " + err, true);
     }
+}
+
+// One line: a message longer than the window's width ends in "..." and shows whole on hover.
+void EditorLayout::statusLine(EditorState& state, const StatusMessage& m) {
+    textEllipsized(m.error ? ImVec4(1.0f, 0.45f, 0.45f, 1) : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), m.text);
+    state.recordControl("status line");
 }
 
 float EditorLayout::splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released) {

@@ -1,6 +1,6 @@
 #pragma once
 // Where the editor's panels go: the viewport in the centre, the timeline and status line below
-// it, the Model panel, latent map and IK readout / Path tabs on the right, and the two splitters
+// it, the Model panel, latent map and IK readout / Path / Model details tabs on the right, and the two splitters
 // between them (their positions remembered in LayoutPrefs, layout_store.h). Sizes are pixels at
 // scale 1 times the monitor's content scale.
 #include <string>
@@ -28,13 +28,15 @@ public:
 private:
     void panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
                 int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
+    static void statusLine(EditorState& state, const StatusMessage& message);
     // A draggable strip between panels; returns the mouse's move along it this frame.
     float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
 
     float scale_;
     std::string layoutFile_;
-    LayoutPrefs prefs_;  // the splitters, as the user left them
-    bool pathTabShown_ = false;
+    LayoutPrefs prefs_;             // the splitters, as the user left them
+    bool pathTabShown_ = false;     // a path was edited on the last frame
+    bool pathTabSelected_ = false;  // the Path tab was in front on the last frame
     float leftW_ = 0.0f;
 };
 

@@ -8,6 +8,7 @@
 #include "ui/actions/editor_actions.h"
 #include "ui/actions/editor_commands.h"
 #include "ui/shell/editor_state.h"
+#include "ui/widgets/widgets.h"
 #include "ui/windows/joint_rotation_window.h"
 
 namespace mgp::ui {
@@ -29,7 +30,7 @@ void fileMenu(EditorCommands& app, const ActionTable& t, bool escape) {
             const std::string label =
                 std::filesystem::path(r.path).filename().string() + "  (" + recentKindName(r.kind) + ")";
             if (ImGui::MenuItem(label.c_str())) app.openRecent(r.path);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.path.c_str());
+            if (ImGui::IsItemHovered()) tooltip("%s", r.path.c_str());
         }
         ImGui::EndMenu();
     }

@@ -10,6 +10,7 @@
 #include "ui/input/input_state.h"
 #include "ui/panels/model_panel.h"
 #include "ui/shell/editor_state.h"
+#include "ui/widgets/widgets.h"
 #include "ui/windows/file_dialog.h"
 
 namespace mgp::ui {
@@ -186,9 +187,9 @@ void TrainClipsWindow::drawCandidates(EditorCommands& app, float scale) {
         s.recordControl("train clips: " + c.name);
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
             if (!c.usable)
-                ImGui::SetTooltip("%s", c.reason.c_str());
+                tooltip("%s", c.reason.c_str());
             else if (!c.path.empty())
-                ImGui::SetTooltip("%s", c.path.c_str());
+                tooltip("%s", c.path.c_str());
         }
         const Clip* clip = clipOf(i, app);
         ImGui::SameLine(260.0f * scale);
@@ -232,8 +233,7 @@ void TrainClipsWindow::drawFrameSelection(float scale) {
     selection_.first = std::max(selection_.first, 1);
     selection_.last = std::max(selection_.last, 0);
     selection_.step = std::max(selection_.step, 1);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Frames from..to of each clip (counted from 1 within it), then every step-th");
+    if (ImGui::IsItemHovered()) tooltip("Frames from..to of each clip (counted from 1 within it), then every step-th");
 }
 
 int TrainClipsWindow::drawSummary(const EditorState& s, float scale) const {
@@ -287,7 +287,7 @@ void TrainClipsWindow::draw(EditorCommands& app) {
     ImGui::EndDisabled();
     s.recordControl("train clips: Train");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && !canTrain)
-        ImGui::SetTooltip("%s", busy ? "a training run is already in progress" : "expected at least 3 training frames");
+        tooltip("%s", busy ? "a training run is already in progress" : "expected at least 3 training frames");
     ImGui::SameLine();
     const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f * scale, 0));
     s.recordControl("train clips: Cancel");
