@@ -34,10 +34,10 @@ std::vector<std::string> Harness::play(const ui::GuiScript& script) {
     return player.errors();
 }
 
-void Harness::restartApp(ui::EditorOptions options) {
+void Harness::restartApp(ui::EditorOptions options, bool editorFont) {
     app.reset();
     input = ui::InputState{};
-    options.builtinFont = true;  // no dependence on system fonts
+    options.builtinFont = !editorFont;
     app = std::make_unique<ui::EditorApp>(options);
 }
 

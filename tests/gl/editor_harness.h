@@ -27,7 +27,9 @@ struct Harness {
     // script's errors.
     std::vector<std::string> play(const ui::GuiScript& script);
     // A second editor on the same context (e.g. "after a restart"); the first one is destroyed.
-    void restartApp(ui::EditorOptions options = {});
+    // It draws with ImGui's built-in font (no dependence on system fonts) unless `editorFont`:
+    // then with the editor's own, DejaVu Sans, as a user sees it (layout tests).
+    void restartApp(ui::EditorOptions options = {}, bool editorFont = false);
 };
 
 // Presses and releases key `k` (with modifiers `mods` held) within one frame, as `xdotool key`

@@ -503,8 +503,9 @@ void drawIkReadout(EditorState& s) {
     // numbers behind it in the tooltip.
     if (const std::optional<ShownVerdict> shown = r.learned ? s.doc.shownPoseVerdict() : std::nullopt) {
         const AdmissionVerdict* v = &shown->own;
-        ImGui::TextWrapped("this pose is %s, %s", judgementWords(shown->shown().judgement),
-                           v->admitted ? "the model learns from it" : "kept as an edit only");
+        // One line: the verdict and what it means for the model (the numbers in the tooltip).
+        ImGui::TextWrapped("pose: %s; %s", judgementWords(shown->shown().judgement),
+                           v->admitted ? "the model learns it" : "an edit only");
         bool hovered = ImGui::IsItemHovered();
         if (shown->steadied) {
             ImGui::TextDisabled("like frame %d; alone: %s", shown->steadiedFrame + 1, judgementWords(v->judgement));

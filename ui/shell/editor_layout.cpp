@@ -24,7 +24,13 @@ void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPa
     const float menuH = ImGui::GetFrameHeight();
     // Sizes in pixels at scale 1; a HiDPI monitor's content scale multiplies them (and the fonts).
     const float k = scale_;
-    const float timelineH = 104.0f * k;
+    // The timeline: its title, the transport row, a track at least 24 px tall and the status line,
+    // in whatever font the editor has (DejaVu Sans is taller than the built-in one).
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float timelineNeed = ImGui::GetFrameHeight() + 2.0f * st.WindowPadding.y +
+                               ImGui::GetFrameHeightWithSpacing() + 26.0f * k + ImGui::GetTextLineHeightWithSpacing() +
+                               st.ItemSpacing.y;
+    const float timelineH = std::max(104.0f * k, timelineNeed);
     // The right column: 380 px wide with fixed panel heights from 1280×800 up; in a smaller window
     // narrower (30 % of the width, at least 290 px) with the heights shared out so every panel
     // keeps its main controls in view down to 1024×600.
@@ -45,7 +51,7 @@ void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPa
         rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
     float timelineFinal = timelineH;
     if (prefs_.timelineHeight > 0.0f)
-        timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(70.0f * k, float(h) * 0.2f), float(h) * 0.5f);
+        timelineFinal = std::clamp(prefs_.timelineHeight * k, std::min(timelineNeed, float(h) * 0.2f), float(h) * 0.5f);
     panels(state, viewport, latent, timeline, w, h, menuH, rightW, timelineFinal, modelH, latentH);
 }
 

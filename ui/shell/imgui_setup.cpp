@@ -11,7 +11,6 @@
 namespace mgp::ui {
 
 namespace {
-const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 void applyStyle() {
     ImGui::StyleColorsDark();
@@ -70,8 +69,8 @@ void createImGuiContext(float scale, bool builtinFont) {
     // arrows, and maths (≥ ≤ √ ²); DejaVu Sans has them all.
     static const ImWchar kGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070,
                                       0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
-    if (!builtinFont && std::filesystem::exists(kFontPath, ec))
-        io.Fonts->AddFontFromFileTTF(kFontPath, std::round(15.0f * scale), nullptr, kGlyphs);
+    if (!builtinFont && std::filesystem::exists(kEditorFontPath, ec))
+        io.Fonts->AddFontFromFileTTF(kEditorFontPath, std::round(15.0f * scale), nullptr, kGlyphs);
     else
         io.FontGlobalScale = scale;  // the built-in bitmap font only comes in one size
     applyStyle();

@@ -7,6 +7,8 @@
 namespace mgp::ui {
 
 void createImGuiContext(float scale, bool builtinFont);
+// Where the editor's font is looked for (fonts-dejavu-core).
+inline constexpr const char* kEditorFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 // "" when libGL.so.1 opens, else one line saying it is missing and why: Dear ImGui's OpenGL renderer
 // loads it by name, which a machine with EGL but no GLX library lacks. Asked before the renderer
