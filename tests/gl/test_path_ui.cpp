@@ -334,3 +334,41 @@ TEST_CASE("gui path: key handles stay at least 12 px across when the camera move
         CHECK(s.hoveredKey == 3);
     }
 }
+
+TEST_CASE("gui path: keys stacked under a planted foot, the one picked in the list is the one the mouse drags") {
+    auto h = makeHarness(false);
+    if (!h) return;
+    beginFootPath(*h, Effector::kRFoot);
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    // The right foot is planted over frames 89-131: keys 3 and 4 (frames 117, 131) lie within a
+    // centimetre or two of each other, under the foot's handle.
+    float x3 = 0, y3 = 0, x4 = 0, y4 = 0;
+    REQUIRE(ui::pathKeyWindowPosition(s, 2, x3, y3));
+    REQUIRE(ui::pathKeyWindowPosition(s, 3, x4, y4));
+    CHECK(std::hypot(x3 - x4, y3 - y4) < 6.0f);
+    h->input.mouseX = x3;
+    h->input.mouseY = y3;
+    h->frame(2);
+    CHECK(s.hoveredKey != 2);  // the handle or the key nearest in time wins without a pick
+    // Picked in the list (the Path tab's "#" column), key 3 is the one under the mouse there...
+    s.selectedKey = 2;
+    h->frame(2);
+    REQUIRE(s.hoveredKey == 2);
+    CHECK(s.hoveredHandle == -1);
+    // ... and a drag moves it, not key 4 nor the foot.
+    const Eigen::Vector3d before3 = doc.paths().edit()->keyOffsetsCm[2], before4 = doc.paths().edit()->keyOffsetsCm[3];
+    h->input.mouseDown[0] = true;
+    h->frame(2);
+    for (int i = 0; i < 4; ++i) {
+        h->input.mouseY -= 8.0f;
+        h->frame();
+    }
+    h->input.mouseDown[0] = false;
+    h->frame(2);
+    CHECK(doc.paths().edit()->keyOffsetsCm[2].y() - before3.y() > 5.0);
+    CHECK((doc.paths().edit()->keyOffsetsCm[3] - before4).norm() < 1e-9);
+    CHECK_FALSE(doc.dragging());
+    CHECK(doc.edits().empty());
+    doc.waitIdle();
+}

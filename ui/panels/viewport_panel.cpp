@@ -195,6 +195,16 @@ void ViewportPanel::updateHover(EditorState& s, const Pointer& p, const Pickable
     // The gizmo's rings are drawn over everything, so they win over handles and keys.
     if (hovered && picks.gizmo.joint >= 0)
         s.gizmoRing = render::pickGizmoRing(picks.gizmo, s.camera, p.mx, p.my, width_, height_);
+    if (hovered && s.gizmoRing < 0 && s.selectedKey >= 0) {
+        // The key picked in the Path tab's list comes first where it lies under the mouse: keys of a
+        // planted foot coincide with each other and with the foot's handle, and the list is how
+        // the animator says which one to drag.
+        for (const render::Handle& key : keys)
+            if (key.id == s.selectedKey &&
+                render::pickHandleAtPixel({key}, s.camera, p.mx, p.my, width_, height_, 2.5f) == 0)
+                s.hoveredKey = key.id;
+        if (s.hoveredKey >= 0) return;
+    }
     if (hovered && s.gizmoRing < 0) {
         // Effector handles first: a key lying on a handle must not hide it.
         const int i = render::pickHandleAtPixel(handles, s.camera, p.mx, p.my, width_, height_, 2.5f);
