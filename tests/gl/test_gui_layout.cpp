@@ -264,6 +264,11 @@ TEST_CASE("gui layout: with a path edited and regenerated, its span report and e
     s.doc.setFrame(100);
     REQUIRE(s.doc.beginPathEdit(Effector::kRFoot) == "");
     REQUIRE(s.doc.paths().setKeyOffset(1, Eigen::Vector3d(0.0, 15.0, 0.0)) == "");
+    // No report before the first regeneration.
+    s.controls.clear();
+    frames(*h, 1280, 800, 3);
+    CHECK(s.controls.count("key table") == 1);
+    CHECK(s.controls.count("span report") == 0);
     REQUIRE(s.doc.startRegenerate() == "");
     s.doc.waitIdle();
     frames(*h, 1280, 800, 2);
