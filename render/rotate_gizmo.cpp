@@ -22,7 +22,8 @@ float pixelSegmentDistance(const glm::vec2& p, const glm::vec2& a, const glm::ve
 
 }  // namespace
 
-RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm) {
+RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm,
+                        const glm::vec3* eyeCm) {
     RotateGizmo g;
     if (joint < 0 || joint >= skeleton.jointCount()) return g;
     const Joint& jt = skeleton.joints[joint];
@@ -31,21 +32,25 @@ RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkStat
     g.pivotCm = toGlm(fk.jointCm[joint]);
     g.boneEndCm = toGlm(boneEndCm(skeleton, fk, joint));
     g.radiusCm = radiusCm;
-    for (int a = 0; a < 3; ++a) {
-        if (!jt.dof[a]) continue;
+    // A ring of `radius` round the pivot in the plane normal to `axisWorld`.
+    auto ringAbout = [&](int axis, const glm::vec3& axisWorld, float radius) {
         GizmoRing ring;
-        ring.axis = a;
-        ring.axisWorld = glm::normalize(toGlm(dofWorldAxis(skeleton, fk, pose, joint, a)));
+        ring.axis = axis;
+        ring.axisWorld = axisWorld;
         // Two unit vectors spanning the ring's plane.
         const glm::vec3 helper = std::abs(ring.axisWorld.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
         const glm::vec3 u = glm::normalize(glm::cross(ring.axisWorld, helper));
         const glm::vec3 v = glm::cross(ring.axisWorld, u);
         for (int k = 0; k <= kRingSegments; ++k) {
             const float t = 6.28318530718f * static_cast<float>(k % kRingSegments) / kRingSegments;
-            ring.pointsCm.push_back(g.pivotCm + radiusCm * (std::cos(t) * u + std::sin(t) * v));
+            ring.pointsCm.push_back(g.pivotCm + radius * (std::cos(t) * u + std::sin(t) * v));
         }
         g.rings.push_back(std::move(ring));
-    }
+    };
+    for (int a = 0; a < 3; ++a)
+        if (jt.dof[a]) ringAbout(a, glm::normalize(toGlm(dofWorldAxis(skeleton, fk, pose, joint, a))), radiusCm);
+    if (eyeCm && jt.dof[0] && jt.dof[1] && jt.dof[2] && glm::length(*eyeCm - g.pivotCm) > 1e-3f)
+        ringAbout(kViewRing, glm::normalize(*eyeCm - g.pivotCm), radiusCm * 1.25f);
     return g;
 }
 
@@ -53,7 +58,8 @@ glm::vec3 gizmoAxisColour(int axis) {
     switch (axis) {
         case 0: return {0.92f, 0.25f, 0.25f};
         case 1: return {0.30f, 0.85f, 0.30f};
-        default: return {0.25f, 0.45f, 0.98f};
+        case 2: return {0.25f, 0.45f, 0.98f};
+        default: return {0.86f, 0.87f, 0.90f};
     }
 }
 

@@ -4,7 +4,9 @@
 // orientation of Maya's rotate tool: each ring turns exactly one Euler channel of the joint, so a
 // one-DOF knee shows one ring and no drag asks for an axis the joint does not have. Rings are red,
 // green and blue for the x, y and z channels and drawn over the figure; the joint's bone is
-// highlighted. Plain data and screen maths, no GL.
+// highlighted. A joint that animates all three axes also gets a white view ring, larger, facing
+// the camera: it turns the joint about the line of sight, as Blender's and Maya's outer ring does.
+// Plain data and screen maths, no GL.
 #include <vector>
 
 #include "render/camera.h"
@@ -14,8 +16,10 @@
 
 namespace mgp::render {
 
+constexpr int kViewRing = 3;  // GizmoRing::axis of the view ring
+
 struct GizmoRing {
-    int axis = 0;                     // the joint's DOF: 0 x, 1 y, 2 z
+    int axis = 0;                     // the joint's DOF: 0 x, 1 y, 2 z; or kViewRing
     glm::vec3 axisWorld{0.0f};        // unit
     std::vector<glm::vec3> pointsCm;  // closed: the last point is the first
 };
@@ -25,13 +29,15 @@ struct RotateGizmo {
     glm::vec3 pivotCm{0.0f};
     glm::vec3 boneEndCm{0.0f};
     float radiusCm = 15.0f;
-    std::vector<GizmoRing> rings;  // one per animated DOF, in x, y, z order
+    std::vector<GizmoRing> rings;  // one per animated DOF, in x, y, z order, then the view ring
 };
 
 // The gizmo of `joint` in `pose` (`fk` its forward kinematics) with rings of `radiusCm` (-1 joints
-// and joints without rotation DOFs give an empty gizmo).
-RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm);
-glm::vec3 gizmoAxisColour(int axis);
+// and joints without rotation DOFs give an empty gizmo). With `eyeCm` (the camera's eye) a joint
+// that animates x, y and z also gets the view ring, 1.25 times as large, its axis towards the eye.
+RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm,
+                        const glm::vec3* eyeCm = nullptr);
+glm::vec3 gizmoAxisColour(int axis);  // red, green, blue; the view ring light grey
 // Adds the rings (the hovered or dragged one, by DOF axis, brighter and thicker; -1 none) and the
 // highlighted bone to the scene, drawn over everything else.
 void addRotateGizmo(Scene& scene, const RotateGizmo& gizmo, int highlightedAxis);

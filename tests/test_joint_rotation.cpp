@@ -3,11 +3,15 @@
 // the plain rotation, one undo step each.
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "central_difference.h"
 #include "document_helpers.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "ik/constrained_ik.h"
+#include "io/clip_loader.h"
+#include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_mirror.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
@@ -268,4 +272,32 @@ TEST_CASE(
         CHECK(worst <= 1.0);
         REQUIRE(doc.undo().empty());
     }
+}
+
+TEST_CASE("rotate joint about a world axis (the gizmo's view ring): the joint's frame turns by exactly that rotation") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const int femur = sk.findBone("rfemur"), tibia = sk.findBone("rtibia");
+    REQUIRE(femur >= 0);
+    REQUIRE(tibia >= 0);
+    const Pose& pose = clip.frames[60];
+    FkState before, after;
+    forwardKinematics(sk, pose, before);
+    const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 0.8, -0.5).normalized();
+    for (const double degrees : {2.0, 25.0, -70.0}) {
+        CAPTURE(degrees);
+        const std::optional<Eigen::Vector3d> angles = anglesTurnedAboutWorldAxis(sk, pose, femur, axis, degrees);
+        REQUIRE(angles.has_value());
+        forwardKinematics(sk, rotateJoint(sk, pose, femur, *angles), after);
+        const Eigen::Matrix3d R = Eigen::AngleAxisd(degrees * kDegToRad, axis).toRotationMatrix();
+        CHECK((after.global[femur] - R * before.global[femur]).cwiseAbs().maxCoeff() < 1e-9);
+        // The subtree turns about the hip with it; the rest of the body stays.
+        const Eigen::Vector3d hip = before.jointCm[femur];
+        CHECK((after.jointCm[tibia] - (hip + R * (before.jointCm[tibia] - hip))).norm() < 1e-9);
+        CHECK((after.jointCm[0] - before.jointCm[0]).norm() == 0.0);
+        // The Euler triple nearest the old one: a small turn changes each angle a little.
+        if (degrees == 2.0) CHECK((*angles - pose.anglesDeg[femur]).cwiseAbs().maxCoeff() < 5.0);
+    }
+    // A knee animates one axis only: a turn about an arbitrary axis is not one of its poses.
+    CHECK_FALSE(anglesTurnedAboutWorldAxis(sk, pose, tibia, axis, 10.0).has_value());
 }

@@ -1,5 +1,10 @@
 #include "edit/joint_rotation.h"
 
+#include <Eigen/Geometry>
+
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
+
 namespace mgp {
 
 Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg) {
@@ -7,6 +12,29 @@ Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Ei
     for (int a = 0; a < 3; ++a)
         if (skeleton.joints[joint].dof[a]) out.anglesDeg[joint][a] = anglesDeg[a];
     return out;
+}
+
+std::optional<Eigen::Vector3d> anglesTurnedAboutWorldAxis(const Skeleton& skeleton, const Pose& pose, int joint,
+                                                          const Eigen::Vector3d& axisWorld, double degrees) {
+    if (joint < 0 || joint >= skeleton.jointCount() || axisWorld.norm() < 1e-12) return std::nullopt;
+    const Joint& jt = skeleton.joints[joint];
+    if (!(jt.dof[0] && jt.dof[1] && jt.dof[2])) return std::nullopt;
+    FkState fk;
+    forwardKinematics(skeleton, pose, fk);
+    // G = P·E·Cᵀ with P the DOF axes' base frame; turning G by R in the world gives E' = Pᵀ·R·P·E.
+    const Eigen::Matrix3d& P = fk.parentFrame[joint];
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(degrees * kDegToRad, axisWorld.normalized()).toRotationMatrix();
+    const Eigen::Matrix3d turned = P.transpose() * R * P * eulerMatrix(pose.anglesDeg[joint], jt.order);
+    // Of the two Euler triples of that rotation, the one nearest the joint's angles, each angle
+    // within half a turn of its old value (no jump by 360° in the middle of a drag).
+    const Eigen::Vector3d& old = pose.anglesDeg[joint];
+    auto near = [&](Eigen::Vector3d a) {
+        for (int k = 0; k < 3; ++k) a[k] = wrapNear(a[k], old[k]);
+        return a;
+    };
+    const Eigen::Vector3d a = near(eulerFromMatrix(turned, jt.order));
+    const Eigen::Vector3d b = near(eulerAlternative(a, jt.order));
+    return (a - old).squaredNorm() <= (b - old).squaredNorm() ? a : b;
 }
 
 std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg) {

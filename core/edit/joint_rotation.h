@@ -9,6 +9,7 @@
 //                  contact held where they are on the frame (ConstrainedIkSolver with held DOFs),
 //                  warm-started at the latent point that best explains the rotated pose.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 #include "edit/editor_document.h"
@@ -31,6 +32,12 @@ struct JointRotationResult {
 
 // `pose` with joint's animated angles set to anglesDeg (the others untouched).
 Pose rotateJoint(const Skeleton& skeleton, const Pose& pose, int joint, const Eigen::Vector3d& anglesDeg);
+// The angles of `joint` that turn its frame (and its subtree) by `degrees` about the world axis
+// `axisWorld`, right-handed, the rest of the pose as it is: a rotate gizmo's view ring. Of the two
+// Euler triples of the turned rotation, the nearest to the joint's angles. Only for a joint that
+// animates all three axes (a turn about an arbitrary axis needs them); nullopt otherwise.
+std::optional<Eigen::Vector3d> anglesTurnedAboutWorldAxis(const Skeleton& skeleton, const Pose& pose, int joint,
+                                                          const Eigen::Vector3d& axisWorld, double degrees);
 // The held DOFs of a rotation: one per axis the joint animates.
 std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen::Vector3d& anglesDeg);
 // What a rotation of `joint` with the prior holds on the current frame, at the current positions:

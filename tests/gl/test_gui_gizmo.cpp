@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "editor_harness.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/rotation.h"
@@ -124,8 +126,9 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
     h->frame(3);
     REQUIRE(s.gizmoJoint == femur);
     const render::RotateGizmo g = ui::viewportGizmo(s);
-    REQUIRE(g.rings.size() == 3);                             // rfemur animates rx ry rz
-    CHECK(h->app->viewport().lastScene().paths.size() == 4);  // the highlighted bone and three rings
+    REQUIRE(g.rings.size() == 4);  // rfemur animates rx ry rz: three rings and the view ring
+    CHECK(g.rings.back().axis == render::kViewRing);
+    CHECK(h->app->viewport().lastScene().paths.size() == 5);  // the highlighted bone and four rings
 
     int kneeChecks = 0;  // rings whose turn moves the knee visibly on screen
     for (int axis = 0; axis < 3; ++axis) {
@@ -198,6 +201,44 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
         CHECK(doc.history().undoCount() == undoBefore);
         CHECK_FALSE(doc.isEdited(61));
     }
+}
+
+TEST_CASE("gui gizmo: the view ring turns the joint about the line of sight by the mouse's sweep, one undo step") {
+    auto h = makeHarness(false, false);  // no model: the rotation is exactly the joint's
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(60);
+    const Skeleton& sk = doc.clip().skeleton;
+    const int femur = sk.findBone("rfemur");
+    REQUIRE(femur >= 0);
+    h->app->jointWindow().selectJoint(femur);
+    h->frame(3);
+    const render::RotateGizmo g = ui::viewportGizmo(s);
+    REQUIRE(g.rings.back().axis == render::kViewRing);
+    const glm::vec3 toEye = glm::normalize(s.camera.eye() - g.pivotCm);
+    CHECK(glm::dot(g.rings.back().axisWorld, toEye) > 0.9999f);  // it faces the camera
+    FkState before, after;
+    forwardKinematics(sk, doc.currentPose(), before);
+    const int undoBefore = doc.history().undoCount();
+    const RingGrip grip = gripOf(s, g, render::kViewRing);
+    const double seen = sweep(*h, grip, 30.0, false);
+    CHECK(std::abs(seen - 30.0) < 2.0);
+    forwardKinematics(sk, doc.currentPose(), after);
+    // The thigh's frame turned about the line of sight by the sweep: counter-clockwise on screen
+    // is a right-handed turn about the axis towards the viewer.
+    const Eigen::Matrix3d turn = after.global[femur] * before.global[femur].transpose();
+    const Eigen::AngleAxisd aa(turn);
+    const Eigen::Vector3d axis = aa.axis() * (aa.axis().dot(gizmoEigen(toEye)) < 0 ? -1.0 : 1.0);
+    const double degrees = aa.angle() * 180.0 / 3.14159265358979 * (aa.axis().dot(gizmoEigen(toEye)) < 0 ? -1.0 : 1.0);
+    INFO("turned " << degrees << " deg about " << axis.transpose() << "; the mouse swept " << seen);
+    CHECK(std::abs(degrees - seen) <= 0.5);
+    CHECK(axis.dot(gizmoEigen(toEye)) > 0.999);
+    CHECK((after.jointCm[0] - before.jointCm[0]).norm() == 0.0);  // the body stays
+    CHECK(doc.history().undoCount() == undoBefore + 1);
+    REQUIRE(h->app->runAction({"undo"}).empty());
+    forwardKinematics(sk, doc.currentPose(), after);
+    CHECK((after.global[femur] - before.global[femur]).cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("gui gizmo: a one-DOF knee shows one ring, and a click on the thigh's surface picks the thigh") {

@@ -382,12 +382,26 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     JointRotation rot;
     rot.joint = joint;
     rot.anglesDeg = ringStartAngles_;
-    rot.anglesDeg[ringAxis_] += delta;
+    const bool viewRing = ringAxis_ == render::kViewRing;
+    if (viewRing) {
+        // About the line of sight at the press (the ring's axis then); the document's pose is still
+        // the one the drag started from (the preview is separate).
+        const glm::vec3& a = ringGizmo_.rings.back().axisWorld;
+        const std::optional<Eigen::Vector3d> turned = anglesTurnedAboutWorldAxis(
+            doc.clip().skeleton, doc.currentPose(), joint, Eigen::Vector3d(a.x, a.y, a.z), delta);
+        if (turned) rot.anglesDeg = *turned;
+    } else {
+        rot.anglesDeg[ringAxis_] += delta;
+    }
     rot.followPrior = s.gizmoFollowPrior && doc.hasModel();
     const Joint& jt = doc.clip().skeleton.joints[joint];
     char text[96];
-    std::snprintf(text, sizeof text, "%s r%c %+.1f deg%s", jt.name.c_str(), "xyz"[ringAxis_], delta,
-                  snap ? " (5 deg steps)" : "");
+    std::snprintf(text, sizeof text, "%s %s %+.1f deg%s", jt.name.c_str(),
+                  viewRing ? "about the view"
+                           : (ringAxis_ == 0   ? "rx"
+                              : ringAxis_ == 1 ? "ry"
+                                               : "rz"),
+                  delta, snap ? " (5 deg steps)" : "");
     s.dragReadout = text;
     if (!released) {
         // Live preview: a short solve per move (the action solves fully on release).
@@ -567,8 +581,12 @@ void ViewportPanel::drawMouseHints(EditorState& s, float x0, float y0) const {
 void ViewportPanel::showHoverTooltips(const EditorState& s) const {
     if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 &&
         s.gizmoJoint < s.doc.clip().skeleton.jointCount())
-        tooltip("%s: r%c ring\nLMB drag to rotate, Ctrl for 5 deg steps",
-                s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), "xyz"[s.gizmoRing]);
+        tooltip("%s: %s\nLMB drag to rotate, Ctrl for 5 deg steps",
+                s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(),
+                s.gizmoRing == render::kViewRing ? "view ring (turns about the line of sight)"
+                : s.gizmoRing == 0               ? "rx ring"
+                : s.gizmoRing == 1               ? "ry ring"
+                                                 : "rz ring");
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         const bool held = s.doc.held(e);

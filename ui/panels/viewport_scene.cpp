@@ -108,7 +108,8 @@ render::RotateGizmo viewportGizmo(const EditorState& s) {
     forwardKinematics(doc.clip().skeleton, pose, fk);
     // Rings of the same size on screen at any zoom: kGizmoRadiusPx at the joint's distance.
     const float cmPerPixel = s.camera.cmPerPixel(toGlm(fk.jointCm[s.gizmoJoint]), s.viewportHeight);
-    return render::rotateGizmo(doc.clip().skeleton, pose, fk, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel);
+    const glm::vec3 eye = s.camera.eye();
+    return render::rotateGizmo(doc.clip().skeleton, pose, fk, s.gizmoJoint, kGizmoRadiusPx * cmPerPixel, &eye);
 }
 
 render::Scene ViewportPanel::buildScene(const EditorState& s) const {
