@@ -16,7 +16,8 @@
 
 namespace mgp::render {
 
-constexpr int kViewRing = 3;  // GizmoRing::axis of the view ring
+constexpr int kViewRing = 3;   // GizmoRing::axis of the view ring
+constexpr int kTrackball = 4;  // not a ring: the disc inside the view ring, free rotation
 
 struct GizmoRing {
     int axis = 0;                     // the joint's DOF: 0 x, 1 y, 2 z; or kViewRing
@@ -38,15 +39,24 @@ struct RotateGizmo {
 RotateGizmo rotateGizmo(const Skeleton& skeleton, const Pose& pose, const FkState& fk, int joint, float radiusCm,
                         const glm::vec3* eyeCm = nullptr);
 glm::vec3 gizmoAxisColour(int axis);  // red, green, blue; the view ring light grey
-// Adds the rings (the hovered or dragged one, by DOF axis, brighter and thicker; -1 none) and the
+// Adds the rings (the hovered or dragged one, by GizmoRing::axis, brighter and thicker; -1 none) and the
 // highlighted bone to the scene, drawn over everything else.
 void addRotateGizmo(Scene& scene, const RotateGizmo& gizmo, int highlightedAxis);
 
-// The DOF axis of the ring whose outline passes within `slackPx` of pixel (x, y) of a w×h viewport,
-// the nearest if several; -1 for none.
+// The GizmoRing::axis (a DOF, or kViewRing) of the ring whose outline passes within `slackPx` of pixel (x, y) of a w×h
+// viewport, the nearest if several; -1 for none.
 int pickGizmoRing(const RotateGizmo& gizmo, const OrbitCamera& camera, float x, float y, int w, int h,
                   float slackPx = 7.0f);
-// The rotation (degrees) about the ring of DOF `axis` that moving the mouse from (x0, y0) to
+// Whether pixel (x, y) lies inside the view ring's disc on screen (a trackball drag there turns the
+// joint freely); false for a gizmo without a view ring.
+bool insideTrackball(const RotateGizmo& gizmo, const OrbitCamera& camera, float x, float y, int w, int h);
+// The world rotation a trackball drag by (dx, dy) screen pixels makes: about the axis in the view
+// plane perpendicular to the motion, half a degree per pixel, so that the joint's side facing the
+// viewer follows the mouse.
+glm::mat3 trackballTurn(const OrbitCamera& camera, float dx, float dy);
+// What a ring is called in the editor's tooltips and readout: "rx ring" … "view ring", "free rotation".
+const char* gizmoRingName(int axis);
+// The rotation (degrees) about the ring `axis` (a DOF, or kViewRing) that moving the mouse from (x0, y0) to
 // (x1, y1) sweeps around the joint on screen: the angle between the two pixels as seen from the
 // projected pivot, positive counter-clockwise on screen when the axis points towards the camera
 // (a right-handed turn as the viewer sees it) and negated when it points away. One degree of

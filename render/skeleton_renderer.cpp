@@ -4,6 +4,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -334,6 +335,15 @@ struct Drawer {
     glm::vec4 current{1.0f};
     float emissive = 0.0f;
 
+    // The five batches, tubes first (the two tube batches are the first two).
+    std::array<const std::vector<Instance>*, 5> batches() const {
+        return {&tubes, &thinTubes, &balls, &smallBalls, &tinyBalls};
+    }
+    bool empty() const {
+        for (const std::vector<Instance>* b : batches())
+            if (!b->empty()) return false;
+        return true;
+    }
     void colour(const glm::vec3& c, float alpha = 1.0f, float emit = 0.0f) {
         current = glm::vec4(c, alpha);
         emissive = emit;
@@ -611,11 +621,13 @@ ScreenRect screenRectOf(const Drawer& d, const glm::mat4& viewProj, int width, i
             }
             const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) *
                                  glm::vec2(static_cast<float>(width), static_cast<float>(height));
-            lo = glm::min(lo, px);
-            hi = glm::max(hi, px);
+            // Within a few screens of the frame: a point just in front of the eye projects far off,
+            // and a float past INT_MAX would not convert.
+            lo = glm::min(lo, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
+            hi = glm::max(hi, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
         }
     };
-    for (const std::vector<Instance>* batch : {&d.tubes, &d.thinTubes, &d.balls, &d.smallBalls, &d.tinyBalls})
+    for (const std::vector<Instance>* batch : d.batches())
         for (const Instance& i : *batch) {
             cover(glm::vec3(i.a), i.a.w);
             if (batch == &d.tubes || batch == &d.thinTubes) cover(glm::vec3(i.b), i.b.w);
@@ -640,8 +652,7 @@ std::vector<unsigned char> overlayKey(const FrameView& view, int width, int heig
     append(&width, sizeof width);
     append(&height, sizeof height);
     for (const Drawer* d : {&paths, &ghosts})
-        for (const std::vector<Instance>* batch :
-             {&d->tubes, &d->thinTubes, &d->balls, &d->smallBalls, &d->tinyBalls}) {
+        for (const std::vector<Instance>* batch : d->batches()) {
             const std::size_t n = batch->size();
             append(&n, sizeof n);
             append(batch->data(), n * sizeof(Instance));
@@ -815,10 +826,7 @@ void SceneRenderer::Impl::drawStillOverlays(const Scene& scene, const RenderStyl
     for (const Path& p : scene.paths)
         if (p.stillOverlay && !p.onTop) addScenePath(paths, p, s);
     const bool anyGhost = addGhosts(ghosts, scene, s, GhostSet::kStillOverlays);
-    const auto none = [](const Drawer& d) {
-        return d.tubes.empty() && d.thinTubes.empty() && d.balls.empty() && d.smallBalls.empty() && d.tinyBalls.empty();
-    };
-    if (none(paths) && none(ghosts)) return;  // nothing still in this scene: the layer stays as it was
+    if (paths.empty() && ghosts.empty()) return;  // nothing still in this scene: the layer stays as it was
     std::vector<unsigned char> key = overlayKey(view, width, height, paths, ghosts);
     if (!stillOverlays->holds(key)) {
         ScreenRect rect = screenRectOf(paths, view.viewProj, width, height);

@@ -1,7 +1,7 @@
 #pragma once
 // Forward kinematics remembered per slot (e.g. a clip frame): the editor draws the same frames'
 // trails on every UI frame, and a pose changes far less often than the screen. A slot is computed
-// again only when its pose differs bit for bit from the one it was computed from.
+// again only when its pose is not identical (posesIdentical) to the one it was computed from.
 #include <unordered_map>
 
 #include "skeleton/forward_kinematics.h"

@@ -241,6 +241,60 @@ TEST_CASE("gui gizmo: the view ring turns the joint about the line of sight by t
     CHECK((after.global[femur] - before.global[femur]).cwiseAbs().maxCoeff() == 0.0);
 }
 
+TEST_CASE("gui gizmo: a drag inside the rings turns the joint freely, half a degree per pixel, one undo step") {
+    auto h = makeHarness(false, false);
+    if (!h) return;
+    ui::EditorState& s = h->app->state();
+    EditorDocument& doc = s.doc;
+    doc.setFrame(60);
+    const Skeleton& sk = doc.clip().skeleton;
+    const int femur = sk.findBone("rfemur");
+    REQUIRE(femur >= 0);
+    h->app->jointWindow().selectJoint(femur);
+    h->frame(3);
+    const render::RotateGizmo g = ui::viewportGizmo(s);
+    float px = 0, py = 0;
+    REQUIRE(ui::viewportWindowPosition(s, gizmoEigen(g.pivotCm), px, py));
+    // A pixel 78 px from the joint: outside the 70 px axis rings (by more than their 7 px pick
+    // slack), inside the view ring (87.5 px) by as much, and on no handle.
+    bool found = false;
+    for (int k = 0; k < 36 && !found; ++k) {
+        const double a = k * 10.0 * 3.14159265358979 / 180.0;
+        h->input.mouseX = static_cast<float>(px + 78.0 * std::cos(a));
+        h->input.mouseY = static_cast<float>(py - 78.0 * std::sin(a));
+        h->frame(2);
+        found = s.gizmoRing == render::kTrackball;
+    }
+    REQUIRE(found);
+    FkState before, after;
+    forwardKinematics(sk, doc.currentPose(), before);
+    const int undoBefore = doc.history().undoCount();
+    h->input.setButton(0, true);
+    h->frame(1);
+    for (int k = 0; k < 8; ++k) {  // 40 px to the right
+        h->input.mouseX += 5.0f;
+        h->frame(1);
+    }
+    h->input.setButton(0, false);
+    h->frame(3);
+    forwardKinematics(sk, doc.currentPose(), after);
+    // 40 px at half a degree a pixel: 20° about the camera's up axis (the thigh's side facing the
+    // viewer moves right with the mouse).
+    const Eigen::AngleAxisd aa(Eigen::Matrix3d(after.global[femur] * before.global[femur].transpose()));
+    const glm::mat4 view = s.camera.view();
+    const Eigen::Vector3d up(view[0][1], view[1][1], view[2][1]);
+    INFO("turned " << aa.angle() * 180.0 / 3.14159265358979 << " deg about " << aa.axis().transpose());
+    CHECK(std::abs(aa.angle() * 180.0 / 3.14159265358979 - 20.0) <= 0.5);
+    CHECK(aa.axis().dot(up.normalized()) > 0.999);
+    CHECK(doc.history().undoCount() == undoBefore + 1);
+    // A press there that does not move is a click: no rotation, no undo step.
+    h->input.setButton(0, true);
+    h->frame(2);
+    h->input.setButton(0, false);
+    h->frame(3);
+    CHECK(doc.history().undoCount() == undoBefore + 1);
+}
+
 TEST_CASE("gui gizmo: a one-DOF knee shows one ring, and a click on the thigh's surface picks the thigh") {
     auto h = makeHarness(false, false);
     if (!h) return;

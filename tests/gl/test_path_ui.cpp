@@ -352,7 +352,7 @@ TEST_CASE("gui path: keys stacked under a planted foot, the one picked in the li
     h->frame(2);
     CHECK(s.hoveredKey != 2);  // the handle or the key nearest in time wins without a pick
     // Picked in the list (the Path tab's "#" column), key 3 is the one under the mouse there...
-    s.selectedKey = 2;
+    s.selectedKey = s.listPickedKey = 2;
     h->frame(2);
     REQUIRE(s.hoveredKey == 2);
     CHECK(s.hoveredHandle == -1);
@@ -370,5 +370,15 @@ TEST_CASE("gui path: keys stacked under a planted foot, the one picked in the li
     CHECK((doc.paths().edit()->keyOffsetsCm[3] - before4).norm() < 1e-9);
     CHECK_FALSE(doc.dragging());
     CHECK(doc.edits().empty());
+    CHECK(s.listPickedKey == 2);  // dragging the picked key keeps the pick
+    // A press elsewhere in the viewport (an orbit) ends the pick: the foot's handle is its own again.
+    h->input.mouseX = 30.0f;
+    h->input.mouseY = 300.0f;
+    h->frame(2);
+    h->input.mouseDown[0] = true;
+    h->frame(2);
+    h->input.mouseDown[0] = false;
+    h->frame(2);
+    CHECK(s.listPickedKey == -1);
     doc.waitIdle();
 }

@@ -219,7 +219,7 @@ LatentMapPanel::MapLayout LatentMapPanel::layoutMap(const gp::GpModel& model,
     // caption in its tooltip), then the "x1" line, the clip legend and the time-path row below:
     // the panel's height goes to the map, which the right column is short of.
     const float below = m.lineH + 4.0f + float(m.legendRows) * (m.lineH + 4.0f) + ImGui::GetFrameHeightWithSpacing();
-    const float barRoom = 18.0f + kBarWidth + 6.0f + ImGui::CalcTextSize("0.0000").x;
+    const float barRoom = 18.0f + kBarWidth + 6.0f + ImGui::CalcTextSize("0.0e-00").x;
     // Whole pixels, so that the static layer's texels land on screen pixels one to one.
     m.side = std::floor(std::max(64.0f, std::min(m.avail.x - 16.0f - barRoom, m.avail.y - below - 2.0f)));
     m.cur = ImVec2(std::floor(ImGui::GetCursorScreenPos().x), std::floor(ImGui::GetCursorScreenPos().y));
@@ -354,7 +354,7 @@ float LatentMapPanel::drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, 
     if (model.latentDim() > 2)
         std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)",
                       latentMapBase(model)[2]);
-    if (ImGui::IsMouseHoveringRect(b0, ImVec2(b1.x + 6.0f + ImGui::CalcTextSize("0.0000").x, b1.y)))
+    if (ImGui::IsMouseHoveringRect(b0, ImVec2(b1.x + 6.0f + ImGui::CalcTextSize("0.0e-00").x, b1.y)))
         tooltip("%s: bright is confident", capText);
     return map.p1.y + map.lineH + 4.0f;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The Model panel (clip facts, model facts, training with progress/ETA/Cancel, open/save, the
-// adaptive update switch, the compare ghost), the model's details (a tab beside the IK readout) and
-// the IK readout (per-target residual in cm, reached or not, σ²(x), L_IK).
+// adaptive update switch), the model's details (a tab beside the IK readout: the compare ghost and
+// the model's numbers) and the IK readout (per-target residual in cm, reached or not, σ²(x), L_IK).
 #include "ui/shell/editor_state.h"
 
 namespace mgp::ui {

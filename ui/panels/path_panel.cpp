@@ -61,7 +61,7 @@ void keyTable(EditorState& s) {
         for (const MotionEditJob::KeyResult& r : doc.lastRegenerateKeys())
             if (r.frame == path.keyFrames[k] && !r.reached) missed = &r;
         if (missed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
-        if (ImGui::Selectable(label, s.selectedKey == k)) s.selectedKey = k;
+        if (ImGui::Selectable(label, s.selectedKey == k)) s.selectedKey = s.listPickedKey = k;
         if (missed) {
             ImGui::PopStyleColor();
             if (ImGui::IsItemHovered())
@@ -86,7 +86,7 @@ void keyTable(EditorState& s) {
         ImGui::TableNextColumn();
         if (ImGui::SmallButton("Go")) {
             doc.setFrame(doc.paths().edit()->keyFrames[k]);
-            s.selectedKey = k;
+            s.selectedKey = s.listPickedKey = k;
         }
         if (ImGui::IsItemHovered()) tooltip("Go to this key's frame");
         ImGui::TableNextColumn();
@@ -183,6 +183,7 @@ void drawPathPanel(EditorState& s) {
     }
     const auto& path = doc.paths().edit();
     if (!path || s.selectedKey >= static_cast<int>(path->keyFrames.size())) s.selectedKey = -1;
+    if (!path || s.listPickedKey >= static_cast<int>(path->keyFrames.size())) s.listPickedKey = -1;
 
     // Effector: the path's while one is edited, else the viewport's selection (right foot by default).
     const Effector current = path ? path->effector : s.selected.value_or(Effector::kRFoot);

@@ -4,6 +4,7 @@
 #include <GL/glext.h>
 #include <imgui.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "render/scene_builder.h"
 #include "skeleton/centre_of_mass.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/rotation.h"
 #include "ui/actions/shortcuts.h"
 #include "ui/widgets/widgets.h"
 #include "ui/windows/joint_rotation_window.h"
@@ -195,12 +197,12 @@ void ViewportPanel::updateHover(EditorState& s, const Pointer& p, const Pickable
     // The gizmo's rings are drawn over everything, so they win over handles and keys.
     if (hovered && picks.gizmo.joint >= 0)
         s.gizmoRing = render::pickGizmoRing(picks.gizmo, s.camera, p.mx, p.my, width_, height_);
-    if (hovered && s.gizmoRing < 0 && s.selectedKey >= 0) {
+    if (hovered && s.gizmoRing < 0 && s.listPickedKey >= 0) {
         // The key picked in the Path tab's list comes first where it lies under the mouse: keys of a
         // planted foot coincide with each other and with the foot's handle, and the list is how
         // the animator says which one to drag.
         for (const render::Handle& key : keys)
-            if (key.id == s.selectedKey &&
+            if (key.id == s.listPickedKey &&
                 render::pickHandleAtPixel({key}, s.camera, p.mx, p.my, width_, height_, 2.5f) == 0)
                 s.hoveredKey = key.id;
         if (s.hoveredKey >= 0) return;
@@ -211,6 +213,10 @@ void ViewportPanel::updateHover(EditorState& s, const Pointer& p, const Pickable
         if (i >= 0) s.hoveredHandle = handles[i].id;
         const int k = i >= 0 ? -1 : render::pickHandleAtPixel(keys, s.camera, p.mx, p.my, width_, height_, 2.5f);
         if (k >= 0) s.hoveredKey = keys[k].id;
+        // Inside the view ring, where no handle or key is, a drag is the free (trackball) rotation.
+        if (i < 0 && k < 0 && picks.gizmo.joint >= 0 &&
+            render::insideTrackball(picks.gizmo, s.camera, p.mx, p.my, width_, height_))
+            s.gizmoRing = render::kTrackball;
     }
 }
 
@@ -231,12 +237,17 @@ void ViewportPanel::pressMouse(EditorState& s, const Pointer& p, const render::R
 
 void ViewportPanel::pressLeft(EditorState& s, const Pointer& p, const render::RotateGizmo& gizmo) {
     EditorDocument& doc = s.doc;
+    // A press anywhere but on the key picked in the list ends that pick: the handle under it is
+    // the foot's again.
+    if (s.hoveredKey < 0 || s.hoveredKey != s.listPickedKey) s.listPickedKey = -1;
     if (s.gizmoRing >= 0) {
         mode_ = Mode::kRotateRing;
         ringGizmo_ = gizmo;
         ringAxis_ = s.gizmoRing;
         ringStartAngles_ = doc.currentPose().anglesDeg[gizmo.joint];
         ringSweepDeg_ = 0.0;
+        ringTurn_ = Eigen::Matrix3d::Identity();
+        ringTravelPx_ = 0.0f;
         ringFrame_ = doc.frame();
         ringUndoCount_ = doc.history().undoCount();
         lastX_ = p.mx;  // the sweep starts at the press, not where the mouse was a frame ago
@@ -375,20 +386,34 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
         mode_ = Mode::kNone;
         return;
     }
-    // Summed frame by frame, so that a drag once round the joint is a whole turn.
-    ringSweepDeg_ += render::gizmoSweepDeg(ringGizmo_, ringAxis_, s.camera, lastX_, lastY_, mx, my, width_, height_);
+    const bool viewRing = ringAxis_ == render::kViewRing, trackball = ringAxis_ == render::kTrackball;
+    if (trackball) {
+        // The trackball's turns compose; its angle is the composed turn's.
+        const glm::mat3 step = render::trackballTurn(s.camera, mx - lastX_, my - lastY_);
+        Eigen::Matrix3d inc;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) inc(r, c) = step[c][r];
+        ringTurn_ = inc * ringTurn_;
+        ringTravelPx_ += std::hypot(mx - lastX_, my - lastY_);
+        ringSweepDeg_ = Eigen::AngleAxisd(ringTurn_).angle() * kRadToDeg;
+    } else {
+        // Summed frame by frame, so that a drag once round the joint is a whole turn.
+        ringSweepDeg_ +=
+            render::gizmoSweepDeg(ringGizmo_, ringAxis_, s.camera, lastX_, lastY_, mx, my, width_, height_);
+    }
     // Ctrl snaps the change (not the angle) to 5° steps, as Blender's and Maya's rotate tools do.
     const double delta = snap ? 5.0 * std::round(ringSweepDeg_ / 5.0) : ringSweepDeg_;
     JointRotation rot;
     rot.joint = joint;
     rot.anglesDeg = ringStartAngles_;
-    const bool viewRing = ringAxis_ == render::kViewRing;
-    if (viewRing) {
-        // About the line of sight at the press (the ring's axis then); the document's pose is still
-        // the one the drag started from (the preview is separate).
+    if (viewRing || trackball) {
+        // About the line of sight at the press (the view ring's axis then), or about the
+        // trackball's composed axis; the document's pose is still the one the drag started from
+        // (the preview is separate).
         const glm::vec3& a = ringGizmo_.rings.back().axisWorld;
-        const std::optional<Eigen::Vector3d> turned = anglesTurnedAboutWorldAxis(
-            doc.clip().skeleton, doc.currentPose(), joint, Eigen::Vector3d(a.x, a.y, a.z), delta);
+        const Eigen::Vector3d axis = trackball ? Eigen::AngleAxisd(ringTurn_).axis() : Eigen::Vector3d(a.x, a.y, a.z);
+        const std::optional<Eigen::Vector3d> turned =
+            anglesTurnedAboutWorldAxis(doc.clip().skeleton, doc.currentPose(), joint, axis, delta);
         if (turned) rot.anglesDeg = *turned;
     } else {
         rot.anglesDeg[ringAxis_] += delta;
@@ -396,12 +421,8 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     rot.followPrior = s.gizmoFollowPrior && doc.hasModel();
     const Joint& jt = doc.clip().skeleton.joints[joint];
     char text[96];
-    std::snprintf(text, sizeof text, "%s %s %+.1f deg%s", jt.name.c_str(),
-                  viewRing ? "about the view"
-                           : (ringAxis_ == 0   ? "rx"
-                              : ringAxis_ == 1 ? "ry"
-                                               : "rz"),
-                  delta, snap ? " (5 deg steps)" : "");
+    std::snprintf(text, sizeof text, "%s %s %+.1f deg%s", jt.name.c_str(), render::gizmoRingName(ringAxis_), delta,
+                  snap ? " (5 deg steps)" : "");
     s.dragReadout = text;
     if (!released) {
         // Live preview: a short solve per move (the action solves fully on release).
@@ -415,6 +436,11 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     s.posePreview.reset();
     s.dragReadout.clear();
     mode_ = Mode::kNone;
+    // A press inside the rings that did not move is a click: it picks the bone there, as elsewhere.
+    if (trackball && ringTravelPx_ < 4.0f) {
+        if (jointPicking_) pickedJoint_ = pickJoint(s, mx, my);
+        return;
+    }
     if (delta == 0.0) return;
     std::vector<std::string> args = rotateJointAction(jt, rot.anglesDeg);
     const std::string action = args.front();
@@ -581,12 +607,11 @@ void ViewportPanel::drawMouseHints(EditorState& s, float x0, float y0) const {
 void ViewportPanel::showHoverTooltips(const EditorState& s) const {
     if (s.gizmoRing >= 0 && mode_ == Mode::kNone && s.gizmoJoint >= 0 &&
         s.gizmoJoint < s.doc.clip().skeleton.jointCount())
-        tooltip("%s: %s\nLMB drag to rotate, Ctrl for 5 deg steps",
-                s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(),
-                s.gizmoRing == render::kViewRing ? "view ring (turns about the line of sight)"
-                : s.gizmoRing == 0               ? "rx ring"
-                : s.gizmoRing == 1               ? "ry ring"
-                                                 : "rz ring");
+        tooltip("%s: %s%s\nLMB drag to rotate, Ctrl for 5 deg steps",
+                s.doc.clip().skeleton.joints[s.gizmoJoint].name.c_str(), render::gizmoRingName(s.gizmoRing),
+                s.gizmoRing == render::kTrackball  ? " (drag inside the rings)"
+                : s.gizmoRing == render::kViewRing ? " (turns about the line of sight)"
+                                                   : "");
     if (s.hoveredHandle >= 0 && mode_ == Mode::kNone) {
         const auto e = static_cast<Effector>(s.hoveredHandle);
         const bool held = s.doc.held(e);

@@ -84,13 +84,15 @@ private:
     int presentX_ = 0, presentY_ = 0, presentW_ = 0, presentH_ = 0;  // where draw() put the panel (0 wide: nowhere)
     static constexpr float kMovingScale = 0.7f;
     enum class Mode { kNone, kOrbit, kPan, kDragHandle, kDragKey, kRotateRing } mode_ = Mode::kNone;
-    // A kRotateRing drag: the gizmo as it was when the drag began, the ring's DOF axis, the
-    // joint's angles then, and the mouse sweep so far (degrees).
+    // A kRotateRing drag: the gizmo as it was when the drag began, the ring's DOF axis (or the
+    // view ring, or the trackball inside it), the joint's angles then, and the turn so far (degrees).
     render::RotateGizmo ringGizmo_;
     int ringAxis_ = -1;
     Eigen::Vector3d ringStartAngles_ = Eigen::Vector3d::Zero();
     double ringSweepDeg_ = 0.0;
-    int ringFrame_ = -1, ringUndoCount_ = 0;  // the frame and history the drag started on
+    Eigen::Matrix3d ringTurn_ = Eigen::Matrix3d::Identity();  // a trackball drag's turn so far (world)
+    float ringTravelPx_ = 0.0f;                               // ... and the mouse's path length
+    int ringFrame_ = -1, ringUndoCount_ = 0;                  // the frame and history the drag started on
     void rotateRing(EditorState& state, float mx, float my, bool snap, bool released);
     int dragKey_ = -1;                                              // the key of a kDragKey drag
     Eigen::Vector3d dragKeyStartOffset_ = Eigen::Vector3d::Zero();  // restored by Esc
@@ -127,7 +129,8 @@ std::optional<render::Path> editedPath(const EditorState& state);
 // Window pixel of path key `key` (0-based); false without a path edit, a bad key or off screen.
 bool pathKeyWindowPosition(const EditorState& state, int key, float& x, float& y);
 // The rotate gizmo of EditorState::gizmoJoint on the shown pose (a rotation's preview while one
-// is dragged), its rings kGizmoRadiusPx in radius on screen; an empty gizmo (joint −1) when none.
+// is dragged), its axis rings kGizmoRadiusPx in radius on screen (the view ring 1.25 times that);
+// an empty gizmo (joint −1) when none.
 constexpr float kGizmoRadiusPx = 70.0f;
 render::RotateGizmo viewportGizmo(const EditorState& state);
 

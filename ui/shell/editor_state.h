@@ -57,6 +57,9 @@ struct EditorState {
     // Path editing (path panel, viewport, timeline); keys are indices into doc.paths().edit()->keyFrames.
     int hoveredKey = -1;   // path key under the mouse in the viewport, -1 none
     int selectedKey = -1;  // path key last dragged or picked, -1 none
+    // The key picked in the Path tab's list: it comes first under the mouse in the viewport (keys
+    // of a planted foot coincide) until a press elsewhere in the viewport; -1 none.
+    int listPickedKey = -1;
     // Frames selected on the timeline by Shift+drag (0-based, first ≤ last): Fill between keys
     // fills every gap between keys inside it. A plain click on the timeline clears it.
     std::optional<std::pair<int, int>> timelineRange;
