@@ -45,8 +45,7 @@ void EditorLayout::draw(EditorState& state, ViewportPanel& viewport, LatentMapPa
     }
     // While the Path tab is in front its keys and span report need about 340 px: the latent map gives
     // up to 100 px to them (down to 180 px, a map of about 125 px).
-    if (pathTabSelected_ && state.doc.paths().edit())
-        latentH -= std::clamp(latentH - 180.0f * k, 0.0f, 100.0f * k);
+    if (pathTabSelected_ && state.doc.paths().edit()) latentH -= std::clamp(latentH - 180.0f * k, 0.0f, 100.0f * k);
     // The splitters' positions, as the user left them (scale-1 pixels), within sane bounds.
     if (prefs_.rightWidth > 0.0f)
         rightW = std::clamp(prefs_.rightWidth * k, std::min(240.0f * k, float(w) * 0.3f), float(w) * 0.6f);
