@@ -126,10 +126,7 @@ void timeSceneOnly(ui::EditorApp& app, UiBenchSamples& t) {
     so.onion = render::OnionSkin{2, 2, 10};
     so.trails = {render::TrailPart::kLFoot, render::TrailPart::kRFoot, render::TrailPart::kRHand};
     render::Scene overlays = render::buildClipScene(app.state().doc.clip(), so);
-    std::vector<render::Path> pieces;
-    for (const render::Path& p : overlays.paths)
-        for (render::Path& piece : render::splitForPosing(p)) pieces.push_back(std::move(piece));
-    overlays.paths = std::move(pieces);
+    overlays.paths = render::splitEachForPosing(overlays.paths);
     for (int i = 0; i < 60; ++i) {
         const bool with = i % 2 == 1;
         (with ? t.sceneOnlyOverlays : t.sceneOnly).push_back(secondsOf([&] {

@@ -154,6 +154,13 @@ std::vector<Path> splitForPosing(const Path& trail) {
     return pieces;
 }
 
+std::vector<Path> splitEachForPosing(const std::vector<Path>& paths) {
+    std::vector<Path> pieces;
+    for (const Path& p : paths)
+        for (Path& piece : splitForPosing(p)) pieces.push_back(std::move(piece));
+    return pieces;
+}
+
 std::vector<Path> differingParts(const Path& reference, const Path& other, float toleranceCm) {
     const std::size_t n = reference.pointsCm.size();
     if (other.pointsCm.size() != n) return {reference};

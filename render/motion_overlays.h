@@ -56,6 +56,8 @@ Path motionTrailFromFk(const Skeleton& skeleton, const std::function<const FkSta
 // point before the current one to the point after it, with the current mark. A trail without a
 // current point is one still piece.
 std::vector<Path> splitForPosing(const Path& trail);
+// Every path of `paths` cut so, in order (a path without a current point stays one still piece).
+std::vector<Path> splitEachForPosing(const std::vector<Path>& paths);
 
 // The stretches of `reference` that lie more than toleranceCm from `other` at the same index (each
 // with its neighbouring points, so that it joins the rest), one path per stretch; none where the

@@ -127,20 +127,13 @@ bool insideTrackball(const RotateGizmo& g, const OrbitCamera& camera, float x, f
     return glm::length(glm::vec2(x, y) - glm::vec2(pivot)) < 0.92f * radius;
 }
 
-glm::mat3 trackballTurn(const OrbitCamera& camera, float dx, float dy) {
+TrackballTurn trackballTurn(const OrbitCamera& camera, float dx, float dy) {
     const float pixels = std::sqrt(dx * dx + dy * dy);
-    if (pixels <= 0.0f) return glm::mat3(1.0f);
+    if (pixels <= 0.0f) return {};
     const glm::mat4 view = camera.view();
     const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
     // Screen y grows downwards: a drag right turns about up, a drag down about right.
-    const glm::vec3 axis = glm::normalize(dx * up + dy * right);
-    const float angle = glm::radians(0.5f * pixels);
-    const float c = std::cos(angle), s = std::sin(angle), t = 1.0f - c;
-    const glm::vec3& a = axis;
-    // Rodrigues' formula, column by column (glm is column-major).
-    return glm::mat3(t * a.x * a.x + c, t * a.x * a.y + s * a.z, t * a.x * a.z - s * a.y,  //
-                     t * a.x * a.y - s * a.z, t * a.y * a.y + c, t * a.y * a.z + s * a.x,  //
-                     t * a.x * a.z + s * a.y, t * a.y * a.z - s * a.x, t * a.z * a.z + c);
+    return {glm::normalize(dx * up + dy * right), 0.5f * pixels};
 }
 
 double gizmoSweepDeg(const RotateGizmo& g, int axis, const OrbitCamera& camera, float x0, float y0, float x1, float y1,

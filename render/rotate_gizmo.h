@@ -51,9 +51,13 @@ int pickGizmoRing(const RotateGizmo& gizmo, const OrbitCamera& camera, float x, 
 // joint freely); false for a gizmo without a view ring.
 bool insideTrackball(const RotateGizmo& gizmo, const OrbitCamera& camera, float x, float y, int w, int h);
 // The world rotation a trackball drag by (dx, dy) screen pixels makes: about the axis in the view
-// plane perpendicular to the motion, half a degree per pixel, so that the joint's side facing the
-// viewer follows the mouse.
-glm::mat3 trackballTurn(const OrbitCamera& camera, float dx, float dy);
+// plane perpendicular to the motion (unit), half a degree per pixel, so that the joint's side
+// facing the viewer follows the mouse. No motion: 0 degrees.
+struct TrackballTurn {
+    glm::vec3 axisWorld{0.0f, 1.0f, 0.0f};
+    float degrees = 0.0f;
+};
+TrackballTurn trackballTurn(const OrbitCamera& camera, float dx, float dy);
 // What a ring is called in the editor's tooltips and readout: "rx ring" … "view ring", "free rotation".
 const char* gizmoRingName(int axis);
 // The rotation (degrees) about the ring `axis` (a DOF, or kViewRing) that moving the mouse from (x0, y0) to

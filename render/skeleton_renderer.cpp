@@ -573,27 +573,24 @@ void addOpaqueSolids(Drawer& d, const Scene& scene, const RenderStyle& s, bool l
 
 enum class GhostSet { kAll, kStillOverlays, kOthers };
 
-// Collects the ghosts of `which` set, in the scene's order; whether there were any.
-bool addGhosts(Drawer& d, const Scene& scene, const RenderStyle& s, GhostSet which) {
-    bool anyGhost = false;
+// Collects the ghosts of `which` set, in the scene's order.
+void addGhosts(Drawer& d, const Scene& scene, const RenderStyle& s, GhostSet which) {
     for (const Figure& f : scene.figures) {
         if (!f.ghost || (which == GhostSet::kStillOverlays && !f.stillOverlay) ||
             (which == GhostSet::kOthers && f.stillOverlay))
             continue;
         d.colour(f.ghostTint, f.ghostAlpha, 0.1f);
         d.figure(f, s, true);
-        anyGhost = true;
     }
-    return anyGhost;
 }
 
 // Ghosts, all in one batch: a depth-only pass first, so that each pixel blends only the ghost
 // nearest to the eye there, once (onion skins draw several ghosts: two passes in all instead of
 // two per ghost). Colour blends as source-over, alpha as premultiplied (an overlay layer keeps it).
-void drawCollectedGhosts(Drawer& d, bool anyGhost) {
+void drawCollectedGhosts(Drawer& d) {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    if (anyGhost) {
+    if (!d.empty()) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         d.flush(true);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -825,7 +822,7 @@ void SceneRenderer::Impl::drawStillOverlays(const Scene& scene, const RenderStyl
     Drawer ghosts = paths;
     for (const Path& p : scene.paths)
         if (p.stillOverlay && !p.onTop) addScenePath(paths, p, s);
-    const bool anyGhost = addGhosts(ghosts, scene, s, GhostSet::kStillOverlays);
+    addGhosts(ghosts, scene, s, GhostSet::kStillOverlays);
     if (paths.empty() && ghosts.empty()) return;  // nothing still in this scene: the layer stays as it was
     std::vector<unsigned char> key = overlayKey(view, width, height, paths, ghosts);
     if (!stillOverlays->holds(key)) {
@@ -839,7 +836,7 @@ void SceneRenderer::Impl::drawStillOverlays(const Scene& scene, const RenderStyl
         stillOverlays->beginDraw(width, height);
         useLit(view);
         paths.flush();
-        drawCollectedGhosts(ghosts, anyGhost);
+        drawCollectedGhosts(ghosts);
         stillOverlays->endDraw(std::move(key), rect);
         glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
         glViewport(0, 0, width, height);
@@ -875,7 +872,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     // 5. The still overlays' layer, ghosts (blended), 6. handles, 6b. paths drawn on top.
     if (layered) r.drawStillOverlays(scene, s, view, width, height, targetFramebuffer);
     r.lit.use();  // the passes below draw solids again
-    drawCollectedGhosts(d, addGhosts(d, scene, s, layered ? GhostSet::kOthers : GhostSet::kAll));
+    addGhosts(d, scene, s, layered ? GhostSet::kOthers : GhostSet::kAll);
+    drawCollectedGhosts(d);
     drawEffectorHandles(d, scene, s);
     drawOnTopPaths(d, scene, s);
 

@@ -112,6 +112,19 @@ double kneeScreenDeg(const ui::EditorState& s, int femur, const RingGrip& g) {
     return std::atan2(-(y - g.pivotY), x - g.pivotX) * 180.0 / 3.14159265358979;
 }
 
+// Frame 60 of the walk with the Rotate joint window on the right thigh: its gizmo is up. Returns
+// the thigh's joint.
+int gizmoOnRightThigh(test::Harness& h) {
+    EditorDocument& doc = h.app->state().doc;
+    doc.setFrame(60);
+    const int femur = doc.clip().skeleton.findBone("rfemur");
+    REQUIRE(femur >= 0);
+    h.app->jointWindow().selectJoint(femur);
+    h.frame(3);
+    REQUIRE(h.app->state().gizmoJoint == femur);
+    return femur;
+}
+
 }  // namespace
 
 TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snaps to 5 degrees, one undo step") {
@@ -119,12 +132,7 @@ TEST_CASE("gui gizmo: a ring turns its one angle by the mouse's sweep, Ctrl snap
     if (!h) return;
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
-    doc.setFrame(60);
-    const int femur = doc.clip().skeleton.findBone("rfemur");
-    REQUIRE(femur >= 0);
-    h->app->jointWindow().selectJoint(femur);
-    h->frame(3);
-    REQUIRE(s.gizmoJoint == femur);
+    const int femur = gizmoOnRightThigh(*h);
     const render::RotateGizmo g = ui::viewportGizmo(s);
     REQUIRE(g.rings.size() == 4);  // rfemur animates rx ry rz: three rings and the view ring
     CHECK(g.rings.back().axis == render::kViewRing);
@@ -208,12 +216,8 @@ TEST_CASE("gui gizmo: the view ring turns the joint about the line of sight by t
     if (!h) return;
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
-    doc.setFrame(60);
     const Skeleton& sk = doc.clip().skeleton;
-    const int femur = sk.findBone("rfemur");
-    REQUIRE(femur >= 0);
-    h->app->jointWindow().selectJoint(femur);
-    h->frame(3);
+    const int femur = gizmoOnRightThigh(*h);
     const render::RotateGizmo g = ui::viewportGizmo(s);
     REQUIRE(g.rings.back().axis == render::kViewRing);
     const glm::vec3 toEye = glm::normalize(s.camera.eye() - g.pivotCm);
@@ -229,8 +233,10 @@ TEST_CASE("gui gizmo: the view ring turns the joint about the line of sight by t
     // is a right-handed turn about the axis towards the viewer.
     const Eigen::Matrix3d turn = after.global[femur] * before.global[femur].transpose();
     const Eigen::AngleAxisd aa(turn);
-    const Eigen::Vector3d axis = aa.axis() * (aa.axis().dot(gizmoEigen(toEye)) < 0 ? -1.0 : 1.0);
-    const double degrees = aa.angle() * 180.0 / 3.14159265358979 * (aa.axis().dot(gizmoEigen(toEye)) < 0 ? -1.0 : 1.0);
+    // The same turn written about the axis on the viewer's side of the joint.
+    const double side = aa.axis().dot(gizmoEigen(toEye)) < 0 ? -1.0 : 1.0;
+    const Eigen::Vector3d axis = side * aa.axis();
+    const double degrees = side * aa.angle() * 180.0 / 3.14159265358979;
     INFO("turned " << degrees << " deg about " << axis.transpose() << "; the mouse swept " << seen);
     CHECK(std::abs(degrees - seen) <= 0.5);
     CHECK(axis.dot(gizmoEigen(toEye)) > 0.999);
@@ -246,12 +252,8 @@ TEST_CASE("gui gizmo: a drag inside the rings turns the joint freely, half a deg
     if (!h) return;
     ui::EditorState& s = h->app->state();
     EditorDocument& doc = s.doc;
-    doc.setFrame(60);
     const Skeleton& sk = doc.clip().skeleton;
-    const int femur = sk.findBone("rfemur");
-    REQUIRE(femur >= 0);
-    h->app->jointWindow().selectJoint(femur);
-    h->frame(3);
+    const int femur = gizmoOnRightThigh(*h);
     const render::RotateGizmo g = ui::viewportGizmo(s);
     float px = 0, py = 0;
     REQUIRE(ui::viewportWindowPosition(s, gizmoEigen(g.pivotCm), px, py));

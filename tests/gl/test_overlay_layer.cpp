@@ -39,10 +39,7 @@ LayerScene walkWithOverlays() {
     opt.caption = false;
     LayerScene l;
     l.scene = buildClipScene(clip, opt);
-    std::vector<Path> paths;
-    for (const Path& p : l.scene.paths)
-        for (Path& piece : splitForPosing(p)) paths.push_back(std::move(piece));
-    l.scene.paths = std::move(paths);
+    l.scene.paths = splitEachForPosing(l.scene.paths);
     FkState fk;
     forwardKinematics(clip.skeleton, clip.frames[99], fk);
     l.camera = framedPresetCamera(CameraPreset::kThreeQuarter, l.scene, characterForward(clip.skeleton, fk),

@@ -452,16 +452,11 @@ void drawIkReadout(EditorState& s) {
     ImGui::SetNextItemWidth(sliderW);
     if (ImGui::SliderFloat("stiffness", &stiffness, 0.0f, 3.0f, "%.2f")) s.doc.setBodyStiffness(stiffness);
     s.recordControl("body stiffness");
-    if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(
+    if (ImGui::IsItemHovered())
+        tooltip(
             "How much the rest of the body keeps its pose while you drag a hand, foot or head: 1 moves "
             "the dragged limb, and the body only as much as the target needs; 0 lets the learned model "
             "move the whole body. Drags, their falloff and Regenerate use it.");
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
     drawHeldEffectors(s);
     const SolveReadout& r = s.doc.readout();
     if (!r.valid) {

@@ -389,11 +389,8 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
     const bool viewRing = ringAxis_ == render::kViewRing, trackball = ringAxis_ == render::kTrackball;
     if (trackball) {
         // The trackball's turns compose; its angle is the composed turn's.
-        const glm::mat3 step = render::trackballTurn(s.camera, mx - lastX_, my - lastY_);
-        Eigen::Matrix3d inc;
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) inc(r, c) = step[c][r];
-        ringTurn_ = inc * ringTurn_;
+        const render::TrackballTurn step = render::trackballTurn(s.camera, mx - lastX_, my - lastY_);
+        ringTurn_ = Eigen::AngleAxisd(step.degrees * kDegToRad, toEigen(step.axisWorld)).toRotationMatrix() * ringTurn_;
         ringTravelPx_ += std::hypot(mx - lastX_, my - lastY_);
         ringSweepDeg_ = Eigen::AngleAxisd(ringTurn_).angle() * kRadToDeg;
     } else {
@@ -410,8 +407,8 @@ void ViewportPanel::rotateRing(EditorState& s, float mx, float my, bool snap, bo
         // About the line of sight at the press (the view ring's axis then), or about the
         // trackball's composed axis; the document's pose is still the one the drag started from
         // (the preview is separate).
-        const glm::vec3& a = ringGizmo_.rings.back().axisWorld;
-        const Eigen::Vector3d axis = trackball ? Eigen::AngleAxisd(ringTurn_).axis() : Eigen::Vector3d(a.x, a.y, a.z);
+        const Eigen::Vector3d axis =
+            trackball ? Eigen::AngleAxisd(ringTurn_).axis() : toEigen(ringGizmo_.rings.back().axisWorld);
         const std::optional<Eigen::Vector3d> turned =
             anglesTurnedAboutWorldAxis(doc.clip().skeleton, doc.currentPose(), joint, axis, delta);
         if (turned) rot.anglesDeg = *turned;
