@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "util/cholesky_inverse.h"
+
 namespace mgp::gp {
 
 bool jitterCholesky(const Eigen::MatrixXd& K, Eigen::LLT<Eigen::MatrixXd>& llt, double& jitter) {
@@ -41,7 +43,7 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
     if (m == 0 || D == 0 || Yhat.rows() != m || !XI.allFinite()) return ev;
 
     GramParts& parts = ws.parts;
-    Eigen::MatrixXd &K = ws.K, &Linv = ws.Linv, &G = ws.G;
+    Eigen::MatrixXd &K = ws.K, &G = ws.G;
     kernel.parts(XI, parts);
     K.resize(m, m);
     K.noalias() = kernel.alpha() * parts.R;
@@ -76,12 +78,10 @@ GpEvaluation evaluateGp(const Kernel& kernel, const Eigen::MatrixXd& XI, const E
     if (!std::isfinite(value)) return ev;
 
     if (wantGradient) {
-        // K⁻¹ = L⁻ᵀ L⁻¹ (triangular inverse, then a triangular product).
-        Linv.setIdentity(m, m);
-        llt.matrixL().solveInPlace(Linv);
-        G.resize(m, m);
-        G.noalias() = Linv.transpose().triangularView<Eigen::Upper>() * Linv;  // K⁻¹
-        const Eigen::MatrixXd A = (G * Yhat) * ev.w.asDiagonal();
+        // K⁻¹ = L⁻ᵀ L⁻¹, lower triangle, from L in place (util/cholesky_inverse.h); K⁻¹Ŷ = L⁻ᵀ P.
+        G = L;
+        choleskyInverseInPlace(G, ws.scratch);
+        const Eigen::MatrixXd A = llt.matrixU().solve(P) * ev.w.asDiagonal();
         G *= 0.5 * static_cast<double>(D);
         G.selfadjointView<Eigen::Lower>().rankUpdate(A, -0.5);     // G = ½(D K⁻¹ − A Aᵀ), lower half
         G.triangularView<Eigen::StrictlyUpper>() = G.transpose();  // exactly symmetric for gradX

@@ -48,7 +48,7 @@ bool jitterCholesky(const Eigen::MatrixXd& K, Eigen::LLT<Eigen::MatrixXd>& llt, 
 // result does not depend on what the workspace held. One workspace per thread.
 struct GpWorkspace {
     GramParts parts;
-    Eigen::MatrixXd K, Linv, G;
+    Eigen::MatrixXd K, G, scratch;
     Eigen::LLT<Eigen::MatrixXd> llt;
     GradXScratch gradX;
 };

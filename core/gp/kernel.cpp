@@ -51,15 +51,6 @@ void directions(const Eigen::MatrixXd& X, Eigen::MatrixXd& phi, Eigen::VectorXd&
     }
 }
 
-double sqDist(const Eigen::MatrixXd& X, Eigen::Index i, Eigen::Index j) {
-    double s = 0.0;
-    for (Eigen::Index c = 0; c < X.cols(); ++c) {
-        const double t = X(i, c) - X(j, c);
-        s += t * t;
-    }
-    return s;
-}
-
 double sqDist(const Eigen::MatrixXd& X, Eigen::Index i, const Eigen::VectorXd& x) {
     double s = 0.0;
     for (Eigen::Index c = 0; c < X.cols(); ++c) {
@@ -78,8 +69,8 @@ GramParts Kernel::parts(const Eigen::MatrixXd& X) const {
 }
 
 void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
-    // Lower triangle with scalar std::exp (faster here than Eigen's vectorised exp on the full
-    // matrix), then mirrored, so every matrix is exactly symmetric.
+    // The lower triangle, a column at a time with Eigen's vectorised exp (a column's part below
+    // the diagonal is contiguous), then mirrored, so every matrix is exactly symmetric.
     const Eigen::Index m = X.rows();
     const double g = -0.5 * gamma_;
     p.r2.resize(m, m);
@@ -87,11 +78,11 @@ void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
     for (Eigen::Index j = 0; j < m; ++j) {
         p.r2(j, j) = 0.0;
         p.R(j, j) = 1.0;
-        for (Eigen::Index i = j + 1; i < m; ++i) {
-            const double r2 = sqDist(X, i, j);
-            p.r2(i, j) = r2;
-            p.R(i, j) = std::exp(g * r2);
-        }
+        const Eigen::Index below = m - j - 1;
+        auto r2 = p.r2.col(j).tail(below).array();
+        r2.setZero();
+        for (Eigen::Index c = 0; c < X.cols(); ++c) r2 += (X.col(c).tail(below).array() - X(j, c)).square();
+        p.R.col(j).tail(below).array() = (g * r2).exp();
     }
     p.r2.triangularView<Eigen::StrictlyUpper>() = p.r2.transpose();
     p.R.triangularView<Eigen::StrictlyUpper>() = p.R.transpose();
@@ -100,13 +91,12 @@ void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
         p.C.resize(m, m);
         p.E.resize(m, m);
         const Eigen::Index d = X.cols();
-        for (Eigen::Index j = 0; j < m; ++j)
-            for (Eigen::Index i = j; i < m; ++i) {
-                double c = 0.0;
-                for (Eigen::Index k = 0; k < d; ++k) c += p.phi(i, k) * p.phi(j, k);
-                p.C(i, j) = c;
-                p.E(i, j) = std::exp(c);
-            }
+        for (Eigen::Index j = 0; j < m; ++j) {
+            auto c = p.C.col(j).tail(m - j).array();
+            c.setZero();
+            for (Eigen::Index k = 0; k < d; ++k) c += p.phi.col(k).tail(m - j).array() * p.phi(j, k);
+            p.E.col(j).tail(m - j).array() = c.exp();
+        }
         p.C.triangularView<Eigen::StrictlyUpper>() = p.C.transpose();
         p.E.triangularView<Eigen::StrictlyUpper>() = p.E.transpose();
     }

@@ -52,29 +52,22 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     const double n = std::sqrt(n2);
     ws.phiX = x / n;
     const double phi2 = ws.phiX.squaredNorm();
-    // One pass over the active points: k_j and row j of ∂k/∂x (docs/maths.md §3).
-    for (Eigen::Index j = 0; j < m; ++j) {
-        double r2 = 0.0;
-        for (Eigen::Index c = 0; c < d; ++c) {
-            const double diff = x[c] - XI_(j, c);
-            r2 += diff * diff;
-        }
-        const double R = alpha * std::exp(-0.5 * gamma * r2);
-        double kj = R, C = 0.0, E = 0.0;
-        if (fas) {
-            for (Eigen::Index c = 0; c < d; ++c) C += ws.phiX[c] * phiI_(j, c);
-            E = eta * std::exp(C);
-            kj += E;
-        }
-        ws.k[j] = kj;
-        ws.rbf[j] = R;
-        ws.angular[j] = E;
-        ws.cosine[j] = C;
-        for (Eigen::Index c = 0; c < d; ++c) {
-            double g = -gamma * (x[c] - XI_(j, c)) * R;
-            if (fas) g += E * (phiI_(j, c) - C * ws.phiX[c]) / n;
-            ws.J(j, c) = g;
-        }
+    // k and ∂k/∂x (docs/maths.md §3) a latent dimension at a time: XI's columns are contiguous,
+    // so the distances, the cosines, their exponentials and J's columns are all vectorised.
+    ws.rbf.setZero();
+    for (Eigen::Index c = 0; c < d; ++c) ws.rbf.array() += (XI_.col(c).array() - x[c]).square();
+    ws.rbf.array() = alpha * (-0.5 * gamma * ws.rbf.array()).exp();
+    ws.cosine.setZero();
+    ws.angular.setZero();
+    if (fas) {
+        for (Eigen::Index c = 0; c < d; ++c) ws.cosine.array() += phiI_.col(c).array() * ws.phiX[c];
+        ws.angular.array() = eta * ws.cosine.array().exp();
+    }
+    ws.k = ws.rbf + ws.angular;
+    for (Eigen::Index c = 0; c < d; ++c) {
+        ws.J.col(c).array() = -gamma * (x[c] - XI_.col(c).array()) * ws.rbf.array();
+        if (fas)
+            ws.J.col(c).array() += ws.angular.array() * (phiI_.col(c).array() - ws.cosine.array() * ws.phiX[c]) / n;
     }
     // From the Cholesky factor, not K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is small,
     // while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation
@@ -303,6 +296,7 @@ void optimizePass(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, con
     std::vector<Eigen::VectorXd> results(points.size());
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
+        PointWorkspace ws;  // storage only: a point's fit does not depend on which worker ran it
         for (std::size_t t = next++; t < points.size(); t = next++) {
             const int i = points[t];
             if (cancel && cancel->load()) {
@@ -312,7 +306,8 @@ void optimizePass(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, con
             const Eigen::VectorXd y = Y.row(i).transpose();
             Eigen::VectorXd gp;
             const ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-                double v = model.evaluate(x, y, &g, nullptr);
+                g.resize(x.size());
+                double v = model.evaluate(x, y, ws, &g, nullptr);
                 if (prior) {
                     v += prior->pointValue(X, i, x, &gp);
                     g += gp;
