@@ -38,6 +38,7 @@ struct PoseOptions {
     int iterations = 500;
     double locality = kDefaultLocality;
     double balanceWeight = kBalanceWeight;
+    bool localityGiven = false, balanceGiven = false;  // on the command line, whatever the value
 };
 
 nlohmann::json verdictJson(const AdmissionVerdict& v, const gp::GpModel& model) {
@@ -70,10 +71,11 @@ void checkPoseOptions(const PoseOptions& o) {
     if (o.adaptive && o.solver == "plain") throw UsageError("expected --solver learned with --adaptive, found plain");
     if (o.targets.empty() && o.pins.empty()) throw UsageError("expected at least one --target or --pin, found none");
     if (!o.out.empty()) requireExportPath(o.out);
-    // The learned solver's validate() judges the value itself.
-    if (o.locality != kDefaultLocality && o.solver != "learned")
+    // The learned solver's validate() judges the value itself; any other solver has no such term,
+    // so the option is refused whatever its value (the default's value included).
+    if (o.localityGiven && o.solver != "learned")
         throw UsageError("expected --solver learned with --locality, found --solver " + o.solver);
-    if (o.balanceWeight != kBalanceWeight && o.solver != "learned")
+    if (o.balanceGiven && o.solver != "learned")
         throw UsageError("expected --solver learned with --balance, found --solver " + o.solver);
 }
 
@@ -333,7 +335,13 @@ const CommandRegistration poseCommand(
         sub.add_option("--out-model", o->outModel, "Where --adaptive writes the updated model");
         sub.add_option("--out", o->out, "Write the clip with the solved frame in place: .bvh, .glb, .gltf or .fbx");
         sub.add_flag("--json", o->json, "Print one JSON object");
-        return [o]() { return runPose(*o); };
+        const CLI::Option* locality = sub.get_option("--locality");
+        const CLI::Option* balance = sub.get_option("--balance");
+        return [o, locality, balance]() {
+            o->localityGiven = locality->count() > 0;
+            o->balanceGiven = balance->count() > 0;
+            return runPose(*o);
+        };
     });
 
 }  // namespace

@@ -108,6 +108,10 @@ TEST_CASE("motiongp pose --locality: reported, the body keeps its pose, bad valu
     r = test::runCli(base + " --locality 3 --solver plain");
     CHECK(r.exitCode == 2);
     CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
+    // The default's own value is refused too: the plain solver has no such term to weigh.
+    r = test::runCli(base + " --locality 100 --solver plain");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --solver learned with --locality, found --solver plain\n");
 }
 
 TEST_CASE("motiongp pose --balance: a hand pulled far forward stays over the planted foot, 0 turns it off") {
@@ -136,6 +140,9 @@ TEST_CASE("motiongp pose --balance: a hand pulled far forward stays over the pla
     r = test::runCli(base + " --balance 3 --solver plain");
     CHECK(r.exitCode == 2);
     CHECK(r.err == "motiongp: error: expected --solver learned with --balance, found --solver plain\n");
+    r = test::runCli(base + " --balance 100000 --solver lbfgs");
+    CHECK(r.exitCode == 2);
+    CHECK(r.err == "motiongp: error: expected --solver learned with --balance, found --solver lbfgs\n");
 }
 
 TEST_CASE(

@@ -1,6 +1,7 @@
 // EditorDocument: the admission verdicts the readout, the range tint and its legend show
 // (eval/admission.h, edit/steady_verdict.h).
 #include <algorithm>
+#include <cstdlib>
 
 #include "edit/editor_document.h"
 #include "skeleton/pose_layout.h"
@@ -82,17 +83,16 @@ std::optional<ShownVerdict> EditorDocument::shownPoseVerdict() const {
         it != store_.edits().end() && dragOutcomeAt(frame_, it->second.pose).lastDragged)
         return out;
     // The window: edited frames within two of this one, joined to it by edited frames.
-    std::vector<std::optional<AdmissionVerdict>> before, after;
-    for (int f = frame_ - 1; f >= std::max(0, frame_ - 2); --f) {
-        std::optional<AdmissionVerdict> j = judgedEditAt(f, v);
-        if (!j) break;
-        before.push_back(std::move(j));
-    }
-    for (int f = frame_ + 1; f <= std::min(frameCount() - 1, frame_ + 2); ++f) {
-        std::optional<AdmissionVerdict> j = judgedEditAt(f, v);
-        if (!j) break;
-        after.push_back(std::move(j));
-    }
+    const auto judgedRun = [&](int step) {  // nearest first, stopping at the first captured frame
+        std::vector<std::optional<AdmissionVerdict>> run;
+        for (int f = frame_ + step; f >= 0 && f < frameCount() && std::abs(f - frame_) <= 2; f += step) {
+            std::optional<AdmissionVerdict> j = judgedEditAt(f, v);
+            if (!j) break;
+            run.push_back(std::move(j));
+        }
+        return run;
+    };
+    const std::vector<std::optional<AdmissionVerdict>> before = judgedRun(-1), after = judgedRun(+1);
     out.first = frame_ - static_cast<int>(before.size());
     out.last = frame_ + static_cast<int>(after.size());
     std::vector<VerdictClass> classes;

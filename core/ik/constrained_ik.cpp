@@ -74,7 +74,7 @@ double targetWeight(double strength) {
 }
 
 ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
-    : version_(std::move(version)), layout_(version_->model->clip.skeleton) {
+    : version_(std::move(version)), layout_(version_->model->clip.skeleton), bodyMass_(version_->model->clip.skeleton) {
     const gp::GpModel& m = *version_->model;
     d_ = m.latentDim();
     D_ = m.D();
@@ -92,6 +92,7 @@ ConstrainedIkSolver::ConstrainedIkSolver(gp::ModelVersionPtr version)
     for (Eigen::VectorXd* v : {&xR_, &gR_, &sR_, &xRt_, &gRt_}) v->resize(d_);
     HR_.resize(d_, d_);
     jac_.resize(3, layout_.size());
+    gaussNewtonRow_.resize(layout_.size());
     for (Eigen::VectorXd* v : {&g_, &z_, &zTrial_, &zSoc_, &delta_, &deltaT_, &tmp_, &rhs_}) v->resize(n_);
     for (Eigen::MatrixXd* m : {&H_, &C_, &Hm_, &Hd_}) m->resize(n_, n_);
     hc_.resize(layout_.size(), layout_.size());
@@ -373,17 +374,23 @@ void ConstrainedIkSolver::addFloorTerms(double& F, bool derivatives) {
         F += 0.5 * kExactTargetWeight * below * below;
         if (!derivatives) continue;
         effectorJacobian(sk, layout_, fk_, pose_, e, jac_);
-        for (int a = 0; a < layout_.size(); ++a) {
-            const int ka = yOfDof_[a];
-            if (ka < 0 || jac_(1, a) == 0.0) continue;
-            g_[d_ + ka] += kExactTargetWeight * jac_(1, a) * below;
-            for (int b = 0; b <= a; ++b) {
-                const int kb = yOfDof_[b];
-                if (kb < 0) continue;
-                const double h = kExactTargetWeight * jac_(1, a) * jac_(1, b);
-                H_(d_ + ka, d_ + kb) += h;
-                if (kb != ka) H_(d_ + kb, d_ + ka) += h;
-            }
+        gaussNewtonRow_ = jac_.row(1);
+        addGaussNewtonRow(kExactTargetWeight, below);
+    }
+}
+
+void ConstrainedIkSolver::addGaussNewtonRow(double weight, double residual) {
+    for (int a = 0; a < layout_.size(); ++a) {
+        const int ka = yOfDof_[a];
+        const double ra = gaussNewtonRow_[a];
+        if (ka < 0 || ra == 0.0) continue;
+        g_[d_ + ka] += weight * residual * ra;
+        for (int b = 0; b <= a; ++b) {
+            const int kb = yOfDof_[b];
+            if (kb < 0) continue;
+            const double h = weight * ra * gaussNewtonRow_[b];
+            H_(d_ + ka, d_ + kb) += h;
+            if (kb != ka) H_(d_ + kb, d_ + ka) += h;
         }
     }
 }
@@ -391,7 +398,7 @@ void ConstrainedIkSolver::addFloorTerms(double& F, bool derivatives) {
 void ConstrainedIkSolver::addBalanceTerm(double& F, bool derivatives) {
     if (!request_->balance) return;
     const Skeleton& sk = version_->model->clip.skeleton;
-    const std::optional<Eigen::Vector3d> com = centreOfMass(sk, fk_);
+    const std::optional<Eigen::Vector3d> com = centreOfMass(sk, bodyMass_, fk_);
     if (!com) return;
     Eigen::Vector2d n;
     double k = 0.0;
@@ -402,9 +409,10 @@ void ConstrainedIkSolver::addBalanceTerm(double& F, bool derivatives) {
     if (!derivatives) return;
     // ∂d/∂y = nᵀ ∂c_xz/∂y (n: the unit direction d grows in); Gauss–Newton curvature κ (∂d)ᵀ∂d in H,
     // and in the Newton regime the rest of ∇²(½κd²) in C: κd (Σ n·∂²c + J_cᵀ k (I − nnᵀ) J_c).
-    centreOfMassJacobian(sk, layout_, fk_, pose_, jac_);
+    centreOfMassJacobian(sk, bodyMass_, layout_, fk_, pose_, jac_);
     if (curvature_) {
-        centreOfMassHessianContracted(sk, layout_, fk_, pose_, kappa * d * Eigen::Vector3d(n.x(), 0.0, n.y()), hc_);
+        centreOfMassHessianContracted(sk, bodyMass_, layout_, fk_, pose_,
+                                      kappa * d * Eigen::Vector3d(n.x(), 0.0, n.y()), hc_);
         const Eigen::Vector2d t(-n.y(), n.x());  // I − nnᵀ = t tᵀ in the plane
         for (int a = 0; a < layout_.size(); ++a) {
             const int ka = yOfDof_[a];
@@ -418,19 +426,8 @@ void ConstrainedIkSolver::addBalanceTerm(double& F, bool derivatives) {
             }
         }
     }
-    for (int a = 0; a < layout_.size(); ++a) {
-        const int ka = yOfDof_[a];
-        const double da = n.x() * jac_(0, a) + n.y() * jac_(2, a);
-        if (ka < 0 || da == 0.0) continue;
-        g_[d_ + ka] += kappa * d * da;
-        for (int b = 0; b <= a; ++b) {
-            const int kb = yOfDof_[b];
-            if (kb < 0) continue;
-            const double h = kappa * da * (n.x() * jac_(0, b) + n.y() * jac_(2, b));
-            H_(d_ + ka, d_ + kb) += h;
-            if (kb != ka) H_(d_ + kb, d_ + ka) += h;
-        }
-    }
+    gaussNewtonRow_ = n.x() * jac_.row(0) + n.y() * jac_.row(2);  // ∂d/∂y
+    addGaussNewtonRow(kappa, d);
 }
 
 void ConstrainedIkSolver::pinDerivatives() {

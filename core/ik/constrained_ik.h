@@ -103,6 +103,7 @@
 #include "ik/balance_region.h"
 #include "ik/ik_types.h"
 #include "ik/locality.h"
+#include "skeleton/centre_of_mass.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"
 
@@ -312,11 +313,15 @@ private:
         bool outsideAtStraightLimb = false;
     };
     ExactTargetReach exactTargetReach(double reachedToleranceCm) const;
+    // g_ += w r ∂r, H_ += w ∂rᵀ∂r on the kept columns, ∂r = gaussNewtonRow_ (a one-sided penalty
+    // ½ w r², the floor's and the balance's, in its Gauss–Newton form).
+    void addGaussNewtonRow(double weight, double residual);
     // Removes the held DOFs from the unknowns in g_, H_, A_ and Aall_ (and C_ when `curvature`).
     void freezeHeld(bool curvature);
 
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
+    BodyMass bodyMass_;  // the centre of mass's segments on the model's skeleton, resolved once
     int d_ = 0, D_ = 0, n_ = 0;
     std::vector<int> yOfDof_;  // pose-vector index → index into y (−1 if constant)
     std::vector<int> heldY_;   // indices into y of the request's held DOFs
@@ -341,6 +346,7 @@ private:
     Eigen::MatrixXd Jf_;
     gp::PointWorkspace ws_, wsRefine_;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac_;
+    Eigen::RowVectorXd gaussNewtonRow_;  // ∂r/∂(pose DOFs) of a one-sided penalty's residual r
     Eigen::VectorXd g_, c_, cTrial_, z_, zTrial_, zSoc_, delta_, tmp_, nu_, rhs_;
     Eigen::MatrixXd H_, C_, Hm_, Hd_, A_, HinvAt_, S_, hc_;
     Eigen::LLT<Eigen::MatrixXd> llt_;

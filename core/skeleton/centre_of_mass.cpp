@@ -24,37 +24,7 @@ constexpr BodySegment kSegments[] = {
     {"upperback", 0.1633, 1.0 - 0.4502},                                // middle trunk
     {"thorax", 0.1596, 1.0 - 0.5066},                                   // upper trunk
 };
-// The table's segments this skeleton has: the joint of each (the last joint playing its bone), its
-// share of the present mass and where its centre of mass lies; empty without both thighs and a trunk part.
-struct PresentSegment {
-    int joint;
-    double fraction;  // of the whole body (the table's)
-    double ratio;
-    double weight;  // fraction over the present segments' total
-};
-
-std::vector<PresentSegment> presentSegments(const Skeleton& skeleton) {
-    std::vector<PresentSegment> out;
-    double mass = 0.0;
-    bool thighs[2] = {false, false}, trunk = false;
-    for (const BodySegment& s : kSegments) {
-        int joint = -1;
-        for (int j = 0; j < skeleton.jointCount(); ++j)
-            if (skeleton.joints[j].bone == s.bone) joint = j;
-        if (joint < 0) continue;
-        out.push_back({joint, s.massFraction, s.comRatio, 0.0});
-        mass += s.massFraction;
-        if (std::strcmp(s.bone, "lfemur") == 0) thighs[0] = true;
-        if (std::strcmp(s.bone, "rfemur") == 0) thighs[1] = true;
-        trunk = trunk || std::strcmp(s.bone, "lowerback") == 0 || std::strcmp(s.bone, "upperback") == 0 ||
-                std::strcmp(s.bone, "thorax") == 0;
-    }
-    if (!thighs[0] || !thighs[1] || !trunk) return {};
-    for (PresentSegment& p : out) p.weight = p.fraction / mass;
-    return out;
-}
-
-Eigen::Vector3d segmentPoint(const Skeleton& skeleton, const FkState& fk, const PresentSegment& s) {
+Eigen::Vector3d segmentPoint(const Skeleton& skeleton, const FkState& fk, const BodyMass::Segment& s) {
     const Eigen::Vector3d start = fk.jointCm[s.joint];
     return start + s.ratio * (boneEndCm(skeleton, fk, s.joint) - start);
 }
@@ -66,30 +36,54 @@ const BodySegment* bodySegments(int* count) {
     return kSegments;
 }
 
-std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const FkState& fk) {
-    const std::vector<PresentSegment> segments = presentSegments(skeleton);
-    if (segments.empty()) return std::nullopt;
+BodyMass::BodyMass(const Skeleton& skeleton) {
+    double mass = 0.0;
+    bool thighs[2] = {false, false}, trunk = false;
+    for (const BodySegment& s : kSegments) {
+        int joint = -1;
+        for (int j = 0; j < skeleton.jointCount(); ++j)
+            if (skeleton.joints[j].bone == s.bone) joint = j;
+        if (joint < 0) continue;
+        segments_.push_back({joint, s.massFraction, s.comRatio, 0.0});
+        mass += s.massFraction;
+        if (std::strcmp(s.bone, "lfemur") == 0) thighs[0] = true;
+        if (std::strcmp(s.bone, "rfemur") == 0) thighs[1] = true;
+        trunk = trunk || std::strcmp(s.bone, "lowerback") == 0 || std::strcmp(s.bone, "upperback") == 0 ||
+                std::strcmp(s.bone, "thorax") == 0;
+    }
+    if (!thighs[0] || !thighs[1] || !trunk) {
+        segments_.clear();
+        return;
+    }
+    for (Segment& p : segments_) p.weight = p.fraction / mass;
+}
+
+std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const BodyMass& body, const FkState& fk) {
+    if (body.empty()) return std::nullopt;
     // Summed with the table's fractions and divided once.
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     double mass = 0.0;
-    for (const PresentSegment& p : segments) {
+    for (const BodyMass::Segment& p : body.segments()) {
         sum += p.fraction * segmentPoint(skeleton, fk, p);
         mass += p.fraction;
     }
     return sum / mass;
 }
 
-bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
-                          Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
+std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const FkState& fk) {
+    return centreOfMass(skeleton, BodyMass(skeleton), fk);
+}
+
+bool centreOfMassJacobian(const Skeleton& skeleton, const BodyMass& body, const PoseLayout& layout, const FkState& fk,
+                          const Pose& pose, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
     jac.setZero();
-    const std::vector<PresentSegment> segments = presentSegments(skeleton);
-    if (segments.empty()) return false;
+    if (body.empty()) return false;
     for (int i = 0; i < layout.size(); ++i) {
         const int j = layout.joint(i);
         if (j < 0) continue;
         // Σ over the segments this DOF moves of w_s (p_s − q_j), then ω × that.
         Eigen::Vector3d lever = Eigen::Vector3d::Zero();
-        for (const PresentSegment& s : segments)
+        for (const BodyMass::Segment& s : body.segments())
             if (skeleton.isAncestorOrSelf(j, s.joint))
                 lever += s.weight * (segmentPoint(skeleton, fk, s) - fk.jointCm[j]);
         if (lever.isZero(0.0)) continue;
@@ -98,12 +92,23 @@ bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, co
     return true;
 }
 
-void centreOfMassHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                                   const Pose& pose, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out) {
+bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                          Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
+    return centreOfMassJacobian(skeleton, BodyMass(skeleton), layout, fk, pose, jac);
+}
+
+void centreOfMassHessianContracted(const Skeleton& skeleton, const BodyMass& body, const PoseLayout& layout,
+                                   const FkState& fk, const Pose& pose, const Eigen::Vector3d& lambda,
+                                   Eigen::Ref<Eigen::MatrixXd> out) {
     out.setZero();
-    for (const PresentSegment& s : presentSegments(skeleton))
+    for (const BodyMass::Segment& s : body.segments())
         addPointHessianContracted(skeleton, layout, fk, pose, s.joint, segmentPoint(skeleton, fk, s), s.weight * lambda,
                                   out);
+}
+
+void centreOfMassHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
+                                   const Pose& pose, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out) {
+    centreOfMassHessianContracted(skeleton, BodyMass(skeleton), layout, fk, pose, lambda, out);
 }
 
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose& pose) {
