@@ -8,10 +8,19 @@ namespace {
 
 constexpr Eigen::Index kBaseBlock = 32;  // below this, plain dense work on a copy is cheapest
 
-// A (rows×cols) view of the scratch's first rows·cols doubles.
-Eigen::Map<Eigen::MatrixXd> scratchBlock(Eigen::MatrixXd& scratch, Eigen::Index rows, Eigen::Index cols) {
-    if (scratch.size() < rows * cols) scratch.resize(rows * cols, 1);
-    return Eigen::Map<Eigen::MatrixXd>(scratch.data(), rows, cols);
+using BaseBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kBaseBlock, kBaseBlock>;
+
+// M = [A 0; B C], split at half its size, and T: a view of the scratch the size of B.
+struct Halves {
+    Eigen::Block<Eigen::Ref<Eigen::MatrixXd>> A, B, C;
+    Eigen::Map<Eigen::MatrixXd> T;
+};
+
+Halves halvesOf(Eigen::Ref<Eigen::MatrixXd>& M, Eigen::MatrixXd& scratch) {
+    const Eigen::Index h = M.rows() / 2, r = M.rows() - h;
+    if (scratch.size() < r * h) scratch.resize(r * h, 1);
+    return {M.topLeftCorner(h, h), M.bottomLeftCorner(r, h), M.bottomRightCorner(r, r),
+            Eigen::Map<Eigen::MatrixXd>(scratch.data(), r, h)};
 }
 
 }  // namespace
@@ -19,48 +28,34 @@ Eigen::Map<Eigen::MatrixXd> scratchBlock(Eigen::MatrixXd& scratch, Eigen::Index 
 void invertLowerTriangularInPlace(Eigen::Ref<Eigen::MatrixXd> L, Eigen::MatrixXd& scratch) {
     const Eigen::Index n = L.rows();
     if (n <= kBaseBlock) {
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kBaseBlock, kBaseBlock> X(n, n);
-        X.setIdentity();
+        BaseBlock X = BaseBlock::Identity(n, n);
         L.triangularView<Eigen::Lower>().solveInPlace(X);
         L.triangularView<Eigen::Lower>() = X;
         return;
     }
     // [A 0; B C]⁻¹ = [A⁻¹ 0; −C⁻¹ B A⁻¹  C⁻¹].
-    const Eigen::Index h = n / 2, r = n - h;
-    auto A = L.topLeftCorner(h, h);
-    auto B = L.bottomLeftCorner(r, h);
-    auto C = L.bottomRightCorner(r, r);
-    invertLowerTriangularInPlace(A, scratch);
-    {
-        Eigen::Map<Eigen::MatrixXd> T = scratchBlock(scratch, r, h);
-        T.noalias() = B * A.triangularView<Eigen::Lower>();  // B A⁻¹
-        C.triangularView<Eigen::Lower>().solveInPlace(T);    // C⁻¹ B A⁻¹, C not yet inverted
-        B = -T;
-    }
-    invertLowerTriangularInPlace(C, scratch);
+    Halves q = halvesOf(L, scratch);
+    invertLowerTriangularInPlace(q.A, scratch);
+    q.T.noalias() = q.B * q.A.triangularView<Eigen::Lower>();  // B A⁻¹
+    q.C.triangularView<Eigen::Lower>().solveInPlace(q.T);      // C⁻¹ B A⁻¹, C not yet inverted
+    q.B = -q.T;
+    invertLowerTriangularInPlace(q.C, scratch);
 }
 
 void lowerTransposeTimesSelfInPlace(Eigen::Ref<Eigen::MatrixXd> V, Eigen::MatrixXd& scratch) {
     const Eigen::Index n = V.rows();
     if (n <= kBaseBlock) {
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kBaseBlock, kBaseBlock> T(n, n);
-        T = V.triangularView<Eigen::Lower>();
+        const BaseBlock T = V.triangularView<Eigen::Lower>();
         V.triangularView<Eigen::Lower>() = T.transpose() * T;
         return;
     }
     // V = [A 0; B C]: VᵀV = [AᵀA + BᵀB, (CᵀB)ᵀ; CᵀB, CᵀC].
-    const Eigen::Index h = n / 2, r = n - h;
-    auto A = V.topLeftCorner(h, h);
-    auto B = V.bottomLeftCorner(r, h);
-    auto C = V.bottomRightCorner(r, r);
-    lowerTransposeTimesSelfInPlace(A, scratch);
-    A.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());  // + BᵀB, B still V's
-    {
-        Eigen::Map<Eigen::MatrixXd> T = scratchBlock(scratch, r, h);
-        T.noalias() = C.transpose().triangularView<Eigen::Upper>() * B;  // CᵀB, C still V's
-        B = T;
-    }
-    lowerTransposeTimesSelfInPlace(C, scratch);
+    Halves q = halvesOf(V, scratch);
+    lowerTransposeTimesSelfInPlace(q.A, scratch);
+    q.A.selfadjointView<Eigen::Lower>().rankUpdate(q.B.transpose());       // + BᵀB, B still V's
+    q.T.noalias() = q.C.transpose().triangularView<Eigen::Upper>() * q.B;  // CᵀB, C still V's
+    q.B = q.T;
+    lowerTransposeTimesSelfInPlace(q.C, scratch);
 }
 
 void choleskyInverseInPlace(Eigen::Ref<Eigen::MatrixXd> L, Eigen::MatrixXd& scratch) {
