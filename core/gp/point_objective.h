@@ -63,7 +63,7 @@ public:
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, Eigen::VectorXd* gradX,
                     Eigen::VectorXd* gradY) const;
     // The same value and gradients with no heap allocation after the first call on `ws` (the
-    // interactive IK path): one fused pass builds k(x) and ∂k/∂x together, and σ² comes from the
+    // interactive IK's and Step 8's path): k(x) and ∂k/∂x vectorised over the active points, σ² from the
     // Cholesky factor, free of the cancellation noise the K⁻¹ form above has next to the data
     // (docs/maths.md §9.1). gradX/gradY, when given, must already have sizes d and D.
     double evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws, Eigen::VectorXd* gradX,

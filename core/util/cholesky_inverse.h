@@ -1,7 +1,7 @@
 #pragma once
-// K⁻¹ from K's Cholesky factor L (K = LLᵀ) in (1/3 + 1/3) m³ multiply-adds, as LAPACK's trtri and
+// K⁻¹ from K's Cholesky factor L (K = LLᵀ) in (1/3 + 1/3) m³ flops, as LAPACK's trtri and
 // lauum do it (docs/maths.md §4.4): a triangular inverse L⁻¹, then the lower triangle of L⁻ᵀL⁻¹.
-// Solving LX = I and multiplying L⁻ᵀ by the dense L⁻¹ costs m³ each, since neither knows that
+// Solving LX = I and multiplying L⁻ᵀ by the dense L⁻¹ cost m³ flops each, since neither knows that
 // half of its right-hand side is zero. Both steps recurse on halves down to 32×32 blocks, so every
 // flop is in Eigen's blocked triangular products and rank updates.
 //
