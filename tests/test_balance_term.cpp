@@ -58,15 +58,16 @@ TEST_CASE("centre of mass: its Jacobian and contracted Hessian match central dif
     const auto version = test::walkModel35();
     const Skeleton& sk = version->model->clip.skeleton;
     const PoseLayout layout(sk);
+    const BodyMass body(sk);
     const Pose pose = version->model->clip.frames[77];
     const Eigen::VectorXd y0 = layout.extract(pose);
     FkState fk;
     forwardKinematics(sk, pose, fk);
     Eigen::Matrix<double, 3, Eigen::Dynamic> J(3, layout.size()), Jp(3, layout.size()), Jm(3, layout.size());
-    REQUIRE(centreOfMassJacobian(sk, layout, fk, pose, J));
+    REQUIRE(centreOfMassJacobian(sk, body, layout, fk, pose, J));
     const Eigen::Vector3d lambda(0.7, -1.3, 2.1);
     Eigen::MatrixXd Hc(layout.size(), layout.size());
-    centreOfMassHessianContracted(sk, layout, fk, pose, lambda, Hc);
+    centreOfMassHessianContracted(sk, body, layout, fk, pose, lambda, Hc);
     const auto poseAt = [&](const Eigen::VectorXd& y) {
         Pose p = pose;
         layout.apply(y.data(), p);
@@ -83,8 +84,8 @@ TEST_CASE("centre of mass: its Jacobian and contracted Hessian match central dif
         FkState fp, fm;
         forwardKinematics(sk, poseAt(yp), fp);
         forwardKinematics(sk, poseAt(ym), fm);
-        centreOfMassJacobian(sk, layout, fp, poseAt(yp), Jp);
-        centreOfMassJacobian(sk, layout, fm, poseAt(ym), Jm);
+        centreOfMassJacobian(sk, body, layout, fp, poseAt(yp), Jp);
+        centreOfMassJacobian(sk, body, layout, fm, poseAt(ym), Jm);
         const Eigen::RowVectorXd dLambdaJ = lambda.transpose() * (Jp - Jm) / (2 * h);
         worstH = std::max(worstH, (dLambdaJ.transpose() - Hc.col(i)).cwiseAbs().maxCoeff());
     }

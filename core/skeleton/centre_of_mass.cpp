@@ -92,11 +92,6 @@ bool centreOfMassJacobian(const Skeleton& skeleton, const BodyMass& body, const 
     return true;
 }
 
-bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
-                          Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
-    return centreOfMassJacobian(skeleton, BodyMass(skeleton), layout, fk, pose, jac);
-}
-
 void centreOfMassHessianContracted(const Skeleton& skeleton, const BodyMass& body, const PoseLayout& layout,
                                    const FkState& fk, const Pose& pose, const Eigen::Vector3d& lambda,
                                    Eigen::Ref<Eigen::MatrixXd> out) {
@@ -104,11 +99,6 @@ void centreOfMassHessianContracted(const Skeleton& skeleton, const BodyMass& bod
     for (const BodyMass::Segment& s : body.segments())
         addPointHessianContracted(skeleton, layout, fk, pose, s.joint, segmentPoint(skeleton, fk, s), s.weight * lambda,
                                   out);
-}
-
-void centreOfMassHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                                   const Pose& pose, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out) {
-    centreOfMassHessianContracted(skeleton, BodyMass(skeleton), layout, fk, pose, lambda, out);
 }
 
 std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose& pose) {

@@ -56,15 +56,11 @@ std::optional<Eigen::Vector3d> centreOfMass(const Skeleton& skeleton, const Pose
 // and q its joint, as for an effector (forward_kinematics.h).
 bool centreOfMassJacobian(const Skeleton& skeleton, const BodyMass& body, const PoseLayout& layout, const FkState& fk,
                           const Pose& pose, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
-bool centreOfMassJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
-                          Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
 // λ · ∂²(centre of mass)/∂y² (P×P, cm/deg², symmetric): the second-order term a Newton step on a
 // function of the centre of mass needs (the segments' points, as addPointHessianContracted).
 void centreOfMassHessianContracted(const Skeleton& skeleton, const BodyMass& body, const PoseLayout& layout,
                                    const FkState& fk, const Pose& pose, const Eigen::Vector3d& lambda,
                                    Eigen::Ref<Eigen::MatrixXd> out);
-void centreOfMassHessianContracted(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk,
-                                   const Pose& pose, const Eigen::Vector3d& lambda, Eigen::Ref<Eigen::MatrixXd> out);
 
 // Horizontal (XZ) distance between two points (cm), and between the centres of mass of two
 // poses, or none.
