@@ -102,8 +102,8 @@ TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     std::string problem;
     dragFalloffJob(version, Effector::kLFoot, 100, clip.frames[100], noX, 0, {}, &problem);
     CHECK(problem == "expected a falloff radius of at least 1 frame, found 0");
-    dragFalloffJob(version, Effector::kLFoot, 0, clip.frames[0], noX, 30, {}, &problem);
-    CHECK(problem == "expected a frame with a captured frame on each side (2..357), found 1");
+    dragFalloffJob(version, Effector::kLFoot, 358, clip.frames[0], noX, 30, {}, &problem);
+    CHECK(problem == "expected a frame in 1..358 of a clip of at least 3 frames, found 359");
     Pose bad = clip.frames[100];
     bad.anglesDeg[3].x() = NAN;
     dragFalloffJob(version, Effector::kLFoot, 100, bad, noX, 30, {}, &problem);
@@ -116,6 +116,47 @@ TEST_CASE("drag falloff refuses what it cannot do, with one clear reason") {
     const MotionEditJob j = dragFalloffJob(version, Effector::kLFoot, 5, clip.frames[5], noX, 30, {}, &problem);
     CHECK(problem.empty());
     CHECK(j.keyFrames == std::vector<int>{0, 5, 35});
+}
+
+TEST_CASE("a drag on the clip's first or last frame falls off on the one side it has") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int n = clip.frameCount();
+    for (const int t : {0, n - 1}) {
+        CAPTURE(t);
+        const Eigen::Vector3d captured = effectorCm(clip.skeleton, clip.frames[t], Effector::kRHand);
+        const Eigen::Vector3d target = captured + Eigen::Vector3d(0, 12, 0);
+        const ConstrainedIkResult drag = dragPose(version, t, Effector::kRHand, target);
+        REQUIRE(drag.reached);
+        std::string problem;
+        MotionEditJob job = dragFalloffJob(version, Effector::kRHand, t, drag.pose, drag.x, 30, {}, &problem);
+        REQUIRE(problem.empty());
+        CHECK(job.keyFrames == (t == 0 ? std::vector<int>{0, 30} : std::vector<int>{n - 31, n - 1}));
+        job.run();
+        // The dragged frame keeps the drag's pose bit for bit; the 29 frames beside it are solved.
+        for (int j = 0; j < clip.skeleton.jointCount(); ++j)
+            CHECK(job.frames[t].anglesDeg[j] == drag.pose.anglesDeg[j]);
+        CHECK(job.frames[t].rootCm == drag.pose.rootCm);
+        CHECK(job.solvedFrames.size() == 29);
+        // The hand's raise fades out: most of it next to the frame, none at the far end, each
+        // frame's raise no larger than the one nearer the drag (the Hermite displacement, ±0.3 cm).
+        const int away = t == 0 ? 1 : -1;
+        auto raise = [&](int s) {
+            return (effectorCm(clip.skeleton, job.frames[s], Effector::kRHand) -
+                    effectorCm(clip.skeleton, clip.frames[s], Effector::kRHand))
+                .y();
+        };
+        MESSAGE("raise next to the drag " << raise(t + away) << " cm, half-way " << raise(t + 15 * away)
+                                          << " cm, at the far end " << raise(t + 30 * away) << " cm");
+        CHECK(raise(t + away) > 10.0);
+        CHECK(raise(t + 15 * away) > 3.0);
+        CHECK(raise(t + 15 * away) < 9.0);
+        CHECK(std::abs(raise(t + 30 * away)) < 1e-9);
+        for (int k = 1; k < 30; ++k) CHECK(raise(t + (k + 1) * away) <= raise(t + k * away) + 0.3);
+        // No frame-to-frame jump next to the drag beyond the capture's + 2°.
+        const int s = t == 0 ? 0 : n - 2;
+        CHECK(jumpDeg(job.frames, clip.skeleton, s) <= jumpDeg(clip.frames, clip.skeleton, s) + 2.0);
+    }
 }
 
 TEST_CASE("editor: a drag with falloff re-solves t−r..t+r on release and is one undo step") {

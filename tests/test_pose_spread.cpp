@@ -91,17 +91,30 @@ TEST_CASE("editor: mirror and a joint rotation spread over the falloff too") {
     CHECK(s.stepDeg(100) < 30.0);  // the 30° is not a one-frame jump any more
 }
 
-TEST_CASE("editor: a pose change on the clip's first frame stays there, and the document says why") {
+TEST_CASE("editor: a pose change on the clip's first or last frame spreads to the one side it has") {
     SpreadDoc s;
-    const Pose source = s.poseAt(40);
-    s.doc.setFrame(0);
-    REQUIRE(s.doc.pastePose(source).empty());
-    s.doc.waitIdle();
-    const std::string said = s.doc.pollRegenerate();
-    CHECK(
-        said.find(
-            "paste pose on frame 1: kept on frame 1 alone, not spread (expected a frame with a captured frame on each "
-            "side") == 0);
-    CHECK(s.doc.pollRegenerate().empty());  // said once
-    CHECK(s.doc.edits().size() == 1);
+    const int n = s.clip().frameCount();
+    for (const int t : {0, n - 1}) {
+        CAPTURE(t);
+        const Pose source = s.poseAt(t == 0 ? 40 : n - 41);
+        s.doc.setFrame(t);
+        REQUIRE(s.doc.pastePose(source).empty());
+        const Pose pasted = s.doc.currentPose();
+        const int inner = t == 0 ? 1 : n - 2;
+        const double oneFrameJump = s.stepDeg(std::min(t, inner));  // before the spread lands
+        s.doc.waitIdle();
+        const std::string said = s.doc.pollRegenerate();
+        CHECK(said == (t == 0 ? "paste pose on frame 1: spread over frames 2-20 (falloff 20 frames)"
+                              : "paste pose on frame 358: spread over frames 339-357 (falloff 20 frames)"));
+        CHECK(s.doc.edits().size() == 20);  // the pasted frame and the 19 beside it
+        const Pose held = s.poseAt(t);
+        CHECK(held.rootCm == pasted.rootCm);
+        for (int j = 0; j < s.clip().skeleton.jointCount(); ++j) CHECK(held.anglesDeg[j] == pasted.anglesDeg[j]);
+        const double spreadJump = s.stepDeg(std::min(t, inner));
+        MESSAGE("step next to the pasted frame: " << oneFrameJump << " deg as one frame, " << spreadJump
+                                                  << " deg spread");
+        CHECK(spreadJump < 0.25 * oneFrameJump);
+        CHECK(s.doc.undo().empty());
+        CHECK(s.doc.edits().empty());
+    }
 }

@@ -139,3 +139,49 @@ TEST_CASE("a held inner frame stays bit for bit, and its neighbours' gradient st
         CHECK(std::abs(r.poses[i - 1].anglesDeg[joint][axis] - clip.frames[t - 1].anglesDeg[joint][axis]) > 1.0);
     }
 }
+
+TEST_CASE("a held end enters the second differences: gradient by central differences, the inner frames follow") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int first = 88, last = 100;
+    const PoseLayout layout(clip.skeleton);
+    const int dof = version->model->keptColumns[10], joint = layout.joint(dof), axis = layout.axis(dof);
+    Pose atFirst = clip.frames[first], atLast = clip.frames[last];
+    atFirst.anglesDeg[joint][axis] += 8.0;  // poses the capture does not have on the ends
+    atLast.anglesDeg[joint][axis] -= 5.0;
+    SpanWeights w;
+    w.stay = 0.01;
+    SpanSolver solver(version, first, last, w);
+    solver.setTargets(someTargets(clip, first, last));
+    CHECK(solver.holdEnd(first + 1, atFirst) == "expected the span's first or last frame (89 or 101), found 90");
+    CHECK(solver.holdEnd(first, Pose{}) == "expected a finite end pose of the model's skeleton");
+    Eigen::VectorXd z = solver.capturedZ(), grad, gp, gm;
+    const double unheld = solver.objective(z, grad);
+    REQUIRE(solver.holdEnd(first, atFirst).empty());
+    REQUIRE(solver.holdEnd(last, atLast).empty());
+    const double F = solver.objective(z, grad);
+    CHECK(F > unheld);  // the captured span no longer joins its ends smoothly
+    std::mt19937 rng(11);
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (Eigen::Index k = 0; k < z.size(); ++k) z[k] += 0.05 * g(rng);
+    solver.objective(z, grad);
+    const int b = version->model->latentDim() + version->model->D(), n = solver.innerCount();
+    double worst = 0.0;
+    // The first and last inner frames' x and y (the ones the ends' second differences reach), and one beside them.
+    for (int k : {0, 1, 2, 2 + dof % 7, b + 3, (n - 1) * b, (n - 1) * b + 2, (n - 1) * b + 9, (n - 2) * b + 5}) {
+        const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
+        Eigen::VectorXd zp = z, zm = z;
+        zp[k] += h;
+        zm[k] -= h;
+        const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
+        const double rel = std::abs(num - grad[k]) / std::max(1.0, std::abs(num));
+        worst = std::max(worst, rel);
+        CAPTURE(k);
+        CHECK(rel < 1e-5);
+    }
+    MESSAGE("worst relative gradient error with both ends held: " << worst);
+    // Solved, the frames next to the ends move toward the ends' changes (+8° and −5°).
+    const SpanResult r = solver.solve(200, 1e-9, nullptr, SpanMethod::kLevenbergMarquardt);
+    CHECK(r.poses.front().anglesDeg[joint][axis] - clip.frames[first + 1].anglesDeg[joint][axis] > 2.0);
+    CHECK(r.poses.back().anglesDeg[joint][axis] - clip.frames[last - 1].anglesDeg[joint][axis] < -1.0);
+}

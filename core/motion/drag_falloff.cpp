@@ -23,8 +23,8 @@ MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int
     if (!job.version) return fail("expected a model, found none");
     const int n = job.version->model->clip.frameCount();
     if (radius < 1) return fail("expected a falloff radius of at least 1 frame, found " + std::to_string(radius));
-    if (frame < 1 || frame > n - 2)
-        return fail("expected a frame with a captured frame on each side (2.." + std::to_string(n - 1) + "), found " +
+    if (frame < 0 || frame > n - 1 || n < 3)
+        return fail("expected a frame in 1.." + std::to_string(n) + " of a clip of at least 3 frames, found " +
                     std::to_string(frame + 1));
     const Skeleton& skeleton = job.version->model->clip.skeleton;
     if (static_cast<int>(dragPose.anglesDeg.size()) != skeleton.jointCount())
@@ -39,8 +39,15 @@ MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int
         if (const std::string invalid = validateEditBase(*job.version->model, *job.base); !invalid.empty())
             return fail(invalid);
     const Eigen::Vector3d captured = job.capturedTrajectory()[frame];
-    job.keyFrames = {first, frame, last};
-    job.keyOffsetsCm = {Eigen::Vector3d::Zero(), targetCm - captured, Eigen::Vector3d::Zero()};
+    // On the clip's first or last frame the dragged frame is itself the span's end: the falloff is
+    // one-sided, fading from the drag into the motion on the one side the frame has.
+    job.keyFrames.clear();
+    job.keyOffsetsCm.clear();
+    for (const int key : {first, frame, last}) {
+        if (!job.keyFrames.empty() && key == job.keyFrames.back()) continue;
+        job.keyFrames.push_back(key);
+        job.keyOffsetsCm.push_back(key == frame ? Eigen::Vector3d(targetCm - captured) : Eigen::Vector3d::Zero());
+    }
     job.heldPose = MotionEditJob::HeldPose{frame, dragPose, dragX};
     if (problem) *problem = job.validate();
     return job;

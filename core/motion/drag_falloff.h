@@ -7,8 +7,9 @@
 // the drag's pose and latent point, bit for bit (what the user saw on release, and what the
 // adaptive update was judged on); its neighbours join it smoothly. r = 0 is the single-frame drag
 // (no job).
-// The keys are clamped to the clip, keeping one captured frame before and after the span so the
-// joins stay C¹; a frame with no room on one side gets a one-sided falloff.
+// The keys are clamped to the clip: a frame with less than r frames on one side gets a shorter
+// falloff there, and on the clip's first or last frame the dragged frame is the span's end (keys
+// t, t+r or t−r, t): the falloff is one-sided.
 #include <memory>
 #include <string>
 
@@ -21,7 +22,7 @@ int defaultFalloffRadius(double fps);
 
 // The job for a drag of `effector` at `frame` (0-based) that ended in `dragPose` with latent point
 // `dragX` (empty: the frame's captured latent point); "" in *problem when it can run, else why
-// not (radius < 1, frame at the clip's first or last frame, a pose of another skeleton, NaN).
+// not (radius < 1, a clip of fewer than 3 frames, a pose of another skeleton, NaN).
 // `base`: the motion as edited so far (MotionEditJob::base): the displacement fades into it, so
 // the neighbours keep what earlier edits put there. Null: the captured clip.
 MotionEditJob dragFalloffJob(gp::ModelVersionPtr version, Effector effector, int frame, const Pose& dragPose,

@@ -43,9 +43,9 @@ std::string MotionEditJob::validate() const {
         return "expected a locality ≥ 0, found " + std::to_string(spanWeights.locality);
     if (heldPose) {
         if (solver != EditSolver::kSpan) return "expected the span solver for a held pose, found the per-frame one";
-        if (heldPose->frame <= keyFrames.front() || heldPose->frame >= keyFrames.back())
-            return "expected the held frame inside the span (" + std::to_string(keyFrames.front() + 2) + ".." +
-                   std::to_string(keyFrames.back()) + "), found " + std::to_string(heldPose->frame + 1);
+        if (heldPose->frame < keyFrames.front() || heldPose->frame > keyFrames.back())
+            return "expected the held frame in the span (" + std::to_string(keyFrames.front() + 1) + ".." +
+                   std::to_string(keyFrames.back() + 1) + "), found " + std::to_string(heldPose->frame + 1);
         if (static_cast<int>(heldPose->pose.anglesDeg.size()) != version->model->clip.skeleton.jointCount())
             return "expected a held pose of the model's skeleton, found one with " +
                    std::to_string(heldPose->pose.anglesDeg.size()) + " joints";
@@ -185,6 +185,7 @@ void MotionEditJob::run() {
         for (std::size_t k = 1; k < results[i].constraints.size(); ++k)
             maxHeldResidualCm = std::max(maxHeldResidualCm, results[i].constraints[k].residualCm);
     }
+    if (heldPose) frames[heldPose->frame] = heldPose->pose;  // also when it is an end of the span
     keys.clear();
     for (std::size_t k = 1; k + 1 < keyFrames.size(); ++k) {
         const int t = keyFrames[k];
@@ -261,6 +262,9 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
     SpanWeights w = spanWeights;
     w.lambda = lambda;
     SpanSolver span(version, first, last, w, base.get());
+    // A pose held on the span's first or last frame (a one-sided falloff on the clip's first or
+    // last frame) is that end's fixed pose.
+    const bool heldAtEnd = heldPose && (heldPose->frame == first || heldPose->frame == last);
     std::vector<SpanTarget> targets;
     for (std::size_t i = 0; i < solvedFrames.size(); ++i) {
         targets.push_back({solvedFrames[i], effector, pathCm[i], SpanTarget::Kind::kPath});
@@ -268,7 +272,10 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
             targets.push_back({solvedFrames[i], c.effector, c.targetCm, SpanTarget::Kind::kContact});
     }
     span.setTargets(targets);
-    if (heldPose) {
+    if (heldAtEnd) {
+        if (const std::string problem = span.holdEnd(heldPose->frame, heldPose->pose); !problem.empty())
+            throw std::invalid_argument(problem);  // validate() has checked what holdEnd() checks
+    } else if (heldPose) {
         const Eigen::VectorXd x = heldPose->x.size() > 0 ? heldPose->x : latentStartForFrame(*version, heldPose->frame);
         if (const std::string problem = span.holdFrame(heldPose->frame, heldPose->pose, x); !problem.empty())
             throw std::invalid_argument(problem);  // validate() has checked what holdFrame() checks

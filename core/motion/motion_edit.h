@@ -67,9 +67,9 @@ struct MotionEditJob {
     // hold it, edit/held_effectors.h). A whole-pose change's spread (paste, mirror, rotate) places
     // nothing: `effector` only picks the path it displaces.
     bool placesEffector = true;
-    // An inner frame kept exactly at a given pose and latent point (a drag's accepted pose, which
-    // the falloff around it must not re-solve); kSpan only. An empty x holds the frame's
-    // captured latent point.
+    // A frame of the span kept exactly at a given pose and latent point (a drag's accepted pose,
+    // which the falloff around it must not re-solve); kSpan only. An empty x holds the frame's
+    // captured latent point. On the span's first or last key it is that end's fixed pose.
     struct HeldPose {
         int frame = -1;
         Pose pose;

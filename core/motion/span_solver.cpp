@@ -174,6 +174,18 @@ std::string SpanSolver::holdFrame(int frame, const Pose& pose, const Eigen::Vect
     return "";
 }
 
+std::string SpanSolver::holdEnd(int frame, const Pose& pose) {
+    const gp::GpModel& m = *version_->model;
+    if (frame != first_ && frame != last_)
+        return "expected the span's first or last frame (" + std::to_string(first_ + 1) + " or " +
+               std::to_string(last_ + 1) + "), found " + std::to_string(frame + 1);
+    if (static_cast<int>(pose.anglesDeg.size()) != m.clip.skeleton.jointCount() || !allFinite(pose))
+        return "expected a finite end pose of the model's skeleton";
+    (frame == first_ ? uFirst_ : uLast_) = m.keptPose(layout_.extract(pose)) - yCap_[frame - first_ + 1];
+    lastZ_.resize(0);
+    return "";
+}
+
 void SpanSolver::poseOf(int i, const Eigen::VectorXd& z, Pose& pose) {
     if (i == heldInner_) {  // exactly the held pose, also what the layout does not cover
         pose = heldPose_;
@@ -231,9 +243,13 @@ double SpanSolver::objective(const Eigen::VectorXd& z, Eigen::VectorXd& grad) {
     }
     // Second differences of u and v, centres first..last (those with both neighbours in the clip).
     const int frames = frames_;
-    auto uAt = [&](int t, Eigen::VectorXd& out) {  // u at frame t (0 outside the span)
+    auto uAt = [&](int t, Eigen::VectorXd& out) {  // u at frame t (0 outside the span, but a held end's)
         if (t > first_ && t < last_)
             out = z.segment((t - first_ - 1) * b + d_, D_) - yCap_[t - first_ + 1];
+        else if (t == first_ && uFirst_.size() == D_)
+            out = uFirst_;
+        else if (t == last_ && uLast_.size() == D_)
+            out = uLast_;
         else
             out.setZero(D_);
     };

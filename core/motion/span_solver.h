@@ -133,6 +133,10 @@ public:
     // through the second differences. "" when held, else why not (not an inner frame, another
     // skeleton, x not d-dimensional, NaN).
     std::string holdFrame(int frame, const Pose& pose, const Eigen::VectorXd& x);
+    // Sets the span's first or last frame (a fixed end) to `pose` instead of the base's: its
+    // change from the base enters the second differences, so the inner frames join it as they
+    // join a held inner frame (a drag on the clip's first or last frame). "" or why not.
+    std::string holdEnd(int frame, const Pose& pose);
     // The captured span's stacked z (the start point).
     const Eigen::VectorXd& capturedZ() const { return z0_; }
     // F and its gradient (exposed for the gradient test).
@@ -161,8 +165,9 @@ private:
     int frames_ = 0;                           // frames of the base motion (the clip's without one)
     std::vector<std::vector<int>> targetsOf_;  // inner frame → indices into targets_
     std::vector<SpanTarget> targets_;
-    std::vector<int> rootKept_;  // kept-column indices of the root orientation
-    int heldInner_ = -1;         // inner index of the held frame (holdFrame), or −1
+    std::vector<int> rootKept_;       // kept-column indices of the root orientation
+    int heldInner_ = -1;              // inner index of the held frame (holdFrame), or −1
+    Eigen::VectorXd uFirst_, uLast_;  // the ends' change from the base (holdEnd; empty: none)
     Pose heldPose_;
     Eigen::VectorXd z0_, scale_;
     Eigen::VectorXd stay_;  // ρ + ℓ w_k per kept column
