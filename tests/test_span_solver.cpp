@@ -22,6 +22,25 @@ std::vector<SpanTarget> someTargets(const Clip& clip, int first, int last) {
     }
     return t;
 }
+// Checks grad[k] against central differences of the objective at z for every k in `idx`
+// (relative error < 1e-5 each); returns the largest relative error.
+double checkGradient(SpanSolver& solver, const Eigen::VectorXd& z, const Eigen::VectorXd& grad,
+                     const std::vector<int>& idx) {
+    Eigen::VectorXd gp, gm;
+    double worst = 0.0;
+    for (int k : idx) {
+        const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
+        Eigen::VectorXd zp = z, zm = z;
+        zp[k] += h;
+        zm[k] -= h;
+        const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
+        const double rel = std::abs(num - grad[k]) / std::max(1.0, std::abs(num));
+        worst = std::max(worst, rel);
+        CAPTURE(k);
+        CHECK(rel < 1e-5);
+    }
+    return worst;
+}
 }  // namespace
 
 TEST_CASE(
@@ -41,7 +60,7 @@ TEST_CASE(
         Eigen::VectorXd z = solver.capturedZ();
         // Off the captured point, so no term sits at its stationary point.
         for (Eigen::Index i = 0; i < z.size(); ++i) z[i] += 0.05 * g(rng) * (std::abs(z[i]) > 1.0 ? 5.0 : 1.0);
-        Eigen::VectorXd grad, gp, gm;
+        Eigen::VectorXd grad;
         const double F = solver.objective(z, grad);
         REQUIRE(std::isfinite(F));
         const int b = version->model->latentDim() + version->model->D();
@@ -55,19 +74,7 @@ TEST_CASE(
         }
         for (int k = 0; k < version->model->D(); ++k)
             idx.push_back(b + version->model->latentDim() + k);  // one frame, every DOF
-        double worst = 0.0;
-        for (int k : idx) {
-            const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
-            Eigen::VectorXd zp = z, zm = z;
-            zp[k] += h;
-            zm[k] -= h;
-            const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
-            const double rel = std::abs(num - grad[k]) / std::max(1.0, std::abs(num));
-            worst = std::max(worst, rel);
-            CAPTURE(k);
-            CHECK(rel < 1e-5);
-        }
-        MESSAGE("worst relative gradient error: " << worst);
+        MESSAGE("worst relative gradient error: " << checkGradient(solver, z, grad, idx));
     }
 }
 
@@ -155,7 +162,7 @@ TEST_CASE("a held end enters the second differences: gradient by central differe
     solver.setTargets(someTargets(clip, first, last));
     CHECK(solver.holdEnd(first + 1, atFirst) == "expected the span's first or last frame (89 or 101), found 90");
     CHECK(solver.holdEnd(first, Pose{}) == "expected a finite end pose of the model's skeleton");
-    Eigen::VectorXd z = solver.capturedZ(), grad, gp, gm;
+    Eigen::VectorXd z = solver.capturedZ(), grad;
     const double unheld = solver.objective(z, grad);
     REQUIRE(solver.holdEnd(first, atFirst).empty());
     REQUIRE(solver.holdEnd(last, atLast).empty());
@@ -166,20 +173,11 @@ TEST_CASE("a held end enters the second differences: gradient by central differe
     for (Eigen::Index k = 0; k < z.size(); ++k) z[k] += 0.05 * g(rng);
     solver.objective(z, grad);
     const int b = version->model->latentDim() + version->model->D(), n = solver.innerCount();
-    double worst = 0.0;
-    // The first and last inner frames' x and y (the ones the ends' second differences reach), and one beside them.
-    for (int k : {0, 1, 2, 2 + dof % 7, b + 3, (n - 1) * b, (n - 1) * b + 2, (n - 1) * b + 9, (n - 2) * b + 5}) {
-        const double h = 1e-5 * std::max(1.0, std::abs(z[k]));
-        Eigen::VectorXd zp = z, zm = z;
-        zp[k] += h;
-        zm[k] -= h;
-        const double num = (solver.objective(zp, gp) - solver.objective(zm, gm)) / (2 * h);
-        const double rel = std::abs(num - grad[k]) / std::max(1.0, std::abs(num));
-        worst = std::max(worst, rel);
-        CAPTURE(k);
-        CHECK(rel < 1e-5);
-    }
-    MESSAGE("worst relative gradient error with both ends held: " << worst);
+    // The first and last inner frames' x and y (the ones the ends' second differences reach), and
+    // one beside them.
+    const std::vector<int> idx = {
+        0, 1, 2, 2 + dof % 7, b + 3, (n - 1) * b, (n - 1) * b + 2, (n - 1) * b + 9, (n - 2) * b + 5};
+    MESSAGE("worst relative gradient error with both ends held: " << checkGradient(solver, z, grad, idx));
     // Solved, the frames next to the ends move toward the ends' changes (+8° and −5°).
     const SpanResult r = solver.solve(200, 1e-9, nullptr, SpanMethod::kLevenbergMarquardt);
     CHECK(r.poses.front().anglesDeg[joint][axis] - clip.frames[first + 1].anglesDeg[joint][axis] > 2.0);
