@@ -74,3 +74,27 @@ TEST_CASE("ivm: the trainer's selection ignores Y (any affine change of Y gives 
     const IvmResult direct = selectActiveSet(Kernel(KernelKind::kFas, Eigen::VectorXd::Zero(4)), ta.latent(), 40);
     CHECK(direct.active == ta.activeSet());
 }
+
+TEST_CASE("ivm: the selection is the same bits for 1, 2 and 3 threads over several row chunks") {
+    // Rows are worked on in fixed chunks of 2048 whatever the thread count (docs/maths.md §6), so
+    // 5 000 rows make three chunks for the workers to share.
+    const TrainingData d = walkData(1);
+    const Eigen::MatrixXd base = whitenedPca(d.Y.rowwise() - d.mu.transpose(), 2).X;
+    Eigen::MatrixXd X(5000, 2);
+    for (Eigen::Index i = 0; i < X.rows(); ++i)
+        X.row(i) = base.row(i % base.rows()) * (1.0 + 0.01 * static_cast<double>(i / base.rows()));
+    for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
+        Eigen::VectorXd psi(paramCount(kind));
+        psi[kAlpha] = std::log(5.0);
+        psi[kGamma] = std::log(3.0);
+        psi[kBeta] = std::log(50.0);
+        if (kind == KernelKind::kFas) psi[kEta] = std::log(2.0);
+        const Kernel k(kind, psi);
+        const IvmResult one = selectActiveSet(k, X, 60, 1);
+        for (int threads : {2, 3}) {
+            const IvmResult many = selectActiveSet(k, X, 60, threads);
+            CHECK(many.active == one.active);
+            CHECK((many.variances.array() == one.variances.array()).all());
+        }
+    }
+}

@@ -74,3 +74,56 @@ TEST_CASE(
     CHECK(fused[0] < 0.1 * kxx);  // the cancelling regime
     CHECK(worstSecondDifference(fused) <= 4.0 * m.activeX().rows() * 2.3e-16 * kxx);
 }
+
+TEST_CASE("ActiveSetPosterior::evaluateBatch gives each column what evaluate gives it, for both kernels") {
+    // Step 8 evaluates its points in batches (docs/maths.md §7): the same formulas, the matrix-vector
+    // products done as matrix products, so only the summation order differs. Both kernels: the
+    // committed walk model is FAS; the SGPLVM posterior is the same active set under the RBF kernel.
+    const auto version = test::walkModel35();
+    const gp::GpModel& m = *version->model;
+    std::mt19937 rng(5);
+    std::normal_distribution<double> n01;
+    const int b = 13, d = m.latentDim(), D = static_cast<int>(m.Y.cols());
+    Eigen::MatrixXd X(d, b), Y(D, b);
+    for (int j = 0; j < b; ++j) {
+        X.col(j) = m.X.row(j * 23).transpose();
+        for (int i = 0; i < d; ++i) X(i, j) += 0.3 * n01(rng);
+        Y.col(j) = m.Y.row(j * 19).transpose();
+        for (int i = 0; i < D; ++i) Y(i, j) += 3.0 * n01(rng);
+    }
+    X.col(0).setConstant(2e-4);                 // near the origin, where the angular term is steep
+    X.col(1) = m.activeX().row(3).transpose();  // on an active point, where σ² cancels most
+    X.col(2) = 40.0 * X.col(5);                 // far from the data, where k ≈ 0
+    Eigen::VectorXd psi(gp::paramCount(gp::KernelKind::kSgplvm));
+    psi[gp::kAlpha] = std::log(30.0);
+    psi[gp::kGamma] = std::log(1.5);
+    psi[gp::kBeta] = std::log(0.2);
+    const gp::ActiveSetPosterior rbf(gp::Kernel(gp::KernelKind::kSgplvm, psi), m.activeX(), m.activeYhat(), m.mu, m.w);
+    for (const gp::ActiveSetPosterior* point : {version->posterior.get(), &rbf}) {
+        CAPTURE(point->kernel().hasEta());
+        gp::PointWorkspace ws;
+        gp::PointBatchWorkspace bws;
+        Eigen::VectorXd values;
+        Eigen::MatrixXd G;
+        point->evaluateBatch(X, Y, bws, values, G);
+        REQUIRE(values.size() == b);
+        REQUIRE(G.rows() == d);
+        REQUIRE(G.cols() == b);
+        for (int j = 0; j < b; ++j) {
+            CAPTURE(j);
+            Eigen::VectorXd gx(d);
+            const double v = point->evaluate(X.col(j), Y.col(j), ws, &gx, nullptr);
+            // The bound of the test above: σ²'s cancellation turns last-bit differences of kᵀK⁻¹k
+            // into ~1e-9 relative in L_IK and its gradient.
+            CHECK(values[j] == doctest::Approx(v).epsilon(1e-7));
+            CHECK((G.col(j) - gx).cwiseAbs().maxCoeff() <= 1e-7 * std::max(1.0, gx.cwiseAbs().maxCoeff()));
+        }
+        // A batch of one column is the same evaluation.
+        Eigen::VectorXd one;
+        Eigen::MatrixXd G1;
+        point->evaluateBatch(X.rightCols(1), Y.rightCols(1), bws, one, G1);
+        CHECK(one[0] == doctest::Approx(values[b - 1]).epsilon(1e-12));
+        CHECK_THROWS_AS(point->evaluateBatch(X, Y.leftCols(b - 1), bws, values, G), std::invalid_argument);
+        CHECK_THROWS_AS(point->evaluateBatch(X.topRows(d - 1), Y, bws, values, G), std::invalid_argument);
+    }
+}

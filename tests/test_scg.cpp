@@ -63,3 +63,37 @@ TEST_CASE("scg: a non-finite start is reported, not iterated") {
     CHECK(r.stop == ScgStop::kBadStart);
     CHECK(r.evaluations == 1);
 }
+
+TEST_CASE("scg: machines run side by side take the steps scgMinimize takes, and end for good") {
+    // Step 8 drives many ScgMachines in lock step with batched evaluations; each must take exactly
+    // the steps it takes alone.
+    const ValueAndGradient rosen = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+        const double a = 1.0 - x[0], b = x[1] - x[0] * x[0];
+        g[0] = -2.0 * a - 400.0 * x[0] * b;
+        g[1] = 200.0 * b;
+        return a * a + 100.0 * b * b;
+    };
+    const ValueAndGradient bowl = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+        g = Eigen::Vector3d(2.0, 8.0, 18.0).cwiseProduct(x - Eigen::Vector3d(1.0, -2.0, 0.5));
+        return 0.5 * g.dot(x - Eigen::Vector3d(1.0, -2.0, 0.5));
+    };
+    ScgOptions o;
+    o.tolX = 1e-8;
+    o.tolF = 1e-12;
+    const Eigen::VectorXd r0 = Eigen::Vector2d(-1.2, 1.0), b0 = Eigen::Vector3d(4.0, 4.0, 4.0);
+    const ScgResult rAlone = scgMinimize(rosen, r0, o), bAlone = scgMinimize(bowl, b0, o);
+    ScgMachine r(r0, o), b(b0, o);
+    while (!r.done() || !b.done()) {
+        if (!r.done()) r.supply(rosen(r.request(), r.gradientSlot()));
+        if (!b.done()) b.supply(bowl(b.request(), b.gradientSlot()));
+    }
+    for (const auto& [alone, machine] : {std::pair{&rAlone, &r.result()}, std::pair{&bAlone, &b.result()}}) {
+        CHECK(machine->stop == alone->stop);
+        CHECK(machine->iterations == alone->iterations);
+        CHECK(machine->evaluations == alone->evaluations);
+        CHECK((machine->x.array() == alone->x.array()).all());
+        CHECK(machine->value == alone->value);
+    }
+    CHECK(bAlone.stop == ScgStop::kConverged);
+    CHECK_THROWS_AS(r.supply(0.0), std::logic_error);
+}

@@ -34,24 +34,18 @@ ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::Matrix
         phiI_.row(j) = XI_.row(j) / std::sqrt(XI_.row(j).squaredNorm() + kAngularEps * kAngularEps);
 }
 
-double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
-                                    Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
+void ActiveSetPosterior::crossTerms(const Eigen::VectorXd& x, PointWorkspace& ws) const {
     const Eigen::Index m = XI_.rows(), d = XI_.cols();
-    const double D = static_cast<double>(mu_.size());
     const double alpha = kernel_.alpha(), gamma = kernel_.gamma(), eta = kernel_.eta();
     const bool fas = kernel_.hasEta();
     ws.k.resize(m);
-    ws.v.resize(m);
-    ws.a.resize(m);
     ws.rbf.resize(m);
     ws.angular.resize(m);
     ws.cosine.resize(m);
     ws.J.resize(m, d);
     ws.phiX.resize(d);
-    const double n2 = x.squaredNorm() + kAngularEps * kAngularEps;
-    const double n = std::sqrt(n2);
+    const double n = std::sqrt(x.squaredNorm() + kAngularEps * kAngularEps);
     ws.phiX = x / n;
-    const double phi2 = ws.phiX.squaredNorm();
     // k and ∂k/∂x (docs/maths.md §3) a latent dimension at a time: XI's columns are contiguous,
     // so the distances, the cosines, their exponentials and J's columns are all vectorised.
     ws.rbf.setZero();
@@ -69,6 +63,15 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
         if (fas)
             ws.J.col(c).array() += ws.angular.array() * (phiI_.col(c).array() - ws.cosine.array() * ws.phiX[c]) / n;
     }
+}
+
+double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::VectorXd& y, PointWorkspace& ws,
+                                    Eigen::VectorXd* gradX, Eigen::VectorXd* gradY) const {
+    const Eigen::Index m = XI_.rows();
+    const double D = static_cast<double>(mu_.size());
+    crossTerms(x, ws);
+    ws.v.resize(m);
+    ws.a.resize(m);
     // From the Cholesky factor, not K⁻¹: k(x,x) − ‖L⁻¹k‖² keeps σ² accurate where it is small,
     // while k(x,x) − kᵀ(K⁻¹k) lost up to cond(K)·ε of k(x,x) to cancellation
     // (docs/maths.md §9.1). Two triangular products with the stored L⁻¹ cost what one product
@@ -77,8 +80,7 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     ws.a.noalias() = Linv_.transpose().triangularView<Eigen::Upper>() * ws.v;
     ws.f = mu_;
     ws.f.noalias() += B_.transpose() * ws.k;
-    const double diag = alpha + (fas ? eta * std::exp(phi2) : 0.0);
-    const double noiseFree = diag - ws.v.squaredNorm();
+    const double noiseFree = diagonalAt(ws) - ws.v.squaredNorm();
     const bool clamped = !(noiseFree > 0.0);
     const double s2 = 1.0 / kernel_.beta() + (clamped ? 0.0 : noiseFree);
     ws.variance = s2;
@@ -90,6 +92,61 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
     return value;
 }
 
+void ActiveSetPosterior::evaluateBatch(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, PointBatchWorkspace& ws,
+                                       Eigen::VectorXd& values, Eigen::MatrixXd& gradX) const {
+    const Eigen::Index m = XI_.rows(), d = XI_.cols(), b = X.cols();
+    if (X.rows() != d || Y.rows() != mu_.size() || Y.cols() != b)
+        throw std::invalid_argument("ActiveSetPosterior::evaluateBatch: expected X d×b and Y D×b");
+    const double D = static_cast<double>(mu_.size());
+    ws.K.resize(m, b);
+    ws.J.resize(m, d * b);
+    ws.diagGrad.resize(b);
+    ws.diag.resize(b);
+    Eigen::VectorXd& x = ws.x;
+    for (Eigen::Index j = 0; j < b; ++j) {
+        x = X.col(j);
+        crossTerms(x, ws.point);
+        ws.K.col(j) = ws.point.k;
+        ws.J.middleCols(j * d, d) = ws.point.J;
+        ws.diag[j] = diagonalAt(ws.point);
+        ws.diagGrad[j] = diagonalGradientScale(x, ws.point);
+    }
+    // The products evaluate() does per point, here for all b points at once (the same σ² from L⁻¹).
+    ws.V.noalias() = Linv_.triangularView<Eigen::Lower>() * ws.K;
+    ws.A.noalias() = Linv_.transpose().triangularView<Eigen::Upper>() * ws.V;
+    ws.F.noalias() = B_.transpose() * ws.K;
+    ws.F.colwise() += mu_;
+    ws.WR = (Y - ws.F).array().colwise() * w_.array();  // W(y − f)
+    values.resize(b);
+    Eigen::VectorXd& E = ws.E;
+    Eigen::VectorXd& s2 = ws.s2;
+    E.resize(b);
+    s2.resize(b);
+    std::vector<char>& clamped = ws.clamped;
+    clamped.resize(static_cast<std::size_t>(b));
+    for (Eigen::Index j = 0; j < b; ++j) {
+        x = X.col(j);
+        E[j] = ws.WR.col(j).squaredNorm();
+        const double noiseFree = ws.diag[j] - ws.V.col(j).squaredNorm();
+        clamped[static_cast<std::size_t>(j)] = !(noiseFree > 0.0);
+        s2[j] = 1.0 / kernel_.beta() + (clamped[static_cast<std::size_t>(j)] ? 0.0 : noiseFree);
+        values[j] = likFromResidual(E[j], s2[j], D, x);
+    }
+    ws.WR.array().colwise() *= w_.array();  // W²(y − f)
+    ws.BWR.noalias() = B_ * ws.WR;
+    gradX.resize(d, b);
+    for (Eigen::Index j = 0; j < b; ++j) {
+        x = X.col(j);
+        latentGradient(x, ws.J.middleCols(j * d, d), ws.A.col(j), ws.BWR.col(j), E[j], s2[j],
+                       clamped[static_cast<std::size_t>(j)] != 0, ws.diagGrad[j], gradX.col(j));
+    }
+}
+
+double ActiveSetPosterior::diagonalAt(const PointWorkspace& ws) const {
+    // k(x,x) = α + η e^{|φ(x)|²} (the angular part only in FAS).
+    return kernel_.alpha() + (kernel_.hasEta() ? kernel_.eta() * std::exp(ws.phiX.squaredNorm()) : 0.0);
+}
+
 double ActiveSetPosterior::diagonalGradientScale(const Eigen::VectorXd& x, const PointWorkspace& ws) const {
     // ∂k(x,x)/∂x = 2η e^{|φ|²} ε² x / n⁴ (FAS only; the RBF part of k(x,x) is constant).
     if (!kernel_.hasEta()) return 0.0;
@@ -97,21 +154,25 @@ double ActiveSetPosterior::diagonalGradientScale(const Eigen::VectorXd& x, const
     return 2.0 * kernel_.eta() * std::exp(ws.phiX.squaredNorm()) * kAngularEps * kAngularEps / (n2 * n2);
 }
 
+void ActiveSetPosterior::latentGradient(const Eigen::VectorXd& x, const Eigen::Ref<const Eigen::MatrixXd>& J,
+                                        const Eigen::Ref<const Eigen::VectorXd>& a,
+                                        const Eigen::Ref<const Eigen::VectorXd>& bwr, double E, double s2, bool clamped,
+                                        double diagGrad, Eigen::Ref<Eigen::VectorXd> gradX) const {
+    const double D = static_cast<double>(mu_.size());
+    const double c = D / (2.0 * s2) - E / (2.0 * s2 * s2);
+    for (Eigen::Index i = 0; i < J.cols(); ++i) {
+        const double dS2 = clamped ? 0.0 : diagGrad * x[i] - 2.0 * J.col(i).dot(a);
+        gradX[i] = -(1.0 / s2) * J.col(i).dot(bwr) + c * dS2 + x[i];
+    }
+}
+
 void ActiveSetPosterior::gradients(const Eigen::VectorXd& x, PointWorkspace& ws, Eigen::VectorXd* gradX,
                                    Eigen::VectorXd* gradY) const {
     const double s2 = ws.variance;
     if (gradX) {
-        const Eigen::Index d = XI_.cols();
-        const double D = static_cast<double>(mu_.size());
-        const double E = ws.r.squaredNorm();
         ws.wr = w_.cwiseProduct(ws.r);
         ws.bwr.noalias() = B_ * ws.wr;
-        const double c = D / (2.0 * s2) - E / (2.0 * s2 * s2);
-        const double diagGrad = diagonalGradientScale(x, ws);
-        for (Eigen::Index i = 0; i < d; ++i) {
-            const double dS2 = ws.clamped ? 0.0 : diagGrad * x[i] - 2.0 * ws.J.col(i).dot(ws.a);
-            (*gradX)[i] = -(1.0 / s2) * ws.J.col(i).dot(ws.bwr) + c * dS2 + x[i];
-        }
+        latentGradient(x, ws.J, ws.a, ws.bwr, ws.r.squaredNorm(), s2, ws.clamped, diagonalGradientScale(x, ws), *gradX);
     }
     if (gradY) *gradY = w_.cwiseProduct(ws.r) / s2;  // same size: evaluated in place
 }
@@ -288,34 +349,68 @@ double ActiveSetPosterior::evaluate(const Eigen::VectorXd& x, const Eigen::Vecto
 
 namespace {
 
+// Points per block: their SCG runs side by side, each round's evaluations one batched evaluation
+// (a matrix product runs several times faster per multiply-add than a matrix-vector product).
+// Up to 64 columns, fewer where a pass has few points so that it still splits into about 8 blocks
+// for the workers to share. The size depends on the number of points only and the blocks are cut
+// from `points` in order, so a point's arithmetic never depends on the thread count.
+std::size_t pointBlockSize(std::size_t points) { return std::clamp<std::size_t>((points + 7) / 8, 8, 64); }
+
 void optimizePass(const ActiveSetPosterior& model, const Eigen::MatrixXd& Y, const std::vector<int>& points,
                   Eigen::MatrixXd& X, const ScgOptions& options, int threads, const std::atomic<bool>* cancel,
                   const TemporalPrior* prior) {
     if (points.empty()) return;
-    threads = std::min<int>(threads, static_cast<int>(points.size()));
+    const std::size_t blockSize = pointBlockSize(points.size());
+    const std::size_t blocks = (points.size() + blockSize - 1) / blockSize;
+    threads = std::min<int>(threads, static_cast<int>(blocks));
     std::vector<Eigen::VectorXd> results(points.size());
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
-        PointWorkspace ws;  // storage only: a point's fit does not depend on which worker ran it
-        for (std::size_t t = next++; t < points.size(); t = next++) {
-            const int i = points[t];
+        // Storage only: a block's fits do not depend on which worker ran it.
+        PointBatchWorkspace ws;
+        Eigen::MatrixXd Xb, Yb, G;
+        Eigen::VectorXd values, x, gp;
+        std::vector<ScgMachine> machines;
+        std::vector<std::size_t> running;  // indices into the block of the machines still iterating
+        for (std::size_t blk = next++; blk < blocks; blk = next++) {
+            const std::size_t first = blk * blockSize, last = std::min(points.size(), first + blockSize);
             if (cancel && cancel->load()) {
-                results[t] = X.row(i).transpose();
+                for (std::size_t t = first; t < last; ++t) results[t] = X.row(points[t]).transpose();
                 continue;
             }
-            const Eigen::VectorXd y = Y.row(i).transpose();
-            Eigen::VectorXd gp;
-            const ValueAndGradient fg = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-                g.resize(x.size());
-                double v = model.evaluate(x, y, ws, &g, nullptr);
-                if (prior) {
-                    v += prior->pointValue(X, i, x, &gp);
-                    g += gp;
+            machines.clear();
+            for (std::size_t t = first; t < last; ++t) machines.emplace_back(X.row(points[t]).transpose(), options);
+            for (;;) {
+                running.clear();
+                for (std::size_t k = 0; k < machines.size(); ++k)
+                    if (!machines[k].done()) running.push_back(k);
+                if (running.empty()) break;
+                const Eigen::Index nb = static_cast<Eigen::Index>(running.size());
+                Xb.resize(X.cols(), nb);
+                Yb.resize(Y.cols(), nb);
+                for (Eigen::Index j = 0; j < nb; ++j) {
+                    const std::size_t k = running[static_cast<std::size_t>(j)];
+                    Xb.col(j) = machines[k].request();
+                    Yb.col(j) = Y.row(points[first + k]).transpose();
                 }
-                return v;
-            };
-            const ScgResult r = scgMinimize(fg, X.row(i).transpose(), options);
-            results[t] = r.x.allFinite() ? r.x : Eigen::VectorXd(X.row(i).transpose());
+                model.evaluateBatch(Xb, Yb, ws, values, G);
+                for (Eigen::Index j = 0; j < nb; ++j) {
+                    const std::size_t k = running[static_cast<std::size_t>(j)];
+                    double v = values[j];
+                    Eigen::VectorXd& g = machines[k].gradientSlot();
+                    g = G.col(j);
+                    if (prior) {
+                        x = Xb.col(j);
+                        v += prior->pointValue(X, points[first + k], x, &gp);
+                        g += gp;
+                    }
+                    machines[k].supply(v);
+                }
+            }
+            for (std::size_t k = 0; k < machines.size(); ++k) {
+                const Eigen::VectorXd& r = machines[k].result().x;
+                results[first + k] = r.allFinite() ? r : Eigen::VectorXd(X.row(points[first + k]).transpose());
+            }
         }
     };
     parallelFor(threads, [&](int) { worker(); });

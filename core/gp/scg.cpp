@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace mgp::gp {
 
@@ -17,97 +18,116 @@ const char* scgStopName(ScgStop s) {
     }
 }
 
-ScgResult scgMinimize(const ValueAndGradient& fg, const Eigen::VectorXd& x0, const ScgOptions& opt) {
-    constexpr double kSigma0 = 1e-4;
-    constexpr double kBetaMin = 1e-15, kBetaMax = 1e100;
-    const double eps = std::numeric_limits<double>::epsilon();
+namespace {
+constexpr double kSigma0 = 1e-4;
+constexpr double kBetaMin = 1e-15, kBetaMax = 1e100;
+}  // namespace
+
+ScgMachine::ScgMachine(const Eigen::VectorXd& x0, const ScgOptions& options) : opt_(options), x_(x0) {
     const Eigen::Index n = x0.size();
+    g_.resize(n);
+    gOld_.resize(n);
+    gNew_.resize(n);
+    gPlus_.resize(n);
+    xNew_.resize(n);
+    xPlus_.resize(n);
+}
 
-    ScgResult res;
-    Eigen::VectorXd x = x0, g(n), gOld(n), gNew(n), gPlus(n), xNew(n), xPlus(n);
-    double fOld = fg(x, g);
-    res.evaluations = 1;
-    res.x = x;
-    res.value = fOld;
-    if (!std::isfinite(fOld) || !g.allFinite()) {
-        res.stop = ScgStop::kBadStart;
-        return res;
-    }
-    Eigen::VectorXd dir = -g;
-    bool success = true;
-    int nSuccess = 0;
-    double beta = 1.0;
-    double mu = 0.0, kappa = 0.0, theta = 0.0;
+const Eigen::VectorXd& ScgMachine::request() const {
+    return phase_ == Phase::kCurvature ? xPlus_ : phase_ == Phase::kTrial ? xNew_ : x_;
+}
 
-    for (int j = 1; j <= opt.maxIterations; ++j) {
-        if (opt.shouldStop && opt.shouldStop()) {
-            res.stop = ScgStop::kStopped;
-            break;
-        }
-        res.iterations = j;
-        if (success) {
-            mu = dir.dot(g);
-            if (mu >= 0.0) {
-                dir = -g;
-                mu = dir.dot(g);
-            }
-            kappa = dir.dot(dir);
-            if (kappa < eps) {
-                res.stop = ScgStop::kTinyDirection;
-                break;
-            }
-            const double sigma = kSigma0 / std::sqrt(kappa);
-            xPlus = x + sigma * dir;
-            const double fPlus = fg(xPlus, gPlus);
-            ++res.evaluations;
-            theta = (std::isfinite(fPlus) && gPlus.allFinite()) ? dir.dot(gPlus - g) / sigma : 0.0;
-        }
-        double delta = theta + beta * kappa;
-        if (delta <= 0.0) {
-            delta = beta * kappa;
-            beta = beta - theta / kappa;
-        }
-        const double alpha = -mu / delta;
-        xNew = x + alpha * dir;
-        const double fNew = fg(xNew, gNew);
-        ++res.evaluations;
-        double Delta = 2.0 * (fNew - fOld) / (alpha * mu);
-        // docs/maths.md §7 step 4: a non-finite trial is a failure that must change the scale.
-        if (!std::isfinite(fNew) || !gNew.allFinite() || std::isnan(Delta))
-            Delta = -std::numeric_limits<double>::infinity();
-        if (Delta >= 0.0) {
-            success = true;
-            ++nSuccess;
-            const double stepMax = (alpha * dir).cwiseAbs().maxCoeff();
-            const double fChange = std::abs(fNew - fOld);
-            x = xNew;
-            gOld = g;
-            g = gNew;
-            fOld = fNew;
-            if (stepMax < opt.tolX && fChange < opt.tolF) {
-                res.stop = ScgStop::kConverged;
-                break;
-            }
-            if (g.dot(g) == 0.0) {
-                res.stop = ScgStop::kZeroGradient;
-                break;
-            }
-        } else {
-            success = false;
-        }
-        if (Delta < 0.25) beta = std::min(4.0 * beta, kBetaMax);
-        if (Delta > 0.75) beta = std::max(0.5 * beta, kBetaMin);
-        if (nSuccess == n) {
-            dir = -g;
-            nSuccess = 0;
-        } else if (success) {
-            const double gamma = (gOld - g).dot(g) / mu;
-            dir = gamma * dir - g;
-        }
+Eigen::VectorXd& ScgMachine::gradientSlot() {
+    return phase_ == Phase::kCurvature ? gPlus_ : phase_ == Phase::kTrial ? gNew_ : g_;
+}
+
+void ScgMachine::finish(ScgStop stop) {
+    res_.stop = stop;
+    res_.x = x_;
+    res_.value = fOld_;
+    phase_ = Phase::kDone;
+}
+
+void ScgMachine::supply(double value) {
+    ++res_.evaluations;
+    switch (phase_) {
+        case Phase::kStart:
+            fOld_ = value;
+            if (!std::isfinite(fOld_) || !g_.allFinite()) return finish(ScgStop::kBadStart);
+            dir_ = -g_;
+            return beginIteration();
+        case Phase::kCurvature:
+            theta_ = (std::isfinite(value) && gPlus_.allFinite()) ? dir_.dot(gPlus_ - g_) / sigma_ : 0.0;
+            return requestTrial();
+        case Phase::kTrial: break;
+        case Phase::kDone: throw std::logic_error("ScgMachine::supply: the minimisation has ended");
     }
-    res.x = x;
-    res.value = fOld;
-    return res;
+    fNew_ = value;
+    double Delta = 2.0 * (fNew_ - fOld_) / (alpha_ * mu_);
+    // docs/maths.md §7 step 4: a non-finite trial is a failure that must change the scale.
+    if (!std::isfinite(fNew_) || !gNew_.allFinite() || std::isnan(Delta))
+        Delta = -std::numeric_limits<double>::infinity();
+    if (Delta >= 0.0) {
+        success_ = true;
+        ++nSuccess_;
+        const double stepMax = (alpha_ * dir_).cwiseAbs().maxCoeff();
+        const double fChange = std::abs(fNew_ - fOld_);
+        x_ = xNew_;
+        gOld_ = g_;
+        g_ = gNew_;
+        fOld_ = fNew_;
+        if (stepMax < opt_.tolX && fChange < opt_.tolF) return finish(ScgStop::kConverged);
+        if (g_.dot(g_) == 0.0) return finish(ScgStop::kZeroGradient);
+    } else {
+        success_ = false;
+    }
+    if (Delta < 0.25) beta_ = std::min(4.0 * beta_, kBetaMax);
+    if (Delta > 0.75) beta_ = std::max(0.5 * beta_, kBetaMin);
+    if (nSuccess_ == x_.size()) {
+        dir_ = -g_;
+        nSuccess_ = 0;
+    } else if (success_) {
+        const double gamma = (gOld_ - g_).dot(g_) / mu_;
+        dir_ = gamma * dir_ - g_;
+    }
+    beginIteration();
+}
+
+void ScgMachine::beginIteration() {
+    if (++iteration_ > opt_.maxIterations) return finish(ScgStop::kMaxIterations);
+    if (opt_.shouldStop && opt_.shouldStop()) return finish(ScgStop::kStopped);
+    res_.iterations = iteration_;
+    if (!success_) return requestTrial();
+    mu_ = dir_.dot(g_);
+    if (mu_ >= 0.0) {
+        dir_ = -g_;
+        mu_ = dir_.dot(g_);
+    }
+    kappa_ = dir_.dot(dir_);
+    if (kappa_ < std::numeric_limits<double>::epsilon()) return finish(ScgStop::kTinyDirection);
+    sigma_ = kSigma0 / std::sqrt(kappa_);
+    xPlus_ = x_ + sigma_ * dir_;
+    phase_ = Phase::kCurvature;
+}
+
+void ScgMachine::requestTrial() {
+    double delta = theta_ + beta_ * kappa_;
+    if (delta <= 0.0) {
+        delta = beta_ * kappa_;
+        beta_ = beta_ - theta_ / kappa_;
+    }
+    alpha_ = -mu_ / delta;
+    xNew_ = x_ + alpha_ * dir_;
+    phase_ = Phase::kTrial;
+}
+
+ScgResult scgMinimize(const ValueAndGradient& fg, const Eigen::VectorXd& x0, const ScgOptions& opt) {
+    ScgMachine m(x0, opt);
+    while (!m.done()) {
+        const double f = fg(m.request(), m.gradientSlot());
+        m.supply(f);
+    }
+    return m.result();
 }
 
 }  // namespace mgp::gp

@@ -15,6 +15,7 @@ struct IvmResult {
                                 // (clamped at ≥ 0); empty when M ≥ N
 };
 
-IvmResult selectActiveSet(const Kernel& kernel, const Eigen::MatrixXd& X, int m);
+// threads: workers for each step's kernel column and update (≥ 1; the bits do not depend on it).
+IvmResult selectActiveSet(const Kernel& kernel, const Eigen::MatrixXd& X, int m, int threads = 1);
 
 }  // namespace mgp::gp

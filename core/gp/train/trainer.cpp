@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <thread>
 
 #include "gp/gp_objective.h"
 #include "gp/point_objective.h"
@@ -188,7 +189,9 @@ GpObjectiveOptions Trainer::objective() const {
 }
 
 std::vector<int> Trainer::selectActive() const {
-    return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize).active;
+    const int threads =
+        opt_.threads > 0 ? opt_.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize, threads).active;
 }
 
 double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry, const std::atomic<bool>* cancel) {

@@ -51,7 +51,7 @@ struct TrainOptions {
     double scgTolX = 1e-4, scgTolF = 1e-4;
     ConvergenceTest test = ConvergenceTest::kRaw;
     bool stopOnConvergence = true;
-    int threads = 0;  // Step 8 threads, ≤ 0: hardware concurrency
+    int threads = 0;  // Step 8's and the IVM's threads, ≤ 0: hardware concurrency
     // The paper-literal eq. 5 (for Table 1's comparison run only): Jacobian term −N Σ ln w_k
     // and no gauge (W profiled without constraint, w_k = sqrt(N/s_k)). It has no minimiser
     // (docs/maths.md §4.2); the default corrected objective uses c = M and Σ ln w_k = 0.
