@@ -18,18 +18,23 @@ TrainingData walkData(int step) {
     for (int t = 0; t < clip.frameCount(); t += step) frames.push_back(t);
     return trainingDataFromClip(clip, frames);
 }
+
+// α = 5, γ = 3, β = 50 (and η = 2 for FAS): a kernel whose selection is not trivial on the walk.
+Kernel testKernel(KernelKind kind) {
+    Eigen::VectorXd psi(paramCount(kind));
+    psi[kAlpha] = std::log(5.0);
+    psi[kGamma] = std::log(3.0);
+    psi[kBeta] = std::log(50.0);
+    if (kind == KernelKind::kFas) psi[kEta] = std::log(2.0);
+    return Kernel(kind, psi);
+}
 }  // namespace
 
 TEST_CASE("ivm: residual variances after selection equal the exact posterior variances") {
     const TrainingData d = walkData(3);
     const Eigen::MatrixXd X = whitenedPca(d.Y.rowwise() - d.mu.transpose(), 2).X;
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
-        Eigen::VectorXd psi(paramCount(kind));
-        psi[kAlpha] = std::log(5.0);
-        psi[kGamma] = std::log(3.0);
-        psi[kBeta] = std::log(50.0);
-        if (kind == KernelKind::kFas) psi[kEta] = std::log(2.0);
-        const Kernel k(kind, psi);
+        const Kernel k = testKernel(kind);
         const int m = 30;
         const IvmResult r = selectActiveSet(k, X, m);
         REQUIRE(r.active.size() == static_cast<std::size_t>(m));
@@ -84,12 +89,7 @@ TEST_CASE("ivm: the selection is the same bits for 1, 2 and 3 threads over sever
     for (Eigen::Index i = 0; i < X.rows(); ++i)
         X.row(i) = base.row(i % base.rows()) * (1.0 + 0.01 * static_cast<double>(i / base.rows()));
     for (KernelKind kind : {KernelKind::kFas, KernelKind::kSgplvm}) {
-        Eigen::VectorXd psi(paramCount(kind));
-        psi[kAlpha] = std::log(5.0);
-        psi[kGamma] = std::log(3.0);
-        psi[kBeta] = std::log(50.0);
-        if (kind == KernelKind::kFas) psi[kEta] = std::log(2.0);
-        const Kernel k(kind, psi);
+        const Kernel k = testKernel(kind);
         const IvmResult one = selectActiveSet(k, X, 60, 1);
         for (int threads : {2, 3}) {
             const IvmResult many = selectActiveSet(k, X, 60, threads);

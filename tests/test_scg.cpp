@@ -7,13 +7,17 @@
 
 using namespace mgp::gp;
 
+namespace {
+// Rosenbrock's valley, minimum 0 at (1, 1).
+const ValueAndGradient rosen = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+    const double a = 1.0 - x[0], b = x[1] - x[0] * x[0];
+    g[0] = -2.0 * a - 400.0 * x[0] * b;
+    g[1] = 200.0 * b;
+    return a * a + 100.0 * b * b;
+};
+}  // namespace
+
 TEST_CASE("scg: Rosenbrock from (−1.2, 1) reaches (1, 1) within 1e-6 in < 100 iterations") {
-    const ValueAndGradient rosen = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-        const double a = 1.0 - x[0], b = x[1] - x[0] * x[0];
-        g[0] = -2.0 * a - 400.0 * x[0] * b;
-        g[1] = 200.0 * b;
-        return a * a + 100.0 * b * b;
-    };
     ScgOptions o;
     o.maxIterations = 100;
     o.tolX = 1e-8;
@@ -67,12 +71,6 @@ TEST_CASE("scg: a non-finite start is reported, not iterated") {
 TEST_CASE("scg: machines run side by side take the steps scgMinimize takes, and end for good") {
     // Step 8 drives many ScgMachines in lock step with batched evaluations; each must take exactly
     // the steps it takes alone.
-    const ValueAndGradient rosen = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-        const double a = 1.0 - x[0], b = x[1] - x[0] * x[0];
-        g[0] = -2.0 * a - 400.0 * x[0] * b;
-        g[1] = 200.0 * b;
-        return a * a + 100.0 * b * b;
-    };
     const ValueAndGradient bowl = [](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
         g = Eigen::Vector3d(2.0, 8.0, 18.0).cwiseProduct(x - Eigen::Vector3d(1.0, -2.0, 0.5));
         return 0.5 * g.dot(x - Eigen::Vector3d(1.0, -2.0, 0.5));
