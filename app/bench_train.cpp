@@ -218,7 +218,7 @@ const BenchRegistration trainBench(
                                      {"synthetic_rows", c.syntheticRows},
                                      {"seconds", sec},
                                      {"iterations", r.log.size()},
-                                     {"target_seconds", 60.0},
+                                     {"target_seconds", 10.0},
                                      {"measured_once", true},
                                      {"peak_rss_mb", usage.ru_maxrss / 1024.0},
                                      {"one_N_by_M_matrix_mb", 8.0 * n * o.activeSize / mb},
