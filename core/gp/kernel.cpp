@@ -40,9 +40,20 @@ Kernel::Kernel(KernelKind kind, const Eigen::VectorXd& logParams) : kind_(kind) 
 double Kernel::norm(const Eigen::VectorXd& x) { return std::sqrt(x.squaredNorm() + kAngularEps * kAngularEps); }
 
 namespace {
+void directionsAndNorms(const Eigen::MatrixXd& X, Eigen::MatrixXd& phi, Eigen::VectorXd& n);
+}  // namespace
+
+Eigen::MatrixXd Kernel::directions(const Eigen::MatrixXd& X) {
+    Eigen::MatrixXd phi;
+    Eigen::VectorXd n;
+    directionsAndNorms(X, phi, n);
+    return phi;
+}
+
+namespace {
 
 // Row-wise φ and n for a point set.
-void directions(const Eigen::MatrixXd& X, Eigen::MatrixXd& phi, Eigen::VectorXd& n) {
+void directionsAndNorms(const Eigen::MatrixXd& X, Eigen::MatrixXd& phi, Eigen::VectorXd& n) {
     n.resize(X.rows());
     phi.resize(X.rows(), X.cols());
     for (Eigen::Index i = 0; i < X.rows(); ++i) {
@@ -87,7 +98,7 @@ void Kernel::parts(const Eigen::MatrixXd& X, GramParts& p) const {
     p.r2.triangularView<Eigen::StrictlyUpper>() = p.r2.transpose();
     p.R.triangularView<Eigen::StrictlyUpper>() = p.R.transpose();
     if (hasEta()) {
-        directions(X, p.phi, p.n);
+        directionsAndNorms(X, p.phi, p.n);
         p.C.resize(m, m);
         p.E.resize(m, m);
         const Eigen::Index d = X.cols();

@@ -79,6 +79,8 @@ public:
 
     // φ(x) and n(x) = sqrt(‖x‖² + ε²).
     static double norm(const Eigen::VectorXd& x);
+    // φ of every row of X: row i is x_i / n(x_i).
+    static Eigen::MatrixXd directions(const Eigen::MatrixXd& X);
 
 private:
     KernelKind kind_;

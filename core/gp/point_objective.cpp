@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include "gp/gp_objective.h"
 #include "util/parallel_for.h"
@@ -29,9 +28,7 @@ ActiveSetPosterior::ActiveSetPosterior(const Kernel& kernel, const Eigen::Matrix
     Kinv_ = llt_.solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
     Linv_ = llt_.matrixL().solve(Eigen::MatrixXd::Identity(XI.rows(), XI.rows()));
     B_ = llt_.solve(Yhat);
-    phiI_.resize(XI_.rows(), XI_.cols());
-    for (Eigen::Index j = 0; j < XI_.rows(); ++j)
-        phiI_.row(j) = XI_.row(j) / std::sqrt(XI_.row(j).squaredNorm() + kAngularEps * kAngularEps);
+    phiI_ = Kernel::directions(XI_);
 }
 
 void ActiveSetPosterior::crossTerms(const Eigen::VectorXd& x, PointWorkspace& ws) const {
@@ -423,7 +420,7 @@ void optimizeInactivePoints(const ActiveSetPosterior& model, const Eigen::Matrix
                             Eigen::MatrixXd& X, const ScgOptions& options, int threads, const std::atomic<bool>* cancel,
                             const TemporalPrior* prior) {
     if (points.empty()) return;
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads = resolveWorkers(threads);
     if (!prior || prior->empty()) {
         optimizePass(model, Y, points, X, options, threads, cancel, nullptr);
         return;

@@ -62,20 +62,20 @@ void ScgMachine::supply(double value) {
         case Phase::kTrial: break;
         case Phase::kDone: throw std::logic_error("ScgMachine::supply: the minimisation has ended");
     }
-    fNew_ = value;
-    double Delta = 2.0 * (fNew_ - fOld_) / (alpha_ * mu_);
+    const double fNew = value;
+    double Delta = 2.0 * (fNew - fOld_) / (alpha_ * mu_);
     // docs/maths.md §7 step 4: a non-finite trial is a failure that must change the scale.
-    if (!std::isfinite(fNew_) || !gNew_.allFinite() || std::isnan(Delta))
+    if (!std::isfinite(fNew) || !gNew_.allFinite() || std::isnan(Delta))
         Delta = -std::numeric_limits<double>::infinity();
     if (Delta >= 0.0) {
         success_ = true;
         ++nSuccess_;
         const double stepMax = (alpha_ * dir_).cwiseAbs().maxCoeff();
-        const double fChange = std::abs(fNew_ - fOld_);
+        const double fChange = std::abs(fNew - fOld_);
         x_ = xNew_;
         gOld_ = g_;
         g_ = gNew_;
-        fOld_ = fNew_;
+        fOld_ = fNew;
         if (stepMax < opt_.tolX && fChange < opt_.tolF) return finish(ScgStop::kConverged);
         if (g_.dot(g_) == 0.0) return finish(ScgStop::kZeroGradient);
     } else {

@@ -56,7 +56,7 @@ private:
     ScgResult res_;
     Phase phase_ = Phase::kStart;
     Eigen::VectorXd x_, g_, gOld_, gNew_, gPlus_, xNew_, xPlus_, dir_;
-    double fOld_ = 0.0, fNew_ = 0.0, alpha_ = 0.0;
+    double fOld_ = 0.0, alpha_ = 0.0;
     bool success_ = true;
     int nSuccess_ = 0, iteration_ = 0;
     double beta_ = 1.0, mu_ = 0.0, kappa_ = 0.0, theta_ = 0.0, sigma_ = 0.0;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include "util/parallel_for.h"
 
@@ -315,8 +314,7 @@ void MotionEditJob::runSpan(const std::vector<std::vector<IkConstraint>>& holds)
 void MotionEditJob::runPerFrame(const std::vector<std::vector<IkConstraint>>& holds) {
     const std::vector<Pose>& start = baseFrames();
     const int count = static_cast<int>(solvedFrames.size());
-    int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    workers = std::max(1, std::min(workers, count));
+    const int workers = std::max(1, std::min(resolveWorkers(threads), count));
     auto work = [&](int worker) {
         LearnedIkSolver solver(version);
         LearnedIkRequest req;

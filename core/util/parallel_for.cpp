@@ -1,11 +1,16 @@
 #include "util/parallel_for.h"
 
+#include <algorithm>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 namespace mgp {
+
+int resolveWorkers(int threads) {
+    return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 void parallelFor(int workers, const std::function<void(int worker)>& body) {
     if (workers < 1) workers = 1;

@@ -10,4 +10,8 @@ namespace mgp {
 
 void parallelFor(int workers, const std::function<void(int worker)>& body);
 
+// A thread-count option as workers: `threads` itself if > 0, else the hardware's thread count
+// (at least 1).
+int resolveWorkers(int threads);
+
 }  // namespace mgp

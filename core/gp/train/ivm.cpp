@@ -38,9 +38,7 @@ IvmResult selectActiveSet(const Kernel& kernel, const Eigen::MatrixXd& X, int m,
     }
     Eigen::VectorXd diag = kernel.diagFRows(X);
     const double noise = 1.0 / kernel.beta();
-    Eigen::MatrixXd phi;
-    if (kernel.hasEta())
-        phi = X.array().colwise() / (X.rowwise().squaredNorm().array() + kAngularEps * kAngularEps).sqrt();
+    const Eigen::MatrixXd phi = kernel.hasEta() ? Kernel::directions(X) : Eigen::MatrixXd();
     // Column r = v of the r-th selected point: a round reads the first r columns down every row,
     // contiguously, and writes column r.
     Eigen::MatrixXd V(n, m);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
-#include <thread>
 
 #include "gp/gp_objective.h"
 #include "gp/point_objective.h"
@@ -15,6 +14,7 @@
 #include "gp/train/pca_init.h"
 #include "skeleton/clip.h"
 #include "skeleton/pose_layout.h"
+#include "util/parallel_for.h"
 
 namespace mgp::gp {
 
@@ -189,9 +189,7 @@ GpObjectiveOptions Trainer::objective() const {
 }
 
 std::vector<int> Trainer::selectActive() const {
-    const int threads =
-        opt_.threads > 0 ? opt_.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize, threads).active;
+    return selectActiveSet(Kernel(opt_.kind, psi_), X_, opt_.activeSize, resolveWorkers(opt_.threads)).active;
 }
 
 double Trainer::optimizeActive(const std::vector<int>& active, IterationLog* entry, const std::atomic<bool>* cancel) {
