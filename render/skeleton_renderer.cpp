@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/gl_context.h"
+#include "render/ground_layer.h"
 #include "render/overlay_layer.h"
 
 #if defined(__GNUC__)
@@ -204,6 +205,7 @@ struct SceneRenderer::Impl {
     unsigned instanceVbo = 0;
     unsigned shadowTexture = 0;
     std::vector<std::uint8_t> shadowTexels;
+    std::vector<float> shadowShade;  // the texels' shade before rounding
 
     // Bakes the contact shadows (a product of gaussian blobs) into a kShadowRes² texture over
     // the square that holds them; returns (corner x, corner z, 1/size, 1/size) for the shader.
@@ -212,6 +214,7 @@ struct SceneRenderer::Impl {
     unsigned textVao = 0, textVbo = 0;
     int samples = 4;
     std::unique_ptr<OverlayLayer> stillOverlays;  // without MSAA only (see Path::stillOverlay)
+    std::unique_ptr<GroundLayer> backdrop;        // without MSAA, when the caller asks (useBackdropLayer)
     unsigned fbo = 0, colourRb = 0, depthRb = 0;
     int fboWidth = 0, fboHeight = 0;
 
@@ -236,8 +239,13 @@ struct SceneRenderer::Impl {
     }
     // The phases of SceneRenderer::draw that use the renderer's GL objects.
     void beginFrame(const RenderStyle& s, int width, int height, unsigned targetFramebuffer);
+    void beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view, int width, int height,
+                                unsigned targetFramebuffer);
+    void setFrameState(int width, int height);
     void useLit(const FrameView& view);
-    void drawGround(const Scene& scene, const RenderStyle& s, const glm::mat4& viewProj, float viewportHeight);
+    // The ground quad; shadowRect as updateShadowTexture returns it (all 0: no shadows).
+    void drawGround(const Scene& scene, const RenderStyle& s, const glm::mat4& viewProj, float viewportHeight,
+                    const glm::vec4& shadowRect);
     void drawBackground(const RenderStyle& s, float viewportHeight);
     void drawCaption(const std::string& caption, int width, int height);
     void resolveFrame(int width, int height, unsigned targetFramebuffer);
@@ -296,6 +304,15 @@ SceneRenderer::SceneRenderer(int msaaSamples) : impl_(std::make_unique<Impl>()) 
 int SceneRenderer::msaaSamples() const { return impl_->samples; }
 
 long SceneRenderer::overlayLayerDraws() const { return impl_->stillOverlays ? impl_->stillOverlays->draws() : 0; }
+
+void SceneRenderer::useBackdropLayer(bool on) {
+    if (!on || impl_->samples > 1)
+        impl_->backdrop.reset();
+    else if (!impl_->backdrop)
+        impl_->backdrop = std::make_unique<GroundLayer>();
+}
+
+long SceneRenderer::backdropLayerDraws() const { return impl_->backdrop ? impl_->backdrop->draws() : 0; }
 
 SceneRenderer::~SceneRenderer() {
     Impl& r = *impl_;
@@ -436,21 +453,38 @@ glm::vec4 SceneRenderer::Impl::updateShadowTexture(const Scene& scene) {
     }
     const float size = std::max(hi.x - lo.x, hi.y - lo.y);
     const glm::vec2 corner = 0.5f * (lo + hi) - glm::vec2(0.5f * size);
-    shadowTexels.resize(static_cast<std::size_t>(kShadowRes) * kShadowRes);
+    // Each blob reaches 3 of its widths (q < 9): it multiplies only the texels of its square, in
+    // blob order, so every texel gets the products it would get from a loop over all blobs.
+    const float step = size / static_cast<float>(kShadowRes);
+    shadowShade.assign(static_cast<std::size_t>(kShadowRes) * kShadowRes, 1.0f);
+    const auto texelIndex = [&](float cm, float origin) {
+        return std::clamp(static_cast<int>(std::floor((cm - origin) / step - 0.5f)), 0, kShadowRes - 1);
+    };
+    for (int i = 0; i < n; ++i) {
+        const glm::vec2 c(blobs[i].x, blobs[i].y);
+        const float reach = 3.0f * blobs[i].z;
+        // One texel of slack each way: the exact test below decides.
+        const int x0 = std::max(0, texelIndex(c.x - reach, corner.x) - 1);
+        const int x1 = std::min(kShadowRes - 1, texelIndex(c.x + reach, corner.x) + 1);
+        const int y0 = std::max(0, texelIndex(c.y - reach, corner.y) - 1);
+        const int y1 = std::min(kShadowRes - 1, texelIndex(c.y + reach, corner.y) + 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const glm::vec2 p = corner + (glm::vec2(static_cast<float>(x), static_cast<float>(y)) + 0.5f) * step;
+                const glm::vec2 d = p - c;
+                const float q = glm::dot(d, d) / (blobs[i].z * blobs[i].z);
+                if (q < 9.0f)
+                    shadowShade[static_cast<std::size_t>(y) * kShadowRes + x] *= 1.0f - blobs[i].w * std::exp(-q);
+            }
+    }
+    shadowTexels.resize(shadowShade.size());
     for (int y = 0; y < kShadowRes; ++y)
         for (int x = 0; x < kShadowRes; ++x) {
-            const glm::vec2 p = corner + (glm::vec2(static_cast<float>(x), static_cast<float>(y)) + 0.5f) *
-                                             (size / static_cast<float>(kShadowRes));
-            float shade = 1.0f;
-            for (int i = 0; i < n; ++i) {
-                const glm::vec2 d = p - glm::vec2(blobs[i].x, blobs[i].y);
-                const float q = glm::dot(d, d) / (blobs[i].z * blobs[i].z);
-                if (q < 9.0f) shade *= 1.0f - blobs[i].w * std::exp(-q);
-            }
+            const std::size_t t = static_cast<std::size_t>(y) * kShadowRes + x;
             // Texels on the border stay fully lit so the clamp-to-edge lookup outside is 1.
             const bool border = x == 0 || y == 0 || x == kShadowRes - 1 || y == kShadowRes - 1;
-            shadowTexels[static_cast<std::size_t>(y) * kShadowRes + x] =
-                border ? 255 : static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(shade, 0.0f, 1.0f)));
+            shadowTexels[t] =
+                border ? 255 : static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(shadowShade[t], 0.0f, 1.0f)));
         }
     glBindTexture(GL_TEXTURE_2D, shadowTexture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -602,39 +636,55 @@ void drawCollectedGhosts(Drawer& d) {
     }
 }
 
-// The window rectangle that holds every collected solid (each point's cube of its radius
-// projected, grown by 2 pixels); the whole frame when one reaches behind the eye.
-ScreenRect screenRectOf(const Drawer& d, const glm::mat4& viewProj, int width, int height) {
-    glm::vec2 lo(1e30f), hi(-1e30f);
-    bool behind = false;
-    auto cover = [&](const glm::vec3& c, float r) {
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p =
-                c + r * glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f, corner & 4 ? 1.0f : -1.0f);
-            const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
-            if (clip.w <= 1e-4f) {
-                behind = true;
-                return;
-            }
-            const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) *
-                                 glm::vec2(static_cast<float>(width), static_cast<float>(height));
-            // Within a few screens of the frame: a point just in front of the eye projects far off,
-            // and a float past INT_MAX would not convert.
-            lo = glm::min(lo, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
-            hi = glm::max(hi, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
+// The pixels a set of world points projects to, grown by 2 (GL's window coordinates); the whole
+// frame once a point is behind the eye.
+class ScreenBounds {
+public:
+    ScreenBounds(const glm::mat4& viewProj, int width, int height) : viewProj_(viewProj), w_(width), h_(height) {}
+    void add(const glm::vec3& p) {
+        if (behind_) return;
+        const glm::vec4 clip = viewProj_ * glm::vec4(p, 1.0f);
+        if (clip.w <= 1e-4f) {
+            behind_ = true;
+            return;
         }
+        const glm::vec2 px =
+            (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(static_cast<float>(w_), static_cast<float>(h_));
+        // Within a few screens of the frame: a point just in front of the eye projects far off,
+        // and a float past INT_MAX would not convert.
+        lo_ = glm::min(lo_, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
+        hi_ = glm::max(hi_, glm::clamp(px, glm::vec2(-1e5f), glm::vec2(1e5f)));
+    }
+    ScreenRect rect() const {
+        if (behind_) return {0, 0, w_, h_};
+        if (lo_.x > hi_.x) return {};
+        return {std::clamp(static_cast<int>(std::floor(lo_.x)) - 2, 0, w_),
+                std::clamp(static_cast<int>(std::floor(lo_.y)) - 2, 0, h_),
+                std::clamp(static_cast<int>(std::ceil(hi_.x)) + 2, 0, w_),
+                std::clamp(static_cast<int>(std::ceil(hi_.y)) + 2, 0, h_)};
+    }
+
+private:
+    glm::mat4 viewProj_;
+    int w_, h_;
+    glm::vec2 lo_{1e30f}, hi_{-1e30f};
+    bool behind_ = false;
+};
+
+// The window rectangle that holds every collected solid (each point's cube of its radius).
+ScreenRect screenRectOf(const Drawer& d, const glm::mat4& viewProj, int width, int height) {
+    ScreenBounds bounds(viewProj, width, height);
+    auto cover = [&](const glm::vec3& c, float r) {
+        for (int corner = 0; corner < 8; ++corner)
+            bounds.add(c +
+                       r * glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f, corner & 4 ? 1.0f : -1.0f));
     };
     for (const std::vector<Instance>* batch : d.batches())
         for (const Instance& i : *batch) {
             cover(glm::vec3(i.a), i.a.w);
             if (batch == &d.tubes || batch == &d.thinTubes) cover(glm::vec3(i.b), i.b.w);
         }
-    if (behind) return {0, 0, width, height};
-    if (lo.x > hi.x) return {};
-    return {std::clamp(static_cast<int>(std::floor(lo.x)) - 2, 0, width),
-            std::clamp(static_cast<int>(std::floor(lo.y)) - 2, 0, height),
-            std::clamp(static_cast<int>(std::ceil(hi.x)) + 2, 0, width),
-            std::clamp(static_cast<int>(std::ceil(hi.y)) + 2, 0, height)};
+    return bounds.rect();
 }
 
 // What the still overlays' picture is drawn from, as bytes: the view, the size and every instance.
@@ -655,6 +705,39 @@ std::vector<unsigned char> overlayKey(const FrameView& view, int width, int heig
             append(batch->data(), n * sizeof(Instance));
         }
     return key;
+}
+
+// What the backdrop's picture is drawn from, as bytes: the view, the size, where the ground is
+// and the colours it and the background are drawn in.
+std::vector<unsigned char> backdropKey(const Scene& scene, const RenderStyle& s, const FrameView& view, int width,
+                                       int height) {
+    std::vector<unsigned char> key;
+    auto append = [&key](const void* data, std::size_t bytes) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        key.insert(key.end(), b, b + bytes);
+    };
+    append(&view.viewProj, sizeof view.viewProj);
+    append(&width, sizeof width);
+    append(&height, sizeof height);
+    append(&scene.groundCentreCm, sizeof scene.groundCentreCm);
+    append(&scene.groundHeightCm, sizeof scene.groundHeightCm);
+    for (const glm::vec3* c : {&s.backgroundTop, &s.backgroundHorizon, &s.ground, &s.gridMinor, &s.gridMajor})
+        append(c, sizeof *c);
+    append(&s.groundHalfSizeCm, sizeof s.groundHalfSizeCm);
+    return key;
+}
+
+// The pixels the contact shadows' square on the ground covers (updateShadowTexture's rect),
+// grown by 2; all of them when a corner is behind the eye, none without shadows.
+ScreenRect shadowScreenRect(const Scene& scene, const glm::vec4& shadowRect, const glm::mat4& viewProj, int width,
+                            int height) {
+    if (shadowRect.z <= 0.0f) return {};
+    const float size = 1.0f / shadowRect.z;
+    ScreenBounds bounds(viewProj, width, height);
+    for (int corner = 0; corner < 4; ++corner)
+        bounds.add(glm::vec3(shadowRect.x + (corner & 1 ? size : 0.0f), scene.groundHeightCm,
+                             shadowRect.y + (corner & 2 ? size : 0.0f)));
+    return bounds.rect();
 }
 
 glm::vec3 handleColourOf(const Handle& h, const RenderStyle& s) {
@@ -724,6 +807,13 @@ void SceneRenderer::Impl::beginFrame(const RenderStyle& s, int width, int height
     const bool msaa = samples > 1;
     if (msaa) ensureFramebuffer(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, msaa ? fbo : targetFramebuffer);
+    setFrameState(width, height);
+    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void SceneRenderer::Impl::setFrameState(int width, int height) {
     glViewport(0, 0, width, height);
     glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
@@ -731,9 +821,24 @@ void SceneRenderer::Impl::beginFrame(const RenderStyle& s, int width, int height
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
-    glClearColor(s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// The frame starts as a copy of the backdrop (ground without shadows, background), drawn into its
+// layer first when the view, the size, the ground or the style changed.
+void SceneRenderer::Impl::beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view,
+                                                 int width, int height, unsigned targetFramebuffer) {
+    std::vector<unsigned char> key = backdropKey(scene, s, view, width, height);
+    if (!backdrop->holds(key)) {
+        backdrop->beginDraw(width, height, s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b);
+        setFrameState(width, height);
+        useLit(view);  // the depth test and blending the ground is drawn with
+        const float viewportHeight = static_cast<float>(height);
+        drawGround(scene, s, view.viewProj, viewportHeight, glm::vec4(0.0f));
+        drawBackground(s, viewportHeight);
+        backdrop->endDraw(std::move(key));
+    }
+    backdrop->copyInto(targetFramebuffer);
+    setFrameState(width, height);
 }
 
 void SceneRenderer::Impl::useLit(const FrameView& view) {
@@ -748,11 +853,10 @@ void SceneRenderer::Impl::useLit(const FrameView& view) {
 }
 
 void SceneRenderer::Impl::drawGround(const Scene& scene, const RenderStyle& s, const glm::mat4& viewProj,
-                                     float viewportHeight) {
+                                     float viewportHeight, const glm::vec4& shadowRect) {
     const glm::vec3 focus(scene.groundCentreCm.x, scene.groundHeightCm, scene.groundCentreCm.z);
     const glm::vec3 centre(std::round(focus.x / 100.0f) * 100.0f, scene.groundHeightCm,
                            std::round(focus.z / 100.0f) * 100.0f);
-    const glm::vec4 rect = updateShadowTexture(scene);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, shadowTexture);
     ground.use();
@@ -765,7 +869,7 @@ void SceneRenderer::Impl::drawGround(const Scene& scene, const RenderStyle& s, c
     ground.set("uFocus", focus);
     ground.set("uFadeRadius", s.groundHalfSizeCm);
     ground.set("uShadow", 0);
-    ground.set("uShadowRect", rect);
+    ground.set("uShadowRect", shadowRect);
     ground.set("uTop", s.backgroundTop);
     ground.set("uHorizon", s.backgroundHorizon);
     ground.set("uViewportHeight", viewportHeight);
@@ -848,9 +952,13 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
                          unsigned targetFramebuffer) {
     Impl& r = *impl_;
     const RenderStyle& s = style_;
-    // 1. The frame: target, state, clear.
-    r.beginFrame(s, width, height, targetFramebuffer);
+    // 1. The frame: target, state, clear (or the backdrop's copy).
     const FrameView view = frameViewOf(camera, width, height);
+    const bool fromBackdrop = r.backdrop && scene.showGround;
+    if (fromBackdrop)
+        r.beginFrameFromBackdrop(scene, s, view, width, height, targetFramebuffer);
+    else
+        r.beginFrame(s, width, height, targetFramebuffer);
 
     // 2. Opaque solids: figures, paths, targets, pins.
     r.useLit(view);
@@ -863,11 +971,25 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
 
     // 3. Ground with grid and contact shadows, after the solids so their pixels are depth-rejected.
     // It is opaque and fades into the background gradient by itself.
+    // From the backdrop, only the square under the contact shadows is shaded again (the same
+    // fragments at the same depth, now with their shadow).
     const float viewportHeight = static_cast<float>(height);
-    if (scene.showGround) r.drawGround(scene, s, view.viewProj, viewportHeight);
+    if (scene.showGround) {
+        const glm::vec4 shadowRect = r.updateShadowTexture(scene);
+        const ScreenRect patch = fromBackdrop ? shadowScreenRect(scene, shadowRect, view.viewProj, width, height)
+                                              : ScreenRect{0, 0, width, height};
+        if (!patch.empty()) {
+            if (fromBackdrop) {
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(patch.x0, patch.y0, patch.x1 - patch.x0, patch.y1 - patch.y0);
+            }
+            r.drawGround(scene, s, view.viewProj, viewportHeight, shadowRect);
+            glDisable(GL_SCISSOR_TEST);
+        }
+    }
 
     // 4. Background gradient on the far plane: only the pixels nothing has covered are shaded.
-    r.drawBackground(s, viewportHeight);
+    if (!fromBackdrop) r.drawBackground(s, viewportHeight);
 
     // 5. The still overlays' layer, ghosts (blended), 6. handles, 6b. paths drawn on top.
     if (layered) r.drawStillOverlays(scene, s, view, width, height, targetFramebuffer);

@@ -103,7 +103,10 @@ bool pathKeyWindowPosition(const EditorState& s, int key, float& x, float& y) {
     return viewportWindowPosition(s, s.doc.paths().keyPosition(key), x, y);
 }
 
-ViewportPanel::ViewportPanel() : renderer_(std::make_unique<render::SceneRenderer>(1)) {}
+// The scene goes into fbo_ (RGBA8, DEPTH24_STENCIL8: the formats the backdrop layer copies into).
+ViewportPanel::ViewportPanel() : renderer_(std::make_unique<render::SceneRenderer>(1)) {
+    renderer_->useBackdropLayer(true);
+}
 
 ViewportPanel::~ViewportPanel() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);

@@ -490,7 +490,9 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Colour only: the window's depth is never read (the scene has its own, ImGui none), and on
+    // llvmpipe clearing it costs a pass over the whole window.
+    glClear(GL_COLOR_BUFFER_BIT);
     const PhaseTimer timer(state_.profile, state_.profile.imguiRenderSeconds);
     viewport_->presentTo(height);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
