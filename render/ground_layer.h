@@ -1,7 +1,7 @@
 #pragma once
 // A cached picture of the scene's still backdrop: the background gradient and the ground grid
 // without contact shadows, colour and depth, at the frame's size. While the camera holds still
-// (a handle drag, a key drag, a pinned pose) every frame starts from a copy of it instead of
+// (a handle drag, a key drag, a rotation) every frame starts from a copy of it instead of
 // shading the ground again; only the square the contact shadows cover is shaded anew, and the
 // solids are depth-tested against the copied ground as they would be against the drawn one
 // (docs/architecture.md §3.7). On llvmpipe a same-size copy between framebuffers of one format

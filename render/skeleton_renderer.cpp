@@ -213,8 +213,9 @@ struct SceneRenderer::Impl {
     unsigned emptyVao = 0;
     unsigned textVao = 0, textVbo = 0;
     int samples = 4;
-    std::unique_ptr<OverlayLayer> stillOverlays;  // without MSAA only (see Path::stillOverlay)
-    std::unique_ptr<GroundLayer> backdrop;        // without MSAA, when the caller asks (useBackdropLayer)
+    std::unique_ptr<OverlayLayer> stillOverlays;   // without MSAA only (see Path::stillOverlay)
+    std::unique_ptr<GroundLayer> backdrop;         // without MSAA, when the caller asks (useBackdropLayer)
+    std::vector<unsigned char> backdropCandidate;  // the last view the backdrop did not hold
     unsigned fbo = 0, colourRb = 0, depthRb = 0;
     int fboWidth = 0, fboHeight = 0;
 
@@ -239,7 +240,8 @@ struct SceneRenderer::Impl {
     }
     // The phases of SceneRenderer::draw that use the renderer's GL objects.
     void beginFrame(const RenderStyle& s, int width, int height, unsigned targetFramebuffer);
-    void beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view, int width, int height,
+    // Whether the frame could start from the backdrop (it then has): false for a view seen once.
+    bool beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view, int width, int height,
                                 unsigned targetFramebuffer);
     void setFrameState(int width, int height);
     void useLit(const FrameView& view);
@@ -825,10 +827,16 @@ void SceneRenderer::Impl::setFrameState(int width, int height) {
 
 // The frame starts as a copy of the backdrop (ground without shadows, background), drawn into its
 // layer first when the view, the size, the ground or the style changed.
-void SceneRenderer::Impl::beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view,
+bool SceneRenderer::Impl::beginFrameFromBackdrop(const Scene& scene, const RenderStyle& s, const FrameView& view,
                                                  int width, int height, unsigned targetFramebuffer) {
     std::vector<unsigned char> key = backdropKey(scene, s, view, width, height);
     if (!backdrop->holds(key)) {
+        // A view that changes every frame (playback following the character, an orbit) would pay
+        // for the layer and the copy each time: only a view seen twice in a row is kept.
+        if (key != backdropCandidate) {
+            backdropCandidate = std::move(key);
+            return false;
+        }
         backdrop->beginDraw(width, height, s.backgroundHorizon.r, s.backgroundHorizon.g, s.backgroundHorizon.b);
         setFrameState(width, height);
         useLit(view);  // the depth test and blending the ground is drawn with
@@ -839,6 +847,7 @@ void SceneRenderer::Impl::beginFrameFromBackdrop(const Scene& scene, const Rende
     }
     backdrop->copyInto(targetFramebuffer);
     setFrameState(width, height);
+    return true;
 }
 
 void SceneRenderer::Impl::useLit(const FrameView& view) {
@@ -954,11 +963,9 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
     const RenderStyle& s = style_;
     // 1. The frame: target, state, clear (or the backdrop's copy).
     const FrameView view = frameViewOf(camera, width, height);
-    const bool fromBackdrop = r.backdrop && scene.showGround;
-    if (fromBackdrop)
-        r.beginFrameFromBackdrop(scene, s, view, width, height, targetFramebuffer);
-    else
-        r.beginFrame(s, width, height, targetFramebuffer);
+    const bool fromBackdrop =
+        r.backdrop && scene.showGround && r.beginFrameFromBackdrop(scene, s, view, width, height, targetFramebuffer);
+    if (!fromBackdrop) r.beginFrame(s, width, height, targetFramebuffer);
 
     // 2. Opaque solids: figures, paths, targets, pins.
     r.useLit(view);

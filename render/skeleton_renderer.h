@@ -52,7 +52,8 @@ public:
     // How many times the still overlays' cached layer was drawn (without MSAA; tests count misses).
     long overlayLayerDraws() const;
     // Without MSAA: start each frame from a cached backdrop (render/ground_layer.h) instead of
-    // shading the ground again while the view holds still. The target framebuffer must then be
+    // shading the ground again while the view holds still (from its second frame with the same
+    // view, ground and style on; a frame with a view seen once is drawn directly). The target must be
     // RGBA8 with DEPTH24_STENCIL8, as the editor viewport's is. Off by default; a no-op with MSAA.
     void useBackdropLayer(bool on);
     long backdropLayerDraws() const;  // how many times the backdrop was drawn (tests count misses)

@@ -1,6 +1,7 @@
 // The cached backdrop (render/ground_layer.h, SceneRenderer::useBackdropLayer): a frame started
 // from it, with only the contact shadows' square shaded again, is the frame drawn directly; the
-// backdrop is drawn again when the view or the ground changes, not when the figure moves.
+// backdrop is drawn again when the view or the ground changes (on the second frame that shows
+// the new one), not when the figure moves.
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -114,8 +115,11 @@ TEST_CASE("backdrop layer: a frame started from it is the frame drawn directly, 
     BackdropTarget target;
     SceneRenderer cached(1), direct(1);
     cached.useBackdropLayer(true);
-    const Image first = target.draw(cached, w.scene, w.camera);
-    const Image again = target.draw(cached, w.scene, w.camera);
+    const Image first = target.draw(cached, w.scene, w.camera);  // a view seen once: drawn directly
+    CHECK(cached.backdropLayerDraws() == 0);
+    const Image again = target.draw(cached, w.scene, w.camera);  // seen again: drawn into the layer, copied
+    CHECK(cached.backdropLayerDraws() == 1);
+    const Image third = target.draw(cached, w.scene, w.camera);  // copied
     CHECK(cached.backdropLayerDraws() == 1);
     CHECK(direct.backdropLayerDraws() == 0);
     const Image straight = target.draw(direct, w.scene, w.camera);
@@ -123,6 +127,7 @@ TEST_CASE("backdrop layer: a frame started from it is the frame drawn directly, 
     // directly, the solid through the copy): none here.
     CHECK(pixelsNotEqual(first, straight) == 0);
     CHECK(pixelsNotEqual(again, straight) == 0);
+    CHECK(pixelsNotEqual(third, straight) == 0);
     // The shadows are there to be redrawn: without them the frame differs in many pixels, so a
     // missing shadow patch would fail the comparison above.
     Scene unshadowed = w.scene;
@@ -144,7 +149,12 @@ TEST_CASE("backdrop layer: drawn again when the view or the ground changes, not 
     BackdropTarget target;
     SceneRenderer cached(1), direct(1);
     cached.useBackdropLayer(true);
-    target.draw(cached, w.scene, w.camera);
+    // Shows `scene` twice (the backdrop is kept from a view's second frame); returns the second.
+    const auto show = [&](const Scene& scene) {
+        target.draw(cached, scene, w.camera);
+        return target.draw(cached, scene, w.camera);
+    };
+    show(w.scene);
     REQUIRE(cached.backdropLayerDraws() == 1);
     // A drag moves the figure and its shadows, over the same ground.
     shiftFigure(w.scene.figures.front(), glm::vec3(20.0f, 15.0f, -10.0f));
@@ -153,20 +163,27 @@ TEST_CASE("backdrop layer: drawn again when the view or the ground changes, not 
     CHECK(pixelsNotEqual(moved, target.draw(direct, w.scene, w.camera)) == 0);
     // The camera turns, the ground's centre moves, the style changes: each draws it again.
     w.camera.orbit(5.0f, 0.0f);
-    const Image turned = target.draw(cached, w.scene, w.camera);
+    const Image turned = show(w.scene);
     CHECK(cached.backdropLayerDraws() == 2);
     CHECK(pixelsNotEqual(turned, target.draw(direct, w.scene, w.camera)) == 0);
     w.scene.groundCentreCm.x += 150.0f;
-    target.draw(cached, w.scene, w.camera);
+    show(w.scene);
     CHECK(cached.backdropLayerDraws() == 3);
     cached.style().ground = glm::vec3(0.5f, 0.4f, 0.3f);
     direct.style().ground = cached.style().ground;
-    const Image restyled = target.draw(cached, w.scene, w.camera);
+    const Image restyled = show(w.scene);
     CHECK(cached.backdropLayerDraws() == 4);
     CHECK(pixelsNotEqual(restyled, target.draw(direct, w.scene, w.camera)) == 0);
+    // A view that changes on every frame (playback, an orbit) is drawn directly each time.
+    for (int k = 0; k < 3; ++k) {
+        w.camera.orbit(2.0f, 0.0f);
+        const Image orbiting = target.draw(cached, w.scene, w.camera);
+        CHECK(pixelsNotEqual(orbiting, target.draw(direct, w.scene, w.camera)) == 0);
+    }
+    CHECK(cached.backdropLayerDraws() == 4);
     // Without a ground there is no backdrop to start from: the frame is cleared and drawn as before.
     w.scene.showGround = false;
-    const Image bare = target.draw(cached, w.scene, w.camera);
+    const Image bare = show(w.scene);
     CHECK(cached.backdropLayerDraws() == 4);
     CHECK(pixelsNotEqual(bare, target.draw(direct, w.scene, w.camera)) == 0);
 }
