@@ -689,14 +689,17 @@ ScreenRect screenRectOf(const Drawer& d, const glm::mat4& viewProj, int width, i
     return bounds.rect();
 }
 
+// A cache key's bytes: `bytes` of `data` appended to `key`.
+void appendBytes(std::vector<unsigned char>& key, const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    key.insert(key.end(), b, b + bytes);
+}
+
 // What the still overlays' picture is drawn from, as bytes: the view, the size and every instance.
 std::vector<unsigned char> overlayKey(const FrameView& view, int width, int height, const Drawer& paths,
                                       const Drawer& ghosts) {
     std::vector<unsigned char> key;
-    auto append = [&key](const void* data, std::size_t bytes) {
-        const auto* b = static_cast<const unsigned char*>(data);
-        key.insert(key.end(), b, b + bytes);
-    };
+    const auto append = [&key](const void* data, std::size_t bytes) { appendBytes(key, data, bytes); };
     append(&view, sizeof view);
     append(&width, sizeof width);
     append(&height, sizeof height);
@@ -714,10 +717,7 @@ std::vector<unsigned char> overlayKey(const FrameView& view, int width, int heig
 std::vector<unsigned char> backdropKey(const Scene& scene, const RenderStyle& s, const FrameView& view, int width,
                                        int height) {
     std::vector<unsigned char> key;
-    auto append = [&key](const void* data, std::size_t bytes) {
-        const auto* b = static_cast<const unsigned char*>(data);
-        key.insert(key.end(), b, b + bytes);
-    };
+    const auto append = [&key](const void* data, std::size_t bytes) { appendBytes(key, data, bytes); };
     append(&view.viewProj, sizeof view.viewProj);
     append(&width, sizeof width);
     append(&height, sizeof height);
@@ -986,10 +986,8 @@ void SceneRenderer::draw(const Scene& scene, const OrbitCamera& camera, int widt
         const ScreenRect patch = fromBackdrop ? shadowScreenRect(scene, shadowRect, view.viewProj, width, height)
                                               : ScreenRect{0, 0, width, height};
         if (!patch.empty()) {
-            if (fromBackdrop) {
-                glEnable(GL_SCISSOR_TEST);
-                glScissor(patch.x0, patch.y0, patch.x1 - patch.x0, patch.y1 - patch.y0);
-            }
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(patch.x0, patch.y0, patch.x1 - patch.x0, patch.y1 - patch.y0);
             r.drawGround(scene, s, view.viewProj, viewportHeight, shadowRect);
             glDisable(GL_SCISSOR_TEST);
         }
