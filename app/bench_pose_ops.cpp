@@ -1,19 +1,21 @@
 // bench section "pose_ops": paste, mirror and rotate joint spread over time (EditorDocument::
 // setCurrentPose: an additive layer over t−r..t+r re-solved under the learned prior with contacts
-// held, r = a quarter second), on standing frames of clips nobody tuned on. Each operation runs on
-// the captured motion, as the editor runs it (a document with the model, adaptive updates off):
+// held, r = a quarter second, widened for large changes), on standing frames of clips nobody
+// tuned on. Each operation runs on the captured motion, as the editor runs it (a document with the
+// model, adaptive updates off):
 //  - paste: the pose of the frame 180 frames away (before t if there is room, else after);
 //  - mirror: the frame's pose mirrored left/right;
 //  - rotate: the right knee bent 30° further, then the same with the learned prior following.
 // Reported per operation: the worst one-frame jump of a hand or foot over the span, in excess of
-// the capture's jump on the same frames (the bar: ≤ 1 cm), the worst distance of a planted foot
-// from its captured place (≤ 1 cm), and the span solve's wall time.
+// the capture's jump on the same frames (the bar: ≤ 1 cm), the edited frames, the worst distance
+// of a planted foot from its captured place (≤ 1 cm), and the span solve's wall time.
 #include "bench_clip_range.h"
 #include "bench_registry.h"
 #include "edit/editor_document.h"
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "gp/train/trainer.h"
+#include "motion/pose_layer.h"
 #include "skeleton/forward_kinematics.h"
 
 namespace mgp::app {
@@ -32,11 +34,13 @@ std::vector<int> poseOpsFrames(const Clip& clip, const ContactSet& contacts, int
     return spreadPicks(candidates, count, 60);
 }
 
-// The operation's spread measured against the capture over t−r−1..t+r+1.
+// The operation's spread measured against the capture over t−R−1..t+R+1, R the widest a pose
+// change's layer can be (kLayerWidening falloff radii): frames it did not edit add nothing.
 nlohmann::json measurePoseOp(const EditorDocument& doc, const ContactSet& contacts, int t, int radius, double seconds) {
     const Clip& clip = doc.clip();
     const Skeleton& sk = clip.skeleton;
-    const int first = std::max(0, t - radius - 1), last = std::min(clip.frameCount() - 1, t + radius + 1);
+    const int reach = kLayerWidening * radius + 1;
+    const int first = std::max(0, t - reach), last = std::min(clip.frameCount() - 1, t + reach);
     double worstJump = 0.0, worstFoot = 0.0;
     int jumpFrame = -1;
     Effector jumpEffector = Effector::kLHand;
@@ -56,6 +60,7 @@ nlohmann::json measurePoseOp(const EditorDocument& doc, const ContactSet& contac
             {"worst_jump_frame", jumpFrame + 1},
             {"worst_jump_effector", effectorName(jumpEffector)},
             {"planted_feet_worst_cm", worstFoot},
+            {"edited_frames", doc.edits().size()},
             {"seconds", seconds},
             {"meets", worstJump <= 1.0 && worstFoot <= 1.0}};
 }

@@ -147,38 +147,63 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         CHECK(heldErr <= 1e-6);
         CHECK(prior.ik.constraints.size() == 2);
         CHECK(pinErr <= 0.05);
-        // Where the plain pose keeps the pins it is a candidate of the prior's problem, so the
-        // prior's pose must be at least as likely; where it moves a pinned foot (the femur) it is
-        // not, and only the pins are compared.
-        if (plainPinMove < 1e-9)
+        // The plain rotation keeps the pins too: untouched (the arm, the back) or settled (the
+        // femur moves a pinned foot; the legs and the root bring it back). Unsettled, the plain pose
+        // is a candidate of the prior's problem, so the prior's pose must be at least as likely; a
+        // settled one moved the root, which the prior's problem keeps, so only the pins compare.
+        CHECK(plainPinMove <= kSettledHoldCm);
+        CHECK(plain.settled == (std::string(c.bone) == "rfemur"));
+        if (!plain.settled)
             CHECK(prior.ik.lik < likPlain);
         else
-            CHECK(plainPinMove > 1.0);
+            CHECK((plain.pose.rootCm - before.rootCm).norm() > 0.1);
+        CHECK_FALSE(prior.settled);  // the prior met the pins with the root where it was
         CHECK(prior.pose.rootCm == before.rootCm);
     }
     CHECK(posesIdentical(doc.currentPose(), before));  // solving changes nothing in the document
 }
 
-TEST_CASE("rotate joint: the plain rotation changes exactly that joint's DOFs and is one undo step") {
+TEST_CASE(
+    "rotate joint: the plain rotation changes exactly that joint's DOFs unless it moves a planted foot (the legs and "
+    "the root bring it back) and is one undo step") {
     EditorDocument doc;
     doc.setModel(test::walkModel35(), true);
     doc.setFrame(12);
     const Pose before = doc.currentPose();
     const Skeleton& sk = doc.clip().skeleton;
     const int j = sk.findBone("ltibia");
+    REQUIRE(doc.inContact(Effector::kLFoot));
     JointRotation rot;
     rot.joint = j;
     rot.anglesDeg = Eigen::Vector3d(75.0, 5.0, 5.0);  // the tibia animates x only: y and z are ignored
-    REQUIRE(applyJointRotation(doc, rot) == "");
-    const Pose& after = doc.currentPose();
-    CHECK(after.rootCm == before.rootCm);
+    // With the left foot's contact released nothing held is below the knee: plain forward kinematics.
+    doc.setContactReleased(Effector::kLFoot, true);
+    const JointRotationResult free = solveJointRotation(doc, rot);
+    REQUIRE(free.error.empty());
+    CHECK_FALSE(free.settled);
+    CHECK(free.pose.rootCm == before.rootCm);
     for (int k = 0; k < sk.jointCount(); ++k)
         for (int a = 0; a < 3; ++a) {
             if (k == j && a == 0)
-                CHECK(after.anglesDeg[k][a] == 75.0);
+                CHECK(free.pose.anglesDeg[k][a] == 75.0);
             else
-                CHECK(after.anglesDeg[k][a] == before.anglesDeg[k][a]);
+                CHECK(free.pose.anglesDeg[k][a] == before.anglesDeg[k][a]);
         }
+    // Planted, the foot stays: the knee's angle as asked, the root rotation and every joint off the
+    // legs' chains as they were; the root translation and the legs move.
+    doc.setContactReleased(Effector::kLFoot, false);
+    REQUIRE(applyJointRotation(doc, rot) == "");
+    const Pose& after = doc.currentPose();
+    CHECK(after.anglesDeg[j][0] == 75.0);
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        if (doc.inContact(foot))
+            CHECK((effectorCm(sk, after, foot) - effectorCm(sk, before, foot)).norm() <= kSettledHoldCm);
+    CHECK((after.rootCm - before.rootCm).norm() > 1.0);
+    const int leftFoot = sk.effectorSite(Effector::kLFoot).joint, rightFoot = sk.effectorSite(Effector::kRFoot).joint;
+    for (int k = 0; k < sk.jointCount(); ++k) {
+        const bool onLeg = k != 0 && (sk.isAncestorOrSelf(k, leftFoot) || sk.isAncestorOrSelf(k, rightFoot));
+        if (!onLeg) CHECK(after.anglesDeg[k] == before.anglesDeg[k]);
+    }
     CHECK(doc.undoLabel() == "rotate ltibia on frame 13");
     REQUIRE(doc.undo() == "");
     CHECK(posesIdentical(doc.currentPose(), before));

@@ -97,3 +97,43 @@ TEST_CASE("bad edit jobs say what is wrong") {
     CHECK(job.validate() == "expected key frames in 1..358, found 5001");
     CHECK_THROWS_AS(job.run(), std::invalid_argument);
 }
+
+TEST_CASE("a path that dips below the floor is lifted onto it smoothly, and only near the dip") {
+    // A smooth path dipping 2 cm below the floor at y = 0 around frame 20 (frames 17-23 below),
+    // curving by 0.4 cm per frame² (its second difference).
+    std::vector<Eigen::Vector3d> path;
+    for (int t = 0; t <= 40; ++t) path.emplace_back(t, 0.2 * (t - 20) * (t - 20) - 2.0, 0.0);
+    const std::vector<Eigen::Vector3d> asked = path;
+    liftPathAboveFloor(path, 0.0, kFloorLiftFrames);
+    for (int t = 0; t <= 40; ++t) {
+        CAPTURE(t);
+        CHECK(path[t].y() >= -1e-12);        // on the floor or above
+        CHECK(path[t].x() == asked[t].x());  // only heights change
+        if (std::abs(t - 20) > 3 + kFloorLiftFrames) CHECK(path[t].y() == asked[t].y());
+        if (asked[t].y() < 0.0) CHECK(path[t].y() < 2.0);  // lifted onto it, not above the dip's depth
+    }
+    CHECK(path[20].y() == doctest::Approx(0.0));  // the deepest frame lands on the floor exactly
+    // No corner: a hard clamp max(y, 0) turns the path by about 1.2 cm per frame² where it meets the
+    // floor; the lift keeps the path's own curvature within 0.1 cm per frame² of what was asked.
+    auto largestSecondDifference = [](const std::vector<double>& y) {
+        double worst = 0.0;
+        for (std::size_t t = 1; t + 1 < y.size(); ++t)
+            worst = std::max(worst, std::abs(y[t - 1] - 2 * y[t] + y[t + 1]));
+        return worst;
+    };
+    std::vector<double> lifted, clamped;
+    for (std::size_t t = 0; t < path.size(); ++t) {
+        lifted.push_back(path[t].y());
+        clamped.push_back(std::max(asked[t].y(), 0.0));
+    }
+    const double smooth = largestSecondDifference(lifted), hard = largestSecondDifference(clamped);
+    MESSAGE("largest second difference: asked 0.4, lifted " << smooth << ", clamped " << hard << " cm");
+    CHECK(smooth <= 0.4 + 0.1);
+    CHECK(hard > 1.0);
+    // A path above the floor is left alone.
+    std::vector<Eigen::Vector3d> high = asked;
+    for (auto& p : high) p.y() += 5.0;
+    const std::vector<Eigen::Vector3d> highAsked = high;
+    liftPathAboveFloor(high, 0.0, kFloorLiftFrames);
+    CHECK(high == highAsked);
+}

@@ -2,7 +2,10 @@
 // the layered frames, by hand.
 #include <doctest/doctest.h>
 
+#include <Eigen/Geometry>
+
 #include "motion/pose_layer.h"
+#include "skeleton/rotation.h"
 
 using namespace mgp;
 
@@ -21,14 +24,29 @@ TEST_CASE("pose layer: the Hermite blend weight is 1 at the frame and 0 with zer
     CHECK(1.0 - poseLayerWeight(1, 0, r) < 1e-5);
 }
 
+namespace {
+
+// Two joints, one axis each: their changes add by components.
+Skeleton hingeSkeleton() {
+    Skeleton sk;
+    sk.joints.resize(2);
+    sk.joints[0].dof = {true, false, false};
+    sk.joints[1].parent = 0;
+    sk.joints[1].dof = {false, true, false};
+    return sk;
+}
+
+}  // namespace
+
 TEST_CASE("pose layer: frames t0 ± r get w times the change, angles the short way round") {
+    const Skeleton sk = hingeSkeleton();
     Pose from, to;
     from.rootCm = {0, 90, 0};
     to.rootCm = {10, 90, 0};
     from.anglesDeg = {{179, 0, 0}, {0, 10, 0}};
     to.anglesDeg = {{-179, 0, 0}, {0, 30, 0}};  // +2° across ±180, +20°
     std::vector<Pose> frames(7, from);
-    addPoseLayer(frames, 3, 2, from, to);
+    addPoseLayer(sk, frames, 3, 2, from, to);
     CHECK(frames[0].rootCm.x() == 0.0);  // outside (w = 0 at t0 ± r)
     CHECK(frames[1].rootCm.x() == 0.0);
     CHECK(frames[2].rootCm.x() == doctest::Approx(5.0));
@@ -40,8 +58,59 @@ TEST_CASE("pose layer: frames t0 ± r get w times the change, angles the short w
     CHECK(frames[6].anglesDeg[1].y() == 10.0);
     // Clamped to the clip: a change on frame 0 reaches frame 1 only.
     std::vector<Pose> start(3, from);
-    addPoseLayer(start, 0, 2, from, to);
+    addPoseLayer(sk, start, 0, 2, from, to);
     CHECK(start[0].anglesDeg[1].y() == doctest::Approx(30.0));
     CHECK(start[1].anglesDeg[1].y() == doctest::Approx(20.0));
     CHECK(start[2].anglesDeg[1].y() == 10.0);
+    // A side shorter than r blends over the frames it has: frame 1's change is 0 on frame 0 and
+    // ½ on frame 2 (r = 2 on that side), where the clip's end and the spread's span end.
+    std::vector<Pose> near(5, from);
+    addPoseLayer(sk, near, 1, 2, from, to);
+    CHECK(near[0].anglesDeg[1].y() == 10.0);
+    CHECK(near[1].anglesDeg[1].y() == doctest::Approx(30.0));
+    CHECK(near[2].anglesDeg[1].y() == doctest::Approx(20.0));
+    CHECK(near[3].anglesDeg[1].y() == 10.0);
+    std::vector<Pose> nearEnd(5, from);
+    addPoseLayer(sk, nearEnd, 3, 3, from, to);  // one frame after it: w = 0 on the last frame
+    CHECK(nearEnd[4].anglesDeg[1].y() == 10.0);
+    CHECK(nearEnd[0].anglesDeg[1].y() == 10.0);
+    CHECK(nearEnd[1].anglesDeg[1].y() == doctest::Approx(10.0 + 20.0 * 0.259259259).epsilon(1e-6));  // d = 2/3
+}
+
+TEST_CASE("pose layer: a three-axis joint turns by D^w before its own rotation, so a fast turn keeps its speed") {
+    Skeleton sk;
+    sk.joints.resize(1);
+    sk.joints[0].dof = {true, true, true};
+    const RotationOrder order = sk.joints[0].order;
+    Pose to;
+    to.anglesDeg = {{40, 60, -30}};
+    // Frames turning 6° per frame in x and z under the layer, near gimbal lock (y = 80° in z-y-x):
+    // the two turns almost cancel, |ω|² = 6² + 6² − 2·6·6·sin y, about 1.04° per frame.
+    const int n = 401, t0 = 200;
+    std::vector<Pose> frames(n);
+    for (int t = 0; t < n; ++t) frames[t].anglesDeg = {Eigen::Vector3d(10 + 6.0 * (t - t0), 80, 5 + 6.0 * (t - t0))};
+    const std::vector<Pose> under = frames;
+    const Eigen::Matrix3d D =
+        eulerMatrix(to.anglesDeg[0], order) * eulerMatrix(under[t0].anglesDeg[0], order).transpose();
+    const Eigen::AngleAxisd dAxis(D);
+    addPoseLayer(sk, frames, t0, 200, under[t0], to);
+    for (int t = 0; t < n; t += 7) {
+        const double w = poseLayerWeight(t, t0, 200);
+        const Eigen::Matrix3d expected = Eigen::AngleAxisd(w * dAxis.angle(), dAxis.axis()).toRotationMatrix() *
+                                         eulerMatrix(under[t].anglesDeg[0], order);
+        CHECK((eulerMatrix(frames[t].anglesDeg[0], order) - expected).norm() < 1e-9);
+    }
+    CHECK((eulerMatrix(frames[t0].anglesDeg[0], order) - eulerMatrix(to.anglesDeg[0], order)).norm() < 1e-9);
+    // Next to t0 the weight is flat (1 − w ≤ 3·10⁻⁴): the layered joint turns as fast as the one under it.
+    auto turnDeg = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        return Eigen::AngleAxisd(eulerMatrix(b, order) * eulerMatrix(a, order).transpose()).angle() * kRadToDeg;
+    };
+    const double speed = turnDeg(under[t0].anglesDeg[0], under[t0 + 1].anglesDeg[0]);
+    CHECK(speed == doctest::Approx(std::sqrt(72.0 * (1.0 - std::sin(80.0 * kDegToRad)))).epsilon(1e-3));
+    for (int t = t0 - 3; t < t0 + 3; ++t)
+        CHECK(turnDeg(frames[t].anglesDeg[0], frames[t + 1].anglesDeg[0]) == doctest::Approx(speed).epsilon(0.01));
+    // Adding the Euler components instead would not keep it: the same channel steps at y = 60° turn
+    // the joint about 3.1° per frame.
+    const Eigen::Vector3d added = to.anglesDeg[0], addedNext = to.anglesDeg[0] + Eigen::Vector3d(6, 0, 6);
+    CHECK(turnDeg(added, addedNext) > 2.0 * speed);
 }

@@ -380,6 +380,7 @@ private:
     std::optional<SpanQuality> lastRegenerateQuality_;
     std::vector<MotionEditJob::KeyResult> lastRegenerateKeys_;
     int falloffRadius_ = 0;  // set by setClip
+    int spreadRadius_ = 0;   // the running spread's: the falloff, or a whole-pose change's wider layer
     double bodyStiffness_ = 1.0;
     long falloffStepId_ = 0;      // the undo step a running falloff job merges into (0 = none)
     std::string falloffSkipped_;  // why the last change was not spread, until pollRegenerate says it

@@ -241,6 +241,11 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
     const auto dragged = static_cast<std::size_t>(rec.frame);
     base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
     base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
+    // A whole-pose change spreads at least over the falloff, wider where a hand or foot changes
+    // so much that the falloff's blend would rush it (poseLayerRadius).
+    const int radius =
+        wholePose ? poseLayerRadius(clip().skeleton, base->frames[dragged], rec.after.pose, falloffRadius_, clip().fps)
+                  : falloffRadius_;
     if (wholePose) {
         // Where the frame kept its pins, placements and planted feet, the neighbours keep them
         // where they were before the layer moved them.
@@ -250,16 +255,15 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
         }
         // A whole-pose change is layered over the span first (motion/pose_layer.h): the spread
         // re-solves from that blend, so every joint, not only the most-moved effector, joins in.
-        addPoseLayer(base->frames, rec.frame, falloffRadius_, base->frames[dragged], rec.after.pose);
-        const int first = std::max(0, rec.frame - falloffRadius_),
-                  last = std::min(frameCount() - 1, rec.frame + falloffRadius_);
+        addPoseLayer(clip().skeleton, base->frames, rec.frame, radius, base->frames[dragged], rec.after.pose);
+        const int first = std::max(0, rec.frame - radius), last = std::min(frameCount() - 1, rec.frame + radius);
         for (int t = first; t <= last; ++t)
             base->x[static_cast<std::size_t>(t)] = Eigen::VectorXd();  // their poses moved
         base->frames[dragged] = rec.after.pose;
         base->x[dragged] = rec.after.x;
     }
     std::string problem;
-    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, falloffRadius_,
+    MotionEditJob job = dragFalloffJob(v, rec.effector, rec.frame, rec.after.pose, rec.after.x, radius,
                                        pinnedEffectors(), &problem, std::move(base));
     if (!problem.empty()) {  // the change stays a one-frame edit: say so
         falloffSkipped_ =
@@ -275,7 +279,7 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
         heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
     job.placesEffector = !wholePose;
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    if (regenerate_.start(std::move(job)).empty()) falloffStepId_ = stepId;
+    if (regenerate_.start(std::move(job)).empty()) falloffStepId_ = stepId, spreadRadius_ = radius;
 }
 
 void EditorDocument::cancelDrag() {

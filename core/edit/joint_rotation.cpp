@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include "ik/plain_ik.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/rotation.h"
 
@@ -70,6 +71,38 @@ std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint) {
     return out;
 }
 
+namespace {
+
+double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<IkConstraint>& holds) {
+    double worst = 0.0;
+    for (const IkConstraint& c : holds) worst = std::max(worst, (effectorCm(sk, pose, c.effector) - c.targetCm).norm());
+    return worst;
+}
+
+}  // namespace
+
+std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int joint,
+                                  const std::vector<IkConstraint>& holds) {
+    if (holds.empty() || worstHoldMissCm(sk, pose, holds) <= kSettledHoldCm) return std::nullopt;
+    PlainIkJob job;
+    job.skeleton = &sk;
+    job.start = pose;
+    job.freeRootTranslation = true;
+    const PoseLayout layout(sk);
+    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
+    for (int dof = 0; dof < layout.size(); ++dof)
+        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || layout.joint(dof) == joint;
+    for (IkConstraint c : holds) {
+        c.pin = true;
+        job.constraints.push_back(c);
+    }
+    job.toleranceCm = 0.1 * kSettledHoldCm;
+    job.solve();
+    if (!allFinite(job.pose) || worstHoldMissCm(sk, job.pose, holds) >= worstHoldMissCm(sk, pose, holds))
+        return std::nullopt;
+    return job.pose;
+}
+
 JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation& r, int maxIterations) {
     JointRotationResult out;
     if (!doc.hasClip()) {
@@ -86,7 +119,19 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
         return out;
     }
     out.pose = rotateJoint(sk, doc.currentPose(), r.joint, r.anglesDeg);
-    if (!r.followPrior) return out;
+    const std::vector<IkConstraint> holds = rotationHolds(doc, r.joint);
+    out.holds = static_cast<int>(holds.size());
+    auto settle = [&] {
+        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds)) {
+            out.pose = std::move(*settled);
+            out.settled = true;
+        }
+        out.holdMissCm = worstHoldMissCm(sk, out.pose, holds);
+    };
+    if (!r.followPrior) {
+        settle();
+        return out;
+    }
     const gp::ModelVersionPtr model = doc.model();
     if (!model) {
         out.error = "follow with the learned prior needs a model: train one or open one first";
@@ -106,7 +151,7 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     ConstrainedIkRequest req;
     req.start = out.pose;
     req.startX = fitted.x.allFinite() && fitted.x.size() == fit.startX.size() ? fitted.x : fit.startX;
-    req.constraints = rotationHolds(doc, r.joint);
+    req.constraints = holds;
     req.held = heldDofsOf(sk, r.joint, r.anglesDeg);
     req.maxIterations = maxIterations;
     solver.solve(req, out.ik);
@@ -116,6 +161,9 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     }
     out.pose = out.ik.pose;
     out.learned = true;
+    // The prior's solve keeps the root translation; where the holds need the pelvis to move (a
+    // knee bent over its planted foot), the last centimetres are the settle's.
+    settle();
     return out;
 }
 
@@ -133,9 +181,8 @@ std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, Join
     // foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing
     // frames").
     const std::string label = jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame());
-    const std::string err = solved.learned ? doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved,
-                                                                rotationMovers(doc, r.joint))
-                                           : doc.setCurrentPose(solved.pose, label);
+    const std::string err =
+        doc.setCurrentPose(solved.pose, label, EditorDocument::PoseHolds::kSolved, rotationMovers(doc, r.joint));
     if (result) *result = std::move(solved);
     return err;
 }

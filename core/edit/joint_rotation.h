@@ -2,7 +2,9 @@
 // Rotate joint: set one joint's DOFs directly, in degrees, as one undo step; optionally the rest
 // of the pose follows the learned prior (docs/maths-ik.md §7).
 //
-//   plain          only that joint's animated angles change (its subtree turns with it);
+//   plain          only that joint's animated angles change (its subtree turns with it), unless
+//                  that moves what the frame holds (a pin, a placed effector, a planted foot):
+//                  then the settle below brings those back;
 //   follow prior   those angles are held at the user's values and the rest of the pose (latent
 //                  point and free DOFs) is re-solved to the most likely pose under the model,
 //                  min over (x, free y) of L_IK, with the pinned effectors and the feet in ground
@@ -26,8 +28,11 @@ struct JointRotation {
 struct JointRotationResult {
     std::string error;  // "" when `pose` is the rotated pose
     Pose pose;
-    bool learned = false;    // the prior re-solved the rest of the pose
-    ConstrainedIkResult ik;  // the solve, when learned
+    bool learned = false;     // the prior re-solved the rest of the pose
+    bool settled = false;     // settleOnHolds moved the legs and the root to keep the holds
+    int holds = 0;            // what the frame holds (rotationHolds)
+    double holdMissCm = 0.0;  // the farthest of them from its place in `pose`
+    ConstrainedIkResult ik;   // the solve, when learned
 };
 
 // `pose` with joint's animated angles set to anglesDeg (the others untouched).
@@ -46,6 +51,16 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
 std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint);
 // The rest of what the frame keeps in place: the held effectors below `joint`, which move with it.
 std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint);
+
+// A hold this close (cm) to its place is kept; a rotation that leaves one farther is settled.
+constexpr double kSettledHoldCm = 0.01;
+// `pose` with every hold back at its place (each held as a pin) by the least change without the
+// prior: damped least squares over the root translation and every DOF except the root rotation
+// and `joint`'s (so the rotation stays as asked and the upper body is not turned), which moves only
+// the chains of the holds (plain IK, minimal-norm steps; docs/maths-ik.md §7). nullopt when every
+// hold is within kSettledHoldCm already, or when the settle does not bring the worst one closer.
+std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int joint,
+                                  const std::vector<IkConstraint>& holds);
 
 // The rotated current pose (nothing changes in the document). With followPrior and no model,
 // the error says so.

@@ -78,10 +78,16 @@ std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
     return out;
 }
 
-std::string falloffSummary(const MotionEditJob& job, int falloffRadius, const std::string& stepLabel) {
-    char summary[96];
-    std::snprintf(summary, sizeof summary, ": spread over frames %d-%d (falloff %d frames)", job.keyFrames.front() + 2,
-                  job.keyFrames.back(), falloffRadius);
+std::string falloffSummary(const MotionEditJob& job, int falloffRadius, int spreadRadius,
+                           const std::string& stepLabel) {
+    char summary[160];
+    if (spreadRadius > falloffRadius)
+        std::snprintf(summary, sizeof summary,
+                      ": spread over frames %d-%d (falloff %d frames, widened to %d for a change this large)",
+                      job.keyFrames.front() + 2, job.keyFrames.back(), falloffRadius, spreadRadius);
+    else
+        std::snprintf(summary, sizeof summary, ": spread over frames %d-%d (falloff %d frames)",
+                      job.keyFrames.front() + 2, job.keyFrames.back(), falloffRadius);
     return stepLabel + summary;
 }
 

@@ -25,6 +25,6 @@ void mergeFalloff(const MotionEditJob& job, const ClipEdits& edits, EditStep& dr
 std::vector<AdaptiveSample> movedKeySamples(const MotionEditJob& job);
 // "regenerated 12 frames, max residual …" (frame numbers 1-based, as on the timeline).
 std::string regenerationSummary(const MotionEditJob& job, bool updateQueued);
-std::string falloffSummary(const MotionEditJob& job, int falloffRadius, const std::string& stepLabel);
+std::string falloffSummary(const MotionEditJob& job, int falloffRadius, int spreadRadius, const std::string& stepLabel);
 
 }  // namespace mgp

@@ -31,7 +31,8 @@ void PlainIkJob::solve() {
     for (int i = 0; i < P; ++i)
         if (layout.joint(i) >= 0 && (frozenDofs.empty() || !frozenDofs[i])) active.push_back(i);
     const int m = static_cast<int>(constraints.size());
-    const int n = static_cast<int>(active.size());
+    const int angles = static_cast<int>(active.size());
+    const int n = angles + (freeRootTranslation ? 3 : 0);  // the root translation's columns come last
     FkState fk;
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, P);
     Eigen::MatrixXd J(3 * m, n);
@@ -57,7 +58,9 @@ void PlainIkJob::solve() {
         forwardKinematics(sk, pose, fk);
         for (int c = 0; c < m; ++c) {
             effectorJacobian(sk, layout, fk, pose, constraints[c].effector, jac);
-            for (int k = 0; k < n; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
+            for (int k = 0; k < angles; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
+            // ∂p/∂(root translation) = I for every point of the body.
+            if (freeRootTranslation) J.block<3, 3>(3 * c, angles).setIdentity();
         }
         layout.extract(pose, y.data());
         // Adaptive damping: shrink λ after a step that lowers the error, grow it after one that
@@ -67,9 +70,10 @@ void PlainIkJob::solve() {
             const Eigen::MatrixXd A = J * J.transpose() + lambda * lambda * Eigen::MatrixXd::Identity(3 * m, 3 * m);
             const Eigen::VectorXd step = J.transpose() * A.ldlt().solve(err);
             trial = y;
-            for (int k = 0; k < n; ++k) trial[active[k]] += step[k];
+            for (int k = 0; k < angles; ++k) trial[active[k]] += step[k];
             Pose candidate = pose;
             layout.apply(trial.data(), candidate);
+            if (freeRootTranslation) candidate.rootCm += step.tail<3>();
             Eigen::VectorXd e2(3 * m);
             const double c2 = evaluate(candidate, e2);
             if (std::isfinite(c2) && c2 < cost) {

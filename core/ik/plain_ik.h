@@ -2,7 +2,9 @@
 // Baseline IK without the learned prior: damped least squares on the pose vector's joint angles
 // (skeleton/pose_layout.h; the DOFs the skeleton has), adaptive damping, iterated from the start
 // pose until the residual stops falling. Users and tests compare it with the learned IK to see what
-// the prior buys. Root translation is fixed; the root rotation is free, as in the learned IK.
+// the prior buys. Root translation is fixed unless `freeRootTranslation` (then it is three more
+// unknowns, in cm, whose Jacobian columns are the identity: every point of the body moves with
+// it); the root rotation is free, as in the learned IK, unless frozen.
 #include <vector>
 
 #include "ik/ik_types.h"
@@ -16,7 +18,8 @@ struct PlainIkJob {
     const Skeleton* skeleton = nullptr;
     Pose start;
     std::vector<IkConstraint> constraints;
-    std::vector<bool> frozenDofs;  // optional, one per pose-vector DOF: true = keep it at its start value
+    std::vector<bool> frozenDofs;      // optional, one per pose-vector DOF: true = keep it at its start value
+    bool freeRootTranslation = false;  // the root translation (cm) is solved for too
     int maxIterations = 500;
     double toleranceCm = 1e-3;    // stop once every residual is below this
     double initialDamping = 1.0;  // λ of (JJᵀ + λ² I), in cm

@@ -1,5 +1,7 @@
 #include "motion/motion_edit.h"
 
+#include "motion/pose_layer.h"
+
 #include "motion/foot_contacts.h"
 
 #include <algorithm>
@@ -94,6 +96,19 @@ bool MotionEditJob::keysReached() const {
 
 const char* editSolverName(EditSolver s) { return s == EditSolver::kSpan ? "span" : "per-frame"; }
 
+void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames) {
+    const int n = static_cast<int>(path.size());
+    std::vector<double> lift(path.size(), 0.0);
+    for (int s = 0; s < n; ++s) {
+        const double below = floorCm - path[static_cast<std::size_t>(s)].y();
+        if (!(below > 0.0)) continue;
+        for (int t = std::max(0, s - frames); t <= std::min(n - 1, s + frames); ++t)
+            lift[static_cast<std::size_t>(t)] =
+                std::max(lift[static_cast<std::size_t>(t)], below * poseLayerWeight(t, s, frames));
+    }
+    for (int t = 0; t < n; ++t) path[static_cast<std::size_t>(t)].y() += lift[static_cast<std::size_t>(t)];
+}
+
 void MotionEditJob::run() {
     if (const std::string problem = validate(); !problem.empty()) throw std::invalid_argument(problem);
     const Clip& clip = version->model->clip;
@@ -111,10 +126,9 @@ void MotionEditJob::run() {
     pathCm.clear();
     for (int t = first + 1; t < last; ++t) {
         solvedFrames.push_back(t);
-        Eigen::Vector3d p = target[t - first];
-        if (floored) p.y() = std::max(p.y(), *contactSet.floorCm);
-        pathCm.push_back(p);
+        pathCm.push_back(target[t - first]);
     }
+    if (floored) liftPathAboveFloor(pathCm, *contactSet.floorCm, kFloorLiftFrames);
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
     held.clear();
@@ -237,18 +251,32 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
             // each side blends over its own length and the product stays near the old path when
             // the gap is short (a short swing between the same two footprints as before). Between
             // two keys there is no old place to leave.
-            const int leftLength = rightHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
-            const int rightLength = leftHeld ? kHeldEndBlendFrames : std::min(kHeldEndBlendFrames, gap + 1);
-            for (int i = lo; (leftHeld || rightHeld) && i <= hi; ++i) {
-                const double w =
-                    (leftHeld ? ramp(i - lo + 1, leftLength) : 1.0) * (rightHeld ? ramp(hi - i + 1, rightLength) : 1.0);
-                if (w >= 1.0) continue;  // past the blend: the effector follows the layered motion freely
+            if (!leftHeld && !rightHeld) {
+                lo = hi + 1;
+                continue;
+            }
+            // The old and the layered place over the run. The smoothstep adds at most 1.5·Δ/n per
+            // frame, so n grows with the largest Δ until that is within the layer's speed limit.
+            std::vector<Eigen::Vector3d> before(static_cast<std::size_t>(gap)), after(static_cast<std::size_t>(gap));
+            double farthest = 0.0;
+            for (int i = lo; i <= hi; ++i) {
                 const auto t = static_cast<std::size_t>(solvedFrames[i]);
                 forwardKinematics(clip.skeleton, base->holdFrames[t], fk);
-                const Eigen::Vector3d before = effectorCm(clip.skeleton, fk, e);
+                before[static_cast<std::size_t>(i - lo)] = effectorCm(clip.skeleton, fk, e);
                 forwardKinematics(clip.skeleton, layered[t], fk);
-                const Eigen::Vector3d after = effectorCm(clip.skeleton, fk, e);
-                holds[i].push_back({e, before + w * (after - before), true});
+                after[static_cast<std::size_t>(i - lo)] = effectorCm(clip.skeleton, fk, e);
+                farthest = std::max(farthest, (after[i - lo] - before[i - lo]).norm());
+            }
+            const double needed = 1.5 * farthest * clip.fps / kLayerSpeedCmPerSecond;
+            const int blend = std::isfinite(needed) ? std::max(kHeldEndBlendFrames, static_cast<int>(std::ceil(needed)))
+                                                    : kHeldEndBlendFrames;
+            const int leftLength = rightHeld ? blend : std::min(blend, gap + 1);
+            const int rightLength = leftHeld ? blend : std::min(blend, gap + 1);
+            for (int i = lo; i <= hi; ++i) {
+                const double w =
+                    (leftHeld ? ramp(i - lo + 1, leftLength) : 1.0) * (rightHeld ? ramp(hi - i + 1, rightLength) : 1.0);
+                const auto k = static_cast<std::size_t>(i - lo);
+                holds[i].push_back({e, before[k] + w * (after[k] - before[k]), true});
             }
             lo = hi + 1;
         }

@@ -34,6 +34,15 @@
 
 namespace mgp {
 
+// Frames over which a path that dips below the floor is lifted back onto it (liftPathAboveFloor).
+constexpr int kFloorLiftFrames = 10;
+// The path raised onto the floor where it dips below it, smoothly: a frame s below it by v lifts
+// each frame t within `frames` of it by v·w(t) (the pose layer's C¹ Hermite blend, w = 1 at s), and
+// each frame takes the largest lift. So every frame is on the floor or above, frames farther than
+// `frames` from a dip are unchanged, and the path meets the floor without a corner (a hard clamp
+// put one there, and a foot that followed it turned its ankle in one frame).
+void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames);
+
 enum class PathMode { kDirect, kDisplacement };
 enum class EditSolver { kSpan, kPerFrame };
 const char* editSolverName(EditSolver s);  // "span" / "per-frame"
@@ -124,8 +133,10 @@ private:
     // With EditBase::holdFrames, a held interval that ends inside the span holds its effector at
     // the old place up to its end, while the layered motion has moved it elsewhere: the effector
     // would jump there on the next frame. Between its held intervals it is guided from the old
-    // place to the layered one over up to kHeldEndBlendFrames frames after an end (before a start),
-    // along a smoothstep, reaching the layered place by the next key at the latest.
+    // place to the layered one over up to n frames after an end (before a start), along a
+    // smoothstep, reaching the layered place by the next key at the latest: n is
+    // kHeldEndBlendFrames, or more where the layer moved the effector so far that the smoothstep
+    // would move it faster than kLayerSpeedCmPerSecond on top of its motion (1.5·Δ·fps/v frames).
     static constexpr int kHeldEndBlendFrames = 20;
     void guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds) const;
     void runSpan(const std::vector<std::vector<IkConstraint>>& holds);

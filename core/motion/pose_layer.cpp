@@ -4,6 +4,12 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <Eigen/Geometry>
+
+#include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_mirror.h"
+#include "skeleton/rotation.h"
+
 namespace mgp {
 namespace {
 
@@ -14,6 +20,54 @@ double angleDeltaDeg(double a, double b) {
     return d;
 }
 
+// The change from → to. A joint that animates all three axes changes by the rotation
+// D = E(to)·E(from)ᵀ, applied at weight w as D^w·E(p) (Maya's layer accumulation "by layer"): a
+// fast-turning joint under the layer keeps its angular speed, which adding Euler components does
+// not (near gimbal lock those components turn the joint faster or slower). A joint with fewer
+// axes, and the root translation, change by components (a one-axis hinge composes exactly so).
+struct PoseChange {
+    const Skeleton& skeleton;
+    Eigen::Vector3d root;
+    std::vector<Eigen::Vector3d> angles;      // component change (degrees), the short way round
+    std::vector<Eigen::AngleAxisd> rotation;  // D of the three-axis joints (identity elsewhere)
+    std::vector<bool> composed;
+
+    PoseChange(const Skeleton& sk, const Pose& from, const Pose& to)
+        : skeleton(sk),
+          root(to.rootCm - from.rootCm),
+          angles(to.anglesDeg.size()),
+          rotation(to.anglesDeg.size(), Eigen::AngleAxisd::Identity()),
+          composed(to.anglesDeg.size(), false) {
+        for (std::size_t j = 0; j < angles.size(); ++j) {
+            for (int a = 0; a < 3; ++a) angles[j][a] = angleDeltaDeg(to.anglesDeg[j][a], from.anglesDeg[j][a]);
+            if (j >= sk.joints.size()) continue;
+            const Joint& jt = sk.joints[j];
+            if (!(jt.dof[0] && jt.dof[1] && jt.dof[2])) continue;
+            composed[j] = true;
+            rotation[j] = Eigen::AngleAxisd(eulerMatrix(to.anglesDeg[j], jt.order) *
+                                            eulerMatrix(from.anglesDeg[j], jt.order).transpose());
+        }
+    }
+    void addTo(Pose& p, double w) const {
+        p.rootCm += w * root;
+        for (std::size_t j = 0; j < angles.size() && j < p.anglesDeg.size(); ++j) {
+            if (!composed[j]) {
+                p.anglesDeg[j] += w * angles[j];
+                continue;
+            }
+            if (w == 0.0 || rotation[j].angle() == 0.0) continue;
+            const Joint& jt = skeleton.joints[j];
+            const Eigen::Matrix3d turned =
+                Eigen::AngleAxisd(w * rotation[j].angle(), rotation[j].axis()) * eulerMatrix(p.anglesDeg[j], jt.order);
+            p.anglesDeg[j] = fitJointAngles(turned, jt.order, jt.dof, p.anglesDeg[j]);
+        }
+    }
+};
+
+// Samples of the blend from + wΔ, w = 0, 1/16, …, 1: enough to see a hand swing out and back
+// along an Euler blend (a mirrored arm) as well as its end points.
+constexpr int kBlendSamples = 16;
+
 }  // namespace
 
 double poseLayerWeight(int t, int t0, int radius) {
@@ -23,19 +77,44 @@ double poseLayerWeight(int t, int t0, int radius) {
     return (1.0 - d) * (1.0 - d) * (1.0 + 2.0 * d);
 }
 
-void addPoseLayer(std::vector<Pose>& frames, int t0, int radius, const Pose& from, const Pose& to) {
-    const Eigen::Vector3d rootDelta = to.rootCm - from.rootCm;
-    std::vector<Eigen::Vector3d> angleDelta(to.anglesDeg.size());
-    for (std::size_t j = 0; j < angleDelta.size(); ++j)
-        for (int a = 0; a < 3; ++a) angleDelta[j][a] = angleDeltaDeg(to.anglesDeg[j][a], from.anglesDeg[j][a]);
+void addPoseLayer(const Skeleton& skeleton, std::vector<Pose>& frames, int t0, int radius, const Pose& from,
+                  const Pose& to) {
+    const PoseChange change(skeleton, from, to);
     const int n = static_cast<int>(frames.size());
-    for (int t = std::max(0, t0 - radius); t <= std::min(n - 1, t0 + radius); ++t) {
-        const double w = poseLayerWeight(t, t0, radius);
-        Pose& p = frames[static_cast<std::size_t>(t)];
-        p.rootCm += w * rootDelta;
-        for (std::size_t j = 0; j < angleDelta.size() && j < p.anglesDeg.size(); ++j)
-            p.anglesDeg[j] += w * angleDelta[j];
+    // Each side's blend ends by the clip's end, where the spread's span ends too: a side with
+    // fewer than `radius` frames blends faster rather than stop short of zero.
+    const int before = std::min(radius, t0), after = std::min(radius, n - 1 - t0);
+    for (int t = t0 - before; t <= t0 + after; ++t)
+        change.addTo(frames[static_cast<std::size_t>(t)], poseLayerWeight(t, t0, t < t0 ? before : after));
+}
+
+double poseLayerSteepestCm(const Skeleton& skeleton, const Pose& from, const Pose& to) {
+    const PoseChange change(skeleton, from, to);
+    const Effector ends[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+    Eigen::Vector3d previous[4];
+    double steepest = 0.0;
+    FkState fk;
+    for (int i = 0; i <= kBlendSamples; ++i) {
+        Pose p = from;
+        change.addTo(p, static_cast<double>(i) / kBlendSamples);
+        forwardKinematics(skeleton, p, fk);
+        for (int e = 0; e < 4; ++e) {
+            if (skeleton.effectorSite(ends[e]).joint < 0) continue;
+            const Eigen::Vector3d at = effectorCm(skeleton, fk, ends[e]);
+            if (i > 0) steepest = std::max(steepest, (at - previous[e]).norm() * kBlendSamples);
+            previous[e] = at;
+        }
     }
+    return steepest;
+}
+
+int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, int radius, double fps) {
+    if (radius < 1 || !(fps > 0.0)) return radius;
+    // The blend's slope is at most 1.5/r per frame (at d = ½), so an effector whose blended path
+    // has slope S (cm per unit weight) gains at most 1.5·S/r cm per frame.
+    const double needed = 1.5 * poseLayerSteepestCm(skeleton, from, to) * fps / kLayerSpeedCmPerSecond;
+    if (!std::isfinite(needed)) return kLayerWidening * radius;
+    return std::clamp(static_cast<int>(std::ceil(needed)), radius, kLayerWidening * radius);
 }
 
 }  // namespace mgp

@@ -1,8 +1,10 @@
 #pragma once
 // A whole-pose change on one frame (paste, mirror, a joint rotation) as an additive animation
 // layer with blend in and out, as Maya's animation layers and Blender's NLA strips do it: the
-// change Δ of frame t0 (root position and every Euler channel, angles the short way round) is
-// added to frames t0−r..t0+r with weight
+// change Δ of frame t0 is added to frames t0−r..t0+r with weight w(t) below. Δ is the root's
+// change of position, each three-axis joint's change of rotation D (applied as D^w before the
+// frame's own rotation: a joint turning fast under the layer keeps its speed), and each other
+// joint's change of its Euler channels (the short way round), applied as w·Δ; with
 //
 //   w(t) = (1 − d)²(1 + 2d),   d = |t − t0| / r
 //
@@ -12,15 +14,34 @@
 #include <vector>
 
 #include "skeleton/pose_layout.h"
+#include "skeleton/skeleton.h"
 
 namespace mgp {
 
 // w(t) above; 0 outside t0 ± radius; radius < 1 gives 1 at t0 and 0 elsewhere.
 double poseLayerWeight(int t, int t0, int radius);
 
-// `from` → `to` is the change on frame t0; adds w(t)·Δ to frames[t] for t in t0 ± radius (clamped
-// to the clip). Frame t0 becomes `to` up to rounding of the angle wrap (callers that need it exact
-// set it). The poses must all be of one skeleton.
-void addPoseLayer(std::vector<Pose>& frames, int t0, int radius, const Pose& from, const Pose& to);
+// `from` → `to` is the change on frame t0 (poses of `skeleton`); adds w(t)·Δ to frames[t] for t in
+// t0 ± radius. A side
+// with fewer frames than `radius` before the clip's end blends over the frames it has (its r is the
+// distance to the end), so the layer is 0 on the clip's first and last frame unless t0 is one. Frame t0 becomes `to` up
+// to rounding of the angle wrap (callers that need it exact set it). The poses must all be of one skeleton.
+void addPoseLayer(const Skeleton& skeleton, std::vector<Pose>& frames, int t0, int radius, const Pose& from,
+                  const Pose& to);
+
+// How fast (cm/s) the layer may move a hand or foot on top of the motion under it, at most: an
+// animator's blend in and out, not a pop (docs/maths-regeneration.md, "Whole-pose changes").
+constexpr double kLayerSpeedCmPerSecond = 90.0;
+// The widest layer, in falloff radii (8 quarter seconds: two seconds each side at the default).
+constexpr int kLayerWidening = 8;
+
+// The steepest slope (cm per unit weight) of a hand's or foot's path along the blend from + wΔ,
+// w from 0 to 1, sampled at sixteenths: an Euler blend can swing a hand out and back, so the end
+// points alone do not bound it.
+double poseLayerSteepestCm(const Skeleton& skeleton, const Pose& from, const Pose& to);
+// The layer radius of the change from → to: `radius` (the falloff), widened until the blend adds
+// at most kLayerSpeedCmPerSecond to any hand or foot (1.5·S·fps / v frames), at most
+// kLayerWidening·radius. radius < 1 is returned as it is (no spread).
+int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, int radius, double fps);
 
 }  // namespace mgp

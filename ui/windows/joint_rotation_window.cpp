@@ -140,14 +140,16 @@ std::string JointRotationWindow::rotate(EditorState& state, const std::vector<st
     if (!err.empty()) return err;
     selectJoint(joint);
     std::string text = "rotated " + jt.name + " on frame " + std::to_string(doc.frame() + 1);
+    char buf[200];
     if (result.learned) {
-        double worst = 0.0;
-        for (const IkConstraintResult& c : result.ik.constraints) worst = std::max(worst, c.residualCm);
-        char buf[160];
         std::snprintf(buf, sizeof buf,
-                      "; the prior re-solved the rest: L_IK %.1f, %zu held effector%s within %.3f cm (%s)",
-                      result.ik.lik, result.ik.constraints.size(), result.ik.constraints.size() == 1 ? "" : "s", worst,
-                      ikStopName(result.ik.stop));
+                      "; the prior re-solved the rest%s: L_IK %.1f, %d held effector%s within %.3f cm (%s)",
+                      result.settled ? ", the hips settled" : "", result.ik.lik, result.holds,
+                      result.holds == 1 ? "" : "s", result.holdMissCm, ikStopName(result.ik.stop));
+        text += buf;
+    } else if (result.settled) {
+        std::snprintf(buf, sizeof buf, "; the legs and hips kept %d held effector%s within %.3f cm", result.holds,
+                      result.holds == 1 ? "" : "s", result.holdMissCm);
         text += buf;
     }
     readout_ = text;
