@@ -1,5 +1,7 @@
 #include "edit/editor_document.h"
 
+#include "ik/plain_ik.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -153,6 +155,17 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
                 keptHolds = true;
                 x = r.x.allFinite() ? r.x : refitLatent(*v, frame_, v->model->keptPose(layout.extract(pose)));
             }
+            // The prior's solve keeps the root translation: a pose whose legs cannot reach the
+            // planted feet from there (a crouch pasted onto a stride) is settled onto them by
+            // moving the hips (settleOnHolds), from the prior's best try.
+            const Pose& tried = allFinite(r.pose) ? r.pose : given;
+            if (!keptHolds || worstHoldMissCm(clip().skeleton, pose, kept) > kReachedToleranceCm)
+                if (std::optional<Pose> settled = settleOnHolds(clip().skeleton, tried, -1, kept);
+                    settled && worstHoldMissCm(clip().skeleton, *settled, kept) <= kReachedToleranceCm) {
+                    pose = std::move(*settled);
+                    keptHolds = true;
+                    x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(pose)));
+                }
         }
     }
     DragRecord change;  // spread over the neighbours as a drag's release is (startDragFalloff)

@@ -71,38 +71,6 @@ std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint) {
     return out;
 }
 
-namespace {
-
-double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<IkConstraint>& holds) {
-    double worst = 0.0;
-    for (const IkConstraint& c : holds) worst = std::max(worst, (effectorCm(sk, pose, c.effector) - c.targetCm).norm());
-    return worst;
-}
-
-}  // namespace
-
-std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int joint,
-                                  const std::vector<IkConstraint>& holds) {
-    if (holds.empty() || worstHoldMissCm(sk, pose, holds) <= kSettledHoldCm) return std::nullopt;
-    PlainIkJob job;
-    job.skeleton = &sk;
-    job.start = pose;
-    job.freeRootTranslation = true;
-    const PoseLayout layout(sk);
-    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
-    for (int dof = 0; dof < layout.size(); ++dof)
-        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || layout.joint(dof) == joint;
-    for (IkConstraint c : holds) {
-        c.pin = true;
-        job.constraints.push_back(c);
-    }
-    job.toleranceCm = 0.1 * kSettledHoldCm;
-    job.solve();
-    if (!allFinite(job.pose) || worstHoldMissCm(sk, job.pose, holds) >= worstHoldMissCm(sk, pose, holds))
-        return std::nullopt;
-    return job.pose;
-}
-
 JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation& r, int maxIterations) {
     JointRotationResult out;
     if (!doc.hasClip()) {

@@ -16,6 +16,7 @@
 
 #include "edit/editor_document.h"
 #include "ik/constrained_ik.h"
+#include "ik/plain_ik.h"
 
 namespace mgp {
 
@@ -51,16 +52,6 @@ std::vector<HeldDof> heldDofsOf(const Skeleton& skeleton, int joint, const Eigen
 std::vector<IkConstraint> rotationHolds(const EditorDocument& doc, int joint);
 // The rest of what the frame keeps in place: the held effectors below `joint`, which move with it.
 std::vector<Effector> rotationMovers(const EditorDocument& doc, int joint);
-
-// A hold this close (cm) to its place is kept; a rotation that leaves one farther is settled.
-constexpr double kSettledHoldCm = 0.01;
-// `pose` with every hold back at its place (each held as a pin) by the least change without the
-// prior: damped least squares over the root translation and every DOF except the root rotation
-// and `joint`'s (so the rotation stays as asked and the upper body is not turned), which moves only
-// the chains of the holds (plain IK, minimal-norm steps; docs/maths-ik.md §7). nullopt when every
-// hold is within kSettledHoldCm already, or when the settle does not bring the worst one closer.
-std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int joint,
-                                  const std::vector<IkConstraint>& holds);
 
 // The rotated current pose (nothing changes in the document). With followPrior and no model,
 // the error says so.

@@ -1,6 +1,7 @@
 #include "ik/plain_ik.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 
 namespace mgp {
@@ -104,6 +105,38 @@ void PlainIkJob::solve() {
         reached = reached && r.reached;
         results.push_back(r);
     }
+}
+
+}  // namespace mgp
+
+namespace mgp {
+
+double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<IkConstraint>& holds) {
+    double worst = 0.0;
+    for (const IkConstraint& c : holds) worst = std::max(worst, (effectorCm(sk, pose, c.effector) - c.targetCm).norm());
+    return worst;
+}
+
+std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int keptJoint,
+                                  const std::vector<IkConstraint>& holds) {
+    const double before = worstHoldMissCm(sk, pose, holds);
+    if (holds.empty() || before <= kSettledHoldCm) return std::nullopt;
+    PlainIkJob job;
+    job.skeleton = &sk;
+    job.start = pose;
+    job.freeRootTranslation = true;
+    const PoseLayout layout(sk);
+    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
+    for (int dof = 0; dof < layout.size(); ++dof)
+        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || (keptJoint >= 0 && layout.joint(dof) == keptJoint);
+    for (IkConstraint c : holds) {
+        c.pin = true;
+        job.constraints.push_back(c);
+    }
+    job.toleranceCm = 0.1 * kSettledHoldCm;
+    job.solve();
+    if (!allFinite(job.pose) || !(worstHoldMissCm(sk, job.pose, holds) < before)) return std::nullopt;
+    return job.pose;
 }
 
 }  // namespace mgp

@@ -5,6 +5,7 @@
 // the prior buys. Root translation is fixed unless `freeRootTranslation` (then it is three more
 // unknowns, in cm, whose Jacobian columns are the identity: every point of the body moves with
 // it); the root rotation is free, as in the learned IK, unless frozen.
+#include <optional>
 #include <vector>
 
 #include "ik/ik_types.h"
@@ -34,5 +35,18 @@ struct PlainIkJob {
     std::string validate() const;
     void solve();
 };
+
+// A hold this close (cm) to its place is kept; a pose that leaves one farther is settled.
+constexpr double kSettledHoldCm = 0.01;
+// The farthest of `holds` from its place in `pose` (cm); 0 without holds.
+double worstHoldMissCm(const Skeleton& skeleton, const Pose& pose, const std::vector<IkConstraint>& holds);
+// `pose` with every hold back at its place (each held as a pin) by the least change without the
+// prior: damped least squares over the root translation and every DOF except the root rotation
+// and `keptJoint`'s (−1: none), so that what the animator set stays as set and the upper body is
+// not turned; its minimal-norm steps move only the chains of the holds (docs/maths-ik.md §7).
+// nullopt when every hold is within kSettledHoldCm already, or when the settle does not bring
+// the worst one closer.
+std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int keptJoint,
+                                  const std::vector<IkConstraint>& holds);
 
 }  // namespace mgp

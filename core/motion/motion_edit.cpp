@@ -132,9 +132,13 @@ void MotionEditJob::run() {
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
     held.clear();
+    // A whole-pose change's layer (EditBase::holdFrames) moves every effector, its path effector
+    // too: that one's own stances in the span are held at their old place like the other feet's
+    // (its path follows the layer only off them, below).
+    const bool holdElsewhere = base && !base->holdFrames.empty();
     if (holdContacts) {
         for (const FootContact& c : contactSet.contacts)
-            if (c.enabled && c.foot != effector && c.last > first && c.first < last)
+            if (c.enabled && (c.foot != effector || holdElsewhere) && c.last > first && c.first < last)
                 held.push_back({c.foot, c.first, c.last});
     }
     const std::size_t contactsHeld = held.size();
@@ -146,7 +150,6 @@ void MotionEditJob::run() {
     // the base motion (EditBase::holdFrames when given; placements at EditBase::placedFrames when given).
     std::vector<std::vector<IkConstraint>> holds(count);
     {
-        const bool holdElsewhere = base && !base->holdFrames.empty();
         const std::vector<Effector> follow = holdElsewhere ? base->followLayer : std::vector<Effector>{};
         FkState fk;
         for (int i = 0; i < count; ++i) {
@@ -176,7 +179,18 @@ void MotionEditJob::run() {
                         c.targetCm = effectorCm(clip.skeleton, fk, c.effector);
             }
         }
-        if (holdElsewhere) guideHeldEnds(holds);
+        if (holdElsewhere) {
+            guideHeldEnds(holds);
+            // Where the path effector is held (its stances, and its guide between them) the hold
+            // is its path target: one target per effector and frame.
+            for (int i = 0; i < count; ++i) {
+                const auto own = std::find_if(holds[i].begin(), holds[i].end(),
+                                              [&](const IkConstraint& c) { return c.effector == effector; });
+                if (own == holds[i].end()) continue;
+                pathCm[static_cast<std::size_t>(i)] = own->targetCm;
+                holds[i].erase(own);
+            }
+        }
     }
     if (solver == EditSolver::kSpan) {
         runSpan(holds);

@@ -4,10 +4,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <initializer_list>
 
 #include "edit/joint_rotation.h"
 #include "editor_harness.h"
+#include "gl_test_paths.h"
+#include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "ui/input/gui_script.h"
 #include "ui/input/input_state.h"
@@ -173,4 +176,87 @@ TEST_CASE("gui pose tools: Ctrl+C then Ctrl+V 70 frames on spreads the pasted po
     CHECK(doc.undoLabel() == "paste pose on frame 111");
     tapKey(*h, 'Z', {key::kLeftCtrl});
     CHECK(doc.edits().empty());
+}
+
+TEST_CASE(
+    "gui pose tools: a pose pasted from 180 frames away and a mirrored pose blend into their neighbours with the "
+    "planted feet kept, and the exported BVH carries it") {
+    auto h = test::makeHarness(false);
+    if (!h) return;
+    EditorDocument& doc = h->app->state().doc;
+    doc.setAdaptiveEnabled(false);  // the spreads below are judged against one model
+    const std::string dir = test::kOutDir + "/gui_pose_spread";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    // Standing frames (both feet planted, as a pose operation's bar asks): the first from frame 101 for
+    // the paste (its source 180 frames later), the first from frame 231 for the mirror.
+    auto standing = [&](int from) {
+        for (int t = from; t < doc.frameCount(); ++t)
+            if (doc.contacts().at(Effector::kLFoot, t) && doc.contacts().at(Effector::kRFoot, t)) return t;
+        return -1;
+    };
+    const int tp = standing(100), tm = standing(230);
+    REQUIRE(tp >= 0);
+    REQUIRE(tp + 180 < doc.frameCount());
+    REQUIRE(tm > tp + 60);
+    const std::string pasted = std::to_string(tp + 1), mirrored = std::to_string(tm + 1);
+    ui::GuiScript s;
+    s.add(0, "action", {"export-bvh", dir + "/before.bvh"});
+    s.add(1, "action", {"frame", std::to_string(tp + 181)});
+    s.add(2, "action", {"copy-pose"});
+    s.add(3, "action", {"frame", pasted});
+    s.add(4, "action", {"paste-pose"});
+    s.add(5, "action", {"wait"});
+    s.add(7, "action", {"frame", mirrored});
+    s.add(8, "action", {"mirror-pose"});
+    s.add(9, "action", {"wait"});
+    s.add(11, "action", {"export-bvh", dir + "/after.bvh"});
+    s.add(12, "action", {"wait"});
+    REQUIRE(h->play(s).empty());
+    const auto& history = h->app->state().messages.history();
+    for (const std::string& said : {"paste pose on frame " + pasted + ": spread over frames",
+                                   "mirror pose on frame " + mirrored + ": spread over"})
+        CHECK(std::any_of(history.begin(), history.end(),
+                          [&](const auto& m) { return m.text.find(said) != std::string::npos; }));
+    CHECK(doc.isEdited(tp));
+    CHECK(doc.isEdited(tm));
+    CHECK(doc.edits().size() > 60);  // both spread, not one frame each
+
+    // The exported motion against the exported capture, hands and feet (their joints) frame by frame.
+    const Clip before = loadClip(dir + "/before.bvh"), after = loadClip(dir + "/after.bvh");
+    REQUIRE(before.frameCount() == doc.frameCount());
+    REQUIRE(after.frameCount() == doc.frameCount());
+    const Skeleton& asf = doc.clip().skeleton;
+    auto jointOf = [&](Effector e) { return after.skeleton.findJoint(asf.joints[asf.effectorSite(e).joint].name); };
+    const Effector ends[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+    std::vector<FkState> fb(before.frameCount()), fa(after.frameCount());
+    for (int t = 0; t < doc.frameCount(); ++t) {
+        forwardKinematics(before.skeleton, before.frames[t], fb[t]);
+        forwardKinematics(after.skeleton, after.frames[t], fa[t]);
+    }
+    double worstJump = 0.0, worstFoot = 0.0, worstFrameGap = 0.0;
+    for (Effector e : ends) {
+        REQUIRE(after.skeleton.effectorSite(e).joint >= 0);
+        auto at = [&](const std::vector<FkState>& fk, int t) { return effectorCm(after.skeleton, fk[t], e); };
+        for (int t = 0; t + 1 < doc.frameCount(); ++t)
+            worstJump = std::max(worstJump, (at(fa, t + 1) - at(fa, t)).norm() - (at(fb, t + 1) - at(fb, t)).norm());
+        if (e == Effector::kLFoot || e == Effector::kRFoot)
+            for (int t = 0; t < doc.frameCount(); ++t)
+                if (doc.contacts().at(e, t) && t != tp && t != tm)
+                    worstFoot = std::max(worstFoot, (at(fa, t) - at(fb, t)).norm());
+        // The exported frames are the document's (the joint that carries the effector).
+        const int j = jointOf(e);
+        REQUIRE(j >= 0);
+        for (int t : {tp, tm}) {
+            FkState fk;
+            forwardKinematics(asf, doc.edits().at(t).pose, fk);
+            worstFrameGap = std::max(worstFrameGap, (fa[t].jointCm[j] - fk.jointCm[asf.effectorSite(e).joint]).norm());
+        }
+    }
+    MESSAGE("paste on frame " << pasted << ", mirror on frame " << mirrored
+                              << "; exported: worst one-frame step of a hand or foot over the capture's " << worstJump
+                              << " cm, planted feet within " << worstFoot << " cm");
+    CHECK(worstJump <= 1.0);
+    CHECK(worstFoot <= 1.0);
+    CHECK(worstFrameGap < 1e-3);
 }
