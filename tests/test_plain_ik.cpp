@@ -57,3 +57,63 @@ TEST_CASE("plain IK refuses NaN targets and duplicate effectors without touching
     job.solve();
     CHECK(job.diagnostic == "expected each effector once, found head twice");
 }
+
+TEST_CASE("plain IK with the root translation free: every point moves with it one to one, and it reaches farther") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const Pose& start = clip.frames[100];
+    // The root translation's Jacobian columns are the identity: central differences agree.
+    for (int k = 0; k < 3; ++k)
+        for (Effector e : {Effector::kLHand, Effector::kRFoot, Effector::kHead}) {
+            Pose plus = start, minus = start;
+            plus.rootCm[k] += 0.5;
+            minus.rootCm[k] -= 0.5;
+            const Eigen::Vector3d d = effectorCm(sk, plus, e) - effectorCm(sk, minus, e);
+            CHECK((d - Eigen::Vector3d::Unit(k)).norm() < 1e-9);
+        }
+    // A hand 150 cm higher is out of the arm's reach with the root fixed, in reach with it free.
+    PlainIkJob job;
+    job.skeleton = &sk;
+    job.start = start;
+    const Eigen::Vector3d target = effectorCm(sk, start, Effector::kRHand) + Eigen::Vector3d(0, 150, 0);
+    job.constraints = {{Effector::kRHand, target, false}};
+    job.solve();
+    CHECK_FALSE(job.reached);
+    CHECK(job.pose.rootCm == start.rootCm);
+    job.freeRootTranslation = true;
+    job.solve();
+    MESSAGE("root free: " << job.iterations << " iterations, " << job.diagnostic << ", residual "
+                          << job.results[0].residualCm << " cm, root moved "
+                          << (job.pose.rootCm - start.rootCm).transpose());
+    CHECK(job.reached);
+    CHECK(job.results[0].residualCm < 1e-3);
+    CHECK(job.pose.rootCm.y() - start.rootCm.y() > 50.0);
+}
+
+TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by the hips and the legs alone") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const Pose& start = clip.frames[145];  // both feet planted
+    const int knee = sk.findBone("rtibia");
+    std::vector<IkConstraint> holds;
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        holds.push_back({foot, effectorCm(sk, start, foot), true});
+    CHECK_FALSE(settleOnHolds(sk, start, knee, holds).has_value());  // nothing to settle
+    CHECK(worstHoldMissCm(sk, start, holds) == 0.0);
+    Pose bent = start;
+    bent.anglesDeg[knee].x() += 40.0;
+    const double miss = worstHoldMissCm(sk, bent, holds);
+    REQUIRE(miss > 5.0);  // the bent knee lifts its foot
+    const std::optional<Pose> settled = settleOnHolds(sk, bent, knee, holds);
+    REQUIRE(settled.has_value());
+    MESSAGE("bent knee: the foot " << miss << " cm off, settled to " << worstHoldMissCm(sk, *settled, holds)
+                                   << " cm; the root moved " << (settled->rootCm - start.rootCm).transpose());
+    CHECK(worstHoldMissCm(sk, *settled, holds) <= kSettledHoldCm);
+    CHECK(settled->anglesDeg[knee] == bent.anglesDeg[knee]);  // the rotation as asked
+    CHECK(settled->anglesDeg[0] == start.anglesDeg[0]);       // the root rotation kept
+    CHECK(settled->rootCm.y() < start.rootCm.y() - 1.0);      // the hips came down
+    const int lf = sk.effectorSite(Effector::kLFoot).joint, rf = sk.effectorSite(Effector::kRFoot).joint;
+    for (int j = 1; j < sk.jointCount(); ++j)
+        if (!sk.isAncestorOrSelf(j, lf) && !sk.isAncestorOrSelf(j, rf))
+            CHECK(settled->anglesDeg[j] == start.anglesDeg[j]);
+}

@@ -4,8 +4,11 @@
 
 #include <Eigen/Geometry>
 
+#include "io/clip_loader.h"
 #include "motion/pose_layer.h"
+#include "skeleton/forward_kinematics.h"
 #include "skeleton/rotation.h"
+#include "test_support.h"
 
 using namespace mgp;
 
@@ -113,4 +116,26 @@ TEST_CASE("pose layer: a three-axis joint turns by D^w before its own rotation, 
     // the joint about 3.1° per frame.
     const Eigen::Vector3d added = to.anglesDeg[0], addedNext = to.anglesDeg[0] + Eigen::Vector3d(6, 0, 6);
     CHECK(turnDeg(added, addedNext) > 2.0 * speed);
+}
+
+TEST_CASE("pose layer radius: the falloff, widened to 1.5·S·fps / 90 cm/s for a change whose blend moves a hand S cm") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const Pose& from = clip.frames[100];
+    // A pure root move of 30 cm: every hand and foot moves 30 cm per unit weight.
+    Pose to = from;
+    to.rootCm.x() += 30.0;
+    CHECK(poseLayerSteepestCm(sk, from, to) == doctest::Approx(30.0));
+    CHECK(poseLayerRadius(sk, from, to, 20, 120.0) == 60);  // ⌈1.5·30·120/90⌉
+    CHECK(poseLayerRadius(sk, from, to, 80, 120.0) == 80);  // never narrower than the falloff
+    to.rootCm.x() += 300.0;
+    CHECK(poseLayerRadius(sk, from, to, 20, 120.0) == kLayerWidening * 20);  // at most 8 falloffs
+    CHECK(poseLayerRadius(sk, from, from, 20, 120.0) == 20);
+    CHECK(poseLayerRadius(sk, from, to, 0, 120.0) == 0);  // no spread stays none
+    // An arm swung out and back along the blend: the slope seen along the way, not between the ends.
+    Pose swung = from;
+    const int shoulder = sk.findBone("rhumerus");
+    swung.anglesDeg[shoulder] += Eigen::Vector3d(0, 0, 90);
+    const double ends = (effectorCm(sk, swung, Effector::kRHand) - effectorCm(sk, from, Effector::kRHand)).norm();
+    CHECK(poseLayerSteepestCm(sk, from, swung) >= ends);
 }

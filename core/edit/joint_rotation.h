@@ -4,12 +4,13 @@
 //
 //   plain          only that joint's animated angles change (its subtree turns with it), unless
 //                  that moves what the frame holds (a pin, a placed effector, a planted foot):
-//                  then the settle below brings those back;
+//                  then the hips and the legs bring those back (settleOnHolds, ik/plain_ik.h);
 //   follow prior   those angles are held at the user's values and the rest of the pose (latent
 //                  point and free DOFs) is re-solved to the most likely pose under the model,
 //                  min over (x, free y) of L_IK, with the pinned effectors and the feet in ground
 //                  contact held where they are on the frame (ConstrainedIkSolver with held DOFs),
-//                  warm-started at the latent point that best explains the rotated pose.
+//                  warm-started at the latent point that best explains the rotated pose; a hold
+//                  that solve (which keeps the root translation) leaves off is settled the same way.
 #include <Eigen/Core>
 #include <optional>
 #include <string>

@@ -114,7 +114,8 @@ int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, 
     // has slope S (cm per unit weight) gains at most 1.5·S/r cm per frame.
     const double needed = 1.5 * poseLayerSteepestCm(skeleton, from, to) * fps / kLayerSpeedCmPerSecond;
     if (!std::isfinite(needed)) return kLayerWidening * radius;
-    return std::clamp(static_cast<int>(std::ceil(needed)), radius, kLayerWidening * radius);
+    // (The 1e-9 keeps a whole number of frames, computed a rounding error above it, whole.)
+    return std::clamp(static_cast<int>(std::ceil(needed - 1e-9)), radius, kLayerWidening * radius);
 }
 
 }  // namespace mgp

@@ -215,7 +215,7 @@ TEST_CASE(
     REQUIRE(h->play(s).empty());
     const auto& history = h->app->state().messages.history();
     for (const std::string& said : {"paste pose on frame " + pasted + ": spread over frames",
-                                   "mirror pose on frame " + mirrored + ": spread over"})
+                                    "mirror pose on frame " + mirrored + ": spread over"})
         CHECK(std::any_of(history.begin(), history.end(),
                           [&](const auto& m) { return m.text.find(said) != std::string::npos; }));
     CHECK(doc.isEdited(tp));
