@@ -230,6 +230,14 @@ TEST_CASE("gui input: copy a pose, paste it on another frame (root kept), one un
     CHECK(doc.undoLabel() == "paste pose on frame 61");
     tapKey(*h, 'Z', {key::kLeftCtrl});
     CHECK_FALSE(doc.isEdited(60));
+    // The status line says what went (it showed what the paste had said).
+    const auto* said = h->app->state().messages.current();
+    REQUIRE(said != nullptr);
+    CHECK(said->text == "undid paste pose on frame 61");
+    tapKey(*h, 'Z', {key::kLeftCtrl, key::kLeftShift});
+    CHECK(doc.isEdited(60));
+    REQUIRE(h->app->state().messages.current() != nullptr);
+    CHECK(h->app->state().messages.current()->text == "redid paste pose on frame 61");
 }
 
 TEST_CASE(

@@ -274,7 +274,13 @@ void addUndoAndPoseActions(ActionList& list) {
               "undo one step (a drag or a regeneration is one step; so is the model version it changed)",
               [](const EditorCommands& app) { return docOf(app).canUndo() && !docOf(app).regenerating(); },
               true,
-              [](EditorCommands& app, const ActionArgs&) { return app.state().doc.undo(); }});
+              [](EditorCommands& app, const ActionArgs&) {
+                  // The status line says what went, so it no longer shows what the step had said.
+                  const std::string label = app.state().doc.undoLabel();
+                  std::string err = app.state().doc.undo();
+                  if (err.empty()) app.state().setStatus("undid " + label);
+                  return err;
+              }});
     list.add({"redo",
               "",
               "Ctrl+Shift+Z",
@@ -282,7 +288,12 @@ void addUndoAndPoseActions(ActionList& list) {
               "redo one step (also Ctrl+Y)",
               [](const EditorCommands& app) { return docOf(app).canRedo() && !docOf(app).regenerating(); },
               true,
-              [](EditorCommands& app, const ActionArgs&) { return app.state().doc.redo(); }});
+              [](EditorCommands& app, const ActionArgs&) {
+                  const std::string label = app.state().doc.redoLabel();
+                  std::string err = app.state().doc.redo();
+                  if (err.empty()) app.state().setStatus("redid " + label);
+                  return err;
+              }});
     list.add({"revert-frame",
               "",
               "",
