@@ -148,17 +148,15 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         CHECK(prior.ik.constraints.size() == 2);
         CHECK(pinErr <= 0.05);
         // The plain rotation keeps the pins too: untouched (the arm, the back) or settled (the
-        // femur moves a pinned foot; the legs and the root bring it back). Unsettled, the plain pose
-        // is a candidate of the prior's problem, so the prior's pose must be at least as likely; a
-        // settled one moved the root, which the prior's problem keeps, so only the pins compare.
+        // femur moves a pinned foot; the legs and the root bring it back). The prior's solve starts
+        // from that pose and keeps its root, so the plain pose is a candidate of the prior's
+        // problem and the prior's pose must be at least as likely.
         CHECK(plainPinMove <= kSettledHoldCm);
         CHECK(plain.settled == (std::string(c.bone) == "rfemur"));
-        if (!plain.settled)
-            CHECK(prior.ik.lik < likPlain);
-        else
-            CHECK((plain.pose.rootCm - before.rootCm).norm() > 0.1);
-        CHECK_FALSE(prior.settled);  // the prior met the pins with the root where it was
-        CHECK(prior.pose.rootCm == before.rootCm);
+        CHECK(prior.settled == plain.settled);
+        CHECK(prior.ik.lik < likPlain);
+        CHECK(prior.pose.rootCm == plain.pose.rootCm);
+        if (plain.settled) CHECK((plain.pose.rootCm - before.rootCm).norm() > 0.1);
     }
     CHECK(posesIdentical(doc.currentPose(), before));  // solving changes nothing in the document
 }
@@ -325,4 +323,35 @@ TEST_CASE("rotate joint about a world axis (the gizmo's view ring): the joint's 
     }
     // A knee animates one axis only: a turn about an arbitrary axis is not one of its poses.
     CHECK_FALSE(anglesTurnedAboutWorldAxis(sk, pose, tibia, axis, 10.0).has_value());
+}
+
+TEST_CASE(
+    "rotate joint with the prior: a knee bent over its planted foot lowers the hips instead of tipping the foot") {
+    // Before, the prior's solve (which keeps the root translation) held the ball by tipping the foot
+    // onto its toe (the ankle 5 cm up, the hips where they were, "stalled").
+    EditorDocument doc;
+    doc.setModel(test::walkModel35(), true);
+    doc.setFrame(145);
+    const Skeleton& sk = doc.clip().skeleton;
+    REQUIRE(doc.inContact(Effector::kLFoot));
+    REQUIRE(doc.inContact(Effector::kRFoot));
+    const Pose before = doc.currentPose();
+    const int knee = sk.findBone("rtibia"), ankle = sk.findBone("rfoot");
+    JointRotation rot;
+    rot.joint = knee;
+    rot.anglesDeg = before.anglesDeg[knee] + Eigen::Vector3d(30, 0, 0);
+    rot.followPrior = true;
+    const JointRotationResult r = solveJointRotation(doc, rot);
+    REQUIRE(r.error.empty());
+    REQUIRE(r.learned);
+    FkState a, b;
+    forwardKinematics(sk, before, b);
+    forwardKinematics(sk, r.pose, a);
+    const double heelRise = a.jointCm[ankle].y() - b.jointCm[ankle].y();
+    MESSAGE("hips " << r.pose.rootCm.y() - before.rootCm.y() << " cm, right ankle " << heelRise << " cm, feet within "
+                    << r.holdMissCm << " cm, L_IK " << r.ik.lik << " (" << ikStopName(r.ik.stop) << ")");
+    CHECK(r.holdMissCm <= kSettledHoldCm);
+    CHECK(r.pose.anglesDeg[knee].x() == rot.anglesDeg.x());
+    CHECK(r.pose.rootCm.y() < before.rootCm.y() - 1.0);  // the hips came down
+    CHECK(std::abs(heelRise) <= kSettledHoldCm);         // the foot stays on its sole (its ankle held)
 }

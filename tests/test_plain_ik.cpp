@@ -116,4 +116,24 @@ TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by 
     for (int j = 1; j < sk.jointCount(); ++j)
         if (!sk.isAncestorOrSelf(j, lf) && !sk.isAncestorOrSelf(j, rf))
             CHECK(settled->anglesDeg[j] == start.anglesDeg[j]);
+    // Held by the ball alone the foot may pivot on it; with the sole's reference its ankle stays too.
+    FkState s0, s1, s2;
+    forwardKinematics(sk, start, s0);
+    forwardKinematics(sk, *settled, s1);
+    const double pivot = (s1.jointCm[rf] - s0.jointCm[rf]).norm();
+    const std::optional<Pose> flat = settleOnHolds(sk, bent, knee, holds, &start);
+    REQUIRE(flat.has_value());
+    forwardKinematics(sk, *flat, s2);
+    MESSAGE("the right ankle moved " << pivot << " cm on the ball alone, " << (s2.jointCm[rf] - s0.jointCm[rf]).norm()
+                                     << " cm with the sole held; the hips " << flat->rootCm.y() - start.rootCm.y()
+                                     << " cm");
+    CHECK(worstHoldMissCm(sk, *flat, holds) <= kSettledHoldCm);
+    for (int foot : {lf, rf}) CHECK((s2.jointCm[foot] - s0.jointCm[foot]).norm() <= kSettledHoldCm);
+    CHECK(pivot > 0.5);  // the reference is what keeps it
+    // A joint hold of a joint the skeleton lacks is refused.
+    PlainIkJob bad;
+    bad.skeleton = &sk;
+    bad.start = start;
+    bad.jointHolds = {{sk.jointCount(), Eigen::Vector3d::Zero()}};
+    CHECK(bad.validate().find("expected a held joint") != std::string::npos);
 }

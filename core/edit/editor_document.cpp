@@ -160,7 +160,7 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
             // moving the hips (settleOnHolds), from the prior's best try.
             const Pose& tried = allFinite(r.pose) ? r.pose : given;
             if (!keptHolds || worstHoldMissCm(clip().skeleton, pose, kept) > kReachedToleranceCm)
-                if (std::optional<Pose> settled = settleOnHolds(clip().skeleton, tried, -1, kept);
+                if (std::optional<Pose> settled = settleOnHolds(clip().skeleton, tried, -1, kept, &currentPose());
                     settled && worstHoldMissCm(clip().skeleton, *settled, kept) <= kReachedToleranceCm) {
                     pose = std::move(*settled);
                     keptHolds = true;

@@ -86,11 +86,12 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
         out.error = "expected finite angles, found NaN or Inf";
         return out;
     }
-    out.pose = rotateJoint(sk, doc.currentPose(), r.joint, r.anglesDeg);
+    const Pose& before = doc.currentPose();
+    out.pose = rotateJoint(sk, before, r.joint, r.anglesDeg);
     const std::vector<IkConstraint> holds = rotationHolds(doc, r.joint);
     out.holds = static_cast<int>(holds.size());
     auto settle = [&] {
-        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds)) {
+        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds, &before)) {
             out.pose = std::move(*settled);
             out.settled = true;
         }
@@ -105,6 +106,10 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
         out.error = "follow with the learned prior needs a model: train one or open one first";
         return out;
     }
+    // The prior's solve keeps the root translation: where the holds need the hips to move (a knee
+    // bent over its planted foot) it starts from the settled pose, whose hips are where they need
+    // to be (else it keeps the foot by tipping it onto its toe, the hips where they were).
+    settle();
     // Warm start: the latent point that best explains the rotated pose (every DOF held, x alone
     // free), so the solve does not start on the frame's branch of the latent space.
     ConstrainedIkSolver solver(model);
@@ -129,9 +134,7 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     }
     out.pose = out.ik.pose;
     out.learned = true;
-    // The prior's solve keeps the root translation; where the holds need the pelvis to move (a
-    // knee bent over its planted foot), the last centimetres are the settle's.
-    settle();
+    settle();  // what the solve left off, if anything
     return out;
 }
 

@@ -13,6 +13,12 @@ std::string PlainIkJob::validate() const {
                " joints";
     if (const int P = PoseLayout(*skeleton).size(); !frozenDofs.empty() && static_cast<int>(frozenDofs.size()) != P)
         return "expected " + std::to_string(P) + " frozen-DOF flags, found " + std::to_string(frozenDofs.size());
+    for (const JointHold& h : jointHolds) {
+        if (h.joint < 0 || h.joint >= skeleton->jointCount())
+            return "expected a held joint 0.." + std::to_string(skeleton->jointCount() - 1) + ", found " +
+                   std::to_string(h.joint);
+        if (!h.targetCm.allFinite()) return "expected a finite joint hold, found NaN or Inf";
+    }
     return validateConstraints(*skeleton, constraints);
 }
 
@@ -31,7 +37,8 @@ void PlainIkJob::solve() {
     const int P = layout.size();
     for (int i = 0; i < P; ++i)
         if (layout.joint(i) >= 0 && (frozenDofs.empty() || !frozenDofs[i])) active.push_back(i);
-    const int m = static_cast<int>(constraints.size());
+    const int mc = static_cast<int>(constraints.size());
+    const int m = mc + static_cast<int>(jointHolds.size());  // rows: the constraints, then the joint holds
     const int angles = static_cast<int>(active.size());
     const int n = angles + (freeRootTranslation ? 3 : 0);  // the root translation's columns come last
     FkState fk;
@@ -41,8 +48,10 @@ void PlainIkJob::solve() {
 
     auto evaluate = [&](const Pose& p, Eigen::VectorXd& e) {
         forwardKinematics(sk, p, fk);
-        for (int c = 0; c < m; ++c)
+        for (int c = 0; c < mc; ++c)
             e.segment<3>(3 * c) = constraints[c].targetCm - effectorCm(sk, fk, constraints[c].effector);
+        for (int h = 0; h < m - mc; ++h)
+            e.segment<3>(3 * (mc + h)) = jointHolds[h].targetCm - fk.jointCm[jointHolds[h].joint];
         return e.squaredNorm();
     };
     double cost = evaluate(pose, err);
@@ -58,7 +67,19 @@ void PlainIkJob::solve() {
         }
         forwardKinematics(sk, pose, fk);
         for (int c = 0; c < m; ++c) {
-            effectorJacobian(sk, layout, fk, pose, constraints[c].effector, jac);
+            if (c < mc) {
+                effectorJacobian(sk, layout, fk, pose, constraints[c].effector, jac);
+            } else {
+                // A joint's origin moves with the DOFs of its strict ancestors: ω × (p − q) per degree.
+                const int held = jointHolds[c - mc].joint;
+                jac.setZero();
+                for (int i = 0; i < P; ++i) {
+                    const int j = layout.joint(i);
+                    if (j < 0 || j == held || !sk.isAncestorOrSelf(j, held)) continue;
+                    jac.col(i) = kDegToRad *
+                                 dofWorldAxis(sk, fk, pose, j, layout.axis(i)).cross(fk.jointCm[held] - fk.jointCm[j]);
+                }
+            }
             for (int k = 0; k < angles; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
             // ∂p/∂(root translation) = I for every point of the body.
             if (freeRootTranslation) J.block<3, 3>(3 * c, angles).setIdentity();
@@ -96,7 +117,8 @@ void PlainIkJob::solve() {
     }
     evaluate(pose, err);
     reached = true;
-    for (int c = 0; c < m; ++c) {
+    for (int h = mc; h < m; ++h) reached = reached && err.segment<3>(3 * h).norm() <= kReachedToleranceCm;
+    for (int c = 0; c < mc; ++c) {
         IkConstraintResult r;
         r.effector = constraints[c].effector;
         r.pin = constraints[c].pin;
@@ -118,7 +140,7 @@ double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<I
 }
 
 std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int keptJoint,
-                                  const std::vector<IkConstraint>& holds) {
+                                  const std::vector<IkConstraint>& holds, const Pose* soleReference) {
     const double before = worstHoldMissCm(sk, pose, holds);
     if (holds.empty() || before <= kSettledHoldCm) return std::nullopt;
     PlainIkJob job;
@@ -132,6 +154,16 @@ std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int kept
     for (IkConstraint c : holds) {
         c.pin = true;
         job.constraints.push_back(c);
+    }
+    // A held foot keeps its sole: its ankle stays where the reference has it, so the ball alone
+    // does not pivot the foot onto its toe while the legs move.
+    if (soleReference) {
+        FkState ref;
+        forwardKinematics(sk, *soleReference, ref);
+        for (const IkConstraint& c : holds)
+            if (c.effector == Effector::kLFoot || c.effector == Effector::kRFoot)
+                if (const int ankle = sk.effectorSite(c.effector).joint; ankle >= 0)
+                    job.jointHolds.push_back({ankle, ref.jointCm[ankle]});
     }
     job.toleranceCm = 0.1 * kSettledHoldCm;
     job.solve();

@@ -14,13 +14,20 @@
 
 namespace mgp {
 
+// A joint's origin held at a world position (cm), e.g. a planted foot's ankle.
+struct JointHold {
+    int joint = -1;
+    Eigen::Vector3d targetCm = Eigen::Vector3d::Zero();
+};
+
 struct PlainIkJob {
     // Inputs.
     const Skeleton* skeleton = nullptr;
     Pose start;
     std::vector<IkConstraint> constraints;
-    std::vector<bool> frozenDofs;      // optional, one per pose-vector DOF: true = keep it at its start value
-    bool freeRootTranslation = false;  // the root translation (cm) is solved for too
+    std::vector<bool> frozenDofs;       // optional, one per pose-vector DOF: true = keep it at its start value
+    bool freeRootTranslation = false;   // the root translation (cm) is solved for too
+    std::vector<JointHold> jointHolds;  // met like the constraints (not reported in `results`)
     int maxIterations = 500;
     double toleranceCm = 1e-3;    // stop once every residual is below this
     double initialDamping = 1.0;  // λ of (JJᵀ + λ² I), in cm
@@ -44,9 +51,10 @@ double worstHoldMissCm(const Skeleton& skeleton, const Pose& pose, const std::ve
 // prior: damped least squares over the root translation and every DOF except the root rotation
 // and `keptJoint`'s (−1: none), so that what the animator set stays as set and the upper body is
 // not turned; its minimal-norm steps move only the chains of the holds (docs/maths-ik.md §7).
-// nullopt when every hold is within kSettledHoldCm already, or when the settle does not bring
-// the worst one closer.
+// With `soleReference`, each held foot's ankle is held too, where that pose has it, so that the
+// foot keeps its sole instead of pivoting on the held ball. nullopt when every hold is within
+// kSettledHoldCm already, or when the settle does not bring the worst one closer.
 std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int keptJoint,
-                                  const std::vector<IkConstraint>& holds);
+                                  const std::vector<IkConstraint>& holds, const Pose* soleReference = nullptr);
 
 }  // namespace mgp
