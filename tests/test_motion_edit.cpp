@@ -104,12 +104,13 @@ TEST_CASE("a path that dips below the floor is lifted onto it smoothly, and only
     std::vector<Eigen::Vector3d> path;
     for (int t = 0; t <= 40; ++t) path.emplace_back(t, 0.2 * (t - 20) * (t - 20) - 2.0, 0.0);
     const std::vector<Eigen::Vector3d> asked = path;
-    liftPathAboveFloor(path, 0.0, kFloorLiftFrames);
+    const int lift = 10;  // frames: kFloorLiftSeconds at 120 fps
+    liftPathAboveFloor(path, 0.0, lift);
     for (int t = 0; t <= 40; ++t) {
         CAPTURE(t);
         CHECK(path[t].y() >= -1e-12);        // on the floor or above
         CHECK(path[t].x() == asked[t].x());  // only heights change
-        if (std::abs(t - 20) > 3 + kFloorLiftFrames) CHECK(path[t].y() == asked[t].y());
+        if (std::abs(t - 20) > 3 + lift) CHECK(path[t].y() == asked[t].y());
         if (asked[t].y() < 0.0) CHECK(path[t].y() < 2.0);  // lifted onto it, not above the dip's depth
     }
     CHECK(path[20].y() == doctest::Approx(0.0));  // the deepest frame lands on the floor exactly
@@ -134,6 +135,14 @@ TEST_CASE("a path that dips below the floor is lifted onto it smoothly, and only
     std::vector<Eigen::Vector3d> high = asked;
     for (auto& p : high) p.y() += 5.0;
     const std::vector<Eigen::Vector3d> highAsked = high;
-    liftPathAboveFloor(high, 0.0, kFloorLiftFrames);
+    liftPathAboveFloor(high, 0.0, lift);
     CHECK(high == highAsked);
+    // A key on or above the floor near the dip keeps its place: the bumps end before it.
+    std::vector<Eigen::Vector3d> keyed = asked;
+    std::vector<bool> fixed(keyed.size(), false);
+    fixed[25] = true;  // 3 cm above the floor, 5 frames from the deepest frame
+    liftPathAboveFloor(keyed, 0.0, lift, fixed);
+    CHECK(keyed[25].y() == asked[25].y());
+    for (int t = 0; t <= 40; ++t) CHECK(keyed[t].y() >= -1e-12);
+    CHECK(keyed[20].y() == doctest::Approx(0.0));
 }

@@ -7,6 +7,7 @@
 #include "io/clip_loader.h"
 #include "motion/pose_layer.h"
 #include "skeleton/forward_kinematics.h"
+#include "skeleton/pose_mirror.h"
 #include "skeleton/rotation.h"
 #include "test_support.h"
 
@@ -132,10 +133,18 @@ TEST_CASE("pose layer radius: the falloff, widened to 1.5·S·fps / 90 cm/s for 
     CHECK(poseLayerRadius(sk, from, to, 20, 120.0) == kLayerWidening * 20);  // at most 8 falloffs
     CHECK(poseLayerRadius(sk, from, from, 20, 120.0) == 20);
     CHECK(poseLayerRadius(sk, from, to, 0, 120.0) == 0);  // no spread stays none
-    // An arm swung out and back along the blend: the slope seen along the way, not between the ends.
-    Pose swung = from;
-    const int shoulder = sk.findBone("rhumerus");
-    swung.anglesDeg[shoulder] += Eigen::Vector3d(0, 0, 90);
-    const double ends = (effectorCm(sk, swung, Effector::kRHand) - effectorCm(sk, from, Effector::kRHand)).norm();
-    CHECK(poseLayerSteepestCm(sk, from, swung) >= ends);
+    // The whole body turned 170° about the vertical: each hand travels an arc of 170°·R per unit
+    // weight, 1.49 times its chord 2R·sin 85°, so the slope seen along the blend exceeds what the
+    // end points alone would give.
+    const Joint& root = sk.joints[0];
+    Pose turned = from;
+    turned.anglesDeg[0] = fitJointAngles(
+        Eigen::AngleAxisd(170.0 * kDegToRad, Eigen::Vector3d::UnitY()) * eulerMatrix(from.anglesDeg[0], root.order),
+        root.order, root.dof, from.anglesDeg[0]);
+    double chord = 0.0;
+    for (Effector e : {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot})
+        chord = std::max(chord, (effectorCm(sk, turned, e) - effectorCm(sk, from, e)).norm());
+    const double slope = poseLayerSteepestCm(sk, from, turned);
+    MESSAGE("turned 170 degrees: steepest slope " << slope << " cm per unit weight, largest chord " << chord << " cm");
+    CHECK(slope > 1.3 * chord);
 }

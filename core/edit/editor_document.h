@@ -95,14 +95,15 @@ public:
         kNone,     // the pose as given; the spread holds what the layered motion has
         kResolve,  // paste, mirror: re-solved under the prior so that the holds stay, and the spread
                    // holds them where they were before the change
-        kSolved,   // rotate with the prior: the pose already keeps its holds (it was solved with
-                   // them); the spread holds them where they were, except `followLayer`
+        kSolved,   // rotate joint: the pose already keeps its holds (it was solved or settled
+                   // with them); the spread holds them where they were, except `followLayer`
     };
     // Replaces the current frame's pose (root included) as one undo step named `stepLabel`: the
     // operations that compute a whole pose (paste, mirror, rotate joint) go through here, and the
     // change spreads over the falloff. With kResolve and a model, the pose is first re-solved under
-    // the prior so that the frame's pins, placed effectors and planted feet stay where they were
-    // (if they cannot all be met the pose is kept as given). `followLayer` (kSolved): held
+    // the prior so that the frame's pins, placed effectors and planted feet stay where they were,
+    // settled onto them by the hips and legs if the prior cannot reach them from the frame's root
+    // (settleOnHolds); if they cannot all be met the pose is kept as given. `followLayer` (kSolved): held
     // effectors the change moved on purpose, held on the neighbours where the change's layer
     // carries them. "" or why not.
     std::string setCurrentPose(const Pose& pose, const std::string& stepLabel, PoseHolds holds = PoseHolds::kNone,
@@ -380,7 +381,8 @@ private:
     std::optional<SpanQuality> lastRegenerateQuality_;
     std::vector<MotionEditJob::KeyResult> lastRegenerateKeys_;
     int falloffRadius_ = 0;  // set by setClip
-    int spreadRadius_ = 0;   // the running spread's: the falloff, or a whole-pose change's wider layer
+    int spreadFalloff_ = 0;  // the running spread's falloff setting when it started
+    int spreadRadius_ = 0;   // its radius: the falloff, or a whole-pose change's wider layer
     double bodyStiffness_ = 1.0;
     long falloffStepId_ = 0;      // the undo step a running falloff job merges into (0 = none)
     std::string falloffSkipped_;  // why the last change was not spread, until pollRegenerate says it

@@ -273,13 +273,17 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
     job.contacts = std::make_shared<const ContactSet>(store_.contacts());
     // What earlier gestures placed on the spread's frames stays where the edited motion has it
     // (after a whole-pose change: where its layer moved it, so that the span stays smooth).
-    // A whole-pose change keeps every placement on its records, the displaced effector's too (the
-    // solve does not hold that one: it follows its displaced path).
+    // A whole-pose change keeps every placement on its records and holds it, the displaced
+    // effector's too (its path follows the layer only off its holds).
     job.heldPlaced =
         heldRuns(store_, job.keyFrames.front(), job.keyFrames.back(), wholePose ? Effector::kCount : rec.effector);
     job.placesEffector = !wholePose;
     job.spanWeights.locality = kDefaultSpanLocality * bodyStiffness_;
-    if (regenerate_.start(std::move(job)).empty()) falloffStepId_ = stepId, spreadRadius_ = radius;
+    if (regenerate_.start(std::move(job)).empty()) {
+        falloffStepId_ = stepId;
+        spreadFalloff_ = falloffRadius_;
+        spreadRadius_ = radius;
+    }
 }
 
 void EditorDocument::cancelDrag() {

@@ -68,7 +68,7 @@ std::string EditorDocument::pollRegenerate(std::string* error) {
         mergeFalloff(*job, store_, *top);
         applyFrames(top->after);
         ++revision_;
-        return falloffSummary(*job, falloffRadius_, spreadRadius_, top->label);
+        return falloffSummary(*job, spreadFalloff_, spreadRadius_, top->label);
     }
     lastRegenerateQuality_ = job->quality;  // the Path panel's report: path regenerations only
     lastRegenerateKeys_ = job->keys;

@@ -89,9 +89,9 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     const Pose& before = doc.currentPose();
     out.pose = rotateJoint(sk, before, r.joint, r.anglesDeg);
     const std::vector<IkConstraint> holds = rotationHolds(doc, r.joint);
-    out.holds = static_cast<int>(holds.size());
+    out.holdCount = static_cast<int>(holds.size());
     auto settle = [&] {
-        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds, &before)) {
+        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds, &before, maxIterations)) {
             out.pose = std::move(*settled);
             out.settled = true;
         }
@@ -145,8 +145,8 @@ std::string jointRotationLabel(const std::string& jointName, int frame) {
 std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, JointRotationResult* result) {
     JointRotationResult solved = solveJointRotation(doc, r);
     if (!solved.error.empty()) return solved.error;
-    // With the prior, the solve kept the frame's holds: the spread keeps them on the neighbours,
-    // and lets what moved with the joint follow the rotation there too. When the solve could not
+    // The solve kept the frame's holds (settled, with or without the prior): the spread keeps them
+    // on the neighbours, and lets what moved with the joint follow the rotation there too. When the solve could not
     // quite meet a hold (a knee bent too far for its planted foot), the neighbours still keep it:
     // the miss stays on this frame, where the readout reports it, instead of the layer sliding the
     // foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing

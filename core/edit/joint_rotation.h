@@ -3,7 +3,8 @@
 // of the pose follows the learned prior (docs/maths-ik.md §7).
 //
 //   plain          only that joint's animated angles change (its subtree turns with it), unless
-//                  that moves what the frame holds (a pin, a placed effector, a planted foot):
+//                  that moves what the frame holds (rotationHolds: pins, planted feet, and placed
+//                  effectors that are not below the joint):
 //                  then the hips and the legs bring those back (settleOnHolds, ik/plain_ik.h);
 //   follow prior   those angles are held at the user's values and the rest of the pose (latent
 //                  point and free DOFs) is re-solved to the most likely pose under the model,
@@ -32,7 +33,7 @@ struct JointRotationResult {
     Pose pose;
     bool learned = false;     // the prior re-solved the rest of the pose
     bool settled = false;     // settleOnHolds moved the legs and the root to keep the holds
-    int holds = 0;            // what the frame holds (rotationHolds)
+    int holdCount = 0;        // what the frame holds (rotationHolds)
     double holdMissCm = 0.0;  // the farthest of them from its place in `pose`
     ConstrainedIkResult ik;   // the solve, when learned
 };

@@ -70,15 +70,8 @@ void PlainIkJob::solve() {
             if (c < mc) {
                 effectorJacobian(sk, layout, fk, pose, constraints[c].effector, jac);
             } else {
-                // A joint's origin moves with the DOFs of its strict ancestors: ω × (p − q) per degree.
                 const int held = jointHolds[c - mc].joint;
-                jac.setZero();
-                for (int i = 0; i < P; ++i) {
-                    const int j = layout.joint(i);
-                    if (j < 0 || j == held || !sk.isAncestorOrSelf(j, held)) continue;
-                    jac.col(i) = kDegToRad *
-                                 dofWorldAxis(sk, fk, pose, j, layout.axis(i)).cross(fk.jointCm[held] - fk.jointCm[j]);
-                }
+                pointJacobian(sk, layout, fk, pose, held, fk.jointCm[held], jac);
             }
             for (int k = 0; k < angles; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
             // ∂p/∂(root translation) = I for every point of the body.
@@ -129,10 +122,6 @@ void PlainIkJob::solve() {
     }
 }
 
-}  // namespace mgp
-
-namespace mgp {
-
 double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<IkConstraint>& holds) {
     double worst = 0.0;
     for (const IkConstraint& c : holds) worst = std::max(worst, (effectorCm(sk, pose, c.effector) - c.targetCm).norm());
@@ -140,9 +129,10 @@ double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<I
 }
 
 std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int keptJoint,
-                                  const std::vector<IkConstraint>& holds, const Pose* soleReference) {
-    const double before = worstHoldMissCm(sk, pose, holds);
-    if (holds.empty() || before <= kSettledHoldCm) return std::nullopt;
+                                  const std::vector<IkConstraint>& holds, const Pose* soleReference,
+                                  int maxIterations) {
+    const double missBefore = worstHoldMissCm(sk, pose, holds);
+    if (holds.empty() || missBefore <= kSettledHoldCm) return std::nullopt;
     PlainIkJob job;
     job.skeleton = &sk;
     job.start = pose;
@@ -162,12 +152,15 @@ std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int kept
         forwardKinematics(sk, *soleReference, ref);
         for (const IkConstraint& c : holds)
             if (c.effector == Effector::kLFoot || c.effector == Effector::kRFoot)
-                if (const int ankle = sk.effectorSite(c.effector).joint; ankle >= 0)
+                // Not a foot whose own ankle or toes were turned: its sole is what changed.
+                if (const int ankle = sk.effectorSite(c.effector).joint;
+                    ankle >= 0 && !(keptJoint >= 0 && sk.isAncestorOrSelf(ankle, keptJoint)))
                     job.jointHolds.push_back({ankle, ref.jointCm[ankle]});
     }
     job.toleranceCm = 0.1 * kSettledHoldCm;
+    job.maxIterations = maxIterations;
     job.solve();
-    if (!allFinite(job.pose) || !(worstHoldMissCm(sk, job.pose, holds) < before)) return std::nullopt;
+    if (!allFinite(job.pose) || !(worstHoldMissCm(sk, job.pose, holds) < missBefore)) return std::nullopt;
     return job.pose;
 }
 

@@ -52,9 +52,11 @@ double worstHoldMissCm(const Skeleton& skeleton, const Pose& pose, const std::ve
 // and `keptJoint`'s (−1: none), so that what the animator set stays as set and the upper body is
 // not turned; its minimal-norm steps move only the chains of the holds (docs/maths-ik.md §7).
 // With `soleReference`, each held foot's ankle is held too, where that pose has it, so that the
-// foot keeps its sole instead of pivoting on the held ball. nullopt when every hold is within
-// kSettledHoldCm already, or when the settle does not bring the worst one closer.
+// foot keeps its sole instead of pivoting on the held ball (not when `keptJoint` is that ankle or
+// below it: then the sole is what was turned). nullopt when every hold is within kSettledHoldCm
+// already, or when the settle does not bring the worst one closer. At most `maxIterations` steps.
 std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int keptJoint,
-                                  const std::vector<IkConstraint>& holds, const Pose* soleReference = nullptr);
+                                  const std::vector<IkConstraint>& holds, const Pose* soleReference = nullptr,
+                                  int maxIterations = 500);
 
 }  // namespace mgp

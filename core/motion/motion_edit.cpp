@@ -96,15 +96,20 @@ bool MotionEditJob::keysReached() const {
 
 const char* editSolverName(EditSolver s) { return s == EditSolver::kSpan ? "span" : "per-frame"; }
 
-void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames) {
+void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames,
+                        const std::vector<bool>& fixed) {
     const int n = static_cast<int>(path.size());
+    auto isFixed = [&](int t) { return t < static_cast<int>(fixed.size()) && fixed[static_cast<std::size_t>(t)]; };
     std::vector<double> lift(path.size(), 0.0);
     for (int s = 0; s < n; ++s) {
         const double below = floorCm - path[static_cast<std::size_t>(s)].y();
         if (!(below > 0.0)) continue;
-        for (int t = std::max(0, s - frames); t <= std::min(n - 1, s + frames); ++t)
+        int width = frames;  // each side's: the bump is 0 on a fixed frame
+        for (int d = 1; d < width; ++d)
+            if (isFixed(s - d) || isFixed(s + d)) width = d;
+        for (int t = std::max(0, s - width); t <= std::min(n - 1, s + width); ++t)
             lift[static_cast<std::size_t>(t)] =
-                std::max(lift[static_cast<std::size_t>(t)], below * poseLayerWeight(t, s, frames));
+                std::max(lift[static_cast<std::size_t>(t)], below * poseLayerWeight(t, s, width));
     }
     for (int t = 0; t < n; ++t) path[static_cast<std::size_t>(t)].y() += lift[static_cast<std::size_t>(t)];
 }
@@ -128,7 +133,17 @@ void MotionEditJob::run() {
         solvedFrames.push_back(t);
         pathCm.push_back(target[t - first]);
     }
-    if (floored) liftPathAboveFloor(pathCm, *contactSet.floorCm, kFloorLiftFrames);
+    if (floored) {
+        // The inner keys that ask for a place on or above the floor keep it (a bump would lift
+        // them off it and report them missed).
+        std::vector<bool> keyed(pathCm.size(), false);
+        for (std::size_t k = 1; k + 1 < keyFrames.size(); ++k)
+            if (const int i = keyFrames[k] - first - 1; i >= 0 && i < static_cast<int>(pathCm.size()) &&
+                                                        pathCm[static_cast<std::size_t>(i)].y() >= *contactSet.floorCm)
+                keyed[static_cast<std::size_t>(i)] = true;
+        liftPathAboveFloor(pathCm, *contactSet.floorCm,
+                           std::max(1, static_cast<int>(std::lround(kFloorLiftSeconds * clip.fps))), keyed);
+    }
     results.assign(solvedFrames.size(), LearnedIkResult());
     const int count = static_cast<int>(solvedFrames.size());
     held.clear();
@@ -143,10 +158,11 @@ void MotionEditJob::run() {
     }
     const std::size_t contactsHeld = held.size();
     for (const ContactInterval& c : heldPlaced)
-        if (c.foot != effector && c.last > first && c.first < last) held.push_back(c);
+        if ((c.foot != effector || holdElsewhere) && c.last > first && c.first < last) held.push_back(c);
     placedRunsHeld = static_cast<int>(held.size() - contactsHeld);
     // Held effectors per inner frame: user pins on every frame, contacts and earlier placements on
-    // their frames; the edited effector is never held. Targets are the positions of that frame in
+    // their frames; the edited effector is not held (except under a whole-pose layer, where its
+    // holds become its path targets, below). Targets are the positions of that frame in
     // the base motion (EditBase::holdFrames when given; placements at EditBase::placedFrames when given).
     std::vector<std::vector<IkConstraint>> holds(count);
     {
@@ -281,9 +297,7 @@ void MotionEditJob::guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds)
                 after[static_cast<std::size_t>(i - lo)] = effectorCm(clip.skeleton, fk, e);
                 farthest = std::max(farthest, (after[i - lo] - before[i - lo]).norm());
             }
-            const double needed = 1.5 * farthest * clip.fps / kLayerSpeedCmPerSecond;
-            const int blend = std::isfinite(needed) ? std::max(kHeldEndBlendFrames, static_cast<int>(std::ceil(needed)))
-                                                    : kHeldEndBlendFrames;
+            const int blend = std::max(kHeldEndBlendFrames, layerBlendFrames(farthest, clip.fps));
             const int leftLength = rightHeld ? blend : std::min(blend, gap + 1);
             const int rightLength = leftHeld ? blend : std::min(blend, gap + 1);
             for (int i = lo; i <= hi; ++i) {

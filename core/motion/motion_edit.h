@@ -34,14 +34,17 @@
 
 namespace mgp {
 
-// Frames over which a path that dips below the floor is lifted back onto it (liftPathAboveFloor).
-constexpr int kFloorLiftFrames = 10;
+// How long (s) a path that dips below the floor takes to be lifted back onto it (liftPathAboveFloor).
+constexpr double kFloorLiftSeconds = 1.0 / 12.0;
 // The path raised onto the floor where it dips below it, smoothly: a frame s below it by v lifts
-// each frame t within `frames` of it by v·w(t) (the pose layer's C¹ Hermite blend, w = 1 at s), and
-// each frame takes the largest lift. So every frame is on the floor or above, frames farther than
-// `frames` from a dip are unchanged, and the path meets the floor without a corner (a hard clamp
-// put one there, and a foot that followed it turned its ankle in one frame).
-void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames);
+// each frame t within n frames of it by v·w(t) (the pose layer's C¹ Hermite blend, w = 1 at s), and
+// each frame takes the largest lift. n is `frames`, shortened so that a bump ends before any frame
+// marked in `fixed` (the inner keys on or above the floor: they keep their asked place). So every
+// frame is on the floor or above, frames farther than n from a dip are unchanged, and where the path
+// meets the floor it curves (a hard clamp put a corner there, and a foot that followed it turned its
+// ankle in one frame). Where two bumps cross the lift has a milder kink.
+void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames,
+                        const std::vector<bool>& fixed = {});
 
 enum class PathMode { kDirect, kDisplacement };
 enum class EditSolver { kSpan, kPerFrame };
@@ -65,7 +68,8 @@ struct MotionEditJob {
     std::vector<Effector> pins;
     // Foot contacts (motion/foot_contacts.h) held at their captured position, frame by frame:
     // every enabled contact of `contacts` (detected on the model's clip with the default rule
-    // when not given) whose foot is not the edited effector.
+    // when not given) whose foot is not the edited effector (under a whole-pose layer,
+    // EditBase::holdFrames, its own too: there it follows the layer only off its stances).
     bool holdContacts = true;
     std::shared_ptr<const ContactSet> contacts;
     // Effectors the animator placed earlier (edit/held_effectors.h), held the same way on their

@@ -30,20 +30,20 @@ struct PoseChange {
     Eigen::Vector3d root;
     std::vector<Eigen::Vector3d> angles;      // component change (degrees), the short way round
     std::vector<Eigen::AngleAxisd> rotation;  // D of the three-axis joints (identity elsewhere)
-    std::vector<bool> composed;
+    std::vector<bool> byRotation;             // the joint changes by D (three axes, and changed)
 
     PoseChange(const Skeleton& sk, const Pose& from, const Pose& to)
         : skeleton(sk),
           root(to.rootCm - from.rootCm),
           angles(to.anglesDeg.size()),
           rotation(to.anglesDeg.size(), Eigen::AngleAxisd::Identity()),
-          composed(to.anglesDeg.size(), false) {
+          byRotation(to.anglesDeg.size(), false) {
         for (std::size_t j = 0; j < angles.size(); ++j) {
             for (int a = 0; a < 3; ++a) angles[j][a] = angleDeltaDeg(to.anglesDeg[j][a], from.anglesDeg[j][a]);
             if (j >= sk.joints.size()) continue;
             const Joint& jt = sk.joints[j];
-            if (!(jt.dof[0] && jt.dof[1] && jt.dof[2])) continue;
-            composed[j] = true;
+            if (!(jt.dof[0] && jt.dof[1] && jt.dof[2]) || to.anglesDeg[j] == from.anglesDeg[j]) continue;
+            byRotation[j] = true;
             rotation[j] = Eigen::AngleAxisd(eulerMatrix(to.anglesDeg[j], jt.order) *
                                             eulerMatrix(from.anglesDeg[j], jt.order).transpose());
         }
@@ -51,15 +51,17 @@ struct PoseChange {
     void addTo(Pose& p, double w) const {
         p.rootCm += w * root;
         for (std::size_t j = 0; j < angles.size() && j < p.anglesDeg.size(); ++j) {
-            if (!composed[j]) {
+            if (!byRotation[j]) {
                 p.anglesDeg[j] += w * angles[j];
                 continue;
             }
-            if (w == 0.0 || rotation[j].angle() == 0.0) continue;
+            if (w == 0.0) continue;
             const Joint& jt = skeleton.joints[j];
             const Eigen::Matrix3d turned =
                 Eigen::AngleAxisd(w * rotation[j].angle(), rotation[j].axis()) * eulerMatrix(p.anglesDeg[j], jt.order);
-            p.anglesDeg[j] = fitJointAngles(turned, jt.order, jt.dof, p.anglesDeg[j]);
+            // Of the two Euler triples, the one nearest the component blend: at w = 1 on t0 that is
+            // `to` itself (up to whole turns), not the other solution of the same rotation.
+            p.anglesDeg[j] = fitJointAngles(turned, jt.order, jt.dof, p.anglesDeg[j] + w * angles[j]);
         }
     }
 };
@@ -108,14 +110,18 @@ double poseLayerSteepestCm(const Skeleton& skeleton, const Pose& from, const Pos
     return steepest;
 }
 
+int layerBlendFrames(double distanceCm, double fps) {
+    const double needed = 1.5 * distanceCm * fps / kLayerSpeedCmPerSecond;
+    if (!(needed > 0.0)) return 0;
+    // (The 1e-9 keeps a whole number of frames, computed a rounding error above it, whole.)
+    return needed >= 1e6 ? 1000000 : static_cast<int>(std::ceil(needed - 1e-9));
+}
+
 int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, int radius, double fps) {
     if (radius < 1 || !(fps > 0.0)) return radius;
     // The blend's slope is at most 1.5/r per frame (at d = ½), so an effector whose blended path
     // has slope S (cm per unit weight) gains at most 1.5·S/r cm per frame.
-    const double needed = 1.5 * poseLayerSteepestCm(skeleton, from, to) * fps / kLayerSpeedCmPerSecond;
-    if (!std::isfinite(needed)) return kLayerWidening * radius;
-    // (The 1e-9 keeps a whole number of frames, computed a rounding error above it, whole.)
-    return std::clamp(static_cast<int>(std::ceil(needed - 1e-9)), radius, kLayerWidening * radius);
+    return std::clamp(layerBlendFrames(poseLayerSteepestCm(skeleton, from, to), fps), radius, kLayerWidening * radius);
 }
 
 }  // namespace mgp

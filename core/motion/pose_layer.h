@@ -39,9 +39,13 @@ constexpr int kLayerWidening = 8;
 // w from 0 to 1, sampled at sixteenths: an Euler blend can swing a hand out and back, so the end
 // points alone do not bound it.
 double poseLayerSteepestCm(const Skeleton& skeleton, const Pose& from, const Pose& to);
+// Frames a Hermite blend needs to move something `distanceCm` at most kLayerSpeedCmPerSecond on
+// top of its motion: ⌈1.5·Δ·fps / v⌉ (the blend's steepest slope is 1.5/n per frame); 0 for none.
+int layerBlendFrames(double distanceCm, double fps);
 // The layer radius of the change from → to: `radius` (the falloff), widened until the blend adds
-// at most kLayerSpeedCmPerSecond to any hand or foot (1.5·S·fps / v frames), at most
-// kLayerWidening·radius. radius < 1 is returned as it is (no spread).
+// at most kLayerSpeedCmPerSecond to any hand or foot (layerBlendFrames of the steepest slope S), at
+// most kLayerWidening·radius. radius < 1 is returned as it is (no spread). A side that the clip's
+// end cuts shorter (addPoseLayer) blends faster than that.
 int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, int radius, double fps);
 
 }  // namespace mgp

@@ -68,13 +68,21 @@ Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const 
 
 void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
                       Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
-    jac.setZero();
     const EffectorSite& site = skeleton.effectorSite(e);
-    if (site.joint < 0) return;
-    const Eigen::Vector3d pe = effectorCm(skeleton, fk, e);
+    if (site.joint < 0) {
+        jac.setZero();
+        return;
+    }
+    pointJacobian(skeleton, layout, fk, pose, site.joint, effectorCm(skeleton, fk, e), jac);
+}
+
+void pointJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                   int pointJoint, const Eigen::Vector3d& pe,
+                   Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac) {
+    jac.setZero();
     for (int i = 0; i < layout.size(); ++i) {
         const int j = layout.joint(i);
-        if (j < 0 || !skeleton.isAncestorOrSelf(j, site.joint)) continue;
+        if (j < 0 || !skeleton.isAncestorOrSelf(j, pointJoint)) continue;
         const Eigen::Vector3d w = dofWorldAxis(skeleton, fk, pose, j, layout.axis(i));
         jac.col(i) = kDegToRad * w.cross(pe - fk.jointCm[j]);
     }

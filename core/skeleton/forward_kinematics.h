@@ -39,6 +39,12 @@ Eigen::Vector3d dofWorldAxis(const Skeleton& skeleton, const FkState& fk, const 
 // ancestors of the effector (or absent from the skeleton) are exactly 0.
 void effectorJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
                       Effector e, Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
+// The same for a point fixed in joint `pointJoint`'s frame, now at world position `pointCm`: column
+// i is ω_i × (p − q_i) in cm per degree for the DOFs of the joint and its ancestors (a joint's own
+// origin: its own DOFs' columns are 0).
+void pointJacobian(const Skeleton& skeleton, const PoseLayout& layout, const FkState& fk, const Pose& pose,
+                   int pointJoint, const Eigen::Vector3d& pointCm,
+                   Eigen::Ref<Eigen::Matrix<double, 3, Eigen::Dynamic>> jac);
 
 // λ · ∂²(effector position)/∂y² for the P pose-vector DOFs (P×P, cm/deg², symmetric): the
 // second-order term a Newton step on ‖FK − c‖² or on a pinned effector's multiplier needs. For

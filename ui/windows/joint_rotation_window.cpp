@@ -144,12 +144,16 @@ std::string JointRotationWindow::rotate(EditorState& state, const std::vector<st
     if (result.learned) {
         std::snprintf(buf, sizeof buf,
                       "; the prior re-solved the rest%s: L_IK %.1f, %d held effector%s within %.3f cm (%s)",
-                      result.settled ? ", the hips settled" : "", result.ik.lik, result.holds,
-                      result.holds == 1 ? "" : "s", result.holdMissCm, ikStopName(result.ik.stop));
+                      result.settled ? ", the hips settled" : "", result.ik.lik, result.holdCount,
+                      result.holdCount == 1 ? "" : "s", result.holdMissCm, ikStopName(result.ik.stop));
         text += buf;
     } else if (result.settled) {
-        std::snprintf(buf, sizeof buf, "; the legs and hips kept %d held effector%s within %.3f cm", result.holds,
-                      result.holds == 1 ? "" : "s", result.holdMissCm);
+        std::snprintf(buf, sizeof buf, "; the legs and hips kept %d held effector%s within %.3f cm", result.holdCount,
+                      result.holdCount == 1 ? "" : "s", result.holdMissCm);
+        text += buf;
+    }
+    if (result.holdMissCm > kReachedToleranceCm) {
+        std::snprintf(buf, sizeof buf, "; a held effector is %.1f cm off its place (out of reach)", result.holdMissCm);
         text += buf;
     }
     readout_ = text;
