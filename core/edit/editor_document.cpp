@@ -1,13 +1,12 @@
 #include "edit/editor_document.h"
 
-#include "ik/plain_ik.h"
-
 #include <algorithm>
 #include <utility>
 
 #include "edit/latent_refit.h"
 #include "ik/learned_ik.h"
 #include "ik/locality.h"
+#include "ik/plain_ik.h"
 #include "motion/drag_falloff.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_layout.h"

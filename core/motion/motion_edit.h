@@ -140,7 +140,9 @@ private:
     // place to the layered one over up to n frames after an end (before a start), along a
     // smoothstep, reaching the layered place by the next key at the latest: n is
     // kHeldEndBlendFrames, or more where the layer moved the effector so far that the smoothstep
-    // would move it faster than kLayerSpeedCmPerSecond on top of its motion (1.5·Δ·fps/v frames).
+    // would move it faster than kLayerSpeedCmPerSecond on top of its motion (layerBlendFrames).
+    // Past the blend it is held at the layered place (left free, the solve let it wander from
+    // there, and the next guide pulled it back in one frame).
     static constexpr int kHeldEndBlendFrames = 20;
     void guideHeldEnds(std::vector<std::vector<IkConstraint>>& holds) const;
     void runSpan(const std::vector<std::vector<IkConstraint>>& holds);
