@@ -145,4 +145,12 @@ TEST_CASE("a path that dips below the floor is lifted onto it smoothly, and only
     CHECK(keyed[25].y() == asked[25].y());
     for (int t = 0; t <= 40; ++t) CHECK(keyed[t].y() >= -1e-12);
     CHECK(keyed[20].y() == doctest::Approx(0.0));
+    // A dip at either end of the path, a key beside it: the bumps stop at the path's ends.
+    std::vector<Eigen::Vector3d> ends;
+    for (int t = 0; t <= 12; ++t) ends.emplace_back(t, 0.2 * (t - 6) * (t - 6) - 4.0, 0.0);  // below at 2..10
+    std::vector<bool> endKeys(ends.size(), false);
+    endKeys[12] = true;  // 3.2 cm above the floor
+    liftPathAboveFloor(ends, 0.0, lift, endKeys);
+    for (const Eigen::Vector3d& p : ends) CHECK(p.y() >= -1e-12);
+    CHECK(ends[12].y() == doctest::Approx(3.2));
 }

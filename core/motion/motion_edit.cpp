@@ -99,7 +99,9 @@ const char* editSolverName(EditSolver s) { return s == EditSolver::kSpan ? "span
 void liftPathAboveFloor(std::vector<Eigen::Vector3d>& path, double floorCm, int frames,
                         const std::vector<bool>& fixed) {
     const int n = static_cast<int>(path.size());
-    auto isFixed = [&](int t) { return t < static_cast<int>(fixed.size()) && fixed[static_cast<std::size_t>(t)]; };
+    auto isFixed = [&](int t) {
+        return t >= 0 && t < static_cast<int>(fixed.size()) && fixed[static_cast<std::size_t>(t)];
+    };
     std::vector<double> lift(path.size(), 0.0);
     for (int s = 0; s < n; ++s) {
         const double below = floorCm - path[static_cast<std::size_t>(s)].y();
