@@ -103,9 +103,9 @@ public:
     // change spreads over the falloff. With kResolve and a model, the pose is first re-solved under
     // the prior so that the frame's pins, placed effectors and planted feet stay where they were,
     // settled onto them by the hips and legs if the prior cannot reach them from the frame's root
-    // (settleOnHolds); if they cannot all be met the pose is kept as given. `followLayer` (kSolved): held
-    // effectors the change moved on purpose, held on the neighbours where the change's layer
-    // carries them. "" or why not.
+    // (settleOnHolds); if they cannot all be met the pose is kept as given. `followLayer`
+    // (kSolved): held effectors the change moved on purpose, held on the neighbours where the
+    // change's layer carries them. "" or why not.
     std::string setCurrentPose(const Pose& pose, const std::string& stepLabel, PoseHolds holds = PoseHolds::kNone,
                                const std::vector<Effector>& followLayer = {});
     // What such a re-solve keeps in place: holdConstraints() and the planted feet, each once.

@@ -146,10 +146,10 @@ std::string applyJointRotation(EditorDocument& doc, const JointRotation& r, Join
     JointRotationResult solved = solveJointRotation(doc, r);
     if (!solved.error.empty()) return solved.error;
     // The solve kept the frame's holds (settled, with or without the prior): the spread keeps them
-    // on the neighbours, and lets what moved with the joint follow the rotation there too. When the solve could not
-    // quite meet a hold (a knee bent too far for its planted foot), the neighbours still keep it:
-    // the miss stays on this frame, where the readout reports it, instead of the layer sliding the
-    // foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing
+    // on the neighbours, and lets what moved with the joint follow the rotation there too. When the
+    // solve could not quite meet a hold (a knee bent too far for its planted foot), the neighbours
+    // still keep it: the miss stays on this frame, where the readout reports it, instead of the
+    // layer sliding the foot over the whole span (docs/experiments/ik.md, "Paste, mirror and rotate on standing
     // frames").
     const std::string label = jointRotationLabel(doc.clip().skeleton.joints[r.joint].name, doc.frame());
     const std::string err =

@@ -80,15 +80,11 @@ std::string regenerationSummary(const MotionEditJob& job, bool updateQueued) {
 
 std::string falloffSummary(const MotionEditJob& job, int falloffRadius, int spreadRadius,
                            const std::string& stepLabel) {
-    char summary[160];
+    std::string out = stepLabel + ": spread over frames " + std::to_string(job.keyFrames.front() + 2) + "-" +
+                      std::to_string(job.keyFrames.back()) + " (falloff " + std::to_string(falloffRadius) + " frames";
     if (spreadRadius > falloffRadius)
-        std::snprintf(summary, sizeof summary,
-                      ": spread over frames %d-%d (falloff %d frames, widened to %d for a change this large)",
-                      job.keyFrames.front() + 2, job.keyFrames.back(), falloffRadius, spreadRadius);
-    else
-        std::snprintf(summary, sizeof summary, ": spread over frames %d-%d (falloff %d frames)",
-                      job.keyFrames.front() + 2, job.keyFrames.back(), falloffRadius);
-    return stepLabel + summary;
+        out += ", widened to " + std::to_string(spreadRadius) + " for a change this large";
+    return out + ")";
 }
 
 }  // namespace mgp

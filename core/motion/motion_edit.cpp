@@ -1,8 +1,7 @@
 #include "motion/motion_edit.h"
 
-#include "motion/pose_layer.h"
-
 #include "motion/foot_contacts.h"
+#include "motion/pose_layer.h"
 
 #include <algorithm>
 #include <limits>
