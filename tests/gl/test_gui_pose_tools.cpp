@@ -6,6 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "edit/joint_rotation.h"
 #include "editor_harness.h"
@@ -15,6 +18,7 @@
 #include "ui/input/gui_script.h"
 #include "ui/input/input_state.h"
 #include "ui/shell/editor_app.h"
+#include "ui/widgets/widgets.h"
 
 using namespace mgp;
 using test::tapKey;
@@ -259,4 +263,19 @@ TEST_CASE(
     CHECK(worstJump <= 1.0);
     CHECK(worstFoot <= 1.0);
     CHECK(worstFrameGap < 1e-3);
+}
+
+TEST_CASE("gui pose tools: the Rotate joint readout breaks its lines at spaces only, never inside a number") {
+    const auto width = [](std::string_view s) { return 7.0f * static_cast<float>(s.size()); };
+    const std::string text = "2 held effectors within 0.002 cm (converged)";
+    // ImGui's own wrapping at this width breaks after the full stop: "... within 0." / "002 cm".
+    const std::vector<std::string> lines = ui::linesBrokenAtSpaces(text, 7.0f * 26.0f, width);
+    REQUIRE(lines.size() == 2);
+    CHECK(lines[0] == "2 held effectors within");
+    CHECK(lines[1] == "0.002 cm (converged)");
+    // Wide enough: one line; a word wider than the room keeps a line of its own.
+    CHECK(ui::linesBrokenAtSpaces(text, 7.0f * 100.0f, width) == std::vector<std::string>{text});
+    CHECK(ui::linesBrokenAtSpaces("a 1234567890 b", 7.0f * 5.0f, width) ==
+          std::vector<std::string>{"a", "1234567890", "b"});
+    CHECK(ui::linesBrokenAtSpaces("", 70.0f, width) == std::vector<std::string>{""});
 }

@@ -41,6 +41,34 @@ void textEllipsized(const ImVec4& colour, const std::string& text) {
     if (shown != text && ImGui::IsItemHovered()) tooltip("%s", text.c_str());
 }
 
+std::vector<std::string> linesBrokenAtSpaces(const std::string& text, float room,
+                                             const std::function<float(std::string_view)>& width) {
+    std::vector<std::string> lines;
+    std::string line;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t space = text.find(' ', at);
+        const std::size_t end = space == std::string::npos ? text.size() : space;
+        const std::string_view word(text.data() + at, end - at);
+        const std::string joined = line.empty() ? std::string(word) : line + " " + std::string(word);
+        if (!line.empty() && width(joined) > room) {
+            lines.push_back(line);
+            line = std::string(word);
+        } else {
+            line = joined;
+        }
+        at = end + 1;
+    }
+    if (!line.empty() || lines.empty()) lines.push_back(line);
+    return lines;
+}
+
+void textWrappedAtSpaces(const std::string& text) {
+    const float room = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
+    const auto width = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
+    for (const std::string& line : linesBrokenAtSpaces(text, room, width)) ImGui::TextUnformatted(line.c_str());
+}
+
 void sameLineIfFits(const char* label, float extra) {
     const ImGuiStyle& st = ImGui::GetStyle();
     const float next = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * st.FramePadding.x + extra;

@@ -1,6 +1,9 @@
 #pragma once
 // Small ImGui layout helpers shared by the panels.
+#include <functional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 struct ImVec4;
 
@@ -17,6 +20,15 @@ void tooltip(const char* fmt, ...)
 // One line of `text` in `colour`: where it is wider than the room left on the line it ends in "..."
 // and shows whole in a tooltip on hover.
 void textEllipsized(const ImVec4& colour, const std::string& text);
+
+// Splits `text` into lines no wider than `room` (as `width` measures them), breaking only at
+// spaces: ImGui's own wrapping also breaks after a full stop, which cuts "0.002 cm" in two. A word
+// wider than the room keeps a line of its own.
+std::vector<std::string> linesBrokenAtSpaces(const std::string& text, float room,
+                                             const std::function<float(std::string_view)>& width);
+
+// `text` wrapped at the window's right edge, broken only at spaces (see linesBrokenAtSpaces).
+void textWrappedAtSpaces(const std::string& text);
 
 // Puts the next widget (a button labelled `label`, plus `extra` pixels such as a check box) on
 // the current line only if it fits in the window's width; else it starts a new line.

@@ -9,6 +9,7 @@
 #include "ui/actions/action_args.h"
 #include "ui/actions/editor_commands.h"
 #include "ui/shell/editor_state.h"
+#include "ui/widgets/widgets.h"
 
 namespace mgp::ui {
 
@@ -103,7 +104,7 @@ void JointRotationWindow::draw(EditorCommands& app) {
         s.posePreview.reset();  // the gesture ended without an edit
         gesture_ = false;
     }
-    if (!readout_.empty()) ImGui::TextWrapped("%s", readout_.c_str());
+    if (!readout_.empty()) textWrappedAtSpaces(readout_);
     ImGui::End();
     if (!open_ && gesture_) {
         s.posePreview.reset();
