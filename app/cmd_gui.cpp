@@ -25,6 +25,7 @@
 #include "ui/input/gui_script.h"
 #include "ui/shell/editor_app.h"
 #include "ui/shell/glfw_window.h"
+#include "util/thread_priority.h"
 
 namespace mgp::app {
 
@@ -178,6 +179,7 @@ void drawGuiFrame(GuiLoop& loop, int i, const GuiFrameInput& in) {
 
 int runGui(const GuiArgs& args) {
     const GuiFileKind kind = checkGuiArgs(args);
+    setBackgroundWorkersYield(true);  // the frame before background work (util/thread_priority.h)
     std::optional<ui::ScriptPlayer> player;
     if (!args.script.empty()) player.emplace(ui::GuiScript::load(args.script));
 

@@ -1,5 +1,6 @@
 // BackgroundWorker (core/util/background_worker.h): the two scheduling policies, one run at a
-// time, cancellation, exceptions as messages, take-once, waitIdle and the joining destructor.
+// time, cancellation, exceptions as messages, take-once, waitIdle, the joining destructor and the
+// editor's priority policy.
 // Every ordering is forced with gates (promises), never with sleeps or timings.
 #include <doctest/doctest.h>
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "util/background_worker.h"
+#include "util/thread_priority.h"
 
 using namespace mgp;
 
@@ -252,4 +254,31 @@ TEST_CASE("background worker: held, no queued request starts until released") {
     worker.waitIdle();
     CHECK(r.order() == std::vector<int>{4});
     CHECK(worker.take() == 40);
+}
+
+TEST_CASE("background worker: with the editor's priority policy on, a job runs niced above its poster") {
+    const auto niceOfAJob = [] {
+        BackgroundWorker<int, int> worker(WorkerPolicy::kEveryRequest, [](int&, const std::atomic<bool>&) {
+            // A thread the job starts inherits the worker's value (the Step-8 and regeneration pools).
+            int inherited = 0;
+            std::thread([&] { inherited = thisThreadNice(); }).join();
+            return JobOutcome<int>{thisThreadNice() * 100 + inherited, ""};
+        });
+        worker.post(0);
+        worker.waitIdle();
+        return *worker.take();
+    };
+    const int poster = thisThreadNice();
+    REQUIRE(poster + kBackgroundNice <= 19);  // a test run under `nice` would cap the step
+    setBackgroundWorkersYield(false);
+    CHECK(niceOfAJob() == poster * 100 + poster);
+#if defined(__linux__)
+    setBackgroundWorkersYield(true);
+    const int niced = poster + kBackgroundNice;
+    CHECK(niceOfAJob() == niced * 100 + niced);
+    setBackgroundWorkersYield(false);
+    CHECK(thisThreadNice() == poster);  // the poster itself is never lowered
+#else
+    MESSAGE("SKIPPED: per-thread nice values are Linux's");
+#endif
 }

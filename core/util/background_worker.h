@@ -11,7 +11,8 @@
 //     queued requests cancelled, so a request posted later is never cancelled by an earlier call;
 //   - the outcome: a result taken once and a message; an exception thrown by the job becomes the
 //     message (failurePrefix + what()) and the worker goes on serving requests;
-//   - waitIdle(): blocks until nothing is queued or running (tests, scripts, batch commands).
+//   - waitIdle(): blocks until nothing is queued or running (tests, scripts, batch commands);
+//   - priority: in the editor, jobs run below the UI thread (util/thread_priority.h).
 // Progress reporting stays with each job: it is different for every one.
 // A wrapper whose job function touches the wrapper's own members must declare its
 // BackgroundWorker member last, so the thread is joined before those members are destroyed.
@@ -26,6 +27,8 @@
 #include <string>
 #include <thread>
 #include <utility>
+
+#include "util/thread_priority.h"
 
 namespace mgp {
 
@@ -172,6 +175,7 @@ private:
             working_ = true;
             cancel_.store(entry.cancelled);
             lock.unlock();
+            lowerThisThreadIfBackground();  // the editor's frame first (util/thread_priority.h)
             Outcome outcome = runJob(entry.request);
             lock.lock();
             if (outcome.result) result_ = std::move(outcome.result);
