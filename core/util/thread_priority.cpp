@@ -21,10 +21,12 @@ void setBackgroundWorkersYield(bool on) { yieldOn.store(on); }
 bool backgroundWorkersYield() { return yieldOn.load(); }
 
 #if defined(__linux__)
-// Linux keeps a nice value per thread: PRIO_PROCESS with a thread id sets that thread's only.
+// Linux keeps a nice value per thread: PRIO_PROCESS with a thread id names that thread only.
+static id_t thisThreadId() { return static_cast<id_t>(syscall(SYS_gettid)); }
+
 int thisThreadNice() {
     errno = 0;
-    const int n = getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+    const int n = getpriority(PRIO_PROCESS, thisThreadId());
     return errno == 0 ? n : 0;
 }
 
@@ -33,7 +35,7 @@ bool lowerThisThreadIfBackground() {
     // Relative to what the thread inherited from the one that started it (a process started under
     // `nice` keeps its offset). Raising a nice value needs no privilege; a failure leaves it as it was.
     const int target = std::min(19, thisThreadNice() + kBackgroundNice);
-    lowered = setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), target) == 0;
+    lowered = setpriority(PRIO_PROCESS, thisThreadId(), target) == 0;
     return lowered;
 }
 #else
