@@ -390,8 +390,6 @@ SpanResult SpanSolver::finish(SpanResult r, const Eigen::VectorXd& best) {
     const int b = d_ + D_;
     Eigen::VectorXd gs;
     r.objective = objective(best, gs);
-    const gp::GpModel& m = *version_->model;
-    const Skeleton& sk = m.clip.skeleton;
     r.poses.resize(n_);
     r.x.resize(n_);
     r.y.resize(n_);
@@ -402,11 +400,7 @@ SpanResult SpanSolver::finish(SpanResult r, const Eigen::VectorXd& best) {
         r.y[i] = best.segment(i * b + d_, D_);
         r.lik[i] = version_->posterior->evaluate(r.x[i], Eigen::VectorXd(r.y[i] - resid_[i]), nullptr, nullptr);
     }
-    r.targetResidualCm.resize(targets_.size());
-    for (std::size_t k = 0; k < targets_.size(); ++k) {
-        const SpanTarget& t = targets_[k];
-        r.targetResidualCm[k] = (effectorCm(sk, r.poses[t.frame - first_ - 1], t.effector) - t.targetCm).norm();
-    }
+    r.targetResidualCm = targetResidualsCm(best);
     return r;
 }
 
@@ -479,7 +473,25 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
 
 namespace {
 constexpr double kMaxStepDeg = 20.0;
+// The stall test (docs/maths-regeneration.md, "When the solve stops"): every kStallWindow
+// accepted steps, a solve with targets missed by more than kReachedToleranceCm has converged
+// when the sum of their squared distances fell by less than kStallRelative of itself over the
+// window (the missed targets' least-squares problem no longer improves; the others are reached).
+constexpr int kStallWindow = 10;
+constexpr double kStallRelative = 1e-2;
 }  // namespace
+
+std::vector<double> SpanSolver::targetResidualsCm(const Eigen::VectorXd& z) {
+    const Skeleton& sk = version_->model->clip.skeleton;
+    std::vector<double> out(targets_.size());
+    int posed = -1;
+    for (std::size_t k = 0; k < targets_.size(); ++k) {
+        const SpanTarget& t = targets_[k];
+        if (t.frame - first_ - 1 != posed) poseOf(posed = t.frame - first_ - 1, z, pose_);
+        out[k] = (effectorCm(sk, pose_, t.effector) - t.targetCm).norm();
+    }
+    return out;
+}
 
 SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
     SpanResult r;
@@ -497,6 +509,8 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
     double mu = 1e-6;
     r.stop = SpanStop::kIterationCap;
     int it = 0;
+    std::vector<double> windowStart = targetResidualsCm(z);  // the stall test's window
+    int windowSteps = 0;
     for (; it < maxIterations; ++it) {
         if (cancel && cancel->load()) {
             r.stop = SpanStop::kCancelled;
@@ -542,6 +556,26 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
             r.stop = SpanStop::kConverged;
             ++it;
             break;
+        }
+        // A target out of reach: F still falls by about 1e-5 of itself per step as the limb
+        // straightens, so the rule above can take hundreds of steps to fire while the missed
+        // distance no longer changes.
+        if (++windowSteps == kStallWindow) {
+            const std::vector<double> now = targetResidualsCm(z);
+            double missedNow = 0.0, missedBefore = 0.0;  // Σ e² over the targets missed now
+            for (std::size_t k = 0; k < now.size(); ++k)
+                if (now[k] > kReachedToleranceCm) {
+                    missedNow += now[k] * now[k];
+                    missedBefore += windowStart[k] * windowStart[k];
+                }
+            if (missedNow > 0.0 && missedBefore - missedNow <= kStallRelative * missedNow) {
+                r.stop = SpanStop::kConverged;
+                r.diagnostic = "a target out of reach: its distance stalled";
+                ++it;
+                break;
+            }
+            windowStart = now;
+            windowSteps = 0;
         }
     }
     r.iterations = it;

@@ -153,6 +153,7 @@ private:
     SpanResult solveLbfgs(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
     SpanResult solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel);
     SpanResult finish(SpanResult r, const Eigen::VectorXd& best);
+    std::vector<double> targetResidualsCm(const Eigen::VectorXd& z);  // one per target, in order
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     SpanWeights w_;
