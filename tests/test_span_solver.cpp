@@ -176,3 +176,62 @@ TEST_CASE("a held end enters the second differences: gradient by central differe
     CHECK(r.poses.front().anglesDeg[joint][axis] - clip.frames[first + 1].anglesDeg[joint][axis] > 2.0);
     CHECK(r.poses.back().anglesDeg[joint][axis] - clip.frames[last - 1].anglesDeg[joint][axis] < -1.0);
 }
+
+TEST_CASE("a key out of reach stops the solve when its distance stalls; a reachable one solves as without the test") {
+    const auto version = test::walkModel35();
+    const Clip& clip = version->model->clip;
+    const int first = 88, last = 116, t = 102;
+    // Reachable: the same motion bit for bit with the stall test on and off (it never fires).
+    {
+        SpanSolver on(version, first, last), off(version, first, last);
+        on.setTargets(someTargets(clip, first, last));
+        off.setTargets(someTargets(clip, first, last));
+        off.setStallRelative(0.0);
+        const SpanResult a = on.solve(300), b = off.solve(300);
+        CHECK(a.iterations == b.iterations);
+        for (std::size_t i = 0; i < a.poses.size(); ++i)
+            for (std::size_t j = 0; j < a.poses[i].anglesDeg.size(); ++j)
+                CHECK(a.poses[i].anglesDeg[j] == b.poses[i].anglesDeg[j]);
+    }
+    // A right-hand key 150 cm above the hand with both feet held where they are.
+    std::vector<SpanTarget> targets{{t, Effector::kRHand,
+                                     effectorCm(clip.skeleton, clip.frames[t], Effector::kRHand) +
+                                         Eigen::Vector3d(0, 150, 0),
+                                     SpanTarget::Kind::kPath}};
+    for (int f = first + 1; f < last; ++f)
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+            targets.push_back(
+                {f, foot, effectorCm(clip.skeleton, clip.frames[f], foot), SpanTarget::Kind::kContact});
+    SpanSolver on(version, first, last), off(version, first, last);
+    on.setTargets(targets);
+    off.setTargets(targets);
+    off.setStallRelative(0.0);
+    const SpanResult stalled = on.solve(500), full = off.solve(500);
+    MESSAGE("out of reach: " << stalled.iterations << " iterations, missed by " << stalled.targetResidualCm[0]
+                             << " cm; without the stall test " << full.iterations << " iterations ("
+                             << std::string(spanStopName(full.stop)) << "), " << full.targetResidualCm[0] << " cm");
+    CHECK(stalled.stop == SpanStop::kConverged);
+    CHECK(stalled.diagnostic == "a target out of reach: its distance stalled");
+    CHECK(2 * stalled.iterations < full.iterations);
+    CHECK(stalled.targetResidualCm[0] > 20.0);
+    // Stopping early gives up less than 2 % of the missed distance, and the motion is as smooth:
+    // the DOFs the remaining steps would still change are the ones the key barely depends on.
+    CHECK(stalled.targetResidualCm[0] < 1.02 * full.targetResidualCm[0]);
+    const auto roughest = [&](const SpanResult& r) {  // the edit's largest second difference, degrees
+        double worst = 0.0;
+        const auto change = [&](std::size_t i, std::size_t j) {
+            return r.poses[i].anglesDeg[j] - clip.frames[first + 1 + i].anglesDeg[j];
+        };
+        for (std::size_t i = 1; i + 1 < r.poses.size(); ++i)
+            for (std::size_t j = 0; j < r.poses[i].anglesDeg.size(); ++j)
+                worst = std::max(worst, (change(i + 1, j) - 2.0 * change(i, j) + change(i - 1, j)).cwiseAbs().maxCoeff());
+        return worst;
+    };
+    MESSAGE("the edit's largest second difference: " << roughest(stalled) << "° stopped early, " << roughest(full) << "° in full");
+    CHECK(roughest(stalled) < roughest(full) + 0.5);
+    // The feet stay held as well as in the full solve.
+    for (std::size_t k = 1; k < targets.size(); ++k) {
+        CAPTURE(k);
+        CHECK(stalled.targetResidualCm[k] < std::max(0.5, 2.0 * full.targetResidualCm[k]));
+    }
+}

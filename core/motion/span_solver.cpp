@@ -473,12 +473,10 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
 
 namespace {
 constexpr double kMaxStepDeg = 20.0;
-// The stall test (docs/maths-regeneration.md, "When the solve stops"): every kStallWindow
-// accepted steps, a solve with targets missed by more than kReachedToleranceCm has converged
-// when the sum of their squared distances fell by less than kStallRelative of itself over the
-// window (the missed targets' least-squares problem no longer improves; the others are reached).
+// The stall test's window in accepted steps (docs/maths-regeneration.md, "Solver"): targets
+// missed by more than kReachedToleranceCm whose Σ e² fell by less than stallRelative_ of itself
+// over it no longer improve; the others are reached.
 constexpr int kStallWindow = 10;
-constexpr double kStallRelative = 1e-2;
 }  // namespace
 
 std::vector<double> SpanSolver::targetResidualsCm(const Eigen::VectorXd& z) {
@@ -560,7 +558,7 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
         // A target out of reach: F still falls by about 1e-5 of itself per step as the limb
         // straightens, so the rule above can take hundreds of steps to fire while the missed
         // distance no longer changes.
-        if (++windowSteps == kStallWindow) {
+        if (stallRelative_ > 0.0 && ++windowSteps == kStallWindow) {
             const std::vector<double> now = targetResidualsCm(z);
             double missedNow = 0.0, missedBefore = 0.0;  // Σ e² over the targets missed now
             for (std::size_t k = 0; k < now.size(); ++k)
@@ -568,7 +566,7 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
                     missedNow += now[k] * now[k];
                     missedBefore += windowStart[k] * windowStart[k];
                 }
-            if (missedNow > 0.0 && missedBefore - missedNow <= kStallRelative * missedNow) {
+            if (missedNow > 0.0 && missedBefore - missedNow <= stallRelative_ * missedNow) {
                 r.stop = SpanStop::kConverged;
                 r.diagnostic = "a target out of reach: its distance stalled";
                 ++it;

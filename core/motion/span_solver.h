@@ -145,6 +145,11 @@ public:
     // Stops when an accepted step lowers F by less than relativeTolerance·max(1, |F|).
     SpanResult solve(int maxIterations = 100, double relativeTolerance = 1e-9,
                      const std::atomic<bool>* cancel = nullptr, SpanMethod method = SpanMethod::kLevenbergMarquardt);
+    // Levenberg–Marquardt also stops (kConverged) when targets are missed and, over 10 accepted
+    // steps, the sum of their squared distances fell by less than `relative` of itself
+    // (docs/maths-regeneration.md, "Solver"). 0 turns that test off (the comparison in the tests).
+    static constexpr double kDefaultStallRelative = 1e-2;
+    void setStallRelative(double relative) { stallRelative_ = relative; }
 
 private:
     void poseOf(int i, const Eigen::VectorXd& z, Pose& pose);
@@ -157,6 +162,7 @@ private:
     gp::ModelVersionPtr version_;
     PoseLayout layout_;
     SpanWeights w_;
+    double stallRelative_ = kDefaultStallRelative;
     int first_, last_, n_, d_, D_;
     double kappa_;
     std::vector<Eigen::VectorXd> xCap_;        // x̂ of frames first−1..last+1 (index t − first + 1)
