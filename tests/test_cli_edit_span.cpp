@@ -52,9 +52,9 @@ TEST_CASE("motiongp edit: a key out of reach is reported missed, in the JSON and
     // A right-hand key 150 cm above where the hand is: no arm reaches it with the feet held. The
     // solve stops when the missed distance stalls, well before the default 500-step cap.
     const std::string dir = test::scratchDir("cli_edit_missed");
-    const auto r = test::runCli("edit '" + test::walkModelPath() +
-                                "' --effector rhand --keys 89,103,117 --offset 0,150,0 --out '" + dir +
-                                "/e.bvh' --json");
+    const auto r =
+        test::runCli("edit '" + test::walkModelPath() +
+                     "' --effector rhand --keys 89,103,117 --offset 0,150,0 --out '" + dir + "/e.bvh' --json");
     REQUIRE(r.exitCode == 0);
     const json j = json::parse(r.out);
     CHECK(j["span"]["stop"] == "converged");

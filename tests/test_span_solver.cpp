@@ -194,14 +194,12 @@ TEST_CASE("a key out of reach stops the solve when its distance stalls; a reacha
                 CHECK(a.poses[i].anglesDeg[j] == b.poses[i].anglesDeg[j]);
     }
     // A right-hand key 150 cm above the hand with both feet held where they are.
-    std::vector<SpanTarget> targets{{t, Effector::kRHand,
-                                     effectorCm(clip.skeleton, clip.frames[t], Effector::kRHand) +
-                                         Eigen::Vector3d(0, 150, 0),
-                                     SpanTarget::Kind::kPath}};
+    std::vector<SpanTarget> targets{
+        {t, Effector::kRHand, effectorCm(clip.skeleton, clip.frames[t], Effector::kRHand) + Eigen::Vector3d(0, 150, 0),
+         SpanTarget::Kind::kPath}};
     for (int f = first + 1; f < last; ++f)
         for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-            targets.push_back(
-                {f, foot, effectorCm(clip.skeleton, clip.frames[f], foot), SpanTarget::Kind::kContact});
+            targets.push_back({f, foot, effectorCm(clip.skeleton, clip.frames[f], foot), SpanTarget::Kind::kContact});
     SpanSolver on(version, first, last), off(version, first, last);
     on.setTargets(targets);
     off.setTargets(targets);
@@ -224,10 +222,12 @@ TEST_CASE("a key out of reach stops the solve when its distance stalls; a reacha
         };
         for (std::size_t i = 1; i + 1 < r.poses.size(); ++i)
             for (std::size_t j = 0; j < r.poses[i].anglesDeg.size(); ++j)
-                worst = std::max(worst, (change(i + 1, j) - 2.0 * change(i, j) + change(i - 1, j)).cwiseAbs().maxCoeff());
+                worst =
+                    std::max(worst, (change(i + 1, j) - 2.0 * change(i, j) + change(i - 1, j)).cwiseAbs().maxCoeff());
         return worst;
     };
-    MESSAGE("the edit's largest second difference: " << roughest(stalled) << "° stopped early, " << roughest(full) << "° in full");
+    MESSAGE("the edit's largest second difference: " << roughest(stalled) << "° stopped early, " << roughest(full)
+                                                     << "° in full");
     CHECK(roughest(stalled) < roughest(full) + 0.5);
     // The feet stay held as well as in the full solve.
     for (std::size_t k = 1; k < targets.size(); ++k) {
