@@ -177,7 +177,8 @@ TEST_CASE("a held end enters the second differences: gradient by central differe
     CHECK(r.poses.back().anglesDeg[joint][axis] - clip.frames[last - 1].anglesDeg[joint][axis] < -1.0);
 }
 
-TEST_CASE("a key out of reach stops the solve when its distance stalls; a reachable one solves as without the test") {
+TEST_CASE(
+    "a key out of reach stops the solve when its distance stalls, and a reachable one solves as without the test") {
     const auto version = test::walkModel35();
     const Clip& clip = version->model->clip;
     const int first = 88, last = 116, t = 102;
