@@ -1,8 +1,10 @@
 // The plain (no prior) IK baseline: reachable targets met, pins held, unreachable targets safe.
 #include <cmath>
 
+#include "ik/locality.h"
 #include "ik/plain_ik.h"
 #include "io/clip_loader.h"
+#include "skeleton/pose_layout.h"
 #include "test_support.h"
 #include "trained_model_fixture.h"
 
@@ -136,4 +138,50 @@ TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by 
     bad.start = start;
     bad.jointHolds = {{sk.jointCount(), Eigen::Vector3d::Zero()}};
     CHECK(bad.validate().find("expected a held joint") != std::string::npos);
+}
+
+TEST_CASE("plain IK with a DOF metric: the locality weights keep a hand raise in the arm") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const Pose& start = clip.frames[100];
+    PlainIkJob job;
+    job.skeleton = &sk;
+    job.start = start;
+    const Eigen::Vector3d target = effectorCm(sk, start, Effector::kRHand) + Eigen::Vector3d(0, 20, 0);
+    job.constraints = {{Effector::kRHand, target, false},
+                       {Effector::kLFoot, effectorCm(sk, start, Effector::kLFoot), true},
+                       {Effector::kRFoot, effectorCm(sk, start, Effector::kRFoot), true}};
+    PlainIkJob local = job;
+    job.solve();
+    local.dofCost = localityWeights(sk, {Effector::kRHand});
+    for (double& m : local.dofCost) m = 1.0 + 1000.0 * m;
+    REQUIRE(local.validate().empty());
+    local.solve();
+    REQUIRE(job.reached);
+    REQUIRE(local.reached);
+    const auto moved = [&](const Pose& p, Effector e) {
+        return (effectorCm(sk, p, e) - effectorCm(sk, start, e)).norm();
+    };
+    MESSAGE("head moved " << moved(job.pose, Effector::kHead) << " cm with the unit metric, "
+                          << moved(local.pose, Effector::kHead) << " cm with the locality metric");
+    CHECK(moved(local.pose, Effector::kHead) < 0.25 * moved(job.pose, Effector::kHead));
+    CHECK(moved(local.pose, Effector::kLHand) < 0.25 * moved(job.pose, Effector::kLHand));
+    // Every DOF of weight 1 (the spine, the legs, the other arm) changes less than with the unit metric, in all.
+    const PoseLayout layout(sk);
+    const Eigen::VectorXd y0 = layout.extract(start), yu = layout.extract(job.pose), yl = layout.extract(local.pose);
+    const std::vector<double> w = localityWeights(sk, {Effector::kRHand});
+    double bodyUnit = 0.0, bodyLocal = 0.0;
+    for (int k = 0; k < layout.size(); ++k)
+        if (w[static_cast<std::size_t>(k)] == 1.0) {
+            bodyUnit += (yu[k] - y0[k]) * (yu[k] - y0[k]);
+            bodyLocal += (yl[k] - y0[k]) * (yl[k] - y0[k]);
+        }
+    CHECK(bodyLocal < 0.1 * bodyUnit);
+
+    PlainIkJob bad = job;
+    bad.dofCost.assign(3, 1.0);
+    CHECK(bad.validate() == "expected " + std::to_string(layout.size()) + " DOF costs, found 3");
+    bad.dofCost.assign(static_cast<std::size_t>(layout.size()), 1.0);
+    bad.dofCost[5] = 0.0;
+    CHECK(bad.validate().rfind("expected positive finite DOF costs, found 0", 0) == 0);
 }

@@ -13,6 +13,13 @@ std::string PlainIkJob::validate() const {
                " joints";
     if (const int P = PoseLayout(*skeleton).size(); !frozenDofs.empty() && static_cast<int>(frozenDofs.size()) != P)
         return "expected " + std::to_string(P) + " frozen-DOF flags, found " + std::to_string(frozenDofs.size());
+    if (const int P = PoseLayout(*skeleton).size(); !dofCost.empty()) {
+        if (static_cast<int>(dofCost.size()) != P)
+            return "expected " + std::to_string(P) + " DOF costs, found " + std::to_string(dofCost.size());
+        for (double c : dofCost)
+            if (!(c > 0.0) || !std::isfinite(c))
+                return "expected positive finite DOF costs, found " + std::to_string(c);
+    }
     for (const JointHold& h : jointHolds) {
         if (h.joint < 0 || h.joint >= skeleton->jointCount())
             return "expected a held joint 0.." + std::to_string(skeleton->jointCount() - 1) + ", found " +
@@ -45,6 +52,10 @@ void PlainIkJob::solve() {
     Eigen::Matrix<double, 3, Eigen::Dynamic> jac(3, P);
     Eigen::MatrixXd J(3 * m, n);
     Eigen::VectorXd err(3 * m), y(P), trial(P);
+    // Column scale 1/√m_k: the minimal-norm step in the scaled variables is the least-Σ m_k Δy_k² step.
+    Eigen::VectorXd scale = Eigen::VectorXd::Ones(n);
+    if (!dofCost.empty())
+        for (int k = 0; k < angles; ++k) scale[k] = 1.0 / std::sqrt(dofCost[static_cast<std::size_t>(active[k])]);
 
     auto evaluate = [&](const Pose& p, Eigen::VectorXd& e) {
         forwardKinematics(sk, p, fk);
@@ -73,7 +84,7 @@ void PlainIkJob::solve() {
                 const int held = jointHolds[c - mc].joint;
                 pointJacobian(sk, layout, fk, pose, held, fk.jointCm[held], jac);
             }
-            for (int k = 0; k < angles; ++k) J.block<3, 1>(3 * c, k) = jac.col(active[k]);
+            for (int k = 0; k < angles; ++k) J.block<3, 1>(3 * c, k) = scale[k] * jac.col(active[k]);
             // ∂p/∂(root translation) = I for every point of the body.
             if (freeRootTranslation) J.block<3, 3>(3 * c, angles).setIdentity();
         }
@@ -83,7 +94,7 @@ void PlainIkJob::solve() {
         bool improved = false;
         for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
             const Eigen::MatrixXd A = J * J.transpose() + lambda * lambda * Eigen::MatrixXd::Identity(3 * m, 3 * m);
-            const Eigen::VectorXd step = J.transpose() * A.ldlt().solve(err);
+            const Eigen::VectorXd step = scale.cwiseProduct(J.transpose() * A.ldlt().solve(err));
             trial = y;
             for (int k = 0; k < angles; ++k) trial[active[k]] += step[k];
             Pose candidate = pose;

@@ -28,6 +28,12 @@ struct PlainIkJob {
     std::vector<bool> frozenDofs;       // optional, one per pose-vector DOF: true = keep it at its start value
     bool freeRootTranslation = false;   // the root translation (cm) is solved for too
     std::vector<JointHold> jointHolds;  // met like the constraints (not reported in `results`)
+    // Optional, one per pose-vector DOF, each > 0: the metric m_k of the step. Each step is the
+    // least Σ_k m_k Δy_k² that meets the damped linearised constraints (weighted damped least
+    // squares), so a costly DOF moves only as far as the targets need: m = 1 + c·w with the
+    // locality weights w of ik/locality.h moves the targeted limbs first (docs/maths-ik.md §8).
+    // Empty: every m_k = 1. The root translation's columns (freeRootTranslation) cost 1.
+    std::vector<double> dofCost;
     int maxIterations = 500;
     double toleranceCm = 1e-3;    // stop once every residual is below this
     double initialDamping = 1.0;  // λ of (JJᵀ + λ² I), in cm
