@@ -154,8 +154,10 @@ float clipGroundHeight(const Clip& clip) {
         if (role == "lfoot" || role == "rfoot" || role == "ltoes" || role == "rtoes") feet.push_back(j);
     }
     if (feet.empty() || clip.frames.empty()) return 0.0f;
-    for (const Pose& pose : clip.frames) {
-        forwardKinematics(clip.skeleton, pose, fk);
+    // A converter's rest frame (a T-pose, often below the capture's ground) does not stand on it.
+    const std::size_t first = clip.restFrame && clip.frames.size() > 1 ? 1 : 0;
+    for (std::size_t t = first; t < clip.frames.size(); ++t) {
+        forwardKinematics(clip.skeleton, clip.frames[t], fk);
         for (int j : feet) {
             const float r = styleOf(clip.skeleton.joints[j].bone).endRadius;
             lowest = std::min(lowest, static_cast<float>(fk.jointCm[j].y()) - r);

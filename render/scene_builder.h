@@ -37,7 +37,8 @@ struct Bounds {
 };
 Bounds sceneBounds(const Scene& scene);
 
-// The floor height of a clip: the lowest foot/toe surface point over all frames.
+// The floor height of a clip: the lowest foot/toe surface point over its frames (a rest frame,
+// Clip::restFrame, left out).
 float clipGroundHeight(const Clip& clip);
 
 // An effector's trajectory over frames [first, last] (clamped), keys every `keyEvery` frames,

@@ -228,3 +228,18 @@ TEST_CASE("foot contacts on a real run (16_35): each stance from heel strike to 
     // The toe's phase alone (the rule before heel tracking) held 14 of these 22 frames.
     CHECK(c->length() == 22);
 }
+
+TEST_CASE("foot contacts: a BVH's rest frame sets neither the floor nor the ground") {
+    // 49_04 (cgspeed conversion): frame 1 is a T-pose whose feet sit about 9 cm below the capture's.
+    const Clip clip = loadClip(test::mocap("bvh/49_04.bvh"));
+    REQUIRE(clip.restFrame);
+    double restLowest = INFINITY, capturedLowest = INFINITY;
+    for (int t = 0; t < clip.frameCount(); ++t)
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+            (t == 0 ? restLowest : capturedLowest) =
+                std::min(t == 0 ? restLowest : capturedLowest, effectorCm(clip.skeleton, clip.frames[t], foot).y());
+    MESSAGE("lowest foot point: rest frame " << restLowest << " cm, captured frames " << capturedLowest << " cm");
+    REQUIRE(restLowest < capturedLowest - 5.0);  // the case this test is about
+    const ContactSet set = detectFootContacts(clip);
+    CHECK(*set.floorCm == doctest::Approx(capturedLowest).epsilon(1e-12));
+}

@@ -202,7 +202,15 @@ FootTrack footTrack(const Clip& clip, Effector foot) {
 }
 
 ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule) {
-    return detectFootContacts(footTrack(clip, Effector::kLFoot), footTrack(clip, Effector::kRFoot), clip.fps, rule);
+    FootTrack left = footTrack(clip, Effector::kLFoot), right = footTrack(clip, Effector::kRFoot);
+    // A converter's rest frame (a T-pose, often off the capture's ground) is no evidence of where
+    // the floor is: it stands where the first captured frame does, so it sets neither the floor nor
+    // the ground and shares that frame's contacts.
+    if (clip.restFrame && clip.frameCount() > 1)
+        for (FootTrack* t : {&left, &right})
+            for (std::vector<Eigen::Vector3d>* points : {&t->toeCm, &t->heelCm})
+                if (points->size() > 1) (*points)[0] = (*points)[1];
+    return detectFootContacts(left, right, clip.fps, rule);
 }
 
 std::vector<IkConstraint> contactPinsAt(const Clip& clip, const FkState& fk, const ContactSet& contacts, int frame,

@@ -99,7 +99,8 @@ ContactSet detectFootContacts(const FootTrack& left, const FootTrack& right, dou
 ContactSet detectFootContacts(const std::vector<Eigen::Vector3d>& leftFootCm,
                               const std::vector<Eigen::Vector3d>& rightFootCm, double fps,
                               const ContactRule& rule = {});
-// The rule on a clip's own feet (FK of every frame).
+// The rule on a clip's own feet (FK of every frame). A rest frame (Clip::restFrame) counts as the
+// first captured frame: it sets neither the floor nor the ground.
 ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule = {});
 
 // A foot's toe (its effector) and heel (the start of the bone the effector ends) at every frame

@@ -187,3 +187,19 @@ TEST_CASE("backdrop layer: drawn again when the view or the ground changes, not 
     CHECK(cached.backdropLayerDraws() == 4);
     CHECK(pixelsNotEqual(bare, target.draw(direct, w.scene, w.camera)) == 0);
 }
+
+TEST_CASE("the drawn floor of a BVH with a rest frame is the capture's, not the T-pose's") {
+    const Clip clip = loadClip(test::kMocap + "/bvh/49_04.bvh");  // frame 1: a T-pose 9 cm below
+    REQUIRE(clip.restFrame);
+    Clip captured = clip;  // the same frames without the rest frame
+    captured.frames.erase(captured.frames.begin());
+    captured.restFrame = false;
+    const float withRest = clipGroundHeight(clip), without = clipGroundHeight(captured);
+    Clip restOnly = clip;
+    restOnly.frames.resize(1);
+    restOnly.restFrame = false;
+    MESSAGE("floor " << withRest << " cm; the rest frame alone would put it at " << clipGroundHeight(restOnly)
+                     << " cm");
+    CHECK(withRest == without);
+    CHECK(clipGroundHeight(restOnly) < without - 5.0f);
+}
