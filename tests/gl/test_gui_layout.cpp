@@ -16,6 +16,7 @@
 #include "skip.h"
 #include "test_paths.h"
 #include "ui/input/gui_script.h"
+#include "ui/panels/timeline_panel.h"
 #include "ui/panels/viewport_panel.h"
 #include "ui/shell/editor_app.h"
 #include "ui/shell/imgui_setup.h"
@@ -282,4 +283,15 @@ TEST_CASE("gui layout: with a path edited and regenerated, its span report and e
     checkControl(s, "latent map", 1280, 800);
     const auto& map = s.controls.at("latent map");
     CHECK(map.x1 - map.x0 >= 110.0f);  // still a usable map
+}
+
+TEST_CASE("timeline labels: every second on a short clip, every few seconds where the numbers would overlap") {
+    // 590 frames at 120 fps over 860 px (1.46 px per frame): a second is 175 px.
+    CHECK(ui::timelineMajorStep(120.0, 860.0f / 589, 40.0f) == 120);
+    // 4840 frames over the same width (0.18 px per frame): a second is 21 px, under a 40 px label,
+    // so every 2 s (43 px).
+    CHECK(ui::timelineMajorStep(120.0, 860.0f / 4839, 40.0f) == 240);
+    CHECK(ui::timelineMajorStep(120.0, 860.0f / 4839, 60.0f) == 600);  // 5 s: 107 px
+    CHECK(ui::timelineMajorStep(30.0, 0.001f, 40.0f) == 600 * 30);     // none fits: the widest
+    CHECK(ui::timelineMajorStep(0.4, 10.0f, 40.0f) == 5);              // under one frame per second
 }

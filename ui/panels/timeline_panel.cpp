@@ -12,6 +12,16 @@
 
 namespace mgp::ui {
 
+int timelineMajorStep(double fps, float pixelsPerFrame, float minGapPx) {
+    const int second = std::max(1, int(std::lround(fps)));
+    int step = second;
+    for (int seconds : {1, 2, 5, 10, 15, 30, 60, 120, 300, 600}) {
+        step = seconds * second;
+        if (step * pixelsPerFrame >= minGapPx) break;
+    }
+    return step;
+}
+
 void TimelinePanel::advance(EditorState& s, double dt) {
     if (!s.playing || !s.doc.hasClip() || s.doc.dragging() || s.doc.latentDragging()) return;
     s.playAccumulator += dt * s.doc.clip().fps;
@@ -82,9 +92,14 @@ struct TimelineTrack {
 };
 
 void drawTimelineTicks(ImDrawList& dl, const TimelineTrack& t, double fps) {
-    // Ticks: every 10 frames small, every second labelled.
-    const int major = std::max(1, int(std::lround(fps)));
-    const int minor = std::max(1, major / 12);
+    // Labelled ticks as far apart as the widest label needs (a long clip labels every few seconds
+    // instead of overlapping its numbers); small ticks between them, at least 4 px apart.
+    char widest[16];
+    std::snprintf(widest, sizeof widest, "%d", t.n);
+    const float pixelsPerFrame = (t.width - 2 * t.pad) / float(std::max(1, t.n - 1));
+    const int major = timelineMajorStep(fps, pixelsPerFrame, ImGui::CalcTextSize(widest).x + 12.0f);
+    int minor = std::max(1, major / 12);
+    while (minor < major && minor * pixelsPerFrame < 4.0f) minor *= 2;
     for (int f = 0; f < t.n; f += minor) {
         const bool isMajor = f % major == 0;
         const float x = t.xOf(f);

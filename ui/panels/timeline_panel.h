@@ -6,6 +6,11 @@
 
 namespace mgp::ui {
 
+// The labelled ticks' spacing in frames: the smallest of 1, 2, 5, 10, 15, 30, 60, 120, 300 and 600
+// seconds at `fps` (rounded to whole frames) whose labels are at least minGapPx apart at
+// pixelsPerFrame; 600 s when none is.
+int timelineMajorStep(double fps, float pixelsPerFrame, float minGapPx);
+
 class TimelinePanel {
 public:
     void draw(EditorState& state);

@@ -264,7 +264,7 @@ std::string EditorApp::title() const {
     else if (state_.doc.synthetic())
         t += "synthetic demo clip (no mocap data found)";
     else
-        t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH, view-only)" : "");
+        t += state_.clipLabel + (state_.doc.clip().format == ClipFormat::kBvh ? " (BVH)" : "");
     if (!state_.modelLabel.empty()) t += " - model: " + state_.modelLabel;
     return t;
 }
