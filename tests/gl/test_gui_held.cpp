@@ -45,9 +45,13 @@ TEST_CASE(
     doc.setFrame(t);
     h->frame(2);
     CHECK(h->app->viewport().lastScene().heldMarks.empty());
+    // The right foot is planted here: its footprint is drawn, until the drag lifts it off.
+    REQUIRE(doc.inContact(Effector::kRFoot));
+    const std::size_t printsBefore = h->app->viewport().lastScene().footprints.size();
 
     const Eigen::Vector3d capturedFoot = heldGuiEffector(doc, t, Effector::kRFoot);
     heldGuiDrag(*h, "rfoot", 6, 0, -6);
+    CHECK(h->app->viewport().lastScene().footprints.size() + 1 == printsBefore);  // its held mark instead
     REQUIRE(doc.isEdited(t));
     const Eigen::Vector3d foot[3] = {heldGuiEffector(doc, t - 1, Effector::kRFoot),
                                      heldGuiEffector(doc, t, Effector::kRFoot),

@@ -180,12 +180,15 @@ render::Scene ViewportPanel::buildScene(const EditorState& s) const {
     if (s.gizmoJoint >= 0) render::addRotateGizmo(scene, viewportGizmo(s), s.gizmoRing);
     for (Effector e : doc.pinnedEffectors()) scene.pins.push_back({toGlm(doc.effectorPosition(e))});
     // Held where an earlier edit placed it (not while that effector is being dragged again).
-    for (Effector e : doc.heldEffectors())
+    const std::vector<Effector> held = doc.heldEffectors();
+    for (Effector e : held)
         if (doc.hasEffector(e) && !(doc.dragging() && doc.dragEffector() == e))
             scene.heldMarks.push_back({toGlm(doc.effectorPosition(e))});
     // Feet planted on this frame that a drag or Regenerate holds (not switched off, not released).
+    // A foot an edit placed (lifted off its footprint, say) shows its held mark instead.
     for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        if (doc.hasEffector(foot) && doc.inContact(foot) && !doc.contactReleased(foot))
+        if (doc.hasEffector(foot) && doc.inContact(foot) && !doc.contactReleased(foot) &&
+            std::find(held.begin(), held.end(), foot) == held.end())
             scene.footprints.push_back({toGlm(doc.effectorPosition(foot))});
     return scene;
 }
