@@ -5,7 +5,7 @@
 //  - `pose` with the learned prior (capturedPoseRequest: planted feet pinned, default locality);
 //  - `pose --solver plain` (no prior) on the same targets;
 //  - plain IK on the same targets with the same locality weights as its step's metric
-//    (PlainIkJob::dofCost = 1 + kPlainLocalityCost·w), the comparison at equal locality;
+//    (localityDofCost: 1 + kPlainLocalityCost·w), the comparison at equal locality;
 //  - a path edit over 43 frames (keys t−21, t, t+21, the raise at t, displacement mode, span solver,
 //    contacts held), judged on frame t.
 // Reported per case: how far the head, the other hand and each foot moved, as a fraction of the
@@ -27,7 +27,7 @@
 
 namespace mgp::app {
 namespace {
-// A DOF of weight 1 costs this many times a targeted limb's: the smallest of 10, 100, 1000, 10⁴ at
+// A DOF of weight 1 costs 1 + this many times a targeted limb's: the smallest of 10, 100, 1000, 10⁴ at
 // which plain IK meets the collateral and balance bars on every case here (10: 2 of 28, 100: 16).
 constexpr double kPlainLocalityCost = 1000.0;
 
@@ -119,9 +119,7 @@ nlohmann::json runLocalityClip(const BenchContext& ctx, const BenchClipRange& sp
             // The same targets without the prior but with the same locality weights, costly enough
             // (kPlainLocalityCost) that plain IK too meets the collateral and balance bars.
             PlainIkJob local = plain;
-            local.results.clear();
-            local.dofCost = localityWeights(sk, {Effector::kRHand});
-            for (double& m : local.dofCost) m = 1.0 + kPlainLocalityCost * m;
+            local.dofCost = localityDofCost(sk, {Effector::kRHand}, kPlainLocalityCost);
             local.solve();
             MotionEditJob path;
             path.version = version;

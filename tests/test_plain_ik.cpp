@@ -153,8 +153,7 @@ TEST_CASE("plain IK with a DOF metric: the locality weights keep a hand raise in
                        {Effector::kRFoot, effectorCm(sk, start, Effector::kRFoot), true}};
     PlainIkJob local = job;
     job.solve();
-    local.dofCost = localityWeights(sk, {Effector::kRHand});
-    for (double& m : local.dofCost) m = 1.0 + 1000.0 * m;
+    local.dofCost = localityDofCost(sk, {Effector::kRHand}, 1000.0);
     REQUIRE(local.validate().empty());
     local.solve();
     REQUIRE(job.reached);

@@ -24,4 +24,10 @@ std::vector<double> localityWeights(const Skeleton& sk, const std::vector<Effect
     return w;
 }
 
+std::vector<double> localityDofCost(const Skeleton& skeleton, const std::vector<Effector>& effectors, double cost) {
+    std::vector<double> m = localityWeights(skeleton, effectors);
+    for (double& w : m) w = 1.0 + cost * w;
+    return m;
+}
+
 }  // namespace mgp

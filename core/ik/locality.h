@@ -25,5 +25,8 @@ constexpr double kDefaultSpanLocality = 300.0;
 constexpr int kLocalityFreeHops = 2;
 constexpr int kLocalityRampHops = 2;
 std::vector<double> localityWeights(const Skeleton& skeleton, const std::vector<Effector>& effectors);
+// The same weights as plain IK's step metric (PlainIkJob::dofCost): m_k = 1 + cost·w_k, so a DOF of
+// weight 1 costs 1 + cost times a targeted limb's (docs/maths-ik.md §8).
+std::vector<double> localityDofCost(const Skeleton& skeleton, const std::vector<Effector>& effectors, double cost);
 
 }  // namespace mgp

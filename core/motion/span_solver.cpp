@@ -473,10 +473,6 @@ void SpanSolver::assemble(const Eigen::VectorXd& z, BlockBandedMatrix& h) {
 
 namespace {
 constexpr double kMaxStepDeg = 20.0;
-// The stall test's window in accepted steps (docs/maths-regeneration.md, "Solver"): targets
-// missed by more than kReachedToleranceCm whose Σ e² fell by less than stallRelative_ of itself
-// over it no longer improve; the others are reached.
-constexpr int kStallWindow = 10;
 }  // namespace
 
 std::vector<double> SpanSolver::targetResidualsCm(const Eigen::VectorXd& z) {

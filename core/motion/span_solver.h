@@ -145,9 +145,11 @@ public:
     // Stops when an accepted step lowers F by less than relativeTolerance·max(1, |F|).
     SpanResult solve(int maxIterations = 100, double relativeTolerance = 1e-9,
                      const std::atomic<bool>* cancel = nullptr, SpanMethod method = SpanMethod::kLevenbergMarquardt);
-    // Levenberg–Marquardt also stops (kConverged) when targets are missed and, over 10 accepted
-    // steps, the sum of their squared distances fell by less than `relative` of itself
-    // (docs/maths-regeneration.md, "Solver"). 0 turns that test off (the comparison in the tests).
+    // Levenberg–Marquardt also stops (kConverged) when targets are missed by more than
+    // kReachedToleranceCm and, over kStallWindow accepted steps, the sum of their squared distances
+    // fell by less than `relative` of itself (docs/maths-regeneration.md, "Solver"). 0 turns that
+    // test off (the comparison in the tests).
+    static constexpr int kStallWindow = 10;
     static constexpr double kDefaultStallRelative = 1e-2;
     void setStallRelative(double relative) { stallRelative_ = relative; }
 

@@ -294,4 +294,10 @@ TEST_CASE("timeline labels: every second on a short clip, every few seconds wher
     CHECK(ui::timelineMajorStep(120.0, 860.0f / 4839, 60.0f) == 600);  // 5 s: 107 px
     CHECK(ui::timelineMajorStep(30.0, 0.001f, 40.0f) == 600 * 30);     // none fits: the widest
     CHECK(ui::timelineMajorStep(0.4, 10.0f, 40.0f) == 5);              // under one frame per second
+    // Small ticks divide the labelled step, so every label sits on one.
+    CHECK(ui::timelineMinorStep(120, 860.0f / 589) == 10);
+    CHECK(ui::timelineMinorStep(600, 860.0f / 4839) == 50);
+    CHECK(ui::timelineMinorStep(30, 1.4f) == 3);  // 30 fps: twelfths are no whole frame; tenths, 4.2 px
+    CHECK(ui::timelineMinorStep(25, 2.0f) == 5);  // 25 fps: fifths
+    CHECK(ui::timelineMinorStep(7, 0.1f) == 7);   // nothing finer is 4 px apart
 }

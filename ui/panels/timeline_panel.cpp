@@ -22,6 +22,12 @@ int timelineMajorStep(double fps, float pixelsPerFrame, float minGapPx) {
     return step;
 }
 
+int timelineMinorStep(int major, float pixelsPerFrame) {
+    for (int parts : {12, 10, 6, 5, 4, 3, 2})
+        if (major % parts == 0 && float(major / parts) * pixelsPerFrame >= 4.0f) return major / parts;
+    return std::max(1, major);
+}
+
 void TimelinePanel::advance(EditorState& s, double dt) {
     if (!s.playing || !s.doc.hasClip() || s.doc.dragging() || s.doc.latentDragging()) return;
     s.playAccumulator += dt * s.doc.clip().fps;
@@ -98,8 +104,7 @@ void drawTimelineTicks(ImDrawList& dl, const TimelineTrack& t, double fps) {
     std::snprintf(widest, sizeof widest, "%d", t.n);
     const float pixelsPerFrame = (t.width - 2 * t.pad) / float(std::max(1, t.n - 1));
     const int major = timelineMajorStep(fps, pixelsPerFrame, ImGui::CalcTextSize(widest).x + 12.0f);
-    int minor = std::max(1, major / 12);
-    while (minor < major && minor * pixelsPerFrame < 4.0f) minor *= 2;
+    const int minor = timelineMinorStep(major, pixelsPerFrame);
     for (int f = 0; f < t.n; f += minor) {
         const bool isMajor = f % major == 0;
         const float x = t.xOf(f);

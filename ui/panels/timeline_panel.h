@@ -10,6 +10,9 @@ namespace mgp::ui {
 // seconds at `fps` (rounded to whole frames) whose labels are at least minGapPx apart at
 // pixelsPerFrame; 600 s when none is.
 int timelineMajorStep(double fps, float pixelsPerFrame, float minGapPx);
+// The small ticks' spacing in frames: the finest of major/12, /10, /6, /5, /4, /3, /2 that divides
+// `major` and is at least 4 px apart, else `major` (so every labelled tick is one of them).
+int timelineMinorStep(int major, float pixelsPerFrame);
 
 class TimelinePanel {
 public:
