@@ -148,3 +148,51 @@ TEST_CASE("pose layer radius: the falloff, widened to 1.5·S·fps / 90 cm/s for 
     MESSAGE("turned 170 degrees: steepest slope " << slope << " cm per unit weight, largest chord " << chord << " cm");
     CHECK(slope > 1.3 * chord);
 }
+
+TEST_CASE("pose layer excess: the most a hand or foot gains per frame step over the motion under the layer") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    // A still pose under the layer, moved 30 cm by the root: the gain is the blend's own step,
+    // 30·max|w(s+1) − w(s)| = 30·1.5/60 = 0.75 cm at radius 60 (up to the step's discreteness).
+    const std::vector<Pose> still(241, clip.frames[100]);
+    Pose moved = still[120];
+    moved.rootCm.x() += 30.0;
+    CHECK(poseLayerExcessCm(sk, still, 120, 60, moved) == doctest::Approx(0.75).epsilon(1e-3));
+    CHECK(poseLayerExcessCm(sk, still, 120, 120, moved) == doctest::Approx(0.375).epsilon(1e-3));
+    // No change, no gain; on the captured walk too.
+    CHECK(poseLayerExcessCm(sk, clip.frames, 150, 60, clip.frames[150]) == 0.0);
+    // Over the still pose the measured radius is the speed rule's: nothing under the layer turns.
+    CHECK(poseLayerRadiusOver(sk, still, 120, moved, 20, 120.0) == poseLayerRadius(sk, still[120], moved, 20, 120.0));
+}
+
+TEST_CASE("pose layer radius over the motion: a wide layer over a fast passage is replaced by one that gains less") {
+    const Clip clip = loadClip(test::mocap("asf_amc/10_02.amc"));
+    const Skeleton& sk = clip.skeleton;
+    // Frame 366 of the kick given the pose of frame 186 (its root kept): the speed rule widens the
+    // layer to 224 frames, over the kick, where the turned legs sweep faster than captured.
+    const int t0 = 365;
+    Pose to = clip.frames[185];
+    to.rootCm = clip.frames[t0].rootCm;
+    const int rule = poseLayerRadius(sk, clip.frames[t0], to, 30, clip.fps);
+    const int chosen = poseLayerRadiusOver(sk, clip.frames, t0, to, 30, clip.fps);
+    const double ruleGain = poseLayerExcessCm(sk, clip.frames, t0, rule, to);
+    const double chosenGain = poseLayerExcessCm(sk, clip.frames, t0, chosen, to);
+    MESSAGE("rule radius " << rule << " gains " << ruleGain << " cm; measured radius " << chosen << " gains "
+                           << chosenGain << " cm");
+    CHECK(rule > 200);
+    CHECK(chosen >= 30);
+    CHECK(chosen <= kLayerWidening * 30);
+    CHECK(chosenGain < ruleGain - 0.5);
+    // Wherever the measured radius differs from the rule's, it gains less; where the rule's layer
+    // gains no more than 90 cm/s (0.75 cm per step at 120 fps), it is the rule's.
+    for (int t = 40; t + 40 < clip.frameCount(); t += 50) {
+        const int source = t >= 180 ? t - 180 : t + 180;
+        Pose p = clip.frames[source];
+        p.rootCm = clip.frames[t].rootCm;
+        const int r = poseLayerRadius(sk, clip.frames[t], p, 30, clip.fps);
+        const int over = poseLayerRadiusOver(sk, clip.frames, t, p, 30, clip.fps);
+        const double gain = poseLayerExcessCm(sk, clip.frames, t, r, p);
+        if (gain <= 0.75) CHECK(over == r);
+        if (over != r) CHECK(poseLayerExcessCm(sk, clip.frames, t, over, p) < gain - 0.05);
+    }
+}

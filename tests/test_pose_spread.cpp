@@ -110,11 +110,11 @@ TEST_CASE("editor: a pose change on the clip's first or last frame spreads to th
         s.doc.waitIdle();
         const std::string said = s.doc.pollRegenerate();
         CHECK(said ==
-              (t == 0 ? "paste pose on frame 1: spread over frames 2-60 (falloff 20 frames, widened to 60 for a change "
-                        "this large)"
+              (t == 0 ? "paste pose on frame 1: spread over frames 2-140 (falloff 20 frames, widened to 140 for a "
+                        "change this large)"
                       : "paste pose on frame 358: spread over frames 256-357 (falloff 20 frames, widened to 103 for a "
                         "change this large)"));
-        CHECK(s.doc.edits().size() == (t == 0 ? 60u : 103u));  // the pasted frame and those beside it
+        CHECK(s.doc.edits().size() == (t == 0 ? 140u : 103u));  // the pasted frame and those beside it
         const Pose held = s.poseAt(t);
         CHECK(held.rootCm == pasted.rootCm);
         for (int j = 0; j < s.clip().skeleton.jointCount(); ++j) CHECK(held.anglesDeg[j] == pasted.anglesDeg[j]);

@@ -242,10 +242,11 @@ void EditorDocument::startDragFalloff(const DragRecord& rec, long stepId, const 
     base->frames[dragged] = rec.before ? rec.before->pose : clip().frames[dragged];
     base->x[dragged] = rec.before && rec.before->x.size() == v->model->latentDim() ? rec.before->x : Eigen::VectorXd();
     // A whole-pose change spreads at least over the falloff, wider where a hand or foot changes
-    // so much that the falloff's blend would rush it (poseLayerRadius).
-    const int radius =
-        wholePose ? poseLayerRadius(clip().skeleton, base->frames[dragged], rec.after.pose, falloffRadius_, clip().fps)
-                  : falloffRadius_;
+    // so much that the falloff's blend would rush it, as measured on the motion it is layered over
+    // (poseLayerRadiusOver).
+    const int radius = wholePose ? poseLayerRadiusOver(clip().skeleton, base->frames, rec.frame, rec.after.pose,
+                                                       falloffRadius_, clip().fps)
+                                 : falloffRadius_;
     if (wholePose) {
         // Where the frame kept its pins, placements and planted feet, the neighbours keep them
         // where they were before the layer moved them.

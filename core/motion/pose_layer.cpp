@@ -1,6 +1,7 @@
 #include "motion/pose_layer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 
@@ -66,6 +67,9 @@ struct PoseChange {
     }
 };
 
+// How much less (cm per frame step) another layer radius must gain than the one found, to replace it.
+constexpr double kLayerExcessMarginCm = 0.05;
+
 // Samples of the blend from + wΔ, w = 0, 1/16, …, 1: enough to see a hand swing out and back
 // along an Euler blend (a mirrored arm) as well as its end points.
 constexpr int kBlendSamples = 16;
@@ -122,6 +126,75 @@ int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, 
     // The blend's slope is at most 1.5/r per frame (at d = ½), so an effector whose blended path
     // has slope S (cm per unit weight) gains at most 1.5·S/r cm per frame.
     return std::clamp(layerBlendFrames(poseLayerSteepestCm(skeleton, from, to), fps), radius, kLayerWidening * radius);
+}
+
+namespace {
+
+// The hands' and feet's positions on each frame of `frames` (a row of four per frame; NaN where the
+// skeleton has no such effector).
+std::vector<std::array<Eigen::Vector3d, 4>> endPositions(const Skeleton& skeleton, const std::vector<Pose>& frames) {
+    const Effector ends[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+    std::vector<std::array<Eigen::Vector3d, 4>> out(frames.size());
+    FkState fk;
+    for (std::size_t t = 0; t < frames.size(); ++t) {
+        forwardKinematics(skeleton, frames[t], fk);
+        for (int e = 0; e < 4; ++e)
+            out[t][e] = skeleton.effectorSite(ends[e]).joint < 0 ? Eigen::Vector3d::Constant(std::nan(""))
+                                                                 : effectorCm(skeleton, fk, ends[e]);
+    }
+    return out;
+}
+
+// poseLayerExcessCm on `window`, frames of the clip around the changed frame window[t0] that reach
+// at least radius + 1 frames past it on each side or to the clip's end (so the layer on them is
+// the clip's); `under` is endPositions(window).
+double layerExcessOnWindow(const Skeleton& skeleton, const std::vector<Pose>& window,
+                           const std::vector<std::array<Eigen::Vector3d, 4>>& under, int t0, int radius,
+                           const Pose& to) {
+    const int n = static_cast<int>(window.size());
+    const int first = std::max(0, t0 - radius - 1), last = std::min(n - 1, t0 + radius + 1);
+    std::vector<Pose> layered(window.begin() + first, window.begin() + last + 1);
+    addPoseLayer(skeleton, layered, t0 - first, radius, window[static_cast<std::size_t>(t0)], to);
+    const std::vector<std::array<Eigen::Vector3d, 4>> moved = endPositions(skeleton, layered);
+    double worst = 0.0;
+    for (int s = 0; s + 1 < static_cast<int>(layered.size()); ++s)
+        for (int e = 0; e < 4; ++e) {
+            const auto u = static_cast<std::size_t>(first + s);
+            const double gain = (moved[s + 1][e] - moved[s][e]).norm() - (under[u + 1][e] - under[u][e]).norm();
+            if (gain > worst) worst = gain;  // (NaN, no such effector, compares false)
+        }
+    return worst;
+}
+
+}  // namespace
+
+double poseLayerExcessCm(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, int radius, const Pose& to) {
+    if (t0 < 0 || t0 >= static_cast<int>(under.size())) return 0.0;
+    return layerExcessOnWindow(skeleton, under, endPositions(skeleton, under), t0, radius, to);
+}
+
+int poseLayerRadiusOver(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, const Pose& to, int radius,
+                        double fps) {
+    const int n = static_cast<int>(under.size());
+    const int rule = poseLayerRadius(skeleton, under.at(static_cast<std::size_t>(t0)), to, radius, fps);
+    if (radius < 1 || !(fps > 0.0)) return rule;
+    // Every candidate's layer lies within the widest one's frames: measure on those only.
+    const int widest = kLayerWidening * radius;
+    const int first = std::max(0, t0 - widest - 1), last = std::min(n - 1, t0 + widest + 1);
+    const std::vector<Pose> window(under.begin() + first, under.begin() + last + 1);
+    const std::vector<std::array<Eigen::Vector3d, 4>> ends = endPositions(skeleton, window);
+    const int local = t0 - first;
+    double best = layerExcessOnWindow(skeleton, window, ends, local, rule, to);
+    if (best <= kLayerSpeedCmPerSecond / fps) return rule;
+    int chosen = rule;
+    for (int r = radius; r <= widest; r += std::max(1, radius / 2)) {
+        if (r == rule) continue;
+        // A radius replaces the one found only if it gains clearly less (kLayerExcessMarginCm): a
+        // layer twice as wide for a tenth of a millimetre would only edit more frames.
+        const double excess = layerExcessOnWindow(skeleton, window, ends, local, r, to);
+        if (excess < best - kLayerExcessMarginCm) best = excess, chosen = r;
+    }
+    return chosen;
 }
 
 }  // namespace mgp

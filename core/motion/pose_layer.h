@@ -48,4 +48,18 @@ int layerBlendFrames(double distanceCm, double fps);
 // end cuts shorter (addPoseLayer) blends faster than that.
 int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, int radius, double fps);
 
+// The most a hand or foot gains on one frame step (cm) when the motion `under` is layered with the
+// change under[t0] → to at `radius` (addPoseLayer): max over steps and effectors of
+// |Δ layered| − |Δ under|, 0 if nothing gains. The blend's own slope is one part of it; the other is
+// the motion under the layer, which the layer turns: an arm held differently sweeps its hand faster
+// through the same joint motion, so a wide layer over a fast passage can add more than a narrow one.
+double poseLayerExcessCm(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, int radius, const Pose& to);
+// The layer radius for the change under[t0] → to over the motion `under`, measured on it:
+// poseLayerRadius's speed rule, unless its layered motion still adds more than
+// kLayerSpeedCmPerSecond to a hand or foot; then, of the radii from `radius` to kLayerWidening·radius
+// in steps of radius/2, the one whose layered motion gains least (poseLayerExcessCm; another
+// radius replaces the rule's only if it gains at least 0.05 cm less).
+int poseLayerRadiusOver(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, const Pose& to, int radius,
+                        double fps);
+
 }  // namespace mgp

@@ -17,6 +17,7 @@ namespace mgp {
 const char* spanStopName(SpanStop s) {
     switch (s) {
         case SpanStop::kConverged: return "converged";
+        case SpanStop::kStalled: return "stalled";
         case SpanStop::kIterationCap: return "iteration cap";
         case SpanStop::kLineSearch: return "line search";
         case SpanStop::kCancelled: return "cancelled";
@@ -487,6 +488,18 @@ std::vector<double> SpanSolver::targetResidualsCm(const Eigen::VectorXd& z) {
     return out;
 }
 
+bool SpanSolver::targetsStalled(const std::vector<double>& startCm, const std::vector<double>& nowCm, double relative) {
+    bool missed = false;
+    for (std::size_t k = 0; k < nowCm.size() && k < startCm.size(); ++k) {
+        if (!(nowCm[k] > kReachedToleranceCm)) continue;
+        const double now = nowCm[k] * nowCm[k], moved = std::abs(startCm[k] * startCm[k] - now);
+        if (!(moved < relative * now || std::abs(startCm[k] - nowCm[k]) < kStallStepCm))
+            return false;  // still closing in, newly missed, or drifting away: the solve is moving
+        missed = true;
+    }
+    return missed;
+}
+
 SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, const std::atomic<bool>* cancel) {
     SpanResult r;
     const int N = variableCount();
@@ -555,20 +568,14 @@ SpanResult SpanSolver::solveLm(int maxIterations, double relativeTolerance, cons
         // straightens, so the rule above can take hundreds of steps to fire while the missed
         // distance no longer changes.
         if (stallRelative_ > 0.0 && ++windowSteps == kStallWindow) {
-            const std::vector<double> now = targetResidualsCm(z);
-            double missedNow = 0.0, missedBefore = 0.0;  // Σ e² over the targets missed now
-            for (std::size_t k = 0; k < now.size(); ++k)
-                if (now[k] > kReachedToleranceCm) {
-                    missedNow += now[k] * now[k];
-                    missedBefore += windowStart[k] * windowStart[k];
-                }
-            if (missedNow > 0.0 && missedBefore - missedNow <= stallRelative_ * missedNow) {
-                r.stop = SpanStop::kConverged;
+            std::vector<double> now = targetResidualsCm(z);
+            if (targetsStalled(windowStart, now, stallRelative_)) {
+                r.stop = SpanStop::kStalled;
                 r.diagnostic = "a target out of reach: its distance stalled";
                 ++it;
                 break;
             }
-            windowStart = now;
+            windowStart = std::move(now);
             windowSteps = 0;
         }
     }

@@ -95,7 +95,9 @@ struct SpanWeights {
 
 enum class SpanMethod { kLevenbergMarquardt, kLbfgs };
 
-enum class SpanStop { kConverged, kIterationCap, kLineSearch, kCancelled, kInvalid };
+// kStalled: a target is out of reach and the distances of the missed ones stopped falling
+// (SpanSolver::targetsStalled); the motion is the best found, the targets it missed are reported.
+enum class SpanStop { kConverged, kStalled, kIterationCap, kLineSearch, kCancelled, kInvalid };
 const char* spanStopName(SpanStop s);
 
 struct SpanResult {
@@ -145,13 +147,19 @@ public:
     // Stops when an accepted step lowers F by less than relativeTolerance·max(1, |F|).
     SpanResult solve(int maxIterations = 100, double relativeTolerance = 1e-9,
                      const std::atomic<bool>* cancel = nullptr, SpanMethod method = SpanMethod::kLevenbergMarquardt);
-    // Levenberg–Marquardt also stops (kConverged) when targets are missed by more than
-    // kReachedToleranceCm and, over kStallWindow accepted steps, the sum of their squared distances
-    // fell by less than `relative` of itself (docs/maths-regeneration.md, "Solver"). 0 turns that
-    // test off (the comparison in the tests).
+    // Levenberg–Marquardt also stops (kStalled) when, over kStallWindow accepted steps, the missed
+    // targets' distances stopped falling (targetsStalled; docs/maths-regeneration.md, "Solver").
+    // 0 turns that test off (the comparison in the tests).
     static constexpr int kStallWindow = 10;
     static constexpr double kDefaultStallRelative = 1e-2;
     void setStallRelative(double relative) { stallRelative_ = relative; }
+    // The stall test on the targets' distances e (cm) at a window's start and end: some target is
+    // missed now (by more than kReachedToleranceCm), and each target missed now has stood still:
+    // its e² changed by less than `relative`·e² now, or e by less than kStallStepCm. A target
+    // closing in (a reachable one next to a large miss), newly missed or drifting away by more
+    // keeps the solve going.
+    static constexpr double kStallStepCm = 0.1;
+    static bool targetsStalled(const std::vector<double>& startCm, const std::vector<double>& nowCm, double relative);
 
 private:
     void poseOf(int i, const Eigen::VectorXd& z, Pose& pose);
