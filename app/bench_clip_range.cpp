@@ -7,10 +7,11 @@
 namespace mgp::app {
 
 Clip loadClipRange(const std::string& mocapDir, const BenchClipRange& range, int& first) {
-    Clip clip = loadClip(mocapDir + "/" + range.path);
-    first = std::clamp(range.first, 1, clip.frameCount());
-    const int last = std::clamp(range.last, first, clip.frameCount());
-    clip.frames = std::vector<Pose>(clip.frames.begin() + (first - 1), clip.frames.begin() + last);
+    const Clip whole = loadClip(mocapDir + "/" + range.path);
+    first = std::clamp(range.first, 1, whole.frameCount());
+    const int last = std::clamp(range.last, first, whole.frameCount());
+    Clip clip;
+    appendFrames(clip, whole, first - 1, last - first + 1);
     return clip;
 }
 

@@ -8,7 +8,8 @@
 //  - rotate: the right knee bent 30° further, then the same with the learned prior following.
 // Reported per operation: the worst one-frame jump of a hand or foot over the span, in excess of
 // the capture's jump on the same frames (the bar: ≤ 1 cm), the edited frames, the worst distance
-// of a planted foot from its captured place (≤ 1 cm), and the span solve's wall time.
+// of a planted foot from its captured place (≤ 1 cm), the worst of a planted heel's (its ankle,
+// on the frames the heel is down, the operation's own frame included; ≤ 1 cm), and the wall time.
 #include "bench_clip_range.h"
 #include "bench_registry.h"
 #include "edit/editor_document.h"
@@ -56,13 +57,27 @@ nlohmann::json measurePoseOp(const EditorDocument& doc, const ContactSet& contac
             if (contacts.at(foot, s) && s != t)  // frame t is the operation's own pose
                 worstFoot = std::max(
                     worstFoot, (effectorCm(sk, doc.poseAt(s), foot) - effectorCm(sk, clip.frames[s], foot)).norm());
+    // The heels (the ankles) on the frames their heel is down, the operation's own frame too: a
+    // foot held by its ball alone could tip onto its toe there.
+    double worstHeel = 0.0;
+    FkState edited, captured;
+    for (int s = first; s <= last; ++s) {
+        forwardKinematics(sk, doc.poseAt(s), edited);
+        forwardKinematics(sk, clip.frames[s], captured);
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+            if (const FootContact* c = contacts.at(foot, s); c && c->heel.contains(s)) {
+                const int ankle = sk.effectorSite(foot).joint;
+                worstHeel = std::max(worstHeel, (edited.jointCm[ankle] - captured.jointCm[ankle]).norm());
+            }
+    }
     return {{"worst_jump_over_capture_cm", worstJump},
             {"worst_jump_frame", jumpFrame + 1},
             {"worst_jump_effector", effectorName(jumpEffector)},
             {"planted_feet_worst_cm", worstFoot},
+            {"planted_heels_worst_cm", worstHeel},
             {"edited_frames", doc.edits().size()},
             {"seconds", seconds},
-            {"meets", worstJump <= 1.0 && worstFoot <= 1.0}};
+            {"meets", worstJump <= 1.0 && worstFoot <= 1.0 && worstHeel <= 1.0}};
 }
 
 // Runs `op` on frame t of a fresh document state (everything undone), waits for its spread.

@@ -155,8 +155,7 @@ float clipGroundHeight(const Clip& clip) {
     }
     if (feet.empty() || clip.frames.empty()) return 0.0f;
     // A converter's rest frame (a T-pose, often below the capture's ground) does not stand on it.
-    const std::size_t first = clip.restFrame && clip.frames.size() > 1 ? 1 : 0;
-    for (std::size_t t = first; t < clip.frames.size(); ++t) {
+    for (std::size_t t = clip.firstMotionFrame(); t < clip.frames.size(); ++t) {
         forwardKinematics(clip.skeleton, clip.frames[t], fk);
         for (int j : feet) {
             const float r = styleOf(clip.skeleton.joints[j].bone).endRadius;

@@ -81,3 +81,23 @@ TEST_CASE("unwrapClip writes the unwrapped angles back without moving any joint"
     forwardKinematics(before.skeleton, before.frames[250], b);
     CHECK((a.jointCm[5] - b.jointCm[5]).norm() < 1e-9);
 }
+
+TEST_CASE("appendFrames: a slice keeps the rest frame only if it starts on it") {
+    const Clip bvh = loadClip(test::mocap("bvh/49_04.bvh"));
+    REQUIRE(bvh.restFrame);
+    REQUIRE(bvh.frameCount() > 20);
+    Clip fromStart, later;
+    appendFrames(fromStart, bvh, 0, 10);
+    appendFrames(later, bvh, 5, 10);
+    CHECK(fromStart.restFrame);
+    CHECK(fromStart.firstMotionFrame() == 1);
+    CHECK_FALSE(later.restFrame);
+    CHECK(later.firstMotionFrame() == 0);
+    CHECK(later.frames[0].anglesDeg == bvh.frames[5].anglesDeg);
+    // Appending to a clip leaves its own frame 0, and so its flag, as it was.
+    appendFrames(later, bvh, 0, 3);
+    CHECK_FALSE(later.restFrame);
+    appendFrames(fromStart, bvh, 12, 3);
+    CHECK(fromStart.restFrame);
+    CHECK(fromStart.frameCount() == 13);
+}

@@ -241,5 +241,19 @@ TEST_CASE("foot contacts: a BVH's rest frame sets neither the floor nor the grou
     MESSAGE("lowest foot point: rest frame " << restLowest << " cm, captured frames " << capturedLowest << " cm");
     REQUIRE(restLowest < capturedLowest - 5.0);  // the case this test is about
     const ContactSet set = detectFootContacts(clip);
+    REQUIRE(set.floorCm.has_value());
     CHECK(*set.floorCm == doctest::Approx(capturedLowest).epsilon(1e-12));
+    // The ground levels and contacts are those of the clip whose first frame stands in for the
+    // rest frame.
+    Clip standIn = clip;
+    standIn.frames[0] = standIn.frames[1];
+    standIn.restFrame = false;
+    const ContactSet ref = detectFootContacts(standIn);
+    CHECK(set.groundCm == ref.groundCm);
+    CHECK(set.heelGroundCm == ref.heelGroundCm);
+    REQUIRE(set.contacts.size() == ref.contacts.size());
+    for (std::size_t k = 0; k < ref.contacts.size(); ++k) {
+        CHECK(set.contacts[k].first == ref.contacts[k].first);
+        CHECK(set.contacts[k].last == ref.contacts[k].last);
+    }
 }

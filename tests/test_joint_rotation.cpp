@@ -10,6 +10,7 @@
 #include "edit/joint_rotation.h"
 #include "edit/mirror_edit.h"
 #include "ik/constrained_ik.h"
+#include "ik/plain_ik.h"
 #include "io/clip_loader.h"
 #include "skeleton/forward_kinematics.h"
 #include "skeleton/pose_mirror.h"
@@ -140,10 +141,10 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
             plainPinMove =
                 std::max(plainPinMove, (effectorCm(sk, plain.pose, foot) - effectorCm(sk, before, foot)).norm());
-        MESSAGE(c.bone << " +" << c.delta.transpose() << ": held DOFs " << heldErr << " deg, pins " << pinErr
-                       << " cm, L_IK prior " << prior.ik.lik << " vs plain (best x) " << likPlain << ", "
-                       << prior.ik.iterations << " iterations, " << ikStopName(prior.ik.stop)
-                       << "; the plain rotation moves a pinned foot by " << plainPinMove << " cm");
+        MESSAGE(std::string(c.bone) << " +" << c.delta.transpose() << ": held DOFs " << heldErr << " deg, pins "
+                                    << pinErr << " cm, L_IK prior " << prior.ik.lik << " vs plain (best x) " << likPlain
+                                    << ", " << prior.ik.iterations << " iterations, " << ikStopName(prior.ik.stop)
+                                    << "; the plain rotation moves a pinned foot by " << plainPinMove << " cm");
         CHECK(heldErr <= 1e-6);
         CHECK(prior.ik.constraints.size() == 2);
         CHECK(pinErr <= 0.05);
@@ -153,9 +154,19 @@ TEST_CASE("rotate joint with the learned prior on 35_01: held DOFs exact, pins h
         // problem and the prior's pose must be at least as likely.
         CHECK(plainPinMove <= kSettledHoldCm);
         CHECK(plain.settled == (std::string(c.bone) == "rfemur"));
-        CHECK(prior.settled == plain.settled);
+        if (plain.settled) CHECK(prior.settled);
         CHECK(prior.ik.lik < likPlain);
-        CHECK(prior.pose.rootCm == plain.pose.rootCm);
+        // The prior's solve keeps the root; it may turn a pinned foot about its ball, and the settle
+        // after it brings that foot's ankle back by the legs and the hips, which moves the root by
+        // hundredths of a centimetre (measured 0.012 cm at most).
+        CHECK((prior.pose.rootCm - plain.pose.rootCm).norm() < 0.05);
+        FkState was, now;
+        forwardKinematics(sk, before, was);
+        forwardKinematics(sk, prior.pose, now);
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot}) {
+            const int ankle = sk.effectorSite(foot).joint;
+            CHECK((now.jointCm[ankle] - was.jointCm[ankle]).norm() <= kSettledHoldCm);
+        }
         if (plain.settled) CHECK((plain.pose.rootCm - before.rootCm).norm() > 0.1);
     }
     CHECK(posesIdentical(doc.currentPose(), before));  // solving changes nothing in the document
@@ -293,6 +304,19 @@ TEST_CASE(
                     worst = std::max(worst, (footAt(s, foot) - capturedAt(s, foot)).norm());
         MESSAGE("planted foot, worst distance from its captured place over the spread: " << worst << " cm");
         CHECK(worst <= 1.0);
+        // Mirror and paste keep the sole on their frame: the planted foot's ankle stays too, so the
+        // foot does not tip onto its toe or put its heel through the floor.
+        if (!rotation)
+            for (Effector foot : planted) {
+                const int ankle = sk.effectorSite(foot).joint;
+                FkState now, captured;
+                forwardKinematics(sk, doc.poseAt(t), now);
+                forwardKinematics(sk, doc.clip().frames[t], captured);
+                const double moved = (now.jointCm[ankle] - captured.jointCm[ankle]).norm();
+                MESSAGE(std::string(effectorName(foot))
+                        << "'s ankle on the frame: " << moved << " cm from its captured place");
+                CHECK(moved <= kSettledHoldCm);
+            }
         REQUIRE(doc.undo().empty());
     }
 }

@@ -156,15 +156,19 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
             }
             // The prior's solve keeps the root translation: a pose whose legs cannot reach the
             // planted feet from there (a crouch pasted onto a stride) is settled onto them by
-            // moving the hips (settleOnHolds), from the prior's best try.
-            const Pose& tried = allFinite(r.pose) ? r.pose : given;
-            if (!keptHolds || worstHoldMissCm(clip().skeleton, pose, kept) > kReachedToleranceCm)
-                if (std::optional<Pose> settled = settleOnHolds(clip().skeleton, tried, -1, kept, &currentPose());
-                    settled && worstHoldMissCm(clip().skeleton, *settled, kept) <= kReachedToleranceCm) {
-                    pose = std::move(*settled);
-                    keptHolds = true;
-                    x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(pose)));
-                }
+            // moving the hips (settleOnHolds), from the prior's best try. It holds each held
+            // foot by its ball, so the given pose's ankle would tip the foot onto its toe (heels
+            // up 6 cm on a throw's pose pasted onto a stance): the settle brings the ankles back
+            // too, by the legs alone where the holds are met (moving the hips would move the
+            // free foot as well).
+            const Pose& tried = keptHolds ? pose : allFinite(r.pose) ? r.pose : given;
+            if (std::optional<Pose> settled =
+                    settleOnHolds(clip().skeleton, tried, -1, kept, &currentPose(), 500, !keptHolds);
+                settled && worstHoldMissCm(clip().skeleton, *settled, kept) <= kReachedToleranceCm) {
+                pose = std::move(*settled);
+                keptHolds = true;
+                x = refitLatent(*v, frame_, v->model->keptPose(layout.extract(pose)));
+            }
         }
     }
     DragRecord change;  // spread over the neighbours as a drag's release is (startDragFalloff)

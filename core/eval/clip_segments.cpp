@@ -62,7 +62,6 @@ Clip joinSegments(const std::string& mocapDir, const std::vector<ClipSegment>& s
         if (first > last)
             throw std::invalid_argument("expected motion frames in " + s.trial + ", found only its rest frame");
         appendFrames(joined, clip, first - 1, last - first + 1);
-        joined.restFrame = false;
     }
     return joined;
 }

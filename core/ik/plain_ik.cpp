@@ -140,24 +140,12 @@ double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<I
 }
 
 std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int keptJoint,
-                                  const std::vector<IkConstraint>& holds, const Pose* soleReference,
-                                  int maxIterations) {
-    const double missBefore = worstHoldMissCm(sk, pose, holds);
-    if (holds.empty() || missBefore <= kSettledHoldCm) return std::nullopt;
-    PlainIkJob job;
-    job.skeleton = &sk;
-    job.start = pose;
-    job.freeRootTranslation = true;
-    const PoseLayout layout(sk);
-    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
-    for (int dof = 0; dof < layout.size(); ++dof)
-        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || (keptJoint >= 0 && layout.joint(dof) == keptJoint);
-    for (IkConstraint c : holds) {
-        c.pin = true;
-        job.constraints.push_back(c);
-    }
+                                  const std::vector<IkConstraint>& holds, const Pose* soleReference, int maxIterations,
+                                  bool moveRoot) {
+    if (holds.empty()) return std::nullopt;
     // A held foot keeps its sole: its ankle stays where the reference has it, so the ball alone
-    // does not pivot the foot onto its toe while the legs move.
+    // does not pivot the foot onto its toe (or the heel into the floor).
+    std::vector<JointHold> soles;
     if (soleReference) {
         FkState ref;
         forwardKinematics(sk, *soleReference, ref);
@@ -166,12 +154,37 @@ std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int kept
                 // Not a foot whose own ankle or toes were turned: its sole is what changed.
                 if (const int ankle = sk.effectorSite(c.effector).joint;
                     ankle >= 0 && !(keptJoint >= 0 && sk.isAncestorOrSelf(ankle, keptJoint)))
-                    job.jointHolds.push_back({ankle, ref.jointCm[ankle]});
+                    soles.push_back({ankle, ref.jointCm[ankle]});
     }
+    // How far the holds and the soles are from their places.
+    auto worstMiss = [&](const Pose& p) {
+        double worst = worstHoldMissCm(sk, p, holds);
+        if (!soles.empty()) {
+            FkState fk;
+            forwardKinematics(sk, p, fk);
+            for (const JointHold& h : soles) worst = std::max(worst, (fk.jointCm[h.joint] - h.targetCm).norm());
+        }
+        return worst;
+    };
+    const double missBefore = worstMiss(pose);
+    if (missBefore <= kSettledHoldCm) return std::nullopt;
+    PlainIkJob job;
+    job.skeleton = &sk;
+    job.start = pose;
+    job.freeRootTranslation = moveRoot;
+    const PoseLayout layout(sk);
+    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
+    for (int dof = 0; dof < layout.size(); ++dof)
+        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || (keptJoint >= 0 && layout.joint(dof) == keptJoint);
+    for (IkConstraint c : holds) {
+        c.pin = true;
+        job.constraints.push_back(c);
+    }
+    job.jointHolds = soles;
     job.toleranceCm = 0.1 * kSettledHoldCm;
     job.maxIterations = maxIterations;
     job.solve();
-    if (!allFinite(job.pose) || !(worstHoldMissCm(sk, job.pose, holds) < missBefore)) return std::nullopt;
+    if (!allFinite(job.pose) || !(worstMiss(job.pose) < missBefore)) return std::nullopt;
     return job.pose;
 }
 

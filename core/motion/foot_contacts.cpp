@@ -206,7 +206,7 @@ ContactSet detectFootContacts(const Clip& clip, const ContactRule& rule) {
     // A converter's rest frame (a T-pose, often off the capture's ground) is no evidence of where
     // the floor is: it stands where the first captured frame does, so it sets neither the floor nor
     // the ground and shares that frame's contacts.
-    if (clip.restFrame && clip.frameCount() > 1)
+    if (clip.firstMotionFrame() == 1)
         for (FootTrack* t : {&left, &right})
             for (std::vector<Eigen::Vector3d>* points : {&t->toeCm, &t->heelCm})
                 if (points->size() > 1) (*points)[0] = (*points)[1];

@@ -23,6 +23,7 @@ void appendFrames(Clip& into, const Clip& from, int first, int count) {
         std::vector<Pose> none;
         into = from;
         into.frames.swap(none);
+        into.restFrame = from.restFrame && first == 0;  // a slice after frame 0 starts on motion
     } else if (into.skeleton.jointCount() != from.skeleton.jointCount()) {
         throw std::invalid_argument("expected clips of one skeleton, found " + into.name + " and " + from.name);
     }

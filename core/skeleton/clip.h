@@ -28,10 +28,14 @@ struct Clip {
     std::vector<std::string> unmappedJoints;  // source joints with no ASF bone role
 
     int frameCount() const { return static_cast<int>(frames.size()); }
+    // The first frame of motion: 1 past a rest frame (unless it is all there is), else 0. A rest
+    // frame is no evidence of where the ground is.
+    int firstMotionFrame() const { return restFrame && frames.size() > 1 ? 1 : 0; }
 };
 
 // Frames [first, first + count) of `from` appended to `into` (same skeleton: same joint count,
-// else std::invalid_argument). An empty `into` takes `from`'s metadata and skeleton first.
+// else std::invalid_argument). An empty `into` takes `from`'s metadata and skeleton first, and
+// keeps restFrame only if the slice starts at from's frame 0.
 void appendFrames(Clip& into, const Clip& from, int first, int count);
 
 // Unwraps each column over time (docs/maths.md §2.5): when a frame-to-frame change exceeds 180°

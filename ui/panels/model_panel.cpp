@@ -291,6 +291,10 @@ void drawModelPanel(EditorState& s) {
                 p.published, p.publishedIteration, sig4(p.publishedObjective).c_str(), doc.waitingPoses());
         }
     } else {
+        // These fields set the next training, not the loaded model's (its own are the tooltip of
+        // its "N = ..." line below).
+        ImGui::TextDisabled("train with");
+        ImGui::SameLine();
         drawTrainOptions(s.trainOptions);
         ImGui::BeginDisabled(!doc.trainable());
         if (ImGui::Button("Train")) s.request("train");
@@ -322,6 +326,9 @@ void drawModelPanel(EditorState& s) {
         ImGui::TextDisabled("%s, version %d", m.kind == gp::KernelKind::kFas ? "FASGPLVM" : "SGPLVM", v->number);
         ImGui::TextDisabled("N = %d  active M = %zu  D = %d  latent d = %d", m.N(), m.active.size(), m.D(),
                             m.latentDim());
+        if (ImGui::IsItemHovered())
+            tooltip("this model was trained with M = %d, T = %d (%d run); the fields above set the next training",
+                    m.settings.activeSize, m.settings.outerIterations, m.iterations);
         if (m.clipCount() > 1) {  // the training clips; the open one (the model's primary clip) first
             std::vector<int> rows(static_cast<std::size_t>(m.clipCount()), 0);
             for (int i = 0; i < m.N(); ++i) ++rows[static_cast<std::size_t>(m.rowClip(i))];
@@ -340,9 +347,12 @@ void drawModelPanel(EditorState& s) {
         const bool describesThis = !history.empty() && history.back().versionAfter == v->number;
         if (pending > 0)
             ImGui::TextColored(ImVec4(0.4f, 0.8f, 1.0f, 1), "adaptive update running (%d queued)", pending);
-        else if (!st.empty() && describesThis)
-            textEllipsized(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), "last " + st);
-        else if (!history.empty())
+        else if (!st.empty() && describesThis) {
+            // Wrapped, not cut: a refusal's reason is what the animator needs to read.
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            textWrappedAtSpaces("last " + st);
+            ImGui::PopStyleColor();
+        } else if (!history.empty())
             ImGui::TextDisabled("version %d (restored by undo/redo)", v->number);
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
