@@ -343,19 +343,22 @@ float LatentMapPanel::drawVarianceBar(ImDrawList& dl, const gp::GpModel& model, 
         dl.AddRectFilledMultiColor(ImVec2(b0.x, ya), ImVec2(b1.x, yb), top, top, bottom, bottom);
     }
     dl.AddRect(b0, b1, IM_COL32(120, 124, 132, 255));
-    char lo[48], hi[48];
-    std::snprintf(lo, sizeof lo, "%.2g", shown_.size ? std::exp(shown_.minLogVar) : 0.0);
-    std::snprintf(hi, sizeof hi, "%.2g", shown_.size ? std::exp(shown_.maxLogVar) : 0.0);
-    dl.AddText(ImVec2(b1.x + 6.0f, b0.y), IM_COL32(210, 210, 215, 255), lo);
-    dl.AddText(ImVec2(b1.x + 6.0f, b1.y - map.lineH), IM_COL32(210, 210, 215, 255), hi);
-    dl.AddText(ImVec2(b1.x + 6.0f, 0.5f * (b0.y + b1.y) - map.lineH), IM_COL32(150, 152, 160, 255), "sigma^2");
+    // Words on the bar, the numbers in its tooltip (the animator reads "sure", not σ²).
+    dl.AddText(ImVec2(b1.x + 6.0f, b0.y), IM_COL32(210, 210, 215, 255), "sure");
+    dl.AddText(ImVec2(b1.x + 6.0f, b1.y - map.lineH), IM_COL32(210, 210, 215, 255), "unsure");
     // With d = 3 the map is a slice (latentMapBase): say which.
-    char capText[128] = "predictive variance sigma^2(x), log scale";
+    char slice[64] = "";
     if (model.latentDim() > 2)
-        std::snprintf(capText, sizeof capText, "sigma^2(x), log scale; x1, x2 at x3 = %.2f (mean)",
-                      latentMapBase(model)[2]);
-    if (ImGui::IsMouseHoveringRect(b0, ImVec2(b1.x + 6.0f + ImGui::CalcTextSize("0.0e-00").x, b1.y)))
-        tooltip("%s: bright is confident", capText);
+        std::snprintf(slice, sizeof slice, "; x1, x2 at x3 = %.2f (mean)", latentMapBase(model)[2]);
+    if (ImGui::IsMouseHoveringRect(b0, ImVec2(b1.x + 6.0f + ImGui::CalcTextSize("unsure").x, b1.y))) {
+        if (shown_.size)
+            tooltip(
+                "how sure the model is of the pose at each point: predictive variance sigma^2(x) from %.2g "
+                "(top, bright) to %.2g (bottom), log scale%s",
+                std::exp(shown_.minLogVar), std::exp(shown_.maxLogVar), slice);
+        else
+            tooltip("how sure the model is of the pose at each point (predictive variance): being computed");
+    }
     return map.p1.y + map.lineH + 4.0f;
 }
 
