@@ -91,10 +91,14 @@ JointRotationResult solveJointRotation(EditorDocument& doc, const JointRotation&
     const std::vector<IkConstraint> holds = rotationHolds(doc, r.joint);
     out.holdCount = static_cast<int>(holds.size());
     auto settle = [&] {
-        if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds, &before, maxIterations)) {
-            out.pose = std::move(*settled);
-            out.settled = true;
-        }
+        // Only a missed hold is settled (the hips and the legs bring it back, each held foot's
+        // ankle with it); a held foot that the prior's solve merely turned about its ball is left
+        // as the solve put it.
+        if (worstHoldMissCm(sk, out.pose, holds) > kSettledHoldCm)
+            if (std::optional<Pose> settled = settleOnHolds(sk, out.pose, r.joint, holds, &before, maxIterations)) {
+                out.pose = std::move(*settled);
+                out.settled = true;
+            }
         out.holdMissCm = worstHoldMissCm(sk, out.pose, holds);
     };
     if (!r.followPrior) {

@@ -56,9 +56,10 @@ int poseLayerRadius(const Skeleton& skeleton, const Pose& from, const Pose& to, 
 double poseLayerExcessCm(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, int radius, const Pose& to);
 // The layer radius for the change under[t0] → to over the motion `under`, measured on it:
 // poseLayerRadius's speed rule, unless its layered motion still adds more than
-// kLayerSpeedCmPerSecond to a hand or foot; then, of the radii from `radius` to kLayerWidening·radius
-// in steps of radius/2, the one whose layered motion gains least (poseLayerExcessCm; another
-// radius replaces the rule's only if it gains at least 0.05 cm less).
+// kLayerSpeedCmPerSecond / fps cm per frame step to a hand or foot; then, of the radii from
+// `radius` up to kLayerWidening·radius in steps of max(1, radius/2) (integer), the one whose layered
+// motion gains least (poseLayerExcessCm; another radius replaces the rule's only if it gains at
+// least 0.05 cm less, kLayerExcessMarginCm).
 int poseLayerRadiusOver(const Skeleton& skeleton, const std::vector<Pose>& under, int t0, const Pose& to, int radius,
                         double fps);
 
