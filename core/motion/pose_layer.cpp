@@ -67,6 +67,9 @@ struct PoseChange {
     }
 };
 
+// The effectors whose speed bounds a layer: the hands and the feet.
+constexpr Effector kLayerEnds[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+
 // How much less (cm per frame step) another layer radius must gain than the one found, to replace it.
 constexpr double kLayerExcessMarginCm = 0.05;
 
@@ -96,7 +99,7 @@ void addPoseLayer(const Skeleton& skeleton, std::vector<Pose>& frames, int t0, i
 
 double poseLayerSteepestCm(const Skeleton& skeleton, const Pose& from, const Pose& to) {
     const PoseChange change(skeleton, from, to);
-    const Effector ends[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+    const auto& ends = kLayerEnds;
     Eigen::Vector3d previous[4];
     double steepest = 0.0;
     FkState fk;
@@ -133,7 +136,7 @@ namespace {
 // The hands' and feet's positions on each frame of `frames` (a row of four per frame; NaN where the
 // skeleton has no such effector).
 std::vector<std::array<Eigen::Vector3d, 4>> endPositions(const Skeleton& skeleton, const std::vector<Pose>& frames) {
-    const Effector ends[] = {Effector::kLHand, Effector::kRHand, Effector::kLFoot, Effector::kRFoot};
+    const auto& ends = kLayerEnds;
     std::vector<std::array<Eigen::Vector3d, 4>> out(frames.size());
     FkState fk;
     for (std::size_t t = 0; t < frames.size(); ++t) {
