@@ -132,12 +132,55 @@ TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by 
     CHECK(worstHoldMissCm(sk, *flat, holds) <= kSettledHoldCm);
     for (int foot : {lf, rf}) CHECK((s2.jointCm[foot] - s0.jointCm[foot]).norm() <= kSettledHoldCm);
     CHECK(pivot > 0.5);  // the reference is what keeps it
+    // Soles kept for the left foot only (the planted one; the right as if pinned in the air): the
+    // right ankle pivots on its ball as with no reference, the left stays.
+    const std::vector<Effector> onlyLeft{Effector::kLFoot};
+    const std::optional<Pose> leftSole = settleOnHolds(sk, bent, knee, holds, &start, 500, true, &onlyLeft);
+    REQUIRE(leftSole.has_value());
+    FkState s3;
+    forwardKinematics(sk, *leftSole, s3);
+    CHECK(worstHoldMissCm(sk, *leftSole, holds) <= kSettledHoldCm);
+    CHECK((s3.jointCm[lf] - s0.jointCm[lf]).norm() <= kSettledHoldCm);
+    CHECK((s3.jointCm[rf] - s0.jointCm[rf]).norm() > 0.5);
     // A joint hold of a joint the skeleton lacks is refused.
     PlainIkJob bad;
     bad.skeleton = &sk;
     bad.start = start;
     bad.jointHolds = {{sk.jointCount(), Eigen::Vector3d::Zero()}};
     CHECK(bad.validate().find("expected a held joint") != std::string::npos);
+}
+
+TEST_CASE("settle on holds: a sole the legs cannot reach never pulls a held ball off its place") {
+    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+    const Skeleton& sk = clip.skeleton;
+    const Pose& start = clip.frames[145];  // both feet planted
+    const int knee = sk.findBone("rtibia");
+    std::vector<IkConstraint> holds;
+    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+        holds.push_back({foot, effectorCm(sk, start, foot), true});
+    Pose bent = start;
+    bent.anglesDeg[knee].x() += 40.0;
+    REQUIRE(worstHoldMissCm(sk, bent, holds) > 5.0);
+    // A sole reference whose ankles are 30 cm above where they stood: no foot reaches that with its
+    // ball on the floor, so holding the soles would trade the balls for them.
+    Pose lifted = start;
+    lifted.rootCm.y() += 30.0;
+    for (bool moveRoot : {true, false}) {
+        CAPTURE(moveRoot);
+        const std::optional<Pose> settled = settleOnHolds(sk, bent, knee, holds, &lifted, 500, moveRoot);
+        REQUIRE(settled.has_value());
+        MESSAGE("holds " << worstHoldMissCm(sk, *settled, holds) << " cm off after the settle");
+        // Each hold ends no farther than it was, and the hips reach both balls back exactly; the
+        // legs alone, the bent knee kept, bring the right one closer.
+        for (const IkConstraint& h : holds)
+            CHECK((effectorCm(sk, *settled, h.effector) - h.targetCm).norm() <=
+                  std::max(kSettledHoldCm, (effectorCm(sk, bent, h.effector) - h.targetCm).norm()));
+        if (moveRoot) CHECK(worstHoldMissCm(sk, *settled, holds) <= kSettledHoldCm);
+        CHECK(worstHoldMissCm(sk, *settled, holds) < 0.5 * worstHoldMissCm(sk, bent, holds));
+        CHECK(settled->anglesDeg[knee] == bent.anglesDeg[knee]);
+    }
+    // Holds already met and an unreachable sole: nothing is settled (the holds would only get worse).
+    CHECK_FALSE(settleOnHolds(sk, start, -1, holds, &lifted).has_value());
 }
 
 TEST_CASE("plain IK with a DOF metric: the locality weights keep a hand raise in the arm") {

@@ -44,8 +44,8 @@ TEST_CASE("editor: a pose pasted 70 frames away blends into its neighbours, is h
     // The pose of frame 41 is far from frame 111's (its hands 40-odd cm away): the layer widens
     // from the falloff's 20 frames until no hand or foot gains more than 90 cm/s (poseLayerRadius).
     CHECK(summary ==
-          "paste pose on frame 111: spread over frames 25-197 (falloff 20 frames, widened to 87 for a change this "
-          "large)");
+          "paste pose on frame 111: spread over frames 25-197 (falloff 20 frames, widened to 87 to keep the motion "
+          "smooth)");
     const Pose held = s.poseAt(110);
     CHECK(held.rootCm == pasted.rootCm);
     for (int j = 0; j < s.clip().skeleton.jointCount(); ++j) CHECK(held.anglesDeg[j] == pasted.anglesDeg[j]);
@@ -109,11 +109,13 @@ TEST_CASE("editor: a pose change on the clip's first or last frame spreads to th
         const double oneFrameJump = s.stepDeg(std::min(t, inner));  // before the spread lands
         s.doc.waitIdle();
         const std::string said = s.doc.pollRegenerate();
-        CHECK(said ==
-              (t == 0 ? "paste pose on frame 1: spread over frames 2-140 (falloff 20 frames, widened to 140 for a "
-                        "change this large)"
-                      : "paste pose on frame 358: spread over frames 256-357 (falloff 20 frames, widened to 103 for a "
-                        "change this large)"));
+        CHECK(
+            said ==
+            (t == 0
+                 ? "paste pose on frame 1: spread over frames 2-140 (falloff 20 frames, widened to 140 to keep the "
+                   "motion smooth)"
+                 : "paste pose on frame 358: spread over frames 256-357 (falloff 20 frames, widened to 103 to keep the "
+                   "motion smooth)"));
         CHECK(s.doc.edits().size() == (t == 0 ? 140u : 103u));  // the pasted frame and those beside it
         const Pose held = s.poseAt(t);
         CHECK(held.rootCm == pasted.rootCm);

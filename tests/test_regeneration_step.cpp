@@ -73,8 +73,9 @@ TEST_CASE("regeneration step: a falloff joins the drag's step and keeps what the
     CHECK(drag.after.at(13)->pose.rootCm.y() == job.frames[13].rootCm.y());
     CHECK(falloffSummary(job, 3, 3, drag.label) ==
           "drag rfoot on frame 14: spread over frames 12-16 (falloff 3 frames)");
-    CHECK(falloffSummary(job, 2, 3, drag.label) ==
-          "drag rfoot on frame 14: spread over frames 12-16 (falloff 2 frames, widened to 3 for a change this large)");
+    CHECK(
+        falloffSummary(job, 2, 3, drag.label) ==
+        "drag rfoot on frame 14: spread over frames 12-16 (falloff 2 frames, widened to 3 to keep the motion smooth)");
 
     // A falloff that held the dragged frame leaves the drag's own record there.
     MotionEditJob held = finishedJob(store.clip());

@@ -161,9 +161,12 @@ std::string EditorDocument::setCurrentPose(const Pose& given, const std::string&
             // up 6 cm on a throw's pose pasted onto a stance): the settle brings the ankles back
             // too, by the legs alone where the holds are met (moving the hips would move the
             // free foot as well).
+            // Only the planted feet keep their soles: a foot pinned in the air turns as the new pose turns it.
+            std::vector<Effector> planted;
+            for (const IkConstraint& c : contactHolds()) planted.push_back(c.effector);
             const Pose& tried = keptHolds ? pose : allFinite(r.pose) ? r.pose : given;
             if (std::optional<Pose> settled =
-                    settleOnHolds(clip().skeleton, tried, -1, kept, &currentPose(), 500, !keptHolds);
+                    settleOnHolds(clip().skeleton, tried, -1, kept, &currentPose(), 500, !keptHolds, &planted);
                 settled && worstHoldMissCm(clip().skeleton, *settled, kept) <= kReachedToleranceCm) {
                 pose = std::move(*settled);
                 keptHolds = true;

@@ -83,7 +83,7 @@ std::string falloffSummary(const MotionEditJob& job, int falloffRadius, int spre
     std::string out = stepLabel + ": spread over frames " + std::to_string(job.keyFrames.front() + 2) + "-" +
                       std::to_string(job.keyFrames.back()) + " (falloff " + std::to_string(falloffRadius) + " frames";
     if (spreadRadius > falloffRadius)
-        out += ", widened to " + std::to_string(spreadRadius) + " for a change this large";
+        out += ", widened to " + std::to_string(spreadRadius) + " to keep the motion smooth";
     return out + ")";
 }
 

@@ -141,7 +141,7 @@ double worstHoldMissCm(const Skeleton& sk, const Pose& pose, const std::vector<I
 
 std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int keptJoint,
                                   const std::vector<IkConstraint>& holds, const Pose* soleReference, int maxIterations,
-                                  bool moveRoot) {
+                                  bool moveRoot, const std::vector<Effector>* soleFeet) {
     if (holds.empty()) return std::nullopt;
     // A held foot keeps its sole: its ankle stays where the reference has it, so the ball alone
     // does not pivot the foot onto its toe (or the heel into the floor).
@@ -150,7 +150,8 @@ std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int kept
         FkState ref;
         forwardKinematics(sk, *soleReference, ref);
         for (const IkConstraint& c : holds)
-            if (c.effector == Effector::kLFoot || c.effector == Effector::kRFoot)
+            if ((c.effector == Effector::kLFoot || c.effector == Effector::kRFoot) &&
+                (!soleFeet || std::find(soleFeet->begin(), soleFeet->end(), c.effector) != soleFeet->end()))
                 // Not a foot whose own ankle or toes were turned: its sole is what changed.
                 if (const int ankle = sk.effectorSite(c.effector).joint;
                     ankle >= 0 && !(keptJoint >= 0 && sk.isAncestorOrSelf(ankle, keptJoint)))
@@ -168,24 +169,44 @@ std::optional<Pose> settleOnHolds(const Skeleton& sk, const Pose& pose, int kept
     };
     const double missBefore = worstMiss(pose);
     if (missBefore <= kSettledHoldCm) return std::nullopt;
-    PlainIkJob job;
-    job.skeleton = &sk;
-    job.start = pose;
-    job.freeRootTranslation = moveRoot;
     const PoseLayout layout(sk);
-    job.frozenDofs.assign(static_cast<std::size_t>(layout.size()), false);
+    std::vector<bool> frozen(static_cast<std::size_t>(layout.size()), false);
     for (int dof = 0; dof < layout.size(); ++dof)
-        job.frozenDofs[static_cast<std::size_t>(dof)] = dof < 3 || (keptJoint >= 0 && layout.joint(dof) == keptJoint);
-    for (IkConstraint c : holds) {
-        c.pin = true;
-        job.constraints.push_back(c);
-    }
-    job.jointHolds = soles;
-    job.toleranceCm = 0.1 * kSettledHoldCm;
-    job.maxIterations = maxIterations;
-    job.solve();
-    if (!allFinite(job.pose) || !(worstMiss(job.pose) < missBefore)) return std::nullopt;
-    return job.pose;
+        frozen[static_cast<std::size_t>(dof)] = dof < 3 || (keptJoint >= 0 && layout.joint(dof) == keptJoint);
+    auto settle = [&](const std::vector<JointHold>& jointHolds) {
+        PlainIkJob job;
+        job.skeleton = &sk;
+        job.start = pose;
+        job.freeRootTranslation = moveRoot;
+        job.frozenDofs = frozen;
+        for (IkConstraint c : holds) {
+            c.pin = true;
+            job.constraints.push_back(c);
+        }
+        job.jointHolds = jointHolds;
+        job.toleranceCm = 0.1 * kSettledHoldCm;
+        job.maxIterations = maxIterations;
+        job.solve();
+        return job.pose;
+    };
+    // A settle is kept only if it brings the worst miss closer and leaves no hold farther from its
+    // place than it was: a sole the legs cannot reach must not pull a planted ball off the floor.
+    auto holdsNoWorse = [&](const Pose& p) {
+        for (const IkConstraint& c : holds) {
+            const double before = (effectorCm(sk, pose, c.effector) - c.targetCm).norm();
+            if ((effectorCm(sk, p, c.effector) - c.targetCm).norm() > std::max(before, kSettledHoldCm)) return false;
+        }
+        return true;
+    };
+    const Pose withSoles = settle(soles);
+    if (allFinite(withSoles) && worstMiss(withSoles) < missBefore && holdsNoWorse(withSoles)) return withSoles;
+    // The soles cost a hold: the holds alone, if they were missed.
+    const double holdsBefore = worstHoldMissCm(sk, pose, holds);
+    if (soles.empty() || holdsBefore <= kSettledHoldCm) return std::nullopt;
+    const Pose alone = settle({});
+    if (!allFinite(alone) || !(worstHoldMissCm(sk, alone, holds) < holdsBefore) || !holdsNoWorse(alone))
+        return std::nullopt;
+    return alone;
 }
 
 }  // namespace mgp

@@ -59,12 +59,17 @@ double worstHoldMissCm(const Skeleton& skeleton, const Pose& pose, const std::ve
 // not turned; its minimal-norm steps move only the chains of the holds (docs/maths-ik.md §7).
 // With `soleReference`, each held foot's ankle is held too, where that pose has it, so that the
 // foot keeps its sole instead of pivoting on the held ball (not when `keptJoint` is that ankle or
-// below it: then the sole is what was turned). nullopt when every hold (and held ankle) is within
-// kSettledHoldCm already, or when the settle does not bring the worst one closer. At most
+// below it: then the sole is what was turned). A settle is kept only if it brings the worst miss
+// closer and leaves no hold farther from its place than it was (or than kSettledHoldCm); when the
+// soles are what would cost a hold (a sole the legs cannot reach), the holds alone are settled.
+// nullopt when every hold (and held ankle) is within kSettledHoldCm already, or no settle is kept. At most
 // `maxIterations` steps. `moveRoot` false keeps the root translation too: the legs alone bring
 // the holds back (a pose whose holds are met but whose held feet turned about their balls).
+// `soleFeet`, when given, limits the kept soles to those held feet (the planted ones: a foot pinned
+// in the air takes the orientation the new pose gives it).
 std::optional<Pose> settleOnHolds(const Skeleton& skeleton, const Pose& pose, int keptJoint,
                                   const std::vector<IkConstraint>& holds, const Pose* soleReference = nullptr,
-                                  int maxIterations = 500, bool moveRoot = true);
+                                  int maxIterations = 500, bool moveRoot = true,
+                                  const std::vector<Effector>* soleFeet = nullptr);
 
 }  // namespace mgp
