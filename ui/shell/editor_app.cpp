@@ -489,9 +489,11 @@ void EditorApp::frame(InputState& in, double dt, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
-    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
-    // Colour only: the window's depth is never read (the scene has its own, ImGui none), and on
-    // llvmpipe clearing it costs a pass over the whole window.
+    // In the panels' colour: they draw no background (EditorLayout), and the viewport's scene covers
+    // the rest. Colour only: the window's depth is never read (the scene has its own, ImGui none),
+    // and on llvmpipe clearing it costs a pass over the whole window.
+    const ImVec4 panel = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    glClearColor(panel.x, panel.y, panel.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     const PhaseTimer timer(state_.profile, state_.profile.imguiRenderSeconds);
     viewport_->presentTo(height);

@@ -29,6 +29,8 @@ private:
     void panels(EditorState& state, ViewportPanel& viewport, LatentMapPanel& latent, TimelinePanel& timeline, int w,
                 int h, float menuH, float rightW, float timelineH, float modelH, float latentH);
     static void statusLine(EditorState& state, const StatusMessage& message);
+    // The window border ImGui leaves out of a window drawn without its background.
+    static void panelBorder();
     // A draggable strip between panels; returns the mouse's move along it this frame.
     float splitter(const char* id, float x, float y, float w, float h, bool vertical, bool& released);
 
