@@ -92,14 +92,23 @@ TEST_CASE("plain IK with the root translation free: every point moves with it on
     CHECK(job.pose.rootCm.y() - start.rootCm.y() > 50.0);
 }
 
-TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by the hips and the legs alone") {
-    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
+namespace {
+// 35_01 frame 145, both feet planted and held where they stand; the settle tests bend its right knee.
+struct PlantedFeet {
+    Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
     const Skeleton& sk = clip.skeleton;
-    const Pose& start = clip.frames[145];  // both feet planted
+    const Pose& start = clip.frames[145];
     const int knee = sk.findBone("rtibia");
     std::vector<IkConstraint> holds;
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        holds.push_back({foot, effectorCm(sk, start, foot), true});
+    PlantedFeet() {
+        for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
+            holds.push_back({foot, effectorCm(sk, start, foot), true});
+    }
+};
+}  // namespace
+
+TEST_CASE_FIXTURE(PlantedFeet,
+                  "settle on holds: a knee bent over its planted foot keeps the feet by the hips and the legs alone") {
     CHECK_FALSE(settleOnHolds(sk, start, knee, holds).has_value());  // nothing to settle
     CHECK(worstHoldMissCm(sk, start, holds) == 0.0);
     Pose bent = start;
@@ -150,14 +159,7 @@ TEST_CASE("settle on holds: a knee bent over its planted foot keeps the feet by 
     CHECK(bad.validate().find("expected a held joint") != std::string::npos);
 }
 
-TEST_CASE("settle on holds: a sole the legs cannot reach never pulls a held ball off its place") {
-    const Clip clip = loadClip(test::mocap("asf_amc/35_01.amc"));
-    const Skeleton& sk = clip.skeleton;
-    const Pose& start = clip.frames[145];  // both feet planted
-    const int knee = sk.findBone("rtibia");
-    std::vector<IkConstraint> holds;
-    for (Effector foot : {Effector::kLFoot, Effector::kRFoot})
-        holds.push_back({foot, effectorCm(sk, start, foot), true});
+TEST_CASE_FIXTURE(PlantedFeet, "settle on holds: a sole the legs cannot reach never pulls a held ball off its place") {
     Pose bent = start;
     bent.anglesDeg[knee].x() += 40.0;
     REQUIRE(worstHoldMissCm(sk, bent, holds) > 5.0);
