@@ -146,13 +146,14 @@ void EditorLayout::panels(EditorState& state, ViewportPanel& viewport, LatentMap
 }
 
 void EditorLayout::panelBorder() {
-    // ImGui's own outer border (RenderWindowOuterBorders), over the whole window rectangle.
+    // ImGui's own outer border (RenderWindowOuterBorders): the window's rectangle, with the border
+    // size and rounding the window took at Begin().
     ImGuiWindow* window = ImGui::GetCurrentWindow();
-    const float size = ImGui::GetStyle().WindowBorderSize;
-    if (size <= 0.0f) return;
-    ImGui::PushClipRect(window->Pos, ImVec2(window->Pos.x + window->Size.x, window->Pos.y + window->Size.y), false);
-    window->DrawList->AddRect(window->Pos, ImVec2(window->Pos.x + window->Size.x, window->Pos.y + window->Size.y),
-                              ImGui::GetColorU32(ImGuiCol_Border), ImGui::GetStyle().WindowRounding, 0, size);
+    if (window->WindowBorderSize <= 0.0f) return;
+    const ImRect rect = window->Rect();
+    ImGui::PushClipRect(rect.Min, rect.Max, false);
+    window->DrawList->AddRect(rect.Min, rect.Max, ImGui::GetColorU32(ImGuiCol_Border), window->WindowRounding, 0,
+                              window->WindowBorderSize);
     ImGui::PopClipRect();
 }
 
